@@ -1,0 +1,12 @@
+#pragma once
+/// Each subcommand registers itself on the top-level CLI11 app. A command's
+/// callback runs during parsing, sets the exit code, and lets InputError and
+/// RuntimeError escape to main(), which turns them into one line and a code.
+
+#include <CLI/CLI.hpp>
+
+namespace andros::cli {
+
+void add_frame_command(CLI::App& app, int& exit_code);
+
+}  // namespace andros::cli

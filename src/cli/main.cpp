@@ -1,0 +1,44 @@
+// andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "andros/error.hpp"
+#include "andros/version.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
+      "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
+      "command frames to the vehicle's serial link at 25 Hz, with the safety rules applied.",
+      "andros-bridge"};
+  app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
+             "Run 'andros-bridge COMMAND --help' for a command's options.");
+  spdlog::set_pattern("%^%l%$: %v");
+
+  int exit_code = andros::kExitOk;
+  andros::cli::add_frame_command(app, exit_code);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "andros-bridge: error: %s (see --help)\n", e.what());
+    return andros::kExitBadInput;
+  } catch (const andros::InputError& e) {
+    // With no file to name, say which program is talking.
+    std::fprintf(stderr, "%s%s\n", e.pos().file.empty() ? "andros-bridge: " : "", e.what());
+    return andros::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+    return andros::kExitRuntime;
+  }
+  return exit_code;
+}
