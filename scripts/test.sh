@@ -1,6 +1,26 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing, builds, runs every test.
+# The README's test command: installs what is missing, builds, runs every test:
+# the suite, the same suite again under AddressSanitizer + UndefinedBehaviorSanitizer
+# (build-asan/), and, where clang's libFuzzer is installed, each fuzz target briefly.
+# ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build}
+jobs=$(nproc)
+
+echo "== build and test ($build)"
 scripts/build.sh
-ctest --test-dir "${BUILD_DIR:-build}" --output-on-failure --parallel "$(nproc)" --timeout 300
+ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 300
+[[ ${ANDROS_QUICK:-} == 1 ]] && exit 0
+
+echo "== build and test under ASan + UBSan ($build-asan)"
+BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600
+
+if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
+  echo "== fuzz each target briefly"
+  scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-20}"
+else
+  echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"
+fi
