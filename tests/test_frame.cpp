@@ -5,6 +5,7 @@
 #include "andros/decoder.hpp"
 #include "andros/error.hpp"
 #include "andros/frame.hpp"
+#include "andros/json.hpp"
 
 namespace andros {
 namespace {
@@ -124,6 +125,26 @@ TEST(Validation, EachRuleBrokenOnceIsNamed) {
   auto bad = good;
   bad[15] = 0x03;
   EXPECT_EQ(validation_errors(bad), std::vector<std::string>{"byte 15 is 0x03, must be 0x02"});
+}
+
+}  // namespace
+}  // namespace andros
+
+namespace andros {
+namespace {
+
+TEST(Json, WriterMatchesFreshDocumentFrameAfterFrame) {
+  FrameJsonWriter writer;
+  DecodedFrame a;
+  a.offset = 7;
+  a.data = FrameBuilder(0x3C).build(ControlState{});
+  a.checksum_ok = a.valid = true;
+  DecodedFrame b = a;
+  b.offset = 43;
+  b.data[7] = 0xFE;
+  b.valid = false;
+  b.errors = {"byte 15 is 0x00, must be 0x02"};
+  for (const auto* f : {&a, &b, &a}) EXPECT_EQ(writer.line(*f), frame_to_json(*f).dump());
 }
 
 }  // namespace

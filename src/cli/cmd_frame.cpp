@@ -63,8 +63,10 @@ int run_decode(const DecodeOptions& opt) {
       from_stdin ? nullptr : in, [](std::FILE* f) { return std::fclose(f); });
 
   Decoder decoder(code);
-  const auto print = [](const DecodedFrame& f) {
-    std::fputs(frame_to_json(f).dump().c_str(), stdout);
+  FrameJsonWriter json;
+  const auto print = [&json](const DecodedFrame& f) {
+    const auto line = json.line(f);
+    std::fwrite(line.data(), 1, line.size(), stdout);
     std::fputc('\n', stdout);
   };
   std::vector<std::uint8_t> chunk(64 * 1024);
