@@ -106,6 +106,13 @@ void SdlInput::Impl::connect_chosen(std::int64_t now_ms) {
 void SdlInput::Impl::lose(std::int64_t now_ms) {
   spdlog::warn("controller lost: {}", device->name());
   device.reset();
+  // SDL releases a removed device's buttons and recentres its axes just
+  // before reporting the removal. That is not the operator's input, and the
+  // disconnect clears the state anyway: keep it out of recordings.
+  while (!events.empty() && events.back().type != InputEvent::Type::kConnect &&
+         events.back().type != InputEvent::Type::kDisconnect) {
+    events.pop_back();
+  }
   InputEvent gone;
   gone.t_ms = now_ms;
   gone.type = InputEvent::Type::kDisconnect;
