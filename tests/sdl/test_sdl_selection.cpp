@@ -140,5 +140,25 @@ TEST_F(ControllerDbTest, AMappingTurnsAPlainJoystickIntoAGameController) {
   EXPECT_TRUE(state_.button(InputKey{InputKind::kPadButton, SDL_CONTROLLER_BUTTON_LEFTSHOULDER}).down);
 }
 
+TEST(SdlEnvironment, SdlGameControllerConfigAddsMappings) {
+  test::use_dummy_video();
+  std::string guid;
+  {
+    const SdlSession probe;  // the virtual stick's GUID, from its name and ids
+    guid = VirtualDevice::stick("Test Stick").guid();
+  }
+  const std::string mapping = guid + ",Env Stick,a:b0,leftshoulder:b4,leftx:a0,lefty:a1,";
+  setenv("SDL_GAMECONTROLLERCONFIG", mapping.c_str(), 1);
+  {
+    const SdlSession session;  // SDL reads the variable when it starts
+    auto stick = VirtualDevice::stick("Test Stick");
+    SdlInput input(SdlInputOptions{});
+    InputState state;
+    input.pump(state, 40);
+    EXPECT_EQ(state.name(), "Env Stick");
+  }
+  unsetenv("SDL_GAMECONTROLLERCONFIG");
+}
+
 }  // namespace
 }  // namespace andros
