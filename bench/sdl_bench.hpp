@@ -3,6 +3,7 @@
 // virtual pad, percentiles.
 
 #include <SDL.h>
+#include <spdlog/spdlog.h>
 #include <time.h>
 
 #include <algorithm>
@@ -48,7 +49,9 @@ inline SDL_Joystick* attach_virtual_pad() {
 
 /// SDL started headless, the input source, and a virtual pad to move.
 struct PadRig {
-  PadRig() : input((setenv("SDL_VIDEODRIVER", "dummy", 0), SdlInputOptions{})), pad(attach_virtual_pad()) {}
+  PadRig() : input((setenv("SDL_VIDEODRIVER", "dummy", 0), SdlInputOptions{})), pad(attach_virtual_pad()) {
+    spdlog::set_level(spdlog::level::err);  // keep the table clean
+  }
   ~PadRig() {
     if (pad != nullptr) SDL_JoystickClose(pad);
   }
