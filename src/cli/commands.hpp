@@ -8,5 +8,7 @@
 namespace andros::cli {
 
 void add_frame_command(CLI::App& app, int& exit_code);
+void add_controllers_command(CLI::App& app, int& exit_code);
+void add_record_command(CLI::App& app, int& exit_code);
 
 }  // namespace andros::cli

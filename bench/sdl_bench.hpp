@@ -1,0 +1,73 @@
+#pragma once
+// What the SDL benchmarks share: a monotonic clock, absolute sleeps, a
+// virtual pad, percentiles.
+
+#include <SDL.h>
+#include <spdlog/spdlog.h>
+#include <time.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "andros/sdl_input.hpp"
+
+namespace andros::bench {
+
+inline std::int64_t now_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+inline void sleep_until_ns(std::int64_t deadline) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(deadline / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(deadline % 1'000'000'000);
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) != 0) {
+  }
+}
+
+/// A virtual game controller, opened so that the benchmark can move it.
+inline SDL_Joystick* attach_virtual_pad() {
+  SDL_VirtualJoystickDesc desc;
+  SDL_zero(desc);
+  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+  desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+  desc.naxes = SDL_CONTROLLER_AXIS_MAX;
+  desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
+  desc.name = "Bench Pad";
+  SDL_Joystick* joy = SDL_JoystickOpen(SDL_JoystickAttachVirtualEx(&desc));
+  if (joy == nullptr) {
+    std::fprintf(stderr, "cannot attach a virtual pad: %s\n", SDL_GetError());
+    std::exit(1);
+  }
+  return joy;
+}
+
+/// SDL started headless, the input source, and a virtual pad to move.
+struct PadRig {
+  PadRig() : input((setenv("SDL_VIDEODRIVER", "dummy", 0), SdlInputOptions{})), pad(attach_virtual_pad()) {
+    spdlog::set_level(spdlog::level::err);  // keep the table clean
+  }
+  ~PadRig() {
+    if (pad != nullptr) SDL_JoystickClose(pad);
+  }
+  PadRig(const PadRig&) = delete;
+  PadRig& operator=(const PadRig&) = delete;
+
+  SdlInput input;
+  SDL_Joystick* pad;
+};
+
+/// The q-quantile (0..1) of values, in the values' unit.
+inline double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const auto i = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  return values[std::min(i, values.size() - 1)];
+}
+
+}  // namespace andros::bench

@@ -1,0 +1,38 @@
+#pragma once
+/// `andros-bridge record`: the live controller's events written as an event
+/// script (contract section 3) that replay and `run --input` read back.
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "andros/sdl_input.hpp"
+
+namespace andros {
+
+struct RecordOptions {
+  /// How often the controller is read. The bridge's own period (40 ms at
+  /// 25 Hz) makes a replay see each event in the frame the live bridge did.
+  int period_ms = 40;
+  /// Written first, each line prefixed with "# ".
+  std::string header;
+};
+
+/// What the recording has reached, for a progress line and for stopping.
+struct RecordStatus {
+  std::int64_t tick = 0;  ///< ticks done so far
+  std::int64_t t_ms = 0;  ///< time of the last tick, ms from the start
+  std::int64_t events = 0;
+  bool connected = false;
+};
+
+/// Reads input every period on absolute time (missed ticks are skipped, not
+/// burst) and writes each event as a script line, t_ms from the start, until
+/// keep_going returns false; then writes `T end`. keep_going runs after every
+/// tick and whenever a signal interrupts the wait. Throws RuntimeError when
+/// out fails. Returns the number of events written.
+std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+                           const std::function<bool(const RecordStatus&)>& keep_going);
+
+}  // namespace andros

@@ -1,0 +1,60 @@
+// `andros-bridge controllers`: what SDL sees, and how to choose among it.
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "andros/error.hpp"
+#include "andros/sdl_input.hpp"
+#include "commands.hpp"
+#include "sdl_options.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct ControllersOptions {
+  SdlInputOptions sdl;
+  bool json = false;
+};
+
+int run_controllers(const ControllersOptions& opt) {
+  const auto list = list_controllers(opt.sdl);
+  if (opt.json) {
+    for (const auto& c : list) {
+      const nlohmann::json line = {{"index", c.index},
+                                   {"name", c.name},
+                                   {"guid", c.guid},
+                                   {"type", c.game_controller ? "controller" : "joystick"}};
+      std::printf("%s\n", line.dump().c_str());
+    }
+    return kExitOk;
+  }
+  if (list.empty()) {
+    std::fprintf(stderr, "no controllers found (see docs/controllers.md if one is plugged in)\n");
+    return kExitOk;
+  }
+  std::printf("%-5s  %-10s  %-32s  %s\n", "INDEX", "TYPE", "GUID", "NAME");
+  for (const auto& c : list) {
+    std::printf("%-5d  %-10s  %-32s  %s\n", c.index, c.game_controller ? "controller" : "joystick",
+                c.guid.c_str(), c.name.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_controllers_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<ControllersOptions>();
+  auto* cmd = app.add_subcommand(
+      "controllers",
+      "List the attached controllers: index, type (game controller, or plain joystick\n"
+      "with numbered buttons, axes and hats), GUID and name. Any of index, GUID or name\n"
+      "can be given to --controller.");
+  // Only the mappings matter here: they decide the type and name shown.
+  add_controller_db_option(cmd, opt->sdl);
+  cmd->add_flag("--json", opt->json,
+                "one JSON object per controller per line: index, name, guid, type "
+                "(\"controller\" or \"joystick\")");
+  cmd->callback([opt, &exit_code] { exit_code = run_controllers(*opt); });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,119 @@
+// `andros-bridge record`: the live controller's events as an event script.
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "andros/error.hpp"
+#include "andros/script_recorder.hpp"
+#include "andros/version.hpp"
+#include "commands.hpp"
+#include "sdl_options.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct RecordCommandOptions {
+  SdlInputOptions sdl;
+  std::string output = "-";
+  int rate_hz = 25;
+};
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int signal) { g_stop_signal = signal; }
+
+/// SIGINT and SIGTERM end the recording while this lives. No SA_RESTART, so
+/// that they interrupt the recorder's sleep.
+class StopOnSignals {
+ public:
+  StopOnSignals() {
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopOnSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopOnSignals(const StopOnSignals&) = delete;
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return text;
+}
+
+int run_record(const RecordCommandOptions& opt) {
+  // SDL first (bad selection or mapping file: exit 2 before any file is made).
+  SdlInput input(opt.sdl);
+  std::ofstream file;
+  if (opt.output != "-") {
+    file.open(opt.output, std::ios::out | std::ios::trunc);
+    if (!file) throw InputError(SourcePos{opt.output}, std::string("cannot create: ") + std::strerror(errno));
+  }
+  std::ostream& out = opt.output == "-" ? std::cout : file;
+
+  RecordOptions rec;
+  rec.period_ms = 1000 / opt.rate_hz;
+  rec.header = "andros-bridge " + std::string(kVersion) + " record, started " + utc_now() +
+               "\ncontroller: " + input.selection() + "\nt_ms    event       arguments";
+
+  const StopOnSignals stop_on_signals;
+  const bool progress = isatty(STDERR_FILENO) == 1;
+  std::int64_t last_progress_ms = -1000;
+  const auto keep_going = [&](const RecordStatus& s) {
+    if (progress && (s.t_ms - last_progress_ms >= 500 || g_stop_signal != 0)) {
+      last_progress_ms = s.t_ms;
+      std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s (Ctrl-C ends)\033[K",
+                   static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
+                   s.connected ? "connected" : "not connected");
+    }
+    return g_stop_signal == 0;
+  };
+  const auto events = record_script(input, out, rec, keep_going);
+  if (progress) std::fputc('\n', stderr);
+  std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(events),
+               opt.output == "-" ? "" : " to ", opt.output == "-" ? "" : opt.output.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_record_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<RecordCommandOptions>();
+  auto* cmd = app.add_subcommand(
+      "record",
+      "Write the live controller's events as an event script (the text replay and\n"
+      "'run --input' read) until SIGINT (Ctrl-C) or SIGTERM, then end it with 'T end'.\n"
+      "Times are ms from the start of the recording.");
+  cmd->add_option("--output,-o", opt->output, "the script file, or - for standard output")
+      ->type_name("FILE")
+      ->default_str("-");
+  cmd->add_option("--rate", opt->rate_hz,
+                  "how often the controller is read, per second; the bridge's own rate (25)\n"
+                  "makes a replay see each event in the same frame the live bridge did")
+      ->type_name("HZ")
+      ->default_str("25")
+      ->check(CLI::Range(1, 1000));
+  add_sdl_options(cmd, opt->sdl);
+  cmd->callback([opt, &exit_code] { exit_code = run_record(*opt); });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,30 @@
+#pragma once
+// The live controller's flags, shared by `run`, `record` and `controllers`.
+
+#include <CLI/CLI.hpp>
+
+#include "andros/sdl_input.hpp"
+
+namespace andros::cli {
+
+/// Adds --controller-db FILE to cmd, filling opts.controller_db.
+inline void add_controller_db_option(CLI::App* cmd, SdlInputOptions& opts) {
+  cmd->add_option("--controller-db", opts.controller_db,
+                  "a file of extra SDL controller mappings (gamecontrollerdb.txt format); the\n"
+                  "SDL_GAMECONTROLLERCONFIG environment variable is read as well")
+      ->type_name("FILE");
+}
+
+/// Adds --controller INDEX|NAME|GUID and --controller-db FILE to cmd, filling
+/// opts. opts must outlive parsing (hold it in a shared_ptr like the other
+/// commands' options).
+inline void add_sdl_options(CLI::App* cmd, SdlInputOptions& opts) {
+  cmd->add_option("--controller", opts.controller,
+                  "which controller to use when several are attached: INDEX (as 'andros-bridge\n"
+                  "controllers' lists them), GUID (32 hex digits) or NAME (case-insensitive, a\n"
+                  "part is enough); the others are ignored. Default: the first one found")
+      ->type_name("INDEX|NAME|GUID");
+  add_controller_db_option(cmd, opts);
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,78 @@
+#include "andros/script_recorder.hpp"
+
+#include <cerrno>
+#include <ctime>
+#include <sstream>
+
+#include "andros/error.hpp"
+#include "andros/events.hpp"
+
+namespace andros {
+namespace {
+
+constexpr std::int64_t kNsPerMs = 1'000'000;
+
+std::int64_t monotonic_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+/// False when a signal cut the wait short.
+bool sleep_until_ns(std::int64_t deadline_ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(deadline_ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(deadline_ns % 1'000'000'000);
+  return clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == 0;
+}
+
+void write_line(std::ostream& out, const std::string& line) {
+  out << line << '\n';
+  if (!out) throw RuntimeError("cannot write the event script");
+}
+
+}  // namespace
+
+std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+                           const std::function<bool(const RecordStatus&)>& keep_going) {
+  std::istringstream header(options.header);
+  for (std::string line; std::getline(header, line);) write_line(out, "# " + line);
+  out.flush();
+
+  const std::int64_t period_ns = std::int64_t{options.period_ms} * kNsPerMs;
+  const std::int64_t start_ns = monotonic_ns();
+  RecordStatus status;
+  std::int64_t tick = 0;
+  while (true) {
+    status.t_ms = tick * options.period_ms;
+    const auto& events = input.poll(status.t_ms);
+    for (const auto& event : events) {
+      write_line(out, format_event(event));
+      if (event.type == InputEvent::Type::kConnect) status.connected = true;
+      if (event.type == InputEvent::Type::kDisconnect) status.connected = false;
+    }
+    if (!events.empty()) out.flush();  // a killed recording keeps what it saw
+    status.events += static_cast<std::int64_t>(events.size());
+    status.tick = tick + 1;
+    if (!keep_going(status)) break;
+
+    // The next tick on the grid that is still ahead: after a stall, skip.
+    tick = std::max(tick + 1, (monotonic_ns() - start_ns) / period_ns + 1);
+    bool stop = false;
+    while (!sleep_until_ns(start_ns + tick * period_ns)) {
+      if (!keep_going(status)) {
+        stop = true;
+        break;
+      }
+    }
+    if (stop) break;
+  }
+  InputEvent end;
+  end.t_ms = status.t_ms;
+  end.type = InputEvent::Type::kEnd;
+  write_line(out, format_event(end));
+  out.flush();
+  return status.events;
+}
+
+}  // namespace andros

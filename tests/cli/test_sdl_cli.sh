@@ -1,0 +1,37 @@
+# `controllers` and `record` as processes. No controller is attached here (SDL's
+# virtual devices live in one process; tests/sdl covers the recording itself).
+source "$(dirname "$0")/lib.sh"
+export SDL_VIDEODRIVER=dummy
+
+expect_exit 0 "$BIN" controllers --help
+expect_exit 0 "$BIN" controllers --json
+expect_exit 0 "$BIN" controllers
+
+expect_exit 2 "$BIN" controllers --controller-db "$TMP/missing.txt"
+expect_one_line_stderr
+expect_stderr_matches "^$TMP/missing.txt: error: cannot read controller mappings"
+
+printf '# mine\nnot a mapping\n' >"$TMP/bad.txt"
+expect_exit 2 "$BIN" record --controller-db "$TMP/bad.txt" --output "$TMP/never.txt"
+expect_stderr_matches "^$TMP/bad.txt:2:1: error: bad SDL mapping"
+[[ ! -e $TMP/never.txt ]] || fail "record created its output despite bad input"
+
+expect_exit 2 "$BIN" record --controller 300
+expect_stderr_matches "^--controller: error: controller index 300"
+expect_exit 2 "$BIN" record --rate 0
+
+# SIGTERM and SIGINT end a recording with `T end` and exit 0.
+for sig in TERM INT; do
+  out=$TMP/rec_$sig.txt
+  "$BIN" record --output "$out" 2>"$TMP/err" &
+  pid=$!
+  for _ in $(seq 100); do [[ -s $out ]] && break; sleep 0.05; done  # bounded: 5 s
+  kill -"$sig" "$pid"
+  wait "$pid"
+  code=$?
+  [[ $code -eq 0 ]] || fail "record exited $code on SIG$sig; stderr: $(cat "$TMP/err")"
+  grep -q '^# andros-bridge .* record, started ' "$out" || fail "no header in $(cat "$out")"
+  grep -Eq '^[0-9]+ +end$' "$out" || fail "SIG$sig: no end line in $(cat "$out")"
+done
+
+finish
