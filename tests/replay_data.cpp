@@ -1,5 +1,9 @@
 #include "replay_data.hpp"
 
+#include "andros/replay.hpp"
+
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -57,6 +61,26 @@ std::string describe_difference(const ControlState& want, const ControlState& go
     }
   }
   return out;
+}
+
+void expect_replay(Mapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
+                   const std::string& expected) {
+  const std::uint8_t code = 0x01;
+  Engine engine(std::move(mapping), EngineOptions{weapons, code});
+  std::istringstream in(read_text(events));
+  ScriptPlayer player(in, events);
+  std::vector<std::pair<std::int64_t, DataBytes>> got;
+  replay(player, engine, FrameClock(rate_millihertz), [&](std::int64_t t, const DataBytes& d) { got.emplace_back(t, d); });
+
+  const auto want = read_expected(expected, code);
+  ASSERT_EQ(got.size(), want.size()) << "frame count of " << events;
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(got[i].first, want[i].t) << "frame " << i;
+    EXPECT_TRUE(validation_errors(got[i].second).empty());
+    const auto built = FrameBuilder(code).build(want[i].state);
+    EXPECT_EQ(got[i].second, built) << expected << ":" << want[i].line << " t=" << want[i].t << ": "
+                                    << describe_difference(read_signals(built), read_signals(got[i].second));
+  }
 }
 
 }  // namespace andros::testing

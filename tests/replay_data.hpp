@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "andros/frame.hpp"
+#include "andros/mapping.hpp"
 
 namespace andros::testing {
 
@@ -26,5 +27,10 @@ std::vector<ExpectedFrame> read_expected(const std::string& path, std::uint8_t c
 std::string describe_difference(const ControlState& want, const ControlState& got);
 
 std::string read_text(const std::string& path);
+
+/// Replays `events` through the mapping and EXPECTs every frame to match
+/// `expected` exactly (and to pass validation).
+void expect_replay(Mapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
+                   const std::string& expected);
 
 }  // namespace andros::testing

@@ -2,8 +2,6 @@
 // hand-derived NAME.expected (see replay_data.hpp for the format).
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include "andros/mapping_loader.hpp"
 #include "andros/replay.hpp"
 #include "replay_data.hpp"
@@ -20,27 +18,15 @@ struct Case {
 
 const std::string kData = ANDROS_TEST_DATA_DIR;
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 class ReplayData : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ReplayData, FramesMatchTheHandDerivedOnes) {
   const auto& c = GetParam();
-  const std::uint8_t code = 0x01;
-  Engine engine(load_mapping(kData + "/mappings/" + c.mapping), EngineOptions{c.weapons, code});
-  const std::string events = kData + "/replay/" + c.name + ".events";
-  std::istringstream in(testing::read_text(events));
-  ScriptPlayer player(in, events);
-  std::vector<std::pair<std::int64_t, DataBytes>> got;
-  replay(player, engine, FrameClock(c.rate_mhz), [&](std::int64_t t, const DataBytes& d) { got.emplace_back(t, d); });
-
-  const auto want = testing::read_expected(kData + "/replay/" + c.name + ".expected", code);
-  ASSERT_EQ(got.size(), want.size()) << "frame count";
-  for (std::size_t i = 0; i < want.size(); ++i) {
-    EXPECT_EQ(got[i].first, want[i].t) << "frame " << i;
-    EXPECT_TRUE(validation_errors(got[i].second).empty());
-    const auto expected = FrameBuilder(code).build(want[i].state);
-    EXPECT_EQ(got[i].second, expected) << c.name << ".expected:" << want[i].line << " t=" << want[i].t << ": "
-                                       << testing::describe_difference(read_signals(expected), read_signals(got[i].second));
-  }
+  const std::string base = kData + "/replay/" + c.name;
+  testing::expect_replay(load_mapping(kData + "/mappings/" + c.mapping), c.weapons, c.rate_mhz, base + ".events",
+                         base + ".expected");
 }
 
 INSTANTIATE_TEST_SUITE_P(
