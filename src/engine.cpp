@@ -41,9 +41,10 @@ Engine::Engine(Mapping mapping, EngineOptions options)
     slots += layer < 0 ? mapping_.bindings.size() : mapping_.layers[static_cast<std::size_t>(layer)].bindings.size();
     slot_base_.push_back(slots);
   }
+  all_ = all_bindings(mapping_);
   toggled_.assign(slots, 0);
   selector_.assign(slots, 0);
-  for (const auto ref : all_bindings(mapping_)) {
+  for (const auto ref : all_) {
     const auto& b = binding_at(mapping_, ref);
     for (const auto& u : b.inputs) note_button(u.key);
     if (b.arm) note_button(b.arm->key);
@@ -141,7 +142,7 @@ ControlState Engine::resting_state() const {
   s[signal_id("battery")] = mapping_.battery;
   s[signal_id("code")] = options_.code;
   // Selectors keep their position whatever the layer or enable state.
-  for (const auto ref : all_bindings(mapping_)) {
+  for (const auto ref : all_) {
     if (const auto* sel = std::get_if<SelectorBinding>(&binding_at(mapping_, ref).rule)) {
       for (const auto id : sel->positions[static_cast<std::size_t>(selector_[slot(ref)])]) s[id] = 1;
     }
@@ -231,7 +232,7 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
       apply(input, ref, now_ms - last_ms_, state, ctx.armed);
     }
     // A toggle stays on in every layer until pressed again or the deadman is released.
-    for (const auto ref : all_bindings(mapping_)) {
+    for (const auto ref : all_) {
       const auto* b = std::get_if<ButtonBinding>(&binding_at(mapping_, ref).rule);
       if (b != nullptr && toggled_[slot(ref)] != 0) state[b->signal] = 1;
     }

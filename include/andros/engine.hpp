@@ -70,6 +70,7 @@ class Engine {
   EngineOptions options_;
   FrameBuilder builder_;
   EngineStatus status_;
+  std::vector<BindingRef> all_;                     ///< every binding; its slot is its index here
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<InputKey> buttons_;                   ///< every button the mapping reads
