@@ -4,37 +4,17 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "andros/mapping_loader.hpp"
 #include "andros/version.hpp"
+#include "temp_dir.hpp"
 
 namespace andros {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh directory of mapping files for one test.
-class MappingDir {
- public:
-  MappingDir() : dir_(fs::path(::testing::TempDir()) / ("andros-mapping-" + std::to_string(counter_++))) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~MappingDir() { fs::remove_all(dir_); }
-  MappingDir(const MappingDir&) = delete;
-  MappingDir& operator=(const MappingDir&) = delete;
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return dir_ / name;
-  }
-  [[nodiscard]] const fs::path& path() const { return dir_; }
-
- private:
-  static inline int counter_ = 0;
-  fs::path dir_;
-};
+using MappingDir = testing::TempDir;
 
 const std::string kHead = "robot: HD1\ndeadman: leftshoulder\nbindings:\n";  // bindings start on line 4
 
