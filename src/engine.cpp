@@ -3,17 +3,13 @@
 #include <algorithm>
 
 #include "andros/axis.hpp"
+#include "overload.hpp"
 
 namespace andros {
 namespace {
 
 constexpr std::int64_t kMilli = 1000;
 constexpr std::int64_t kLevelMax = 255 * kMilli;
-
-template <class... F>
-struct Overload : F... {
-  using F::operator()...;
-};
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "andros/mapping.hpp"
+#include "overload.hpp"
 
 #include <algorithm>
 #include <map>
@@ -6,11 +7,6 @@
 
 namespace andros {
 namespace {
-
-template <class... F>
-struct Overload : F... {
-  using F::operator()...;
-};
 
 std::string quoted(SignalId id) { return "'" + std::string(info(id).name) + "'"; }
 

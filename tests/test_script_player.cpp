@@ -29,33 +29,28 @@ TEST(ScriptPlayer, AppliesEventsUpToEachFrameTime) {
   EXPECT_TRUE(player.finished_at(120));  // the first frame time >= end
 }
 
-TEST(ScriptPlayer, WithoutEndTheLastEventEnds) {
-  std::istringstream in("0 connect\n90 button a 1\n");
+struct Ending {
+  const char* script;
+  std::int64_t last_frame;  // at 25 Hz
+};
+
+class ScriptEnding : public ::testing::TestWithParam<Ending> {};
+
+TEST_P(ScriptEnding, LastFrameIsTheFirstAtOrAfterTheEnd) {
+  std::istringstream in(GetParam().script);
   ScriptPlayer player(in, "s.events");
   InputState s;
-  player.advance_to(80, s);
-  EXPECT_FALSE(player.finished_at(80));
-  player.advance_to(120, s);
-  EXPECT_TRUE(player.finished_at(120));
+  std::int64_t t = 0;
+  for (player.advance_to(t, s); !player.finished_at(t); player.advance_to(t, s)) t += 40;
+  EXPECT_EQ(t, GetParam().last_frame);
 }
 
-TEST(ScriptPlayer, EmptyScriptEndsAtZero) {
-  std::istringstream in("# nothing\n");
-  ScriptPlayer player(in, "s.events");
-  InputState s;
-  player.advance_to(0, s);
-  EXPECT_TRUE(player.finished_at(0));
-}
-
-TEST(ScriptPlayer, ExactEndTimeIsTheLastFrame) {
-  std::istringstream in("0 connect\n80 end\n");
-  ScriptPlayer player(in, "s.events");
-  InputState s;
-  player.advance_to(40, s);
-  EXPECT_FALSE(player.finished_at(40));
-  player.advance_to(80, s);
-  EXPECT_TRUE(player.finished_at(80));
-}
+INSTANTIATE_TEST_SUITE_P(Cases, ScriptEnding,
+                         ::testing::Values(Ending{"0 connect\n90 button a 1\n", 120},  // no end: the last event
+                                           Ending{"# nothing\n", 0},
+                                           Ending{"0 connect\n80 end\n", 80},
+                                           Ending{"0 connect\n81 end\n", 120},
+                                           Ending{"0 end\n", 0}));
 
 TEST(ScriptPlayer, ParseErrorsSurfaceAsInputErrors) {
   std::istringstream in("0 connect\n200 jump\n");

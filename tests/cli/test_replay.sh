@@ -86,17 +86,20 @@ expect_stderr_matches "^--format: error: format 'csv'"
 expect_exit 2 "$BIN" replay "$pivot" --mapping "$core" --code 1FF
 expect_exit 2 "$BIN" replay "$TMP/nothing.events" --mapping "$core"
 expect_stderr_matches "nothing.events: error: cannot open event script"
-printf '0 connect\n10 button leftshoulder 1\n5 button a 1\n' >"$TMP/back.events"
-expect_exit 2 "$BIN" replay "$TMP/back.events" --mapping "$core"
-expect_one_line_stderr
-expect_stderr_matches "back.events:3:1: error: time 5 ms goes backwards"
-printf '0 connect\n10 button start 3\n' >"$TMP/range.events"
-expect_exit 2 "$BIN" replay "$TMP/range.events" --mapping "$core"
-expect_stderr_matches "range.events:2:17: error: button value 3 is out of range"
-printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: byte5.4\n    button: a\n' >"$TMP/fixed.yaml"
-expect_exit 2 "$BIN" replay "$pivot" --mapping "$TMP/fixed.yaml"
-expect_one_line_stderr
-expect_stderr_matches "fixed.yaml:4:13: error: byte 5 bit 4 is a fixed validation bit"
+# bad_input FILE TEXT REGEX ARGS...: FILE holding TEXT makes `replay ARGS` exit 2 with one line.
+bad_input() {
+  local file=$1 text=$2 regex=$3; shift 3
+  printf "$text" >"$TMP/$file"
+  expect_exit 2 "$BIN" replay "$@"
+  expect_one_line_stderr
+  expect_stderr_matches "$regex"
+}
+bad_input back.events '0 connect\n10 button leftshoulder 1\n5 button a 1\n' \
+  "back.events:3:1: error: time 5 ms goes backwards" "$TMP/back.events" --mapping "$core"
+bad_input range.events '0 connect\n10 button start 3\n' \
+  "range.events:2:17: error: button value 3 is out of range" "$TMP/range.events" --mapping "$core"
+bad_input fixed.yaml 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: byte5.4\n    button: a\n' \
+  "fixed.yaml:4:13: error: byte 5 bit 4 is a fixed validation bit" "$pivot" --mapping "$TMP/fixed.yaml"
 expect_exit 2 "$BIN" replay "$pivot" --mapping "$DATA/../../mappings/common.yaml"
 expect_stderr_matches "common.yaml: error: missing 'robot'"
 expect_exit 2 "$BIN" replay
