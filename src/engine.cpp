@@ -25,6 +25,9 @@ std::string_view describe(EnableState state) {
 
 Engine::Engine(Mapping mapping, EngineOptions options)
     : mapping_(std::move(mapping)), options_(options), builder_(options.code) {
+  // A mapping built by hand gets the same checks as a loaded one; without a
+  // deadman it is never enabled, so it only ever sends neutral frames.
+  validate(mapping_, false);
   const auto note_button = [this](InputKey key) {
     if (key.is_button() && std::find(buttons_.begin(), buttons_.end(), key) == buttons_.end()) buttons_.push_back(key);
   };
@@ -213,10 +216,7 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   } else if (input.connection() != connection_) {
     start_session(input, false);  // a new controller session: toggles start cleared
   }
-  if (!input.connected()) {
-    toggled_layer_ = -1;
-    clear_toggles();
-  }
+  if (!input.connected()) toggled_layer_ = -1;  // toggles are cleared below: not enabled
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
   update_layer(input, enabled);

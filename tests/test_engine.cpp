@@ -160,5 +160,24 @@ TEST(Engine, MovedEngineKeepsWorking) {
   EXPECT_EQ(engine.mapping().robot, "HD1");
 }
 
+TEST(Engine, RefusesAnInvalidMappingBuiltByHand) {
+  Mapping m;
+  SelectorBinding s;
+  s.positions = {{}, {signal_id("main_video_2")}};
+  s.initial = 2;  // no such position
+  m.bindings.push_back(Binding{s, {}, {}, {}, {}});
+  EXPECT_THROW(Engine(m, EngineOptions{}), InputError);
+  m.bindings[0].rule = ButtonBinding{signal_id("safety"), {}, false, false, 0.5};
+  EXPECT_THROW(Engine(m, EngineOptions{}), InputError);
+}
+
+TEST(Engine, WithoutADeadmanOnlyNeutralFrames) {
+  Mapping m;
+  m.bindings.push_back(Binding{ButtonBinding{signal_id("tool_on"), *parse_button_name("a")}, {}, {}, {}, {}});
+  Engine engine(m, EngineOptions{});
+  InputState in;
+  apply_script(in, "0 connect\n10 button a 1\n");
+  EXPECT_EQ(engine.step(in, 40), engine.neutral());
+}
 }  // namespace
 }  // namespace andros
