@@ -53,6 +53,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"weapons_on_armed", "core.yaml", true},
         Case{"selector_cycling", "layers.yaml"},
         Case{"layers", "layers.yaml"},
+        Case{"joystick", "joystick.yaml"},
         Case{"rate_24hz", "core.yaml", false, 24'000}),
     [](const auto& info) { return std::string(info.param.name); });
 
