@@ -225,7 +225,7 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
-      apply(input, ref, now_ms - last_ms_, state, ctx.armed);
+      apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
     }
     // A toggle stays on in every layer until pressed again or the deadman is released.
     for (const auto ref : all_) {
