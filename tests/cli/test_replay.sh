@@ -1,5 +1,7 @@
 # `replay` as a user runs it: formats, options, determinism and exit codes.
 source "$(dirname "$0")/lib.sh"
+# --robot must find the shipped files, whatever the user running the tests keeps in ~/.config.
+export XDG_CONFIG_HOME="$TMP/no-config"
 
 core="$DATA/mappings/core.yaml"
 pivot="$DATA/replay/pivot_deadzone_expo.events"
