@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
 
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
+  andros::cli::add_replay_command(app, exit_code);
+  andros::cli::add_check_command(app, exit_code);
   andros::cli::add_controllers_command(app, exit_code);
   andros::cli::add_record_command(app, exit_code);
 
