@@ -8,4 +8,8 @@ struct Overload : F... {
   using F::operator()...;
 };
 
+// Aggregate deduction is C++20, but clang 14 (the fuzzers' compiler) lacks it.
+template <class... F>
+Overload(F...) -> Overload<F...>;
+
 }  // namespace andros

@@ -1,0 +1,114 @@
+// libFuzzer target: the engine driven by random controller input through
+// every shipped mapping. On every frame the safety rules of contract section 5
+// are checked against this file's own reading of them, not the engine's:
+// a valid frame with the code, no opposing pair both 1, nothing moving while
+// not enabled, no weapon bit while weapons are off.
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <vector>
+
+#include "andros/engine.hpp"
+#include "andros/mapping_loader.hpp"
+#include "andros/robots.hpp"
+#include "andros/version.hpp"
+
+namespace {
+
+using namespace andros;
+
+void check(bool ok) {
+  if (!ok) std::abort();
+}
+
+const std::vector<Mapping>& shipped() {
+  static const auto mappings = [] {
+    std::vector<Mapping> out;
+    for (const auto robot : kRobotTypes) {
+      out.push_back(load_mapping(find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
+    }
+    return out;
+  }();
+  return mappings;
+}
+
+// The frame is neutral: every motion and weapon bit 0, drive and pivot at centre.
+bool is_neutral(const ControlState& s, int center) {
+  for (std::size_t i = 0; i < kSignalCount; ++i) {
+    const auto kind = kSignals[i].kind;
+    if ((kind == SignalKind::kMotion || kind == SignalKind::kWeapon || kind == SignalKind::kInterlock) &&
+        s.values[i] != 0) {
+      return false;
+    }
+    if (kind == SignalKind::kCentred && s.values[i] != center) return false;
+  }
+  return true;
+}
+
+// Every 3 input bytes make one event: what, which input, value. Buttons and
+// axes of a standard pad, connects and disconnects, and time moving on.
+InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
+  InputEvent e;
+  e.t_ms = t;
+  switch (p[0] % 8) {
+    case 0: e.type = InputEvent::Type::kConnect; break;
+    case 1: e.type = InputEvent::Type::kDisconnect; break;
+    case 2:
+    case 3:
+    case 4:
+      e.type = InputEvent::Type::kButton;
+      e.key = InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(p[1] % kPadButtonNames.size())};
+      e.value = p[2] & 1;
+      break;
+    default:
+      e.type = InputEvent::Type::kAxis;
+      e.key = InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % kPadAxisNames.size())};
+      e.value = static_cast<int>(p[2] * 257) - 32768;
+      break;
+  }
+  return e;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 2) return 0;
+  const auto& mapping = shipped()[data[0] % shipped().size()];
+  const bool weapons = (data[1] & 1) != 0;
+  const std::uint8_t code = data[1];
+  Engine engine(mapping, EngineOptions{weapons, code});
+  const InputKey deadman = mapping.deadman->key;
+
+  InputState input;
+  bool fresh = false;  // the deadman went down after the last connect, not at it
+  std::int64_t t = 0, next_frame = 0;
+  for (std::size_t i = 2; i + 3 <= size; i += 3) {
+    t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
+    while (next_frame <= t) {
+      const auto frame = engine.step(input, next_frame);
+      const auto s = read_signals(frame);
+      check(validation_errors(frame).empty());
+      check(frame[kCodeByte] == code);
+      for (std::size_t k = 0; k < kSignalCount; ++k) {
+        const auto partner = partner_of(static_cast<SignalId>(k));
+        check(!partner || s.values[k] == 0 || s[*partner] == 0);
+        if (kSignals[k].kind == SignalKind::kWeapon && !weapons) check(s.values[k] == 0);
+      }
+      const bool may_move = input.connected() && input.button(deadman).down && fresh;
+      if (!may_move) check(is_neutral(s, mapping.center));
+      check(s[signal_id("safety")] == (engine.status().enable == EnableState::kEnabled ? 1 : 0));
+      next_frame += 40;
+    }
+    const auto event = next_event(data + i, t);
+    const bool was_down = input.button(deadman).down;
+    const bool was_connected = input.connected();
+    input.apply(event);
+    if (event.type == InputEvent::Type::kConnect || !input.connected()) fresh = false;
+    if (was_connected && input.connected() && !was_down && input.button(deadman).down &&
+        input.button(deadman).presses > 0) {
+      fresh = true;
+    }
+  }
+  return 0;
+}
