@@ -94,6 +94,26 @@ int run_decode(const DecodeOptions& opt) {
   return kExitOk;
 }
 
+void run_signals(bool as_json) {
+  for (const auto& sig : kSignals) {
+    const std::string name(sig.name), kind(to_string(sig.kind)), partner(sig.partner), label(sig.label);
+    if (as_json) {
+      nlohmann::ordered_json row;
+      row["name"] = name;
+      row["byte"] = sig.byte;
+      row["bit"] = sig.is_bit() ? nlohmann::ordered_json(sig.bit) : nlohmann::ordered_json(nullptr);
+      row["kind"] = kind;
+      row["partner"] = sig.partner.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(partner);
+      row["label"] = label;
+      std::printf("%s\n", row.dump().c_str());
+    } else {
+      const std::string bit = sig.is_bit() ? std::to_string(sig.bit) : "0-7";
+      std::printf("%-20s byte %2d bit %-3s %-10s %-20s %s\n", name.c_str(), sig.byte, bit.c_str(),
+                  kind.c_str(), partner.empty() ? "-" : partner.c_str(), label.c_str());
+    }
+  }
+}
+
 }  // namespace
 
 void add_frame_command(CLI::App& app, int& exit_code) {
@@ -120,6 +140,14 @@ void add_frame_command(CLI::App& app, int& exit_code) {
   decode_cmd->add_option("--code", dec->code,
                          "also flag frames whose byte 11 differs from this code (2 hex digits)");
   decode_cmd->callback([dec, &exit_code] { exit_code = run_decode(*dec); });
+
+  auto as_json = std::make_shared<bool>(false);
+  auto* signals_cmd = frame->add_subcommand(
+      "signals",
+      "List every signal of the frame under its canonical name: byte, bit, kind (motion,\n"
+      "selector, weapon, interlock, centred, level, constant), opposing partner, ICD wording.");
+  signals_cmd->add_flag("--json", *as_json, "one JSON object per signal per line");
+  signals_cmd->callback([as_json] { run_signals(*as_json); });
 }
 
 }  // namespace andros::cli
