@@ -4,12 +4,16 @@
 /// The safety rules of contract section 5 are applied after the bindings, in
 /// one place, so that no mapping can bypass them.
 
+#include <bitset>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "andros/frame.hpp"
 #include "andros/input.hpp"
 #include "andros/mapping.hpp"
+#include "andros/safety.hpp"
 
 namespace andros {
 
@@ -49,7 +53,38 @@ class Engine {
   [[nodiscard]] const Mapping& mapping() const;
 
  private:
-  // Implementation state lives in the mapping engine (issue 3).
+  void start_session(const InputState& input, bool at_start_up);
+  void clear_toggles();
+  [[nodiscard]] bool held(const InputState& input, InputKey key, bool invert = false,
+                          double threshold = kDefaultThreshold) const;
+  [[nodiscard]] std::uint32_t new_presses(const InputState& input, InputKey key) const;
+  [[nodiscard]] bool deadman_held(const InputState& input) const;
+  [[nodiscard]] EnableState enable_state(const InputState& input);
+  void update_layer(const InputState& input, bool enabled);
+  void apply(const InputState& input, BindingRef ref, std::int64_t dt_ms, ControlState& out,
+             std::bitset<kSignalCount>& armed);
+  [[nodiscard]] std::size_t slot(BindingRef ref) const;
+  [[nodiscard]] ControlState resting_state() const;
+
+  Mapping mapping_;
+  EngineOptions options_;
+  FrameBuilder builder_;
+  EngineStatus status_;
+  std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
+  std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
+  std::vector<InputKey> buttons_;                   ///< every button the mapping reads
+  // State carried from tick to tick.
+  bool started_ = false;
+  std::uint32_t connection_ = 0;
+  std::map<InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
+  std::uint32_t deadman_base_ = 0;       ///< deadman presses that are not fresh
+  bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
+  int layer_ = -1;                       ///< active layer, -1 = base
+  int toggled_layer_ = -1;               ///< layer switched on by a toggle button
+  std::vector<std::uint8_t> toggled_;    ///< per binding slot
+  std::vector<int> selector_;            ///< per binding slot: a selector's position
+  std::array<std::int64_t, kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
+  std::int64_t last_ms_ = 0;
 };
 
 }  // namespace andros

@@ -1,0 +1,163 @@
+#include "yaml_reader.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <set>
+
+namespace andros::yaml {
+namespace {
+
+std::string join(std::initializer_list<std::string_view> words) {
+  std::string out;
+  for (const auto w : words) {
+    if (!out.empty()) out += ", ";
+    out += w;
+  }
+  return out;
+}
+
+std::string catalogue_names() {
+  std::string out;
+  for (const auto& s : kSignals) {
+    if (!out.empty()) out += ' ';
+    out += s.name;
+  }
+  return out;
+}
+
+}  // namespace
+
+SourcePos Reader::pos(const YAML::Node& node) const {
+  const auto mark = node.Mark();
+  if (mark.is_null()) return SourcePos{file_};
+  return SourcePos{file_, mark.line + 1, mark.column + 1};
+}
+
+void Reader::fail(const YAML::Node& node, const std::string& message) const {
+  throw InputError(pos(node), message);
+}
+
+void Reader::expect_map(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsMap()) fail(node, std::string(what) + " must be a map of 'key: value' lines");
+}
+
+void Reader::expect_list(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsSequence()) fail(node, std::string(what) + " must be a list");
+}
+
+void Reader::expect_keys(const YAML::Node& map, std::initializer_list<std::string_view> allowed,
+                         std::string_view what) const {
+  expect_map(map, what);
+  std::set<std::string> seen;
+  for (const auto& kv : map) {
+    const auto key = text(kv.first, "a key");
+    bool known = false;
+    for (const auto a : allowed) known = known || a == key;
+    if (!known) {
+      fail(kv.first, "unknown key '" + key + "' in " + std::string(what) + " (expected " + join(allowed) + ")");
+    }
+    if (!seen.insert(key).second) fail(kv.first, "key '" + key + "' given twice");
+  }
+}
+
+std::string Reader::text(const YAML::Node& node, std::string_view what) const {
+  if (!node.IsScalar()) fail(node, std::string(what) + " must be a single value");
+  return node.Scalar();
+}
+
+long long Reader::integer(const YAML::Node& node, long long min, long long max, std::string_view what) const {
+  const auto s = text(node, what);
+  std::string_view digits = s;
+  int base = 10;
+  if (digits.size() > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+    digits.remove_prefix(2);
+    base = 16;
+  }
+  long long value = 0;
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
+  if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size()) {
+    fail(node, std::string(what) + " '" + s + "' is not a whole number");
+  }
+  if (value < min || value > max) {
+    fail(node, std::string(what) + " " + s + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
+  }
+  return value;
+}
+
+double Reader::number(const YAML::Node& node, double min, double max, bool max_open, std::string_view what) const {
+  const auto s = text(node, what);
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(value)) {
+    fail(node, std::string(what) + " '" + s + "' is not a number");
+  }
+  if (value < min || value > max || (max_open && value == max)) {
+    char range[64];
+    std::snprintf(range, sizeof range, "%g..%g%s", min, max, max_open ? " (excluded)" : "");
+    fail(node, std::string(what) + " " + s + " is out of range " + range);
+  }
+  return value;
+}
+
+bool Reader::boolean(const YAML::Node& node, std::string_view what) const {
+  const auto s = text(node, what);
+  if (s == "true") return true;
+  if (s == "false") return false;
+  fail(node, std::string(what) + " must be true or false, not '" + s + "'");
+}
+
+InputKey Reader::button(const YAML::Node& node) const {
+  const auto name = text(node, "a button");
+  const auto key = parse_button_name(name);
+  if (!key) {
+    fail(node, "unknown button '" + name +
+                   "' (an SDL game-controller button such as a, leftshoulder, dpup; a joystick button "
+                   "number; or a hat direction such as hat0up)");
+  }
+  return *key;
+}
+
+InputKey Reader::axis(const YAML::Node& node) const {
+  const auto name = text(node, "an axis");
+  const auto key = parse_axis_name(name);
+  if (!key) {
+    fail(node, "unknown axis '" + name +
+                   "' (leftx, lefty, rightx, righty, lefttrigger, righttrigger, or a joystick axis number)");
+  }
+  return *key;
+}
+
+SignalId Reader::signal(const YAML::Node& node) const {
+  const auto name = text(node, "a signal");
+  if (const auto id = find_signal(name)) return *id;
+  // A raw address as printed in the ICD: byteN.B for a bit, byteN for a byte.
+  unsigned byte = 0;
+  int bit = kWholeByte;
+  if (name.starts_with("byte")) {
+    std::string_view rest = std::string_view(name).substr(4);
+    const auto dot = rest.find('.');
+    const auto byte_text = rest.substr(0, dot);
+    auto [p, ec] = std::from_chars(byte_text.data(), byte_text.data() + byte_text.size(), byte);
+    bool ok = !byte_text.empty() && ec == std::errc() && p == byte_text.data() + byte_text.size() && byte < kDataBytes;
+    if (ok && dot != std::string_view::npos) {
+      const auto bit_text = rest.substr(dot + 1);
+      auto [q, ec2] = std::from_chars(bit_text.data(), bit_text.data() + bit_text.size(), bit);
+      ok = bit_text.size() == 1 && ec2 == std::errc() && bit >= 0 && bit <= 7;
+    }
+    if (ok) {
+      if (byte == kTrailerByte) fail(node, "byte 15 is fixed at 0x02 by the protocol; it cannot be a target");
+      if (bit != kWholeByte && is_fixed_bit(static_cast<std::uint8_t>(byte), static_cast<std::uint8_t>(bit))) {
+        fail(node, "byte " + std::to_string(byte) + " bit " + std::to_string(bit) +
+                       " is a fixed validation bit; it cannot be a target");
+      }
+      for (std::size_t i = 0; i < kSignals.size(); ++i) {
+        if (kSignals[i].byte == byte && kSignals[i].bit == bit) return static_cast<SignalId>(i);
+      }
+      fail(node, "'" + name + "' is a whole data byte of bit signals; name one bit (byte" + std::to_string(byte) +
+                     ".0 .. byte" + std::to_string(byte) + ".7) or a signal");
+    }
+  }
+  fail(node, "unknown signal '" + name + "' (expected one of: " + catalogue_names() + ")");
+}
+
+}  // namespace andros::yaml
