@@ -8,5 +8,7 @@
 namespace andros::cli {
 
 void add_frame_command(CLI::App& app, int& exit_code);
+void add_run_command(CLI::App& app, int& exit_code);
+void add_monitor_command(CLI::App& app, int& exit_code);
 
 }  // namespace andros::cli

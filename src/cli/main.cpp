@@ -1,4 +1,5 @@
 // andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -20,10 +21,14 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
              "Run 'andros-bridge COMMAND --help' for a command's options.");
+  // Log lines go to stderr: stdout carries data (frame decode) or the status view.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
   spdlog::set_pattern("%^%l%$: %v");
 
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
+  andros::cli::add_run_command(app, exit_code);
+  andros::cli::add_monitor_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

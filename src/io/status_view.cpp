@@ -112,6 +112,7 @@ std::string render_run_view(const RunStatus& s, bool ansi) {
                       : s.enabled     ? "ENABLED"
                                       : "not enabled: " + s.enable_text;
   if (ansi && s.enabled && !s.shutting_down) state = std::string(kReverse) + state + std::string(kReset);
+  state += s.layer.empty() ? "" : "   layer: " + s.layer;
   out += "state       " + state + "\n";
   out += fmt("link        %s: %s%s%s\n", s.link_name.c_str(), std::string(to_string(s.link_state)).c_str(),
              s.link_detail.empty() ? "" : " - ", s.link_detail.c_str());

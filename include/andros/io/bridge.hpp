@@ -27,6 +27,8 @@ class FrameSource {
   /// "enabled", or why not ("deadman released"), for the operator.
   [[nodiscard]] virtual std::string enable_text() const = 0;
   [[nodiscard]] virtual bool enabled() const = 0;
+  /// The mapping layer in use ("" for the base layer).
+  [[nodiscard]] virtual std::string layer() const { return {}; }
 };
 
 /// What one tick did, for the status view and the log.

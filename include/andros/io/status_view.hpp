@@ -38,6 +38,7 @@ struct RunStatus {
   bool connected = false;
   bool enabled = false;
   std::string enable_text;
+  std::string layer;             ///< the mapping layer in use, "" for the base
   bool shutting_down = false;
   std::string link_name;
   LinkState link_state = LinkState::kConnecting;

@@ -1,0 +1,116 @@
+# `run` end to end on pseudo-terminals, a local TCP listener and the simulator.
+source "$(dirname "$0")/lib.sh"
+HERE=$(dirname "$0")
+LIVE=$DATA/live
+export XDG_CONFIG_HOME=$TMP/xdg  # no user config file may change these runs
+harness() { python3 "$HERE/pty_harness.py" "$@"; }
+# check CAPTURE ARGS...: the capture's frames pass check_frames.py ARGS.
+check() {
+  local cap=$1; shift
+  "$BIN" frame decode "$cap" 2>/dev/null | python3 "$HERE/check_frames.py" "$@" >"$TMP/check" ||
+    fail "$cap: $(cat "$TMP/check")"
+}
+
+# Acceptance: run --robot hd1 --port PTY --input SCRIPT.
+run_cmd harness "$TMP/cap" -- "$BIN" run --robot hd1 --port {PTY} --input "$LIVE/drive.events"
+[[ $code -eq 0 ]] || fail "run exited $code: $(cat "$TMP/err")"
+check "$TMP/cap" --min 20 --enabled --driving --neutral-tail 3 --code 01
+grep -q "stopped (end of the input)" "$TMP/err" || fail "no closing line: $(cat "$TMP/err")"
+grep -q "link .*: up" "$TMP/err" || fail "link state not logged"
+[[ $(grep -c "link .*: up" "$TMP/err") -eq 1 ]] || fail "link state logged more than once"
+
+# The legacy config file drives a run: serialport = the pty, code = 3C -> byte 11.
+sed "s|serialport=PORT|serialport=$TMP/port|" "$LIVE/legacy.conf" >"$TMP/legacy.conf"
+run_cmd harness "$TMP/cap" --link "$TMP/port" -- "$BIN" run --config "$TMP/legacy.conf" --input "$LIVE/drive.events"
+[[ $code -eq 0 ]] || fail "legacy config run exited $code: $(cat "$TMP/err")"
+check "$TMP/cap" --min 20 --enabled --neutral-tail 3 --code 3C
+# ...found at the default place too, and flags override it.
+mkdir -p "$XDG_CONFIG_HOME/andros-bridge"
+cp "$TMP/legacy.conf" "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf"
+run_cmd harness "$TMP/cap" --link "$TMP/port" -- "$BIN" run --code 5A --input "$LIVE/drive.events"
+[[ $code -eq 0 ]] || fail "default config run exited $code: $(cat "$TMP/err")"
+check "$TMP/cap" --min 20 --code 5A
+grep -q "config: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf" "$TMP/err" || fail "default config not named"
+rm "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf"
+
+# Bad config lines: exit 2, one line naming FILE:LINE.
+while IFS='|' read -r line want; do
+  printf '# a comment\nrobot=HD1\n%s\n' "$line" >"$TMP/bad.conf"
+  expect_exit 2 "$BIN" run --config "$TMP/bad.conf" --input "$LIVE/drive.events"
+  expect_one_line_stderr
+  expect_stderr_matches "^$TMP/bad.conf:3(:[0-9]+)?: error: $want"
+done <<'CASES'
+baudrate=9601|baud 9601 is not one of
+robot=R2D2|unknown robot 'R2D2'
+code=GG|code 'GG' is not a byte in hex
+colour=red|unknown key 'colour'
+rate=fast|rate \(Hz\) 'fast' is not a whole number
+weapons=maybe|weapons 'maybe' must be enabled or disabled
+no equals sign|expected key=value
+CASES
+expect_exit 2 "$BIN" run --config "$TMP/missing.conf"
+expect_stderr_matches "missing.conf: error: cannot read the config file"
+
+# A rate whose frames cannot fit on the link is refused, from a flag or the file.
+expect_exit 2 "$BIN" run --rate 30 --input "$LIVE/drive.events"
+expect_one_line_stderr
+expect_stderr_matches "error: rate 30 Hz does not fit on the link: 30 frames x 360 bits = 10800 bit/s, more than 9600 baud"
+printf 'rate=50\nbaudrate=9600\n' >"$TMP/fast.conf"
+expect_exit 2 "$BIN" run --config "$TMP/fast.conf" --input "$LIVE/drive.events"
+expect_stderr_matches "rate 50 Hz does not fit"
+for flag in "--baud 9601" "--code XYZ" "--robot R2D2" "--rate 0"; do
+  expect_exit 2 "$BIN" run $flag --input "$LIVE/drive.events"
+  expect_one_line_stderr
+done
+expect_exit 2 "$BIN" run --input "$TMP/no-such.events"
+expect_stderr_matches "no-such.events: error: cannot read the event script"
+printf '0 connect\n10 button nosuch 1\n' >"$TMP/bad.events"
+expect_exit 2 "$BIN" run --input "$TMP/bad.events"
+expect_stderr_matches "bad.events:2"
+
+# SIGTERM mid-drive: neutral frames, drain, exit 0 (the harness bounds the wait).
+run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 10 -- \
+  "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
+[[ $code -eq 0 ]] || fail "SIGTERM run exited $code: $(cat "$TMP/err")"
+check "$TMP/cap" --min 8 --driving --neutral-tail 3
+grep -q "stopped (SIGTERM)" "$TMP/err" || fail "no SIGTERM closing line: $(cat "$TMP/err")"
+
+# Unplug/replug: the symlink moves from one pty to a new one; streaming resumes.
+run_cmd harness "$TMP/cap" --replug-after 5 --term-after 10 --timeout 15 -- \
+  "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
+[[ $code -eq 0 ]] || fail "replug run exited $code: $(cat "$TMP/err")"
+check "$TMP/cap" --min 5
+check "$TMP/cap.2" --min 10 --enabled --driving --neutral-tail 3
+[[ $(grep -c "lost" "$TMP/err") -eq 1 ]] || fail "the loss is not logged exactly once: $(cat "$TMP/err")"
+[[ $(grep -c "link .*: up" "$TMP/err") -eq 2 ]] || fail "link up not logged twice: $(cat "$TMP/err")"
+
+# A TCP serial server on 127.0.0.1.
+python3 - "$TMP/tcp.port" "$TMP/tcp.cap" <<'PY' &
+import socket, sys
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(1); s.settimeout(10)
+open(sys.argv[1] + ".tmp", "w").write(str(s.getsockname()[1]))
+import os; os.rename(sys.argv[1] + ".tmp", sys.argv[1])
+c, _ = s.accept(); c.settimeout(10); data = b""
+while True:
+    d = c.recv(4096)
+    if not d: break
+    data += d
+open(sys.argv[2], "wb").write(data)
+PY
+server=$!
+for _ in $(seq 100); do [[ -f $TMP/tcp.port ]] && break; sleep 0.05; done
+run_cmd "$BIN" run --port "tcp:127.0.0.1:$(cat "$TMP/tcp.port")" --input "$LIVE/drive.events"
+[[ $code -eq 0 ]] || fail "tcp run exited $code: $(cat "$TMP/err")"
+wait $server || fail "tcp listener failed"
+check "$TMP/tcp.cap" --min 20 --enabled --neutral-tail 3
+expect_exit 2 "$BIN" run --port tcp:127.0.0.1 --input "$LIVE/drive.events"
+expect_stderr_matches "tcp:HOST:PORT"
+
+# The default port: the built-in simulated vehicle decodes every frame.
+expect_exit 0 "$BIN" run --input "$LIVE/drive.events"
+expect_stderr_matches "sim vehicle decoded 24 frames: 24 valid, 0 bad checksum, 0 invalid"
+
+# The operator's pieces: help.
+expect_exit 0 "$BIN" run --help
+grep -q -- "--port" "$TMP/out" || fail "run --help"
+finish
