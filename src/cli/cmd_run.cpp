@@ -119,6 +119,7 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why,
                end.link.sent, end.link.busy, end.link.down);
   if (sim) {
+    sim->stop();
     const auto v = sim->snapshot();
     spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames,
                  v.stats.valid, v.stats.bad_checksum, v.stats.invalid);

@@ -29,12 +29,13 @@ SimVehicle::SimVehicle(std::uint8_t expected_code) : view_(expected_code) {
   if (!wake_) throw RuntimeError(std::string("sim: eventfd: ") + std::strerror(errno));
 }
 
-SimVehicle::~SimVehicle() {
-  if (thread_.joinable()) {
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const auto n = write(wake_.get(), &one, sizeof one);
-    thread_.join();
-  }
+SimVehicle::~SimVehicle() { stop(); }
+
+void SimVehicle::stop() {
+  if (!thread_.joinable()) return;
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const auto n = write(wake_.get(), &one, sizeof one);
+  thread_.join();
 }
 
 void SimVehicle::start() { thread_ = std::thread([this] { run(); }); }
@@ -44,21 +45,29 @@ VehicleSnapshot SimVehicle::snapshot() const {
   return view_.snapshot(monotonic_ns());
 }
 
-void SimVehicle::run() {
+bool SimVehicle::read_ready() {
   std::uint8_t buf[512];
+  const auto n = read(master_.get(), buf, sizeof buf);
+  if (n <= 0) return false;
+  const auto now = monotonic_ns();
+  const std::lock_guard lock(mutex_);
+  view_.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), now);
+  return true;
+}
+
+void SimVehicle::run() {
   pollfd fds[2] = {{master_.get(), POLLIN, 0}, {wake_.get(), POLLIN, 0}};
   while (true) {
     if (poll(fds, 2, -1) < 0) {
       if (errno == EINTR) continue;
       return;
     }
-    if (fds[1].revents != 0) return;
-    if ((fds[0].revents & POLLIN) == 0) continue;
-    const auto n = read(master_.get(), buf, sizeof buf);
-    if (n <= 0) continue;
-    const auto now = monotonic_ns();
-    const std::lock_guard lock(mutex_);
-    view_.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), now);
+    if (fds[1].revents != 0) break;
+    if ((fds[0].revents & POLLIN) != 0) read_ready();
+  }
+  // Stopping: the bridge has drained its side; take in the last frames.
+  pollfd last{master_.get(), POLLIN, 0};
+  while (poll(&last, 1, 0) == 1 && (last.revents & POLLIN) != 0 && read_ready()) {
   }
 }
 

@@ -27,10 +27,14 @@ class SimVehicle {
 
   /// Starts the vehicle's reading thread (after all other set-up).
   void start();
+  /// Reads what is still in flight, then stops the thread (the destructor does too).
+  void stop();
   [[nodiscard]] VehicleSnapshot snapshot() const;
 
  private:
   void run();
+  /// Reads and decodes what is ready on the master; false at end of input.
+  bool read_ready();
 
   UniqueFd master_;
   UniqueFd slave_;  ///< held open so the master never sees a hang-up between bridge reopens
