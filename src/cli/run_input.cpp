@@ -10,6 +10,7 @@
 
 #if __has_include("andros/sdl_input.hpp")
 #include "andros/sdl_input.hpp"
+#include "sdl_options.hpp"
 #define ANDROS_HAVE_SDL_INPUT 1
 #else
 #define ANDROS_HAVE_SDL_INPUT 0
@@ -27,13 +28,9 @@ SdlInputOptions& sdl_options() {
 
 }  // namespace
 
-bool have_sdl_input() { return ANDROS_HAVE_SDL_INPUT != 0; }
-
 void add_sdl_input_options([[maybe_unused]] CLI::App& run) {
 #if ANDROS_HAVE_SDL_INPUT
-  // --controller and --controller-db are the SDL input's: the lead connects
-  // them here to sdl_options() at merge time.
-  (void)sdl_options();
+  add_sdl_options(&run, sdl_options());  // --controller, --controller-db
 #endif
 }
 

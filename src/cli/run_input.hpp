@@ -12,9 +12,6 @@ class App;
 
 namespace andros::cli {
 
-/// True when this build has the SDL input source.
-bool have_sdl_input();
-
 /// Adds the SDL input's own flags to `run`, when this build has it.
 void add_sdl_input_options(CLI::App& run);
 
