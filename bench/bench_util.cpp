@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -20,6 +21,10 @@ Pty::Pty() {
   int s = -1;
   char name[256] = {};
   if (openpty(&m, &s, name, nullptr, nullptr) != 0) throw std::runtime_error("openpty");
+  // Not inherited by the bridge processes the benchmarks start: an
+  // inherited master would keep an "unplugged" pty alive.
+  fcntl(m, F_SETFD, FD_CLOEXEC);
+  fcntl(s, F_SETFD, FD_CLOEXEC);
   master.reset(m);
   slave.reset(s);
   path = name;
@@ -44,7 +49,9 @@ std::vector<Arrival> read_arrivals(int fd, std::int64_t stop_ns, std::size_t max
     const auto left_ms = (stop_ns - io::monotonic_ns()) / 1'000'000;
     if (left_ms <= 0) break;
     pollfd p{fd, POLLIN, 0};
-    if (poll(&p, 1, static_cast<int>(std::min<std::int64_t>(left_ms, 100))) <= 0) {
+    // Short polls while waiting for a child's exit, so that its time is measured closely.
+    const std::int64_t slice = until_exit > 0 ? 2 : 100;
+    if (poll(&p, 1, static_cast<int>(std::min<std::int64_t>(left_ms, slice))) <= 0) {
       if (until_exit > 0 && exited(until_exit)) break;
       continue;
     }
@@ -65,7 +72,7 @@ pid_t spawn(const std::vector<std::string>& argv) {
   if (pid == 0) {
     const int null = open("/dev/null", O_WRONLY);
     dup2(null, STDOUT_FILENO);
-    dup2(null, STDERR_FILENO);
+    if (std::getenv("ANDROS_BENCH_VERBOSE") == nullptr) dup2(null, STDERR_FILENO);
     execv(args[0], args.data());
     _exit(127);
   }

@@ -1,13 +1,18 @@
 // The bridge as an operator runs it, one process per measurement:
 //  - first frame: from fork() to the first whole frame on the pty;
 //  - controller loss: which frame after a disconnect is the first neutral one;
+//  - SIGTERM mid-drive: time to exit, and the neutral frames before it;
+//  - replug: from the port's symlink coming back to the first frame on it;
 //  - cost at 25 Hz: CPU (% of one core) and peak RSS of a run, on a pty the
 //    benchmark reads, and with the built-in simulated vehicle in the process.
 //   andros_bench_process BIN [COST_SECONDS]   (default 20)
+#include <signal.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "andros/io/link.hpp"
@@ -70,6 +75,50 @@ void controller_loss(const std::string& bin) {
               drove && first_neutral == 26 ? "PASS" : "FAIL");
 }
 
+void shutdown_time(const std::string& bin) {
+  const auto script = bench::temp_file(
+      "term.events", "0 connect pad\n100 button leftshoulder 1\n200 axis lefty -32768\n60000 end\n");
+  bench::Pty pty;
+  const auto t0 = io::monotonic_ns();
+  const pid_t pid = bench::spawn({bin, "run", "--port", pty.path, "--input", script});
+  bench::read_arrivals(pty.master.get(), t0 + 5'000'000'000, 15);  // driving by now
+  const auto t_term = io::monotonic_ns();
+  kill(pid, SIGTERM);
+  const auto tail = bench::read_arrivals(pty.master.get(), t_term + 5'000'000'000, SIZE_MAX, pid);
+  const int status = bench::wait_child(pid, nullptr);
+  const double ms = static_cast<double>(io::monotonic_ns() - t_term) / 1e6;
+  std::remove(script.c_str());
+  std::size_t neutral_tail = 0;
+  for (auto it = tail.rbegin(); it != tail.rend() && is_neutral(it->data); ++it) ++neutral_tail;
+  std::printf("| SIGTERM mid-drive to exit           | exit %d after %.0f ms, last %zu frames neutral | < 1 s, >= 3 neutral | %s |\n",
+              status, ms, neutral_tail, status == 0 && ms < 1000 && neutral_tail >= 3 ? "PASS" : "FAIL");
+}
+
+void replug(const std::string& bin) {
+  const auto script = bench::temp_file("replug.events", "0 connect pad\n60000 end\n");
+  const std::string link = "/tmp/andros-bench-" + std::to_string(getpid()) + "-switchbox";
+  auto first = std::make_unique<bench::Pty>();
+  std::remove(link.c_str());
+  [[maybe_unused]] const int rc = symlink(first->path.c_str(), link.c_str());
+  const auto t0 = io::monotonic_ns();
+  const pid_t pid = bench::spawn({bin, "run", "--port", link, "--input", script});
+  bench::read_arrivals(first->master.get(), t0 + 5'000'000'000, 10);
+  first.reset();  // unplug
+  std::remove(link.c_str());
+  bench::Pty second;
+  const auto t_plug = io::monotonic_ns();
+  [[maybe_unused]] const int rc2 = symlink(second.path.c_str(), link.c_str());
+  const auto got = bench::read_arrivals(second.master.get(), t_plug + 5'000'000'000, 1);
+  const double ms = got.empty() ? -1 : static_cast<double>(got[0].t_ns - t_plug) / 1e6;
+  kill(pid, SIGTERM);
+  bench::read_arrivals(second.master.get(), t_plug + 5'000'000'000, SIZE_MAX, pid);
+  bench::wait_child(pid, nullptr);
+  std::remove(link.c_str());
+  std::remove(script.c_str());
+  std::printf("| replug to first frame on the new device | %.0f ms | < 1 s | %s |\n", ms,
+              ms >= 0 && ms < 1000 ? "PASS" : "FAIL");
+}
+
 void cost(const std::string& bin, int seconds, bool sim) {
   const auto script = bench::temp_file(
       "cost.events", "0 connect pad\n100 button leftshoulder 1\n200 axis lefty -20000\n" +
@@ -86,8 +135,10 @@ void cost(const std::string& bin, int seconds, bool sim) {
                      static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
   const double pct = 100.0 * cpu / wall;
   const double rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  std::printf("| cost at 25 Hz, %-20s | %.2f%% of a core (%.2f s CPU in %.1f s), peak RSS %.1f MB | < 0.5%%, < 12 MB | %s |\n",
-              sim ? "--port sim" : "--port PTY", pct, cpu, wall, rss_mb,
+  std::printf("| cost at 25 Hz, %-20s | %.2f%% of a core (%.3f s user + %.3f s sys in %.1f s, start-up included), "
+              "peak RSS %.1f MB | < 0.5%%, < 12 MB | %s |\n",
+              sim ? "--port sim" : "--port PTY", pct, static_cast<double>(usage.ru_utime.tv_sec) + usage.ru_utime.tv_usec / 1e6,
+              static_cast<double>(usage.ru_stime.tv_sec) + usage.ru_stime.tv_usec / 1e6, wall, rss_mb,
               pct < 0.5 && rss_mb < 12 ? "PASS" : "FAIL");
 }
 
@@ -104,6 +155,8 @@ int main(int argc, char** argv) {
   std::printf("| measure | result | target | |\n|---|---|---|---|\n");
   first_frame(bin);
   controller_loss(bin);
+  shutdown_time(bin);
+  replug(bin);
   cost(bin, seconds, false);
   cost(bin, seconds, true);
   return 0;

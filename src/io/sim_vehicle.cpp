@@ -1,5 +1,6 @@
 #include "andros/io/sim_vehicle.hpp"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
 #include <sys/eventfd.h>
@@ -20,6 +21,8 @@ SimVehicle::SimVehicle(std::uint8_t expected_code) : view_(expected_code) {
   if (openpty(&master, &slave, name, nullptr, nullptr) != 0) {
     throw RuntimeError(std::string("sim: cannot open a pseudo-terminal: ") + std::strerror(errno));
   }
+  fcntl(master, F_SETFD, FD_CLOEXEC);
+  fcntl(slave, F_SETFD, FD_CLOEXEC);
   master_.reset(master);
   slave_.reset(slave);
   path_ = name;
