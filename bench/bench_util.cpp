@@ -2,34 +2,17 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "andros/io/link.hpp"
-#include "andros/io/serial_link.hpp"
 
 namespace andros::bench {
-
-Pty::Pty() {
-  int m = -1;
-  int s = -1;
-  char name[256] = {};
-  if (openpty(&m, &s, name, nullptr, nullptr) != 0) throw std::runtime_error("openpty");
-  // Not inherited by the bridge processes the benchmarks start: an
-  // inherited master would keep an "unplugged" pty alive.
-  fcntl(m, F_SETFD, FD_CLOEXEC);
-  fcntl(s, F_SETFD, FD_CLOEXEC);
-  master.reset(m);
-  slave.reset(s);
-  path = name;
-  io::configure_raw_8n1(m, 9600);
-}
 
 namespace {
 
@@ -92,10 +75,14 @@ double quantile(std::vector<double>& values, double q) {
   return values[std::min(i, values.size() - 1)];
 }
 
-std::string temp_file(const std::string& name, const std::string& text) {
-  const std::string path = "/tmp/andros-bench-" + std::to_string(getpid()) + "-" + name;
-  std::ofstream(path) << text;
-  return path;
+BridgeProcess::BridgeProcess(const std::string& bin, const std::string& script_text, const std::string& port)
+    : pty(io::open_pty_pair()),
+      script("/tmp/andros-bench-" + std::to_string(getpid()) + "-" + std::to_string(io::monotonic_ns()) + ".events") {
+  std::ofstream(script) << script_text;
+  t0 = io::monotonic_ns();
+  pid = spawn({bin, "run", "--port", port.empty() ? pty.path : port, "--input", script});
 }
+
+BridgeProcess::~BridgeProcess() { std::remove(script.c_str()); }
 
 }  // namespace andros::bench

@@ -10,16 +10,9 @@
 #include <vector>
 
 #include "andros/decoder.hpp"
-#include "andros/io/unique_fd.hpp"
+#include "andros/io/pty_pair.hpp"
 
 namespace andros::bench {
-
-struct Pty {
-  Pty();
-  io::UniqueFd master;
-  io::UniqueFd slave;  ///< held so the master never hangs up
-  std::string path;
-};
 
 struct Arrival {
   std::int64_t t_ns;
@@ -40,7 +33,19 @@ int wait_child(pid_t pid, rusage* usage);
 /// The q-quantile (0..1) of values (sorted in place).
 double quantile(std::vector<double>& values, double q);
 
-/// Writes text to a temporary file; returns its path.
-std::string temp_file(const std::string& name, const std::string& text);
+/// `BIN run --port PORT --input SCRIPT` as a child process, the script
+/// written to a temporary file (removed with this). With no port given, the
+/// port is a pty of its own, `pty`, whose master the benchmark reads.
+struct BridgeProcess {
+  BridgeProcess(const std::string& bin, const std::string& script_text, const std::string& port = {});
+  ~BridgeProcess();
+  BridgeProcess(const BridgeProcess&) = delete;
+  BridgeProcess& operator=(const BridgeProcess&) = delete;
+
+  io::PtyPair pty;
+  std::string script;
+  std::int64_t t0 = 0;  ///< monotonic ns just before the fork
+  pid_t pid = -1;
+};
 
 }  // namespace andros::bench

@@ -94,8 +94,8 @@ void print_row(const char* name, const Result& r) {
 int main(int argc, char** argv) {
   const int seconds = argc > 1 ? std::atoi(argv[1]) : 30;
   spdlog::set_level(spdlog::level::warn);
-  bench::Pty bridge_pty;
-  bench::Pty plain_pty;
+  auto bridge_pty = io::open_pty_pair();
+  auto plain_pty = io::open_pty_pair();
   Idle input;
   FixedFrames frames;
   io::SerialLink link(bridge_pty.path, 9600);

@@ -1,8 +1,6 @@
 #include "andros/io/sim_vehicle.hpp"
 
-#include <fcntl.h>
 #include <poll.h>
-#include <pty.h>
 #include <sys/eventfd.h>
 
 #include <cerrno>
@@ -10,24 +8,15 @@
 
 #include "andros/error.hpp"
 #include "andros/io/link.hpp"
-#include "andros/io/serial_link.hpp"
+#include "andros/io/pty_pair.hpp"
 
 namespace andros::io {
 
 SimVehicle::SimVehicle(std::uint8_t expected_code) : view_(expected_code) {
-  int master = -1;
-  int slave = -1;
-  char name[256] = {};
-  if (openpty(&master, &slave, name, nullptr, nullptr) != 0) {
-    throw RuntimeError(std::string("sim: cannot open a pseudo-terminal: ") + std::strerror(errno));
-  }
-  fcntl(master, F_SETFD, FD_CLOEXEC);
-  fcntl(slave, F_SETFD, FD_CLOEXEC);
-  master_.reset(master);
-  slave_.reset(slave);
-  path_ = name;
-  // Raw on both sides: the line discipline must pass the bytes untouched.
-  configure_raw_8n1(master_.get(), 9600);
+  auto pty = open_pty_pair();
+  master_ = std::move(pty.master);
+  slave_ = std::move(pty.slave);
+  path_ = std::move(pty.path);
   wake_.reset(eventfd(0, EFD_CLOEXEC));
   if (!wake_) throw RuntimeError(std::string("sim: eventfd: ") + std::strerror(errno));
 }

@@ -8,7 +8,8 @@
 #include "andros/io/bridge.hpp"
 #include "andros/io/script_input.hpp"
 #include "andros/io/serial_link.hpp"
-#include "pty_pair.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "frame_reader.hpp"
 
 namespace andros {
 namespace {
@@ -52,7 +53,7 @@ std::string write_script(const std::string& text) {
 }
 
 TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
-  test::PtyPair pty;
+  auto pty = io::open_pty_pair();
   const auto script = write_script("0 connect pad\n40 button a 1\n120 button a 0\n160 end\n");
   io::ScriptInput input(script);
   PressToDrive frames;
@@ -82,7 +83,7 @@ TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
 }
 
 TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
-  test::PtyPair pty;
+  auto pty = io::open_pty_pair();
   Idle input;
   PressToDrive frames;
   io::SerialLink link(pty.path, 9600);

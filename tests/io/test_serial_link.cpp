@@ -6,7 +6,8 @@
 #include <memory>
 
 #include "andros/io/serial_link.hpp"
-#include "pty_pair.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "frame_reader.hpp"
 
 namespace andros {
 namespace {
@@ -34,7 +35,7 @@ bool frame_gets_through(SerialLink& link, int fd, std::uint8_t drive) {
 }
 
 TEST(SerialLink, WritesWholeFramesToAPty) {
-  test::PtyPair pty;
+  auto pty = io::open_pty_pair();
   SerialLink link(pty.path, 9600);
   EXPECT_EQ(link.state(), LinkState::kConnecting);
   for (std::uint8_t d = 100; d < 105; ++d) EXPECT_EQ(link.send(test_frame(d), io::monotonic_ns()), SendResult::kSent);
@@ -52,7 +53,7 @@ TEST(SerialLink, WritesWholeFramesToAPty) {
 }
 
 TEST(SerialLink, IsExclusive) {
-  test::PtyPair pty;
+  auto pty = io::open_pty_pair();
   SerialLink first(pty.path, 9600);
   SerialLink second(pty.path, 9600);
   ASSERT_EQ(first.send(test_frame(1), io::monotonic_ns()), SendResult::kSent);
@@ -73,7 +74,7 @@ TEST(SerialLink, ResumesWhenTheSymlinkComesBackOnANewDevice) {
   const auto dir = std::filesystem::temp_directory_path() / ("andros-replug-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const auto link_path = dir / "andros-switchbox";
-  auto first = std::make_unique<test::PtyPair>();
+  auto first = std::make_unique<io::PtyPair>(io::open_pty_pair());
   std::filesystem::create_symlink(first->path, link_path);
 
   SerialLink link(link_path, 9600);
@@ -89,7 +90,7 @@ TEST(SerialLink, ResumesWhenTheSymlinkComesBackOnANewDevice) {
   EXPECT_EQ(link.counters().losses, 1u);
 
   // Replug: the same symlink now names another device.
-  test::PtyPair second;
+  auto second = io::open_pty_pair();
   std::filesystem::create_symlink(second.path, link_path);
   EXPECT_TRUE(frame_gets_through(link, second.master.get(), 12));
   EXPECT_EQ(link.state(), LinkState::kUp);

@@ -6,7 +6,8 @@
 
 #include "andros/error.hpp"
 #include "andros/io/tcp_link.hpp"
-#include "pty_pair.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "frame_reader.hpp"
 
 namespace andros {
 namespace {

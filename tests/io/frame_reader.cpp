@@ -1,28 +1,14 @@
-#include "pty_pair.hpp"
+#include "frame_reader.hpp"
 
 #include <poll.h>
-#include <pty.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "andros/decoder.hpp"
 #include "andros/io/link.hpp"
-#include "andros/io/serial_link.hpp"
 
 namespace andros::test {
-
-PtyPair::PtyPair() {
-  int m = -1;
-  int s = -1;
-  char name[256] = {};
-  if (openpty(&m, &s, name, nullptr, nullptr) != 0) throw std::runtime_error("openpty");
-  master.reset(m);
-  slave.reset(s);
-  path = name;
-  io::configure_raw_8n1(m, 9600);
-}
 
 std::vector<DecodedFrame> FrameReader::next(std::size_t count, int timeout_ms) {
   const std::int64_t deadline = io::monotonic_ns() + std::int64_t{timeout_ms} * 1'000'000;

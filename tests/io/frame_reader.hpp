@@ -1,6 +1,5 @@
 #pragma once
-// Test helpers: a pseudo-terminal pair standing in for a serial port, and
-// bounded reads of whole frames from its far end.
+// Test helper: bounded reads of whole frames from a pty's far end or a socket.
 
 #include <cstdint>
 #include <deque>
@@ -9,16 +8,8 @@
 
 #include "andros/decoder.hpp"
 #include "andros/frame.hpp"
-#include "andros/io/unique_fd.hpp"
 
 namespace andros::test {
-
-struct PtyPair {
-  PtyPair();
-  io::UniqueFd master;  ///< the vehicle's end: read frames here
-  io::UniqueFd slave;   ///< kept open so the master does not hang up
-  std::string path;     ///< the slave's path, for the code under test
-};
 
 /// Decodes the frames arriving on fd, with bounded waits.
 class FrameReader {
