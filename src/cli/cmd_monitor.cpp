@@ -73,7 +73,9 @@ int monitor_file(const std::string& path, io::VehicleView& view) {
   return kExitOk;
 }
 
-int monitor_stream(const std::string& name, int fd, io::VehicleView& view) {
+/// Decodes fd live until a signal or its end. is_port: fd is a serial port,
+/// whose end means it was unplugged (exit 1); a pipe's end is just the end.
+int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleView& view) {
   io::ShutdownSignals signals;  // before the display's thread starts
   std::mutex mutex;
   const bool interactive = io::is_interactive(STDOUT_FILENO);
@@ -92,6 +94,7 @@ int monitor_stream(const std::string& name, int fd, io::VehicleView& view) {
   std::int64_t last_frame_ns = 0;
   std::uint8_t buf[4096];
   bool ended = false;
+  bool failed = false;
   while (!signals.requested() && !ended) {
     pollfd p{fd, POLLIN, 0};
     const int ready = poll(&p, 1, 1000 / kRedrawsPerSecond);
@@ -100,11 +103,13 @@ int monitor_stream(const std::string& name, int fd, io::VehicleView& view) {
       const long n = ::read(fd, buf, sizeof buf);
       if (n > 0) {
         const std::lock_guard lock(mutex);
-        const auto before = view.snapshot(now).stats.frames;
+        const auto before = view.stats().frames;
         view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), now);
-        if (view.snapshot(now).stats.frames != before) last_frame_ns = now;
+        if (view.stats().frames != before) last_frame_ns = now;
       } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
-        if (n < 0) spdlog::error("{}: {}", name, std::strerror(errno));
+        // The end of a pipe or capture is the end; a serial port that ends was unplugged.
+        failed = n < 0 || is_port;
+        if (failed) spdlog::error("{}: {}", name, n < 0 ? std::strerror(errno) : "hung up");
         ended = true;
       }
     }
@@ -113,14 +118,22 @@ int monitor_stream(const std::string& name, int fd, io::VehicleView& view) {
       log.update(view.snapshot(now), now, last_frame_ns);
     }
   }
-  const std::lock_guard lock(mutex);
-  view.finish();
+  {
+    // Stopped by a signal: what has already arrived still counts.
+    const std::lock_guard lock(mutex);
+    pollfd p{fd, POLLIN, 0};
+    long n = 0;
+    while (!ended && poll(&p, 1, 0) == 1 && (n = ::read(fd, buf, sizeof buf)) > 0) {
+      view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), io::monotonic_ns());
+    }
+    view.finish();
+  }
   if (display) {
-    display->stop();
+    display->stop();  // draws the last screen, taking the lock itself
   } else {
     std::fputs(io::render_monitor_view(name, view.snapshot(io::monotonic_ns()), true, false).c_str(), stdout);
   }
-  return kExitOk;
+  return failed ? kExitRuntime : kExitOk;
 }
 
 int run_monitor(const MonitorOptions& opt) {
@@ -129,7 +142,7 @@ int run_monitor(const MonitorOptions& opt) {
   if (!opt.code.empty()) code = parse_code(opt.code, SourcePos{"--code"});
   io::VehicleView view(code);
 
-  if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, view);
+  if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, false, view);
   struct stat st{};
   if (::stat(opt.source.c_str(), &st) != 0) {
     throw InputError(SourcePos{opt.source}, std::string("cannot open: ") + std::strerror(errno));
@@ -137,10 +150,11 @@ int run_monitor(const MonitorOptions& opt) {
   if (S_ISREG(st.st_mode)) return monitor_file(opt.source, view);
   io::UniqueFd fd(::open(opt.source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd) throw RuntimeError(opt.source + ": cannot open: " + std::strerror(errno));
-  if (isatty(fd.get()) && !io::configure_raw_8n1(fd.get(), baud)) {
+  const bool is_port = isatty(fd.get()) != 0;
+  if (is_port && !io::configure_raw_8n1(fd.get(), baud)) {
     throw RuntimeError(opt.source + ": cannot set 8N1: " + std::strerror(errno));
   }
-  return monitor_stream(opt.source, fd.get(), view);
+  return monitor_stream(opt.source, fd.get(), is_port, view);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ class VehicleView {
   void push(std::span<const std::uint8_t> bytes, std::int64_t now_ns);
   void finish() { decoder_.finish(); }
   [[nodiscard]] VehicleSnapshot snapshot(std::int64_t now_ns) const;
+  [[nodiscard]] const DecoderStats& stats() const { return decoder_.stats(); }
 
  private:
   Decoder decoder_;
