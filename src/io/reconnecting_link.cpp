@@ -39,13 +39,18 @@ void ReconnectingLink::fail_open(const std::string& why, std::int64_t now_ns) {
 }
 
 void ReconnectingLink::lose(const std::string& why, std::int64_t now_ns) {
-  spdlog::warn("link {}: lost ({}); sending resumes when it is back", name_, why);
+  // A device that opens but fails every write would otherwise log a loss and
+  // a recovery five times a second: the same loss within a second of coming
+  // up is not news.
+  quiet_ = why == last_loss_ && now_ns - up_since_ns_ < kFlapNs;
+  if (!quiet_) spdlog::warn("link {}: lost ({}); sending resumes when it is back", name_, why);
+  last_loss_ = why;
   ++counters_.losses;
   fd_.reset();
   state_ = LinkState::kConnecting;
   detail_ = why;
   retry_ms_ = min_retry_ms_;
-  next_attempt_ns_ = now_ns;  // a replug may already be there: try at once
+  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(min_retry_ms_) * 1'000'000;
 }
 
 SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
@@ -68,7 +73,8 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
     state_ = LinkState::kUp;
     detail_.clear();
     retry_ms_ = min_retry_ms_;
-    spdlog::info("link {}: up", name_);
+    up_since_ns_ = now_ns;
+    if (!quiet_) spdlog::info("link {}: up", name_);
   }
 
   const int queued = queued_bytes();

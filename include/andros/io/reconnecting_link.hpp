@@ -48,6 +48,10 @@ class ReconnectingLink : public Link {
   int max_retry_ms_;
   int retry_ms_;
   std::int64_t next_attempt_ns_ = 0;
+  static constexpr std::int64_t kFlapNs = 1'000'000'000;
+  std::int64_t up_since_ns_ = 0;
+  std::string last_loss_;
+  bool quiet_ = false;  ///< flapping: the loss and the next recovery go unlogged
 };
 
 }  // namespace andros::io
