@@ -95,7 +95,7 @@ int run_bridge(const RunOptions& opt) {
   const auto link = make_link(config, sim.get());
 
   io::RunStatus initial;
-  initial.robot = config.mapping.empty() ? config.robot : config.robot + " (" + config.mapping + ")";
+  initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
   initial.rate = config.rate;
   initial.input = config.input == "sdl" ? "controller" : config.input;

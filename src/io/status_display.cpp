@@ -1,7 +1,6 @@
 #include "andros/io/status_display.hpp"
 
 #include <spdlog/sinks/ringbuffer_sink.h>
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
@@ -28,8 +27,8 @@ StatusDisplay::~StatusDisplay() { stop(); }
 
 void StatusDisplay::start() {
   auto& sinks = spdlog::default_logger()->sinks();
-  sinks.clear();
-  sinks.push_back(log_);
+  saved_sinks_ = sinks;
+  sinks.assign({log_});
   std::fputs("\x1b[2J\x1b[?25l", stdout);  // clear, and hide the cursor while redrawing
   thread_ = std::thread([this] { run(); });
 }
@@ -43,10 +42,7 @@ void StatusDisplay::stop() {
   wake_.notify_all();
   thread_.join();
   draw(true);
-  auto& sinks = spdlog::default_logger()->sinks();
-  sinks.clear();
-  sinks.push_back(std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
-  spdlog::set_pattern("%^%l%$: %v");
+  spdlog::default_logger()->sinks() = saved_sinks_;
 }
 
 void StatusDisplay::run() {

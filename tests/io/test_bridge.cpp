@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 
@@ -8,6 +10,7 @@
 #include "andros/io/bridge.hpp"
 #include "andros/io/script_input.hpp"
 #include "andros/io/serial_link.hpp"
+#include "andros/io/shutdown_signals.hpp"
 #include "andros/io/pty_pair.hpp"
 #include "frame_reader.hpp"
 
@@ -109,6 +112,53 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
   bridge.run([&] { return ticks >= 5; }, [&](const io::TickReport&) { ++ticks; });
   EXPECT_EQ(ticks, 5 + 3 + 5);  // frames computed; the shutdown's tries bounded
   EXPECT_EQ(link.counters().sent, 0u);
+}
+
+/// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
+class StallOnce final : public io::FrameSource {
+ public:
+  DataBytes step(const InputState& input, std::int64_t now_ms) override {
+    if (now_ms == 80) {
+      const timespec stall{0, 130'000'000};
+      nanosleep(&stall, nullptr);
+    }
+    return inner_.step(input, now_ms);
+  }
+  DataBytes neutral() const override { return inner_.neutral(); }
+  std::string enable_text() const override { return inner_.enable_text(); }
+  bool enabled() const override { return inner_.enabled(); }
+
+ private:
+  PressToDrive inner_;
+};
+
+TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  StallOnce frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = 25});
+  std::vector<io::TickReport> ticks;
+  bridge.run([&] { return ticks.size() >= 6; }, [&](const io::TickReport& r) {
+    if (!r.shutting_down) ticks.push_back(r);
+  });
+  ASSERT_GE(ticks.size(), 4u);
+  EXPECT_EQ(ticks[2].tick, 2);
+  // 130 ms after tick 2's time (80 ms) ticks 3 and 4 (120, 160) are past:
+  // the next frame is the latest tick due, once, with the others skipped.
+  EXPECT_GE(ticks[3].tick, 5);
+  EXPECT_EQ(ticks[3].skipped, ticks[3].tick - 3);
+  EXPECT_EQ(ticks[3].t_ms, ticks[3].tick * 40);
+  for (std::size_t i = 4; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].skipped, ticks[i].tick - ticks[i - 1].tick - 1);
+}
+
+TEST(ShutdownSignals, ASignalBecomesARequest) {
+  io::ShutdownSignals signals;
+  EXPECT_FALSE(signals.requested());
+  raise(SIGTERM);  // blocked: pending, not fatal
+  EXPECT_TRUE(signals.requested());
+  EXPECT_EQ(signals.signal_number(), SIGTERM);
+  EXPECT_TRUE(signals.requested());  // stays requested
 }
 
 TEST(ScriptInput, ABadLineStopsBeforeTheFirstFrame) {

@@ -10,8 +10,10 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace spdlog::sinks {
+class sink;
 template <typename Mutex>
 class ringbuffer_sink;
 }
@@ -39,6 +41,7 @@ class StatusDisplay {
   Compose compose_;
   int period_ms_;
   std::shared_ptr<spdlog::sinks::ringbuffer_sink<std::mutex>> log_;
+  std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_sinks_;  ///< the log's sinks before start()
   std::mutex mutex_;
   std::condition_variable wake_;
   bool stopping_ = false;
