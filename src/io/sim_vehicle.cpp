@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <sys/eventfd.h>
+#include <termios.h>
 
 #include <cerrno>
 #include <cstring>
@@ -16,6 +17,13 @@ SimVehicle::SimVehicle(std::uint8_t expected_code) : view_(expected_code) {
   auto pty = open_pty_pair();
   master_ = std::move(pty.master);
   slave_ = std::move(pty.slave);
+  // Wake the vehicle once a frame, not once a chunk: in raw mode the line
+  // discipline reports the master readable only when VMIN bytes are there.
+  termios tio{};
+  if (tcgetattr(master_.get(), &tio) == 0) {
+    tio.c_cc[VMIN] = kFrameSize;
+    tcsetattr(master_.get(), TCSANOW, &tio);
+  }
   path_ = std::move(pty.path);
   wake_.reset(eventfd(0, EFD_CLOEXEC));
   if (!wake_) throw RuntimeError(std::string("sim: eventfd: ") + std::strerror(errno));
