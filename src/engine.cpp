@@ -3,17 +3,13 @@
 #include <algorithm>
 
 #include "andros/axis.hpp"
+#include "overload.hpp"
 
 namespace andros {
 namespace {
 
 constexpr std::int64_t kMilli = 1000;
 constexpr std::int64_t kLevelMax = 255 * kMilli;
-
-template <class... F>
-struct Overload : F... {
-  using F::operator()...;
-};
 
 }  // namespace
 
@@ -29,6 +25,9 @@ std::string_view describe(EnableState state) {
 
 Engine::Engine(Mapping mapping, EngineOptions options)
     : mapping_(std::move(mapping)), options_(options), builder_(options.code) {
+  // A mapping built by hand gets the same checks as a loaded one; without a
+  // deadman it is never enabled, so it only ever sends neutral frames.
+  validate(mapping_, false);
   const auto note_button = [this](InputKey key) {
     if (key.is_button() && std::find(buttons_.begin(), buttons_.end(), key) == buttons_.end()) buttons_.push_back(key);
   };
@@ -41,9 +40,10 @@ Engine::Engine(Mapping mapping, EngineOptions options)
     slots += layer < 0 ? mapping_.bindings.size() : mapping_.layers[static_cast<std::size_t>(layer)].bindings.size();
     slot_base_.push_back(slots);
   }
+  all_ = all_bindings(mapping_);
   toggled_.assign(slots, 0);
   selector_.assign(slots, 0);
-  for (const auto ref : all_bindings(mapping_)) {
+  for (const auto ref : all_) {
     const auto& b = binding_at(mapping_, ref);
     for (const auto& u : b.inputs) note_button(u.key);
     if (b.arm) note_button(b.arm->key);
@@ -141,7 +141,7 @@ ControlState Engine::resting_state() const {
   s[signal_id("battery")] = mapping_.battery;
   s[signal_id("code")] = options_.code;
   // Selectors keep their position whatever the layer or enable state.
-  for (const auto ref : all_bindings(mapping_)) {
+  for (const auto ref : all_) {
     if (const auto* sel = std::get_if<SelectorBinding>(&binding_at(mapping_, ref).rule)) {
       for (const auto id : sel->positions[static_cast<std::size_t>(selector_[slot(ref)])]) s[id] = 1;
     }
@@ -216,10 +216,7 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   } else if (input.connection() != connection_) {
     start_session(input, false);  // a new controller session: toggles start cleared
   }
-  if (!input.connected()) {
-    toggled_layer_ = -1;
-    clear_toggles();
-  }
+  if (!input.connected()) toggled_layer_ = -1;  // toggles are cleared below: not enabled
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
   update_layer(input, enabled);
@@ -228,10 +225,10 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
-      apply(input, ref, now_ms - last_ms_, state, ctx.armed);
+      apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
     }
     // A toggle stays on in every layer until pressed again or the deadman is released.
-    for (const auto ref : all_bindings(mapping_)) {
+    for (const auto ref : all_) {
       const auto* b = std::get_if<ButtonBinding>(&binding_at(mapping_, ref).rule);
       if (b != nullptr && toggled_[slot(ref)] != 0) state[b->signal] = 1;
     }

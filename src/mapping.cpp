@@ -1,4 +1,5 @@
 #include "andros/mapping.hpp"
+#include "overload.hpp"
 
 #include <algorithm>
 #include <map>
@@ -6,11 +7,6 @@
 
 namespace andros {
 namespace {
-
-template <class... F>
-struct Overload : F... {
-  using F::operator()...;
-};
 
 std::string quoted(SignalId id) { return "'" + std::string(info(id).name) + "'"; }
 
@@ -35,10 +31,18 @@ void check_motion(SignalId id, const SourcePos& pos) {
   if (info(id).kind != SignalKind::kMotion) throw InputError(pos, not_bindable(id));
 }
 
+void check_range(bool ok, const SourcePos& at, const std::string& what) {
+  if (!ok) throw InputError(at, what + " is out of range");
+}
+
 void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
   const auto& at = b.target_pos;
+  const auto check_threshold = [&](double t) { check_range(t > 0.0 && t <= 1.0, b.pos, "threshold"); };
   std::visit(Overload{
-                 [&](const ButtonBinding& r) { check_motion(r.signal, at); },
+                 [&](const ButtonBinding& r) {
+                   check_motion(r.signal, at);
+                   check_threshold(r.threshold);
+                 },
                  [&](const WeaponBinding& r) {
                    if (info(r.signal).kind != SignalKind::kWeapon) {
                      throw InputError(at, "'arm' is only for weapon signals; " + quoted(r.signal) + " is not one");
@@ -53,20 +57,28 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
                    check_motion(r.signals[0], at);
                    check_motion(r.signals[1], at);
                    if (r.signals[0] == r.signals[1]) throw InputError(at, "an opposing pair names two different signals");
+                   check_threshold(r.threshold);
                  },
                  [&](const AxisBinding& r) {
                    const auto kind = info(r.analog).kind;
                    if (kind != SignalKind::kCentred && kind != SignalKind::kLevel) {
                      throw InputError(at, quoted(r.analog) + " is not an analog byte (drive, pivot, arm_speed, light)");
                    }
+                   check_range(r.shape.deadzone >= 0.0 && r.shape.deadzone < 1.0, b.pos, "deadzone");
+                   check_range(r.shape.expo >= 0.0 && r.shape.expo <= 1.0, b.pos, "expo");
                  },
                  [&](const KnobBinding& r) {
                    if (info(r.analog).kind != SignalKind::kLevel) {
                      throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
                                               " must return to centre, so bind it to an axis");
                    }
+                   check_range(r.rate > 0 && r.rate <= 25500, b.pos, "rate");
+                   check_range(!r.initial || (*r.initial >= 0 && *r.initial <= 255), b.pos, "initial");
                  },
                  [&](const SelectorBinding& r) {
+                   check_range(r.positions.size() >= 2, at, "the number of positions");
+                   check_range(r.initial >= 0 && static_cast<std::size_t>(r.initial) < r.positions.size(), b.pos,
+                               "initial position");
                    for (const auto& position : r.positions) {
                      for (const auto id : position) {
                        if (info(id).kind != SignalKind::kSelector) {

@@ -41,9 +41,7 @@ Binding read_signal_binding(const Reader& r, const YAML::Node& n, Binding b) {
     WeaponBinding w{id, r.button(n["button"]), std::nullopt};
     b.inputs.push_back(use(r, n["button"], w.input));
     if (n["arm"]) {
-      const auto name = r.text(n["arm"], "arm");
-      w.arm = parse_button_name(name) ? parse_button_name(name) : parse_axis_name(name);
-      if (!w.arm) r.fail(n["arm"], "unknown arming input '" + name + "' (a button, or a trigger held past half way)");
+      w.arm = r.button_or_trigger(n["arm"], "arm");
       b.arm = use(r, n["arm"], *w.arm);
     }
     b.rule = w;
@@ -227,13 +225,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
     if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
   }
   if (root["deadman"]) {
-    const auto node = root["deadman"];
-    const auto name = r.text(node, "deadman");
-    const auto key = parse_button_name(name) ? parse_button_name(name) : parse_axis_name(name);
-    if (!key || key->kind == InputKind::kJoyAxis) {
-      r.fail(node, "deadman '" + name + "' is not a button or a trigger axis");
-    }
-    m.deadman = use(r, node, *key);
+    m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
   }
   if (const auto b = root["brake"]) {
     const auto mode = r.text(b, "brake");

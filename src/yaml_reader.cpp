@@ -127,6 +127,13 @@ InputKey Reader::axis(const YAML::Node& node) const {
   return *key;
 }
 
+InputKey Reader::button_or_trigger(const YAML::Node& node, std::string_view what) const {
+  const auto name = text(node, what);
+  if (const auto key = parse_button_name(name)) return *key;
+  if (name == "lefttrigger" || name == "righttrigger") return *parse_axis_name(name);
+  fail(node, std::string(what) + " '" + name + "' is not a button or a trigger (lefttrigger, righttrigger)");
+}
+
 SignalId Reader::signal(const YAML::Node& node) const {
   const auto name = text(node, "a signal");
   if (const auto id = find_signal(name)) return *id;

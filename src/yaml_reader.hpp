@@ -39,6 +39,8 @@ class Reader {
 
   [[nodiscard]] InputKey button(const YAML::Node& node) const;
   [[nodiscard]] InputKey axis(const YAML::Node& node) const;
+  /// A button, or a trigger axis (held past half way): the deadman and `arm`.
+  [[nodiscard]] InputKey button_or_trigger(const YAML::Node& node, std::string_view what) const;
   /// A signal a binding may name: a canonical name or a raw `byteN.B`
   /// address of one. Fixed bits, byte 15 and unknown names are errors.
   [[nodiscard]] SignalId signal(const YAML::Node& node) const;

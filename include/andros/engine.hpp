@@ -39,10 +39,13 @@ struct EngineStatus {
 
 class Engine {
  public:
+  /// Runs validate(mapping, false) and throws its InputError: a mapping built
+  /// by hand gets the same checks as a loaded one.
   Engine(Mapping mapping, EngineOptions options);
 
   /// One tick at time now_ms (ms since start, non-decreasing): the data bytes
-  /// of the frame to send. Always a frame that passes validation.
+  /// of the frame to send. Always a frame that passes validation. The first
+  /// call is start-up: deadman presses counted before it are not fresh.
   DataBytes step(const InputState& input, std::int64_t now_ms);
 
   /// The neutral frame for the current analog/selector state (shutdown, link
@@ -70,6 +73,7 @@ class Engine {
   EngineOptions options_;
   FrameBuilder builder_;
   EngineStatus status_;
+  std::vector<BindingRef> all_;                     ///< every binding; its slot is its index here
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<InputKey> buttons_;                   ///< every button the mapping reads

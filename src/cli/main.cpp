@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
 
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
+  andros::cli::add_replay_command(app, exit_code);
+  andros::cli::add_check_command(app, exit_code);
   andros::cli::add_run_command(app, exit_code);
   andros::cli::add_monitor_command(app, exit_code);
 

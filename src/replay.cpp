@@ -1,0 +1,70 @@
+#include "andros/replay.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+#include "andros/json.hpp"
+
+namespace andros {
+
+std::int64_t parse_rate(std::string_view text, int baud, const SourcePos& pos) {
+  const auto bad = [&](const std::string& why) { return InputError(pos, "rate '" + std::string(text) + "' " + why); };
+  const auto dot = text.find('.');
+  const auto whole = text.substr(0, dot);
+  const auto frac = dot == std::string_view::npos ? std::string_view{} : text.substr(dot + 1);
+  std::int64_t hz = 0;
+  std::int64_t milli = 0;
+  const auto [p, ec] = std::from_chars(whole.data(), whole.data() + whole.size(), hz);
+  const bool digits_ok = !whole.empty() && ec == std::errc() && p == whole.data() + whole.size() &&
+                         (dot == std::string_view::npos || (!frac.empty() && frac.size() <= 3)) &&
+                         frac.find_first_not_of("0123456789") == std::string_view::npos && hz < 1'000'000;
+  if (!digits_ok) throw bad("is not a number of Hz (such as 25 or 12.5, at most 3 decimals)");
+  for (std::size_t i = 0; i < 3; ++i) milli = milli * 10 + (i < frac.size() ? frac[i] - '0' : 0);
+  const std::int64_t mhz = hz * 1000 + milli;
+  if (mhz < 1000) throw bad("is below 1 Hz");
+  // rate x 360 bits must fit in baud bits per second.
+  const std::int64_t max_mhz = static_cast<std::int64_t>(baud) * 1000 / kBitsPerFrame;
+  if (mhz > max_mhz) {
+    char most[32];
+    std::snprintf(most, sizeof most, "%lld.%03lld", static_cast<long long>(max_mhz / 1000),
+                  static_cast<long long>(max_mhz % 1000));
+    throw bad("does not fit the link: " + std::to_string(kBitsPerFrame) + "-bit frames at " + std::to_string(baud) +
+              " baud allow at most " + most + " Hz");
+  }
+  return mhz;
+}
+
+ReplayFormat parse_replay_format(std::string_view text, const SourcePos& pos) {
+  if (text == "hex") return ReplayFormat::kHex;
+  if (text == "raw") return ReplayFormat::kRaw;
+  if (text == "jsonl") return ReplayFormat::kJsonl;
+  throw InputError(pos, "format '" + std::string(text) + "' is not one of hex, raw, jsonl");
+}
+
+std::int64_t replay(ScriptPlayer& player, Engine& engine, const FrameClock& clock, const FrameSink& sink) {
+  InputState input;
+  for (std::int64_t k = 0;; ++k) {
+    const auto t = clock.time_of(k);
+    player.advance_to(t, input);
+    sink(t, engine.step(input, t));
+    if (player.finished_at(t)) return k + 1;
+  }
+}
+
+void write_frame(std::ostream& out, ReplayFormat format, std::int64_t t_ms, const DataBytes& data) {
+  const auto frame = encode(data);
+  switch (format) {
+    case ReplayFormat::kHex: out << t_ms << ' ' << to_hex(frame) << '\n'; break;
+    case ReplayFormat::kRaw: out.write(reinterpret_cast<const char*>(frame.data()), frame.size()); break;
+    case ReplayFormat::kJsonl: {
+      nlohmann::ordered_json line;
+      line["t"] = t_ms;
+      line["frame"] = to_hex(frame);
+      line["signals"] = signals_to_json(read_signals(data));
+      out << line.dump() << '\n';
+      break;
+    }
+  }
+}
+
+}  // namespace andros

@@ -1,0 +1,23 @@
+# `check FILE...`: ok per good file on stdout, errors on stderr, exit 2 if any is bad.
+source "$(dirname "$0")/lib.sh"
+
+shipped="$DATA/../../mappings"
+expect_exit 0 "$BIN" check "$shipped"/*.yaml
+[[ $(grep -c ': ok' "$TMP/out") -eq 8 ]] || fail "shipped: $(cat "$TMP/out")"
+grep -q "hd1.yaml: ok$" "$TMP/out" || fail "hd1 line: $(cat "$TMP/out")"
+grep -q "common.yaml: ok (a base mapping: no robot)$" "$TMP/out" || fail "common line"
+[[ -s "$TMP/err" ]] && fail "stderr on success: $(cat "$TMP/err")"
+
+printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: tool_on\n    button: a\n  - signal: zoom_up\n    button: a\n' >"$TMP/twice.yaml"
+printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: weapon_3\n    button: a\n' >"$TMP/unarmed.yaml"
+expect_exit 2 "$BIN" check "$shipped/hd1.yaml" "$TMP/twice.yaml" "$TMP/unarmed.yaml"
+grep -q "hd1.yaml: ok$" "$TMP/out" || fail "good file among bad ones: $(cat "$TMP/out")"
+[[ $(wc -l <"$TMP/err") -eq 2 ]] || fail "two errors expected: $(cat "$TMP/err")"
+expect_stderr_matches "twice.yaml:7:13: error: 'a' is bound twice in this layer \(first at line 5\)"
+expect_stderr_matches "unarmed.yaml:4:5: error: weapon binding for 'weapon_3' needs 'arm'"
+
+expect_exit 2 "$BIN" check "$TMP/missing.yaml"
+expect_stderr_matches "missing.yaml: error: cannot open mapping file"
+expect_exit 2 "$BIN" check
+expect_exit 0 "$BIN" check --help
+finish

@@ -1,0 +1,61 @@
+// Table-driven replay: every tests/data/replay/NAME.events against its
+// hand-derived NAME.expected (see replay_data.hpp for the format).
+#include <gtest/gtest.h>
+
+#include "andros/mapping_loader.hpp"
+#include "andros/replay.hpp"
+#include "replay_data.hpp"
+
+namespace andros {
+namespace {
+
+struct Case {
+  const char* name;
+  const char* mapping;  // under tests/data/mappings/
+  bool weapons = false;
+  std::int64_t rate_mhz = kDefaultRateMillihertz;
+};
+
+const std::string kData = ANDROS_TEST_DATA_DIR;
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class ReplayData : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ReplayData, FramesMatchTheHandDerivedOnes) {
+  const auto& c = GetParam();
+  const std::string base = kData + "/replay/" + c.name;
+  testing::expect_replay(load_mapping(kData + "/mappings/" + c.mapping), c.weapons, c.rate_mhz, base + ".events",
+                         base + ".expected");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Catalogue, ReplayData,
+    ::testing::Values(
+        Case{"momentary", "core.yaml"},
+        Case{"toggle", "core.yaml"},
+        Case{"opposing_axis_pair", "core.yaml"},
+        Case{"drive_deadzone", "core.yaml"},
+        Case{"pivot_deadzone_expo", "core.yaml"},
+        Case{"trigger_analog", "core.yaml"},
+        Case{"knob_ramp", "core.yaml"},
+        Case{"deadman_release", "core.yaml"},
+        Case{"fresh_press_after_connect", "core.yaml"},
+        Case{"stuck_deadman_at_connect", "core.yaml"},
+        Case{"controller_loss_mid_drive", "core.yaml"},
+        Case{"reconnect", "core.yaml"},
+        Case{"toggle_cleared_by_loss", "core.yaml"},
+        Case{"short_tap_between_frames", "core.yaml"},
+        Case{"opposing_buttons", "core.yaml"},
+        Case{"presses_while_disabled_ignored", "core.yaml"},
+        Case{"weapons_off", "core.yaml"},
+        Case{"weapons_on_without_arming", "core.yaml", true},
+        Case{"weapons_on_armed", "core.yaml", true},
+        Case{"selector_cycling", "layers.yaml"},
+        Case{"layers", "layers.yaml"},
+        Case{"joystick", "joystick.yaml"},
+        Case{"rate_24hz", "core.yaml", false, 24'000}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace andros
