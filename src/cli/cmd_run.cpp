@@ -73,6 +73,9 @@ RunConfig resolve_config(const RunOptions& opt) {
   if (given("--rate")) config.rate = parse_rate(opt.rate, SourcePos{"--rate"});
   if (given("--weapons")) config.weapons = true;
   if (given("--input")) config.input = opt.input;
+  if (config.port.empty()) {
+    throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
+  }
   check_link_budget(config.rate, config.baud);
   return config;
 }

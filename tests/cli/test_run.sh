@@ -58,6 +58,8 @@ expect_stderr_matches "error: rate 30 Hz does not fit on the link: 30 frames x 3
 printf 'rate=50\nbaudrate=9600\n' >"$TMP/fast.conf"
 expect_exit 2 "$BIN" run --config "$TMP/fast.conf" --input "$LIVE/drive.events"
 expect_stderr_matches "rate 50 Hz does not fit"
+expect_exit 2 "$BIN" run --port "" --input "$LIVE/drive.events"
+expect_stderr_matches "^--port: error: the port is empty"
 for flag in "--baud 9601" "--code XYZ" "--robot R2D2" "--rate 0"; do
   expect_exit 2 "$BIN" run $flag --input "$LIVE/drive.events"
   expect_one_line_stderr
