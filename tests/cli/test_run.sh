@@ -112,6 +112,16 @@ expect_stderr_matches "tcp:HOST:PORT"
 expect_exit 0 "$BIN" run --input "$LIVE/drive.events"
 expect_stderr_matches "sim vehicle decoded 24 frames: 24 valid, 0 bad checksum, 0 invalid"
 
+# The bundled demo (scripts/run.sh with no arguments) enables, drives and ends at rest:
+# checked on replay's virtual clock rather than in 12 s of real time.
+"$BIN" replay "$HERE/../../demos/drive.events" --robot hd1 --format jsonl >"$TMP/demo.jsonl" 2>"$TMP/err" ||
+  fail "demo script: $(cat "$TMP/err")"
+python3 - "$TMP/demo.jsonl" <<'PY' || fail "the demo does not drive and stop"
+import json, sys
+fs = [json.loads(l)["signals"] for l in open(sys.argv[1])]
+sys.exit(0 if any(f["safety"] and f["drive"] > 128 for f in fs) and fs[-1]["safety"] == 0 and fs[-1]["drive"] == 128 else 1)
+PY
+
 # The operator's pieces: help.
 expect_exit 0 "$BIN" run --help
 grep -q -- "--port" "$TMP/out" || fail "run --help"
