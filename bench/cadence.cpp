@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
   Idle input;
   FixedFrames frames;
   io::SerialLink link(bridge_pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = kRate});
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = kRate * 1000});
   io::UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
   io::configure_raw_8n1(plain_fd.get(), 9600);
   const Frame frame = encode(neutral_frame());

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "andros/parse.hpp"
+#include "andros/replay.hpp"
 #include "andros/robots.hpp"
 
 namespace andros {
@@ -42,10 +43,6 @@ int parse_baud(std::string_view text, const SourcePos& pos) {
                             " is not one of 9600, 19200, 38400, 57600, 115200");
 }
 
-int parse_rate(std::string_view text, const SourcePos& pos) {
-  return static_cast<int>(parse_integer(text, 1, kMaxRate, "rate (Hz)", pos));
-}
-
 bool parse_weapons(std::string_view text, const SourcePos& pos) {
   const auto v = lower(text);
   if (v == "enabled" || v == "true" || v == "yes" || v == "on" || v == "1") return true;
@@ -53,14 +50,8 @@ bool parse_weapons(std::string_view text, const SourcePos& pos) {
   throw InputError(pos, "weapons '" + std::string(text) + "' must be enabled or disabled");
 }
 
-void check_link_budget(int rate, int baud) {
-  if (static_cast<long long>(rate) * kBitsPerFrame > baud) {
-    throw InputError("rate " + std::to_string(rate) + " Hz does not fit on the link: " +
-                     std::to_string(rate) + " frames x 360 bits = " +
-                     std::to_string(rate * kBitsPerFrame) + " bit/s, more than " +
-                     std::to_string(baud) + " baud (at most " +
-                     std::to_string(baud / kBitsPerFrame) + " Hz)");
-  }
+std::int64_t rate_millihertz(const RunConfig& config) {
+  return parse_rate(config.rate, config.baud, config.rate_pos);
 }
 
 void parse_config(std::istream& in, const std::string& file_name, RunConfig& config) {
@@ -97,7 +88,10 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
     } else if (key == "code") {
       config.code = parse_code(value, pos);
     } else if (key == "rate") {
-      config.rate = parse_rate(value, pos);
+      // The text is checked now, at its line; against the baud once all is read.
+      parse_rate(value, kBauds[std::size(kBauds) - 1], pos);
+      config.rate = std::string(value);
+      config.rate_pos = pos;
     } else if (key == "mapping") {
       config.mapping = relative_to(file_name, value);
     } else if (key == "weapons") {

@@ -14,11 +14,7 @@
 namespace andros {
 
 inline constexpr int kDefaultBaud = 9600;
-inline constexpr int kDefaultRate = 25;
-inline constexpr int kMaxRate = 100;
 inline constexpr std::uint8_t kDefaultCode = 0x01;
-/// One frame on the wire: 36 bytes of 10 bits (8N1).
-inline constexpr int kBitsPerFrame = 360;
 inline constexpr std::string_view kSimPort = "sim";
 
 /// The bauds the legacy packet generator offered; nothing else is accepted.
@@ -30,7 +26,10 @@ struct RunConfig {
   std::string port{kSimPort}; ///< a device path, "sim" or "tcp:HOST:PORT"
   int baud = kDefaultBaud;
   std::uint8_t code = kDefaultCode;
-  int rate = kDefaultRate;    ///< frames per second
+  /// The rate as written ("25", "12.5") and where, so that a rate the final
+  /// baud cannot carry is reported at the line or flag that set it.
+  std::string rate = "25";
+  SourcePos rate_pos{"--rate"};
   bool weapons = false;
   std::string input = "sdl";  ///< "sdl" or an event script's path
 };
@@ -51,10 +50,11 @@ std::vector<std::string> default_config_paths();
 
 /// Value checks shared by the file and the flags; pos says where the text came from.
 int parse_baud(std::string_view text, const SourcePos& pos);
-int parse_rate(std::string_view text, const SourcePos& pos);
 bool parse_weapons(std::string_view text, const SourcePos& pos);
 
-/// Throws InputError when rate frames of 360 bits cannot fit in baud bit/s.
-void check_link_budget(int rate, int baud);
+/// The rate in millihertz, once file and flags are merged: replay's
+/// parse_rate, so both commands read the same text, checked against the
+/// final baud (rate x 360 bits must fit). Throws InputError at rate_pos.
+std::int64_t rate_millihertz(const RunConfig& config);
 
 }  // namespace andros

@@ -70,13 +70,15 @@ RunConfig resolve_config(const RunOptions& opt) {
   if (given("--port")) config.port = opt.port;
   if (given("--baud")) config.baud = parse_baud(opt.baud, SourcePos{"--baud"});
   if (given("--code")) config.code = parse_code(opt.code, SourcePos{"--code"});
-  if (given("--rate")) config.rate = parse_rate(opt.rate, SourcePos{"--rate"});
+  if (given("--rate")) {
+    config.rate = opt.rate;
+    config.rate_pos = SourcePos{"--rate"};
+  }
   if (given("--weapons")) config.weapons = true;
   if (given("--input")) config.input = opt.input;
   if (config.port.empty()) {
     throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
   }
-  check_link_budget(config.rate, config.baud);
   return config;
 }
 
@@ -88,6 +90,7 @@ std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicl
 
 int run_bridge(const RunOptions& opt) {
   const RunConfig config = resolve_config(opt);
+  const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
 
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
@@ -100,7 +103,7 @@ int run_bridge(const RunOptions& opt) {
   io::RunStatus initial;
   initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
-  initial.rate = config.rate;
+  initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == "sdl" ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   RunStatusBoard board(initial, *link, *frames, sim.get());
@@ -109,9 +112,9 @@ int run_bridge(const RunOptions& opt) {
 
   if (sim) sim->start();
   if (display) display->start();
-  spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, config.rate, config.code,
+  spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
-  io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate = config.rate});
+  io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
   bridge.run([&signals] { return signals.requested(); },
              [&board](const io::TickReport& r) { board.observe(r); });
   display.reset();
@@ -149,7 +152,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--port", opt->port, "PATH (serial device), sim (default) or tcp:HOST:PORT");
   cmd->add_option("--baud", opt->baud, "9600 (default), 19200, 38400, 57600 or 115200");
   cmd->add_option("--code", opt->code, "dip-switch code for byte 11, in hex (default 01)");
-  cmd->add_option("--rate", opt->rate, "frames per second (default 25; rate x 360 must fit the baud)");
+  cmd->add_option("--rate", opt->rate, "frames per second, e.g. 25 or 12.5 (default 25; rate x 360 bits must fit the baud)");
   cmd->add_flag("--weapons", opt->weapons, "enable weapon signals for this run (still need deadman and arming)");
   cmd->add_option("--input", opt->input, "sdl (the controller, default) or an event script FILE");
   add_sdl_input_options(*cmd);

@@ -104,9 +104,9 @@ std::string render_run_view(const RunStatus& s, bool ansi) {
   const std::string_view bold = ansi ? kBold : "";
   const std::string_view reset = ansi ? kReset : "";
   std::string out;
-  out += fmt("%sandros-bridge run%s  robot %s  code %02X  %d Hz  t %.1f s  input %s\n",
+  out += fmt("%sandros-bridge run%s  robot %s  code %02X  %g Hz  t %.1f s  input %s\n",
              std::string(bold).c_str(), std::string(reset).c_str(), s.robot.c_str(), unsigned{s.code},
-             s.rate, static_cast<double>(s.t_ms) / 1000.0, s.input.c_str());
+             s.rate_hz, static_cast<double>(s.t_ms) / 1000.0, s.input.c_str());
   out += fmt("controller  %s\n", s.connected ? s.controller.c_str() : "no controller");
   std::string state = s.shutting_down ? "SHUTTING DOWN: sending neutral frames"
                       : s.enabled     ? "ENABLED"

@@ -44,7 +44,7 @@ baudrate=9601|baud 9601 is not one of
 robot=R2D2|unknown robot 'R2D2'
 code=GG|code 'GG' is not a byte in hex
 colour=red|unknown key 'colour'
-rate=fast|rate \(Hz\) 'fast' is not a whole number
+rate=fast|rate 'fast' is not a number of Hz
 weapons=maybe|weapons 'maybe' must be enabled or disabled
 no equals sign|expected key=value
 CASES
@@ -54,10 +54,12 @@ expect_stderr_matches "missing.conf: error: cannot read the config file"
 # A rate whose frames cannot fit on the link is refused, from a flag or the file.
 expect_exit 2 "$BIN" run --rate 30 --input "$LIVE/drive.events"
 expect_one_line_stderr
-expect_stderr_matches "error: rate 30 Hz does not fit on the link: 30 frames x 360 bits = 10800 bit/s, more than 9600 baud"
-printf 'rate=50\nbaudrate=9600\n' >"$TMP/fast.conf"
+expect_stderr_matches "^--rate: error: rate '30' does not fit the link: 360-bit frames at 9600 baud allow at most 26.666 Hz"
+printf 'rate=60\nbaudrate=19200\n' >"$TMP/fast.conf"
 expect_exit 2 "$BIN" run --config "$TMP/fast.conf" --input "$LIVE/drive.events"
-expect_stderr_matches "rate 50 Hz does not fit"
+expect_stderr_matches "fast.conf:1:6: error: rate '60' does not fit the link: 360-bit frames at 19200 baud"
+expect_exit 2 "$BIN" run --config "$TMP/fast.conf" --baud 9600 --input "$LIVE/drive.events"
+expect_stderr_matches "fast.conf:1:6: error: rate '60' does not fit the link: 360-bit frames at 9600 baud"
 expect_exit 2 "$BIN" run --port "" --input "$LIVE/drive.events"
 expect_stderr_matches "^--port: error: the port is empty"
 for flag in "--baud 9601" "--code XYZ" "--robot R2D2" "--rate 0"; do

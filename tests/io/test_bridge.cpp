@@ -61,7 +61,7 @@ TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
   io::ScriptInput input(script);
   PressToDrive frames;
   io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = 25});
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
   std::vector<std::int64_t> times;
   int shutdown_ticks = 0;
   bridge.run([] { return false; },
@@ -90,7 +90,7 @@ TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
   Idle input;
   PressToDrive frames;
   io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = 25});
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
   int ticks = 0;
   int neutral = 0;
   bridge.run([&] { return ticks >= 4; },
@@ -107,7 +107,7 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
   Idle input;
   PressToDrive frames;
   io::SerialLink link("/nonexistent/andros-port", 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = 50});
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 50'000});
   int ticks = 0;
   bridge.run([&] { return ticks >= 5; }, [&](const io::TickReport&) { ++ticks; });
   EXPECT_EQ(ticks, 5 + 3 + 5);  // frames computed; the shutdown's tries bounded
@@ -137,7 +137,7 @@ TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
   Idle input;
   StallOnce frames;
   io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate = 25});
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
   std::vector<io::TickReport> ticks;
   bridge.run([&] { return ticks.size() >= 6; }, [&](const io::TickReport& r) {
     if (!r.shutting_down) ticks.push_back(r);

@@ -43,7 +43,7 @@ struct TickReport {
 };
 
 struct BridgeOptions {
-  int rate = 25;
+  std::int64_t rate_millihertz = kDefaultRateMillihertz;
   int shutdown_frames = 3;     ///< neutral frames sent at the end
   int shutdown_extra_ticks = 5;///< ticks allowed beyond those for frames the link refused
   int drain_timeout_ms = 300;
@@ -55,7 +55,7 @@ class Bridge {
   using Observer = std::function<void(const TickReport&)>;
 
   Bridge(InputSource& input, FrameSource& frames, Link& link, BridgeOptions options)
-      : input_(input), frames_(frames), link_(link), options_(options), schedule_(options.rate) {}
+      : input_(input), frames_(frames), link_(link), options_(options), schedule_(options.rate_millihertz) {}
 
   /// Runs until stop() says so or the input finishes, then shuts down. Never
   /// throws for a link problem; an InputError from a script still escapes

@@ -31,7 +31,7 @@ std::string render_frame_panel(const DataBytes& data, bool ansi);
 struct RunStatus {
   std::string robot;
   std::uint8_t code = 0;
-  int rate = 0;
+  double rate_hz = 0;            ///< the configured rate
   std::int64_t t_ms = 0;
   std::string input;             ///< "sdl" or the script's path
   std::string controller;        ///< its name; empty when none is connected
