@@ -124,6 +124,34 @@ fs = [json.loads(l)["signals"] for l in open(sys.argv[1])]
 sys.exit(0 if any(f["safety"] and f["drive"] > 128 for f in fs) and fs[-1]["safety"] == 0 and fs[-1]["drive"] == 128 else 1)
 PY
 
+# On a terminal: the live status view, redrawn, with the log kept under it.
+python3 - "$BIN" "$LIVE/drive.events" >"$TMP/tty.txt" <<'PY' || fail "status view: $(tail -c 600 "$TMP/tty.txt")"
+import os, pty, re, select, subprocess, sys
+m, s = pty.openpty()
+env = dict(os.environ, TERM="xterm")
+p = subprocess.Popen([sys.argv[1], "run", "--input", sys.argv[2]], stdout=s, stderr=subprocess.DEVNULL, env=env)
+os.close(s)
+out = b""
+while True:
+    r, _, _ = select.select([m], [], [], 10)
+    if not r: break
+    try: data = os.read(m, 65536)
+    except OSError: break
+    if not data: break
+    out += data
+code = p.wait(timeout=10)
+text = out.decode("utf-8", "replace")
+screens = text.split("\x1b[H")
+last = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", screens[-1])
+print(last)
+want = ["andros-bridge run", "controller  Test pad", "link        sim vehicle on", "vehicle     ",
+        "as the vehicle decodes it:", "  drive    ", "  weapons  ", "drive      [", "light      [", "log:", "enabled"]
+missing = [w for w in want if w not in last]
+print("exit", code, "screens", len(screens), "missing", missing)
+# Several redraws, everything shown, and the cursor given back at the end.
+sys.exit(0 if code == 0 and len(screens) >= 3 and not missing and "\x1b[?25h" in text else 1)
+PY
+
 # The operator's pieces: help.
 expect_exit 0 "$BIN" run --help
 grep -q -- "--port" "$TMP/out" || fail "run --help"
