@@ -1,15 +1,12 @@
 #!/usr/bin/env bash
-# The README's run command: installs what is missing, builds, and runs the bridge.
-# Arguments go to `andros-bridge run`.
+# The README's run command: installs what is missing, builds, and runs the
+# bridge. Arguments go to `andros-bridge run`. With none, it plays the bundled
+# demonstration drive (demos/drive.events, about 12 s) into the built-in
+# simulated vehicle, so that a fresh clone shows the whole path working with
+# no controller and no hardware. For a live controller: scripts/run.sh --input sdl
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 bin=${BUILD_DIR:-build}/src/andros-bridge
-if "$bin" run --help >/dev/null 2>&1; then
-  exec "$bin" run "$@"
-fi
-# Until the live bridge lands: show the commands and decode the ICD's worked example.
-"$bin" --help
-echo
-echo "Decoding the ICD's worked example frame:"
-"$bin" frame encode --raw 00001C2000907F7E3E0000FFFF20CC02 | "$bin" frame decode -
+(($# > 0)) || set -- --input demos/drive.events
+exec "$bin" run "$@"

@@ -10,6 +10,8 @@ namespace andros::cli {
 void add_frame_command(CLI::App& app, int& exit_code);
 void add_replay_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
+void add_run_command(CLI::App& app, int& exit_code);
+void add_monitor_command(CLI::App& app, int& exit_code);
 void add_controllers_command(CLI::App& app, int& exit_code);
 void add_record_command(CLI::App& app, int& exit_code);
 

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
              "Run 'andros-bridge COMMAND --help' for a command's options.");
-  // Logs go to stderr: stdout carries data (frames, `record -o -` scripts).
+  // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
   spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
   spdlog::set_pattern("%^%l%$: %v");
 
@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   andros::cli::add_frame_command(app, exit_code);
   andros::cli::add_replay_command(app, exit_code);
   andros::cli::add_check_command(app, exit_code);
+  andros::cli::add_run_command(app, exit_code);
+  andros::cli::add_monitor_command(app, exit_code);
   andros::cli::add_controllers_command(app, exit_code);
   andros::cli::add_record_command(app, exit_code);
 

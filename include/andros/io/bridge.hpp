@@ -1,0 +1,79 @@
+#pragma once
+/// The run loop: on every tick of an absolute-time clock, pump the input,
+/// compute the frame, send it; on a stop request or the end of the input,
+/// send neutral frames at the normal period, drain and close the link.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "andros/frame.hpp"
+#include "andros/input.hpp"
+#include "andros/input_source.hpp"
+#include "andros/io/link.hpp"
+#include "andros/tick_schedule.hpp"
+
+namespace andros::io {
+
+/// What computes the frames: the mapping engine in `run`, a fixed frame in
+/// the benchmarks and tests.
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  /// The frame for the tick at now_ms (ms since start) from this input.
+  virtual DataBytes step(const InputState& input, std::int64_t now_ms) = 0;
+  /// The frame sent at shutdown.
+  [[nodiscard]] virtual DataBytes neutral() const = 0;
+  /// "enabled", or why not ("deadman released"), for the operator.
+  [[nodiscard]] virtual std::string enable_text() const = 0;
+  [[nodiscard]] virtual bool enabled() const = 0;
+  /// The mapping layer in use ("" for the base layer).
+  [[nodiscard]] virtual std::string layer() const { return {}; }
+};
+
+/// What one tick did, for the status view and the log.
+struct TickReport {
+  std::int64_t tick = 0;     ///< index on the clock
+  std::int64_t t_ms = 0;     ///< the tick's time, ms since start
+  std::int64_t skipped = 0;  ///< ticks skipped before this one after a stall
+  const DataBytes* data = nullptr;
+  SendResult result = SendResult::kDown;
+  bool shutting_down = false;
+  const InputState* input = nullptr;
+};
+
+struct BridgeOptions {
+  std::int64_t rate_millihertz = kDefaultRateMillihertz;
+  int shutdown_frames = 3;     ///< neutral frames sent at the end
+  int shutdown_extra_ticks = 5;///< ticks allowed beyond those for frames the link refused
+  int drain_timeout_ms = 300;
+};
+
+class Bridge {
+ public:
+  using StopCheck = std::function<bool()>;
+  using Observer = std::function<void(const TickReport&)>;
+
+  Bridge(InputSource& input, FrameSource& frames, Link& link, BridgeOptions options)
+      : input_(input), frames_(frames), link_(link), options_(options), schedule_(options.rate_millihertz) {}
+
+  /// Runs until stop() says so or the input finishes, then shuts down. Never
+  /// throws for a link problem; an InputError from a script still escapes
+  /// (after the neutral frames).
+  void run(const StopCheck& stop, const Observer& observe);
+
+ private:
+  void shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe);
+
+  InputSource& input_;
+  FrameSource& frames_;
+  Link& link_;
+  BridgeOptions options_;
+  TickSchedule schedule_;
+  InputState state_;
+};
+
+/// Sleeps until the monotonic clock reads abs_ns (clock_nanosleep, TIMER_ABSTIME).
+void sleep_until_ns(std::int64_t abs_ns);
+
+}  // namespace andros::io

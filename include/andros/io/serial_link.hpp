@@ -1,0 +1,30 @@
+#pragma once
+/// A serial device (USB adapter, UART, or a pseudo-terminal): raw 8N1, no flow
+/// control, opened exclusively. On a write error the device is closed and the
+/// same path (a udev symlink survives a replug) is reopened every 200 ms.
+
+#include "andros/io/reconnecting_link.hpp"
+
+namespace andros::io {
+
+inline constexpr int kSerialRetryMs = 200;
+
+class SerialLink final : public ReconnectingLink {
+ public:
+  SerialLink(std::string path, int baud);
+
+ protected:
+  OpenResult open_step(std::string& why) override;
+  int queued_bytes() const override;
+  void finish_drain() override;
+
+ private:
+  std::string path_;
+  int baud_;
+};
+
+/// Puts an open tty into raw 8N1 at baud with no flow control. Returns false
+/// with errno set on failure. Shared by the link and `monitor`.
+bool configure_raw_8n1(int fd, int baud);
+
+}  // namespace andros::io

@@ -1,0 +1,176 @@
+// `andros-bridge monitor [PORT|FILE]`: the vehicle's side of the link.
+#include <fcntl.h>
+#include <poll.h>
+#include <spdlog/spdlog.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "andros/config.hpp"
+#include "andros/error.hpp"
+#include "andros/io/serial_link.hpp"
+#include "andros/io/shutdown_signals.hpp"
+#include "andros/io/status_display.hpp"
+#include "andros/io/status_view.hpp"
+#include "andros/io/unique_fd.hpp"
+#include "andros/io/vehicle_view.hpp"
+#include "andros/parse.hpp"
+#include "commands.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct MonitorOptions {
+  std::string source = "-";
+  std::string baud;
+  std::string code;
+};
+
+constexpr int kRedrawsPerSecond = 4;
+constexpr std::int64_t kQuietNs = 1'000'000'000;  ///< no frame for this long: the stream stopped
+
+/// Off a terminal: one line when frames start or stop arriving or errors grow.
+class MonitorLog {
+ public:
+  void update(const io::VehicleSnapshot& v, std::int64_t now_ns, std::int64_t last_frame_ns) {
+    const bool flowing = v.stats.frames > 0 && now_ns - last_frame_ns < kQuietNs;
+    const auto errors = v.stats.bad_checksum + v.stats.invalid;
+    if (flowing != flowing_) {
+      if (flowing) spdlog::info("frames arriving");
+      else spdlog::warn("no frame for 1 s ({} so far)", v.stats.frames);
+      flowing_ = flowing;
+    }
+    if (errors != errors_) {
+      spdlog::warn("errors: {} bad checksum, {} invalid{}", v.stats.bad_checksum, v.stats.invalid,
+                   v.last_errors.empty() ? "" : " (last: " + v.last_errors.front() + ")");
+      errors_ = errors;
+    }
+  }
+
+ private:
+  bool flowing_ = false;
+  std::uint64_t errors_ = 0;
+};
+
+int monitor_file(const std::string& path, io::VehicleView& view) {
+  io::UniqueFd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (!fd) throw InputError(SourcePos{path}, std::string("cannot open: ") + std::strerror(errno));
+  std::uint8_t buf[64 * 1024];
+  long n = 0;
+  while ((n = ::read(fd.get(), buf, sizeof buf)) > 0) {
+    view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), 0);
+  }
+  if (n < 0) throw RuntimeError(path + ": read error: " + std::strerror(errno));
+  view.finish();
+  std::fputs(io::render_monitor_view(path, view.snapshot(0), false, false).c_str(), stdout);
+  return kExitOk;
+}
+
+/// Decodes fd live until a signal or its end. is_port: fd is a serial port,
+/// whose end means it was unplugged (exit 1); a pipe's end is just the end.
+int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleView& view) {
+  io::ShutdownSignals signals;  // before the display's thread starts
+  std::mutex mutex;
+  const bool interactive = io::is_interactive(STDOUT_FILENO);
+  std::optional<io::StatusDisplay> display;
+  if (interactive) {
+    display.emplace(
+        [&] {
+          const auto now = io::monotonic_ns();
+          const std::lock_guard lock(mutex);
+          return io::render_monitor_view(name, view.snapshot(now), true, true);
+        },
+        kRedrawsPerSecond);
+    display->start();
+  }
+  MonitorLog log;
+  std::int64_t last_frame_ns = 0;
+  std::uint8_t buf[4096];
+  bool ended = false;
+  bool failed = false;
+  while (!signals.requested() && !ended) {
+    pollfd p{fd, POLLIN, 0};
+    const int ready = poll(&p, 1, 1000 / kRedrawsPerSecond);
+    const auto now = io::monotonic_ns();
+    if (ready > 0) {
+      const long n = ::read(fd, buf, sizeof buf);
+      if (n > 0) {
+        const std::lock_guard lock(mutex);
+        const auto before = view.stats().frames;
+        view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), now);
+        if (view.stats().frames != before) last_frame_ns = now;
+      } else if (n == 0 || (errno != EAGAIN && errno != EINTR)) {
+        // The end of a pipe or capture is the end; a serial port that ends was unplugged.
+        failed = n < 0 || is_port;
+        if (failed) spdlog::error("{}: {}", name, n < 0 ? std::strerror(errno) : "hung up");
+        ended = true;
+      }
+    }
+    if (!interactive) {
+      const std::lock_guard lock(mutex);
+      log.update(view.snapshot(now), now, last_frame_ns);
+    }
+  }
+  {
+    // Stopped by a signal: what has already arrived still counts.
+    const std::lock_guard lock(mutex);
+    pollfd p{fd, POLLIN, 0};
+    long n = 0;
+    while (!ended && poll(&p, 1, 0) == 1 && (n = ::read(fd, buf, sizeof buf)) > 0) {
+      view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), io::monotonic_ns());
+    }
+    view.finish();
+  }
+  if (display) {
+    display->stop();  // draws the last screen, taking the lock itself
+  } else {
+    std::fputs(io::render_monitor_view(name, view.snapshot(io::monotonic_ns()), true, false).c_str(), stdout);
+  }
+  return failed ? kExitRuntime : kExitOk;
+}
+
+int run_monitor(const MonitorOptions& opt) {
+  const int baud = opt.baud.empty() ? kDefaultBaud : parse_baud(opt.baud, SourcePos{"--baud"});
+  std::optional<std::uint8_t> code;
+  if (!opt.code.empty()) code = parse_code(opt.code, SourcePos{"--code"});
+  io::VehicleView view(code);
+
+  if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, false, view);
+  struct stat st{};
+  if (::stat(opt.source.c_str(), &st) != 0) {
+    throw InputError(SourcePos{opt.source}, std::string("cannot open: ") + std::strerror(errno));
+  }
+  if (S_ISREG(st.st_mode)) return monitor_file(opt.source, view);
+  io::UniqueFd fd(::open(opt.source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+  if (!fd) throw RuntimeError(opt.source + ": cannot open: " + std::strerror(errno));
+  const bool is_port = isatty(fd.get()) != 0;
+  if (is_port && !io::configure_raw_8n1(fd.get(), baud)) {
+    throw RuntimeError(opt.source + ": cannot set 8N1: " + std::strerror(errno));
+  }
+  return monitor_stream(opt.source, fd.get(), is_port, view);
+}
+
+}  // namespace
+
+void add_monitor_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<MonitorOptions>();
+  auto* cmd = app.add_subcommand(
+      "monitor",
+      "The vehicle's view: decode the frames arriving on a serial port (or in a capture file,\n"
+      "or on standard input) and show them live, with rate, period jitter and error counts.\n"
+      "A capture file is decoded to its end and summarised. Stops on Ctrl-C.");
+  cmd->add_option("PORT|FILE", opt->source, "serial port, capture file, or - for standard input")
+      ->default_str("-");
+  cmd->add_option("--baud", opt->baud, "baud for a serial port (default 9600)");
+  cmd->add_option("--code", opt->code, "also count frames whose byte 11 differs from this code as invalid");
+  cmd->callback([opt, &exit_code] { exit_code = run_monitor(*opt); });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,162 @@
+// `andros-bridge run`: the bridge itself. Reads top to bottom: options ->
+// config -> checks -> set-up (signals first, before any thread) -> run ->
+// shut down.
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "andros/config.hpp"
+#include "andros/error.hpp"
+#include "andros/io/bridge.hpp"
+#include "andros/io/serial_link.hpp"
+#include "andros/io/shutdown_signals.hpp"
+#include "andros/io/sim_vehicle.hpp"
+#include "andros/io/status_display.hpp"
+#include "andros/io/tcp_link.hpp"
+#include "andros/parse.hpp"
+#include "andros/robots.hpp"
+#include "commands.hpp"
+#include "engine_frames.hpp"
+#include "run_input.hpp"
+#include "run_status.hpp"
+
+namespace andros::cli {
+namespace {
+
+constexpr int kRedrawsPerSecond = 5;
+
+struct RunOptions {
+  std::string config;
+  std::string robot;
+  std::string mapping;
+  std::string port;
+  std::string baud;
+  std::string code;
+  std::string rate;
+  std::string input;
+  bool weapons = false;
+  CLI::App* cmd = nullptr;
+};
+
+std::string find_default_config() {
+  for (const auto& path : default_config_paths()) {
+    if (std::filesystem::exists(path)) return path;
+  }
+  return {};
+}
+
+/// Defaults, then the config file, then the flags given.
+RunConfig resolve_config(const RunOptions& opt) {
+  RunConfig config;
+  const std::string file = opt.config.empty() ? find_default_config() : opt.config;
+  if (!file.empty()) {
+    read_config_file(file, config);
+    spdlog::info("config: {}", file);
+  }
+  const auto given = [&](const char* flag) { return opt.cmd->count(flag) > 0; };
+  if (given("--robot")) {
+    const auto robot = canonical_robot(opt.robot);
+    if (!robot) {
+      throw InputError(SourcePos{"--robot"}, "unknown robot '" + opt.robot + "' (one of " + robot_list() + ")");
+    }
+    config.robot = *robot;
+    config.mapping.clear();  // a robot on the command line beats a mapping from the file
+  }
+  if (given("--mapping")) config.mapping = opt.mapping;
+  if (given("--port")) config.port = opt.port;
+  if (given("--baud")) config.baud = parse_baud(opt.baud, SourcePos{"--baud"});
+  if (given("--code")) config.code = parse_code(opt.code, SourcePos{"--code"});
+  if (given("--rate")) {
+    config.rate = opt.rate;
+    config.rate_pos = SourcePos{"--rate"};
+  }
+  if (given("--weapons")) config.weapons = true;
+  if (given("--input")) config.input = opt.input;
+  if (config.port.empty()) {
+    throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
+  }
+  return config;
+}
+
+std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicle* sim) {
+  if (sim != nullptr) return std::make_unique<io::SerialLink>(sim->port_path(), config.baud);
+  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port));
+  return std::make_unique<io::SerialLink>(config.port, config.baud);
+}
+
+int run_bridge(const RunOptions& opt) {
+  const RunConfig config = resolve_config(opt);
+  const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
+
+  // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
+  io::ShutdownSignals signals;
+  const auto frames = make_engine_frames(config);
+  const auto input = make_input_source(config.input);
+  std::unique_ptr<io::SimVehicle> sim;
+  if (config.port == kSimPort) sim = std::make_unique<io::SimVehicle>(config.code);
+  const auto link = make_link(config, sim.get());
+
+  io::RunStatus initial;
+  initial.robot = config.mapping.empty() ? config.robot : config.mapping;
+  initial.code = config.code;
+  initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
+  initial.input = config.input == "sdl" ? "controller" : config.input;
+  initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
+  RunStatusBoard board(initial, *link, *frames, sim.get());
+  std::optional<io::StatusDisplay> display;
+  if (io::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
+
+  if (sim) sim->start();
+  if (display) display->start();
+  spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
+               config.weapons ? ", WEAPONS ENABLED" : "");
+  io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
+  bridge.run([&signals] { return signals.requested(); },
+             [&board](const io::TickReport& r) { board.observe(r); });
+  display.reset();
+
+  const auto end = board.snapshot();
+  std::string why = "end of the input";
+  if (signals.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(signals.signal_number());
+  spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why,
+               end.link.sent, end.link.busy, end.link.down);
+  if (sim) {
+    sim->stop();
+    const auto v = sim->snapshot();
+    spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames,
+                 v.stats.valid, v.stats.bad_checksum, v.stats.invalid);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<RunOptions>();
+  auto* cmd = app.add_subcommand(
+      "run",
+      "The bridge: the live controller (or an event script played in real time) to the link,\n"
+      "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
+      "frames, drain, close. Flags override the config file. With no port, frames go to a\n"
+      "built-in simulated vehicle (sim).");
+  opt->cmd = cmd;
+  cmd->add_option("--config", opt->config,
+                  "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"
+                  "then /etc/andros-bridge/andros-bridge.conf, if present)");
+  cmd->add_option("--robot", opt->robot, "robot type: " + robot_list() + " (default HD1)");
+  cmd->add_option("--mapping", opt->mapping, "a mapping file instead of the robot's shipped one");
+  cmd->add_option("--port", opt->port, "PATH (serial device), sim (default) or tcp:HOST:PORT");
+  cmd->add_option("--baud", opt->baud, "9600 (default), 19200, 38400, 57600 or 115200");
+  cmd->add_option("--code", opt->code, "dip-switch code for byte 11, in hex (default 01)");
+  cmd->add_option("--rate", opt->rate, "frames per second, e.g. 25 or 12.5 (default 25; rate x 360 bits must fit the baud)");
+  cmd->add_flag("--weapons", opt->weapons, "enable weapon signals for this run (still need deadman and arming)");
+  cmd->add_option("--input", opt->input, "sdl (the controller, default) or an event script FILE");
+  add_sdl_input_options(*cmd);
+  cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,33 @@
+#include "engine_frames.hpp"
+
+#include "andros/engine.hpp"
+#include "andros/mapping_loader.hpp"
+
+namespace andros::cli {
+namespace {
+
+class EngineFrames final : public io::FrameSource {
+ public:
+  explicit EngineFrames(Engine engine) : engine_(std::move(engine)) {}
+
+  DataBytes step(const InputState& input, std::int64_t now_ms) override { return engine_.step(input, now_ms); }
+  [[nodiscard]] DataBytes neutral() const override { return engine_.neutral(); }
+  [[nodiscard]] std::string enable_text() const override {
+    return std::string(describe(engine_.status().enable));
+  }
+  [[nodiscard]] bool enabled() const override { return engine_.status().enable == EnableState::kEnabled; }
+  [[nodiscard]] std::string layer() const override { return engine_.status().layer; }
+
+ private:
+  Engine engine_;
+};
+
+}  // namespace
+
+std::unique_ptr<io::FrameSource> make_engine_frames(const RunConfig& config) {
+  Mapping mapping = config.mapping.empty() ? load_robot_mapping(config.robot) : load_mapping(config.mapping);
+  return std::make_unique<EngineFrames>(
+      Engine(std::move(mapping), EngineOptions{.weapons = config.weapons, .code = config.code}));
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,62 @@
+#include "run_status.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace andros::cli {
+
+void RunStatusBoard::observe(const io::TickReport& r) {
+  const auto now = io::monotonic_ns();
+  io::RunStatus next;
+  {
+    const std::lock_guard lock(mutex_);
+    if (r.result == io::SendResult::kSent) timing_.add(now);
+    next = status_;
+    next.t_ms = r.t_ms;
+    next.sent = *r.data;
+    next.shutting_down = r.shutting_down;
+    next.connected = r.input->connected();
+    if (next.connected) next.controller = r.input->name().empty() ? "controller" : r.input->name();
+    next.enabled = frames_.enabled() && !r.shutting_down;
+    next.enable_text = frames_.enable_text();
+    next.layer = frames_.layer();
+    next.link_state = link_.state();
+    next.link_detail = link_.detail();
+    next.link = link_.counters();
+    next.sent_timing = timing_.summary(now);
+    std::swap(status_, next);  // next now holds the previous status
+  }
+  log_changes(next, status_);
+  if (r.skipped > 0) spdlog::warn("clock stalled: {} tick(s) skipped, none sent late in a burst", r.skipped);
+  first_tick_ = false;
+}
+
+void RunStatusBoard::log_changes(const io::RunStatus& before, const io::RunStatus& after) const {
+  if (after.shutting_down) {
+    if (!before.shutting_down) spdlog::info("stopping: sending neutral frames");
+    return;
+  }
+  if (first_tick_ || before.connected != after.connected) {
+    if (after.connected) spdlog::info("controller: {}", after.controller);
+    else spdlog::info("controller: none connected");
+  }
+  if (first_tick_ || before.enabled != after.enabled || before.enable_text != after.enable_text) {
+    if (after.enabled) spdlog::info("enabled");
+    else spdlog::info("not enabled: {}", after.enable_text);
+  }
+  if (!first_tick_ && before.layer != after.layer) {
+    spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
+  }
+}
+
+std::string RunStatusBoard::compose() const {
+  io::RunStatus s = snapshot();
+  if (vehicle_ != nullptr) s.vehicle = vehicle_->snapshot();
+  return io::render_run_view(s, true);
+}
+
+io::RunStatus RunStatusBoard::snapshot() const {
+  const std::lock_guard lock(mutex_);
+  return status_;
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,61 @@
+#include "andros/io/bridge.hpp"
+
+#include <time.h>
+
+#include <cerrno>
+#include <exception>
+
+namespace andros::io {
+
+void sleep_until_ns(std::int64_t abs_ns) {
+  const timespec ts{static_cast<time_t>(abs_ns / 1'000'000'000),
+                    static_cast<long>(abs_ns % 1'000'000'000)};
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+  }
+}
+
+void Bridge::run(const StopCheck& stop, const Observer& observe) {
+  const std::int64_t start_ns = monotonic_ns();
+  std::int64_t tick = 0;
+  std::int64_t skipped = 0;
+  try {
+    while (true) {
+      sleep_until_ns(start_ns + schedule_.tick_ns(tick));
+      if (stop()) break;
+      const std::int64_t t_ms = schedule_.tick_ms(tick);
+      // The input is read right after the tick's time: never older than the frame.
+      input_.pump(state_, t_ms);
+      const DataBytes data = frames_.step(state_, t_ms);
+      const SendResult result = link_.send(encode(data), monotonic_ns());
+      observe(TickReport{tick, t_ms, skipped, &data, result, false, &state_});
+      if (input_.finished(t_ms)) break;
+      const std::int64_t next = schedule_.next_tick(tick, monotonic_ns() - start_ns);
+      skipped = next - tick - 1;
+      tick = next;
+    }
+  } catch (...) {
+    shutdown(start_ns, tick, observe);
+    throw;
+  }
+  shutdown(start_ns, tick, observe);
+}
+
+void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe) {
+  const DataBytes neutral = frames_.neutral();
+  const Frame frame = encode(neutral);
+  int sent = 0;
+  // A frame the link could not take this tick (busy, reconnecting) is tried
+  // again on the next one, a few ticks at most, so that shutdown stays short.
+  for (int i = 0; sent < options_.shutdown_frames &&
+                  i < options_.shutdown_frames + options_.shutdown_extra_ticks;
+       ++i) {
+    tick = schedule_.next_tick(tick, monotonic_ns() - start_ns);
+    sleep_until_ns(start_ns + schedule_.tick_ns(tick));
+    const SendResult result = link_.send(frame, monotonic_ns());
+    if (result == SendResult::kSent) ++sent;
+    observe(TickReport{tick, schedule_.tick_ms(tick), 0, &neutral, result, true, &state_});
+  }
+  link_.drain_and_close(options_.drain_timeout_ms);
+}
+
+}  // namespace andros::io

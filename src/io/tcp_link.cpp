@@ -1,0 +1,119 @@
+#include "andros/io/tcp_link.hpp"
+
+#include <fcntl.h>
+#include <linux/sockios.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/ioctl.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "andros/error.hpp"
+
+namespace andros::io {
+
+TcpAddress parse_tcp_spec(std::string_view spec) {
+  const SourcePos pos{"--port"};
+  if (!spec.starts_with("tcp:")) throw InputError(pos, "expected tcp:HOST:PORT");
+  auto rest = spec.substr(4);
+  TcpAddress out;
+  if (rest.starts_with("[")) {
+    const auto close = rest.find(']');
+    if (close == std::string_view::npos || close + 1 >= rest.size() || rest[close + 1] != ':') {
+      throw InputError(pos, "'" + std::string(spec) + "' is not tcp:[ADDRESS]:PORT");
+    }
+    out.host = std::string(rest.substr(1, close - 1));
+    out.port = std::string(rest.substr(close + 2));
+  } else {
+    const auto colon = rest.rfind(':');
+    if (colon == std::string_view::npos) {
+      throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT");
+    }
+    out.host = std::string(rest.substr(0, colon));
+    out.port = std::string(rest.substr(colon + 1));
+  }
+  const bool digits = !out.port.empty() && out.port.find_first_not_of("0123456789") == std::string::npos;
+  if (out.host.empty() || !digits || std::stol(out.port) < 1 || std::stol(out.port) > 65535) {
+    throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT (PORT 1..65535)");
+  }
+  return out;
+}
+
+TcpLink::TcpLink(const TcpAddress& address)
+    : ReconnectingLink("tcp " + address.host + ":" + address.port, kTcpMinRetryMs, kTcpMaxRetryMs) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  addrinfo* found = nullptr;
+  const int rc = getaddrinfo(address.host.c_str(), address.port.c_str(), &hints, &found);
+  if (rc != 0 || found == nullptr) {
+    throw InputError(SourcePos{"--port"}, "cannot resolve '" + address.host + "': " + gai_strerror(rc));
+  }
+  std::memcpy(&addr_, found->ai_addr, found->ai_addrlen);
+  addr_len_ = found->ai_addrlen;
+  freeaddrinfo(found);
+}
+
+ReconnectingLink::OpenResult TcpLink::open_step(std::string& why) {
+  if (!connecting_) {
+    UniqueFd fd(::socket(addr_.ss_family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
+    if (!fd) {
+      why = std::strerror(errno);
+      return OpenResult::kFailed;
+    }
+    const int one = 1;
+    // A frame is one small write: send it now, not after Nagle's delay.
+    setsockopt(fd.get(), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&addr_), addr_len_) == 0) {
+      fd_ = std::move(fd);
+      return OpenResult::kOpen;
+    }
+    if (errno != EINPROGRESS) {
+      why = std::strerror(errno);
+      return OpenResult::kFailed;
+    }
+    fd_ = std::move(fd);
+    connecting_ = true;
+    connect_started_ns_ = monotonic_ns();
+  }
+  pollfd p{fd_.get(), POLLOUT, 0};
+  if (poll(&p, 1, 0) == 0) {
+    if (monotonic_ns() - connect_started_ns_ < kTcpConnectTimeoutNs) return OpenResult::kPending;
+    connecting_ = false;
+    why = "connect timed out";
+    return OpenResult::kFailed;
+  }
+  connecting_ = false;
+  int err = 0;
+  socklen_t len = sizeof err;
+  getsockopt(fd_.get(), SOL_SOCKET, SO_ERROR, &err, &len);
+  if (err != 0) {
+    why = std::strerror(err);
+    return OpenResult::kFailed;
+  }
+  return OpenResult::kOpen;
+}
+
+int TcpLink::queued_bytes() const {
+  // Bytes not yet sent at all (not those sent and waiting for an ACK): only
+  // these would carry a stale command.
+  int queued = 0;
+  if (ioctl(fd_.get(), SIOCOUTQNSD, &queued) != 0) return -1;
+  return queued;
+}
+
+long TcpLink::write_bytes(const std::uint8_t* data, std::size_t size) {
+  // The vehicle never talks back; anything a serial server sends is read and
+  // dropped, and an orderly close by the server shows here as a loss.
+  std::uint8_t scratch[256];
+  const long got = ::recv(fd_.get(), scratch, sizeof scratch, MSG_DONTWAIT);
+  if (got == 0) {
+    errno = ECONNRESET;
+    return -1;
+  }
+  return ::send(fd_.get(), data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+}
+
+}  // namespace andros::io

@@ -1,0 +1,176 @@
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+
+#include "andros/error.hpp"
+#include "andros/io/bridge.hpp"
+#include "andros/io/script_input.hpp"
+#include "andros/io/serial_link.hpp"
+#include "andros/io/shutdown_signals.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "frame_reader.hpp"
+
+namespace andros {
+namespace {
+
+/// A stand-in for the mapping engine: drive 200 while button a is held.
+class PressToDrive final : public io::FrameSource {
+ public:
+  DataBytes step(const InputState& input, std::int64_t) override {
+    enabled_ = input.connected() && input.button(*parse_button_name("a")).down;
+    ControlState s;
+    s[signal_id("drive")] = enabled_ ? 200 : 128;
+    s[signal_id("pivot")] = 128;
+    s[signal_id("safety")] = enabled_ ? 1 : 0;
+    return FrameBuilder(0x3C).build(s);
+  }
+  DataBytes neutral() const override {
+    ControlState s;
+    s[signal_id("drive")] = 128;
+    s[signal_id("pivot")] = 128;
+    return FrameBuilder(0x3C).build(s);
+  }
+  std::string enable_text() const override { return enabled_ ? "enabled" : "a released"; }
+  bool enabled() const override { return enabled_; }
+
+ private:
+  bool enabled_ = false;
+};
+
+/// An input that never ends.
+class Idle final : public InputSource {
+ public:
+  void pump(InputState&, std::int64_t) override {}
+  bool finished(std::int64_t) const override { return false; }
+};
+
+std::string write_script(const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("andros-bridge-test-" + std::to_string(getpid()) + ".events");
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
+  auto pty = io::open_pty_pair();
+  const auto script = write_script("0 connect pad\n40 button a 1\n120 button a 0\n160 end\n");
+  io::ScriptInput input(script);
+  PressToDrive frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  std::vector<std::int64_t> times;
+  int shutdown_ticks = 0;
+  bridge.run([] { return false; },
+             [&](const io::TickReport& r) {
+               if (r.shutting_down) ++shutdown_ticks;
+               else times.push_back(r.t_ms);
+             });
+  EXPECT_EQ(times, (std::vector<std::int64_t>{0, 40, 80, 120, 160}));
+  EXPECT_EQ(shutdown_ticks, 3);
+
+  test::FrameReader reader(pty.master.get());
+  const auto got = reader.next(8, 2000);
+  ASSERT_EQ(got.size(), 8u);
+  const std::vector<int> drive = {128, 200, 200, 128, 128, 128, 128, 128};
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_TRUE(got[i].valid);
+    EXPECT_EQ(got[i].data[7], drive[i]) << "frame " << i;
+    EXPECT_EQ(got[i].data[11], 0x3C);
+  }
+  EXPECT_EQ(link.state(), io::LinkState::kConnecting);  // closed
+  std::filesystem::remove(script);
+}
+
+TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  int ticks = 0;
+  int neutral = 0;
+  bridge.run([&] { return ticks >= 4; },
+             [&](const io::TickReport& r) {
+               ++ticks;
+               if (r.shutting_down && r.result == io::SendResult::kSent) ++neutral;
+             });
+  EXPECT_EQ(neutral, 3);
+  test::FrameReader reader(pty.master.get());
+  EXPECT_EQ(reader.next(7, 2000).size(), 7u);
+}
+
+TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink link("/nonexistent/andros-port", 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 50'000});
+  int ticks = 0;
+  bridge.run([&] { return ticks >= 5; }, [&](const io::TickReport&) { ++ticks; });
+  EXPECT_EQ(ticks, 5 + 3 + 5);  // frames computed; the shutdown's tries bounded
+  EXPECT_EQ(link.counters().sent, 0u);
+}
+
+/// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
+class StallOnce final : public io::FrameSource {
+ public:
+  DataBytes step(const InputState& input, std::int64_t now_ms) override {
+    if (now_ms == 80) {
+      const timespec stall{0, 130'000'000};
+      nanosleep(&stall, nullptr);
+    }
+    return inner_.step(input, now_ms);
+  }
+  DataBytes neutral() const override { return inner_.neutral(); }
+  std::string enable_text() const override { return inner_.enable_text(); }
+  bool enabled() const override { return inner_.enabled(); }
+
+ private:
+  PressToDrive inner_;
+};
+
+TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  StallOnce frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  std::vector<io::TickReport> ticks;
+  bridge.run([&] { return ticks.size() >= 6; }, [&](const io::TickReport& r) {
+    if (!r.shutting_down) ticks.push_back(r);
+  });
+  ASSERT_GE(ticks.size(), 4u);
+  EXPECT_EQ(ticks[2].tick, 2);
+  // 130 ms after tick 2's time (80 ms) ticks 3 and 4 (120, 160) are past:
+  // the next frame is the latest tick due, once, with the others skipped.
+  EXPECT_GE(ticks[3].tick, 5);
+  EXPECT_EQ(ticks[3].skipped, ticks[3].tick - 3);
+  EXPECT_EQ(ticks[3].t_ms, ticks[3].tick * 40);
+  for (std::size_t i = 4; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].skipped, ticks[i].tick - ticks[i - 1].tick - 1);
+}
+
+TEST(ShutdownSignals, ASignalBecomesARequest) {
+  io::ShutdownSignals signals;
+  EXPECT_FALSE(signals.requested());
+  raise(SIGTERM);  // blocked: pending, not fatal
+  EXPECT_TRUE(signals.requested());
+  EXPECT_EQ(signals.signal_number(), SIGTERM);
+  EXPECT_TRUE(signals.requested());  // stays requested
+}
+
+TEST(ScriptInput, ABadLineStopsBeforeTheFirstFrame) {
+  const auto script = write_script("0 connect\n10 button nosuchbutton 1\n");
+  try {
+    io::ScriptInput input(script);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().line, 2);
+  }
+  std::filesystem::remove(script);
+}
+
+}  // namespace
+}  // namespace andros

@@ -1,0 +1,51 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "andros/io/frame_timing.hpp"
+#include "andros/io/status_view.hpp"
+
+namespace andros {
+namespace {
+
+TEST(StatusView, EveryBitSignalIsInExactlyOneGroup) {
+  std::multiset<SignalId> seen;
+  for (const auto& g : io::signal_groups()) seen.insert(g.signals.begin(), g.signals.end());
+  for (SignalId id = 0; id < kSignalCount; ++id) {
+    const bool shown = info(id).is_bit() && info(id).kind != SignalKind::kConstant;
+    EXPECT_EQ(seen.count(id), shown ? 1u : 0u) << info(id).name;
+  }
+}
+
+TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
+  ControlState s;
+  s[signal_id("safety")] = 1;
+  s[signal_id("pt_left")] = 1;
+  s[signal_id("drive")] = 255;
+  s[signal_id("pivot")] = 0;
+  s[signal_id("light")] = 255;
+  const auto text = io::render_frame_panel(FrameBuilder(1).build(s), false);
+  EXPECT_NE(text.find(" SAFETY drive_brake"), std::string::npos) << text;
+  EXPECT_NE(text.find(" PT_LEFT pt_right"), std::string::npos) << text;
+  EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [##########|          ]   0"), std::string::npos) << text;
+  EXPECT_NE(text.find("light      [#####################] 255"), std::string::npos) << text;
+  for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+    EXPECT_LE(end - start, 80u) << text.substr(start, end - start);
+  }
+}
+
+TEST(FrameTiming, MeasuresRateAndJitter) {
+  io::FrameTiming t;
+  const std::int64_t p = 40'000'000;
+  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
+  const auto s = t.summary(49 * p);
+  EXPECT_EQ(s.count, 50u);
+  EXPECT_EQ(s.rate_hz, 25);  // the frames of the last second
+  EXPECT_NEAR(s.period_ms, 40.0, 0.05);
+  EXPECT_NEAR(s.jitter_ms, 1.0, 0.05);
+  EXPECT_NEAR(s.worst_ms, 1.0, 0.05);
+}
+
+}  // namespace
+}  // namespace andros

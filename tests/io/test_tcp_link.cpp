@@ -1,0 +1,96 @@
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+
+#include "andros/error.hpp"
+#include "andros/io/tcp_link.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "frame_reader.hpp"
+
+namespace andros {
+namespace {
+
+using io::SendResult;
+using io::UniqueFd;
+
+/// A TCP listener on 127.0.0.1, on a port the kernel picks.
+struct Listener {
+  Listener() : fd(socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0)) {
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    bind(fd.get(), reinterpret_cast<sockaddr*>(&a), sizeof a);
+    listen(fd.get(), 4);
+    socklen_t len = sizeof a;
+    getsockname(fd.get(), reinterpret_cast<sockaddr*>(&a), &len);
+    port = ntohs(a.sin_port);
+  }
+  /// Accepts one connection, sending frames on link meanwhile (at most 2 s).
+  UniqueFd accept_while_sending(io::Link& link, const Frame& frame) const {
+    for (int i = 0; i < 200; ++i) {
+      link.send(frame, io::monotonic_ns());
+      pollfd p{fd.get(), POLLIN, 0};
+      if (poll(&p, 1, 10) == 1) return UniqueFd(accept(fd.get(), nullptr, nullptr));
+    }
+    return UniqueFd();
+  }
+  UniqueFd fd;
+  int port = 0;
+};
+
+Frame frame_with_drive(std::uint8_t drive) {
+  ControlState s;
+  s[signal_id("drive")] = drive;
+  return encode(FrameBuilder(0x01).build(s));
+}
+
+TEST(TcpLink, ParsesTheSpec) {
+  auto a = io::parse_tcp_spec("tcp:radio.local:4001");
+  EXPECT_EQ(a.host, "radio.local");
+  EXPECT_EQ(a.port, "4001");
+  a = io::parse_tcp_spec("tcp:[::1]:2000");
+  EXPECT_EQ(a.host, "::1");
+  EXPECT_EQ(a.port, "2000");
+  EXPECT_THROW(io::parse_tcp_spec("tcp:host"), InputError);
+  EXPECT_THROW(io::parse_tcp_spec("tcp:host:0"), InputError);
+  EXPECT_THROW(io::parse_tcp_spec("tcp::4001"), InputError);
+  EXPECT_THROW(io::parse_tcp_spec("tcp:host:70000"), InputError);
+}
+
+TEST(TcpLink, StreamsToALocalListenerAndReconnects) {
+  Listener server;
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  auto conn = server.accept_while_sending(link, frame_with_drive(50));
+  ASSERT_TRUE(conn);
+  // Frames sent before accept() returned may already be queued: read until ours show.
+  test::FrameReader reader(conn.get());
+  for (int i = 0; i < 200 && link.state() != io::LinkState::kUp; ++i) link.send(frame_with_drive(50), io::monotonic_ns());
+  ASSERT_EQ(link.state(), io::LinkState::kUp);
+  ASSERT_EQ(link.send(frame_with_drive(60), io::monotonic_ns()), SendResult::kSent);
+  bool seen = false;
+  for (int i = 0; i < 20 && !seen; ++i) {
+    for (const auto& f : reader.next(1, 100)) seen = seen || (f.valid && f.data[7] == 60);
+  }
+  EXPECT_TRUE(seen);
+
+  // The server goes away: the link notices and, once it is back, reconnects.
+  conn.reset();
+  SendResult r = SendResult::kSent;
+  for (int i = 0; i < 200 && r == SendResult::kSent; ++i) {
+    r = link.send(frame_with_drive(61), io::monotonic_ns());
+    poll(nullptr, 0, 5);
+  }
+  EXPECT_NE(r, SendResult::kSent);
+  EXPECT_EQ(link.counters().losses, 1u);
+  auto again = server.accept_while_sending(link, frame_with_drive(62));
+  EXPECT_TRUE(again);
+}
+
+TEST(TcpLink, UnresolvableHostIsBadInput) {
+  EXPECT_THROW(io::TcpLink(io::TcpAddress{"no-such-host.invalid", "4001"}), InputError);
+}
+
+}  // namespace
+}  // namespace andros
