@@ -1,0 +1,45 @@
+// libFuzzer target: the configuration-file parser (contract section 2). Any
+// text either configures a run with values the bridge accepts, or is an
+// InputError naming the file and a line inside the text.
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "andros/config.hpp"
+#include "andros/error.hpp"
+#include "andros/replay.hpp"
+#include "andros/robots.hpp"
+
+namespace {
+void check(bool ok) {
+  if (!ok) std::abort();
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  std::istringstream in(text);
+  andros::RunConfig config;
+  try {
+    andros::parse_config(in, "fuzz.conf", config);
+  } catch (const andros::InputError& e) {
+    check(e.pos().file == "fuzz.conf" || e.pos().file == "--rate");
+    check(e.pos().file != "fuzz.conf" || e.pos().line >= 1);
+    return 0;
+  }
+  check(andros::canonical_robot(config.robot).value_or("") == config.robot);
+  bool known_baud = false;
+  for (const int b : andros::kBauds) known_baud = known_baud || b == config.baud;
+  check(known_baud);
+  check(!config.port.empty() && !config.input.empty());
+  try {
+    // Merged with the flags' defaults: either a rate the link carries or an
+    // error at the line that set it.
+    const auto mhz = andros::rate_millihertz(config);
+    check(mhz >= 1000 && mhz * andros::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
+  } catch (const andros::InputError& e) {
+    check(e.pos().file == "fuzz.conf" && e.pos().line >= 1);
+  }
+  return 0;
+}
