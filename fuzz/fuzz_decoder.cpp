@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "andros/decoder.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 
@@ -30,11 +31,10 @@ std::vector<Seen> decode(std::span<const std::uint8_t> bytes, std::size_t chunk,
   return seen;
 }
 
-void check(bool ok) {
-  if (!ok) std::abort();
-}
 
 }  // namespace
+
+using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

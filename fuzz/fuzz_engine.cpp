@@ -13,14 +13,12 @@
 #include "andros/mapping_loader.hpp"
 #include "andros/robots.hpp"
 #include "andros/version.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 
 using namespace andros;
 
-void check(bool ok) {
-  if (!ok) std::abort();
-}
 
 const std::vector<Mapping>& shipped() {
   static const auto mappings = [] {
@@ -71,6 +69,8 @@ InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
 }
 
 }  // namespace
+
+using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;

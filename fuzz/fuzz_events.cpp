@@ -7,12 +7,9 @@
 
 #include "andros/error.hpp"
 #include "andros/events.hpp"
+#include "fuzz_check.hpp"
 
-namespace {
-void check(bool ok) {
-  if (!ok) std::abort();
-}
-}  // namespace
+using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

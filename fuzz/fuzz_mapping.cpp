@@ -12,12 +12,10 @@
 #include "andros/engine.hpp"
 #include "andros/error.hpp"
 #include "andros/mapping_loader.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 
-void check(bool ok) {
-  if (!ok) std::abort();
-}
 
 std::filesystem::path scratch_file() {
   // A private folder, so `extends: x.yaml` finds only what the input makes.
@@ -30,6 +28,8 @@ std::filesystem::path scratch_file() {
 }
 
 }  // namespace
+
+using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = scratch_file();

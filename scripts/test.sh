@@ -7,16 +7,28 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 jobs=$(nproc)
+summary=$(mktemp)
+trap 'rm -f "$summary"' EXIT
+
+# closing: the plain 'N passed, N failed' line over every ctest run so far.
+closing() {
+  local total=0 failed=0 f t
+  while read -r f t; do
+    total=$((total + t))
+    failed=$((failed + f))
+  done < <(sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$summary")
+  echo "tests: $((total - failed)) passed, $failed failed"
+}
 
 echo "== build and test ($build)"
 scripts/build.sh
-ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 300
-[[ ${ANDROS_QUICK:-} == 1 ]] && exit 0
+ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 300 | tee -a "$summary"
+if [[ ${ANDROS_QUICK:-} == 1 ]]; then closing; exit 0; fi
 
 echo "== build and test under ASan + UBSan ($build-asan)"
 BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600
+  ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600 | tee -a "$summary"
 
 if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
   echo "== fuzz each target briefly"
@@ -24,3 +36,4 @@ if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-
 else
   echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"
 fi
+closing
