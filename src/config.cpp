@@ -79,6 +79,7 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
       config.baud = parse_baud(value, pos);
     } else if (key == "serialport") {
       config.port = std::string(value);
+      config.port_pos = pos;
     } else if (key == "robot") {
       const auto robot = canonical_robot(value);
       if (!robot) {

@@ -24,6 +24,7 @@ struct RunConfig {
   std::string robot = "HD1";  ///< canonical (upper-case) robot type
   std::string mapping;        ///< a mapping file; empty = the robot's shipped mapping
   std::string port{kSimPort}; ///< a device path, "sim" or "tcp:HOST:PORT"
+  SourcePos port_pos{"--port"};  ///< where the port was set, for errors about it
   int baud = kDefaultBaud;
   std::uint8_t code = kDefaultCode;
   /// The rate as written ("25", "12.5") and where, so that a rate the final

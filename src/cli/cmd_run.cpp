@@ -67,7 +67,10 @@ RunConfig resolve_config(const RunOptions& opt) {
     config.mapping.clear();  // a robot on the command line beats a mapping from the file
   }
   if (given("--mapping")) config.mapping = opt.mapping;
-  if (given("--port")) config.port = opt.port;
+  if (given("--port")) {
+    config.port = opt.port;
+    config.port_pos = SourcePos{"--port"};
+  }
   if (given("--baud")) config.baud = parse_baud(opt.baud, SourcePos{"--baud"});
   if (given("--code")) config.code = parse_code(opt.code, SourcePos{"--code"});
   if (given("--rate")) {
@@ -85,6 +88,7 @@ RunConfig resolve_config(const RunOptions& opt) {
 std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<io::SerialLink>(sim->port_path(), config.baud);
   if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port));
+  io::check_serial_port(config.port, config.port_pos);
   return std::make_unique<io::SerialLink>(config.port, config.baud);
 }
 

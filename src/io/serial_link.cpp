@@ -3,6 +3,8 @@
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <termios.h>
 
 #include <cerrno>
@@ -22,6 +24,23 @@ speed_t speed_of(int baud) {
 }
 
 }  // namespace
+
+void check_serial_port(const std::string& path, const SourcePos& pos) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return;  // not plugged in yet: the link waits for it
+    throw InputError(pos, "serial port '" + path + "': " + std::strerror(errno));
+  }
+  if (!S_ISCHR(st.st_mode)) {
+    const char* what = S_ISDIR(st.st_mode) ? "a directory" : S_ISREG(st.st_mode) ? "a regular file" : "not a device";
+    throw InputError(pos, "serial port '" + path + "' is not a serial device (" + what + ")");
+  }
+  if (::access(path.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
+    throw InputError(pos, "serial port '" + path +
+                              "': permission denied (join the dialout group, or install the udev rules: "
+                              "docs/running.md)");
+  }
+}
 
 bool configure_raw_8n1(int fd, int baud) {
   termios tio{};

@@ -3,6 +3,7 @@
 /// control, opened exclusively. On a write error the device is closed and the
 /// same path (a udev symlink survives a replug) is reopened every 200 ms.
 
+#include "andros/error.hpp"
 #include "andros/io/reconnecting_link.hpp"
 
 namespace andros::io {
@@ -22,6 +23,13 @@ class SerialLink final : public ReconnectingLink {
   std::string path_;
   int baud_;
 };
+
+/// Start-up check of a serial port path, so that a mistyped port is bad
+/// input (exit 2) rather than a link retried for ever: a path that exists but
+/// is not a character device, or that this user may not open, throws
+/// InputError at pos. A path that does not exist yet passes: the adapter may
+/// be plugged in after the bridge starts, and the link waits for it.
+void check_serial_port(const std::string& path, const SourcePos& pos);
 
 /// Puts an open tty into raw 8N1 at baud with no flow control. Returns false
 /// with errno set on failure. Shared by the link and `monitor`.
