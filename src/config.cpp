@@ -1,7 +1,9 @@
 #include "andros/config.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -109,7 +111,7 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
 
 void read_config_file(const std::string& path, RunConfig& config) {
   std::ifstream in(path);
-  if (!in) throw InputError(SourcePos{path}, "cannot read the config file");
+  if (!in) throw InputError(SourcePos{path}, std::string("cannot read the config file: ") + std::strerror(errno));
   parse_config(in, path, config);
 }
 
