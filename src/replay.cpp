@@ -15,7 +15,10 @@ std::int64_t parse_rate(std::string_view text, int baud, const SourcePos& pos) {
   std::int64_t hz = 0;
   std::int64_t milli = 0;
   const auto [p, ec] = std::from_chars(whole.data(), whole.data() + whole.size(), hz);
-  const bool digits_ok = !whole.empty() && ec == std::errc() && p == whole.data() + whole.size() &&
+  // Digits only: from_chars would take a sign, and a huge negative rate
+  // overflowed the millihertz product below (a fuzzer finding).
+  const bool digits_ok = !whole.empty() && whole.find_first_not_of("0123456789") == std::string_view::npos &&
+                         ec == std::errc() && p == whole.data() + whole.size() &&
                          (dot == std::string_view::npos || (!frac.empty() && frac.size() <= 3)) &&
                          frac.find_first_not_of("0123456789") == std::string_view::npos && hz < 1'000'000;
   if (!digits_ok) throw bad("is not a number of Hz (such as 25 or 12.5, at most 3 decimals)");

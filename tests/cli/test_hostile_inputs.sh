@@ -64,6 +64,8 @@ w key.conf 'serialprot=/dev/ttyUSB0\n'
 expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config key.conf --input ok.events
 w noeq.conf 'baudrate 9600\n'
 expect_error "noeq.conf:1:1: error: expected key=value, got 'baudrate 9600'" "$BIN" run --config noeq.conf --input ok.events
+w rate.conf 'rate=-1920099999999999980\n'
+expect_error "rate.conf:1:6: error: rate '-1920099999999999980' is not a number of Hz (such as 25 or 12.5, at most 3 decimals)" "$BIN" run --config rate.conf --input ok.events
 w port_file.conf 'serialport=/etc/passwd\n'
 expect_error "port_file.conf:1:12: error: serial port '/etc/passwd' is not a serial device (a regular file)" "$BIN" run --config port_file.conf --input ok.events
 mkdir -p notatty
