@@ -32,7 +32,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 
 if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
   echo "== fuzz each target briefly"
-  scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-20}"
+  scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 else
   echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"
 fi
