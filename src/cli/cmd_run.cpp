@@ -23,6 +23,7 @@
 #include "engine_frames.hpp"
 #include "run_input.hpp"
 #include "run_status.hpp"
+#include "sdl_options.hpp"
 
 namespace andros::cli {
 namespace {
@@ -39,6 +40,7 @@ struct RunOptions {
   std::string rate;
   std::string input;
   bool weapons = false;
+  SdlInputOptions sdl;  ///< --controller, --controller-db
   CLI::App* cmd = nullptr;
 };
 
@@ -99,7 +101,7 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
   const auto frames = make_engine_frames(config);
-  const auto input = make_input_source(config.input);
+  const auto input = make_input_source(config.input, opt.sdl);
   std::unique_ptr<io::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<io::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());
@@ -159,7 +161,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--rate", opt->rate, "frames per second, e.g. 25 or 12.5 (default 25; rate x 360 bits must fit the baud)");
   cmd->add_flag("--weapons", opt->weapons, "enable weapon signals for this run (still need deadman and arming)");
   cmd->add_option("--input", opt->input, "sdl (the controller, default) or an event script FILE");
-  add_sdl_input_options(*cmd);
+  add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });
 }
 

@@ -5,19 +5,13 @@
 #include <string>
 
 #include "andros/input_source.hpp"
-
-namespace CLI {
-class App;
-}
+#include "andros/sdl_input.hpp"
 
 namespace andros::cli {
 
-/// Adds the SDL input's own flags to `run`, when this build has it.
-void add_sdl_input_options(CLI::App& run);
-
-/// "sdl" -> the live controller; anything else -> an event script played in
-/// real time. Throws InputError for a bad script, or for "sdl" in a build
-/// without SDL input.
-std::unique_ptr<InputSource> make_input_source(const std::string& input);
+/// "sdl" -> the live controller chosen by sdl; anything else -> an event
+/// script played in real time. Throws InputError for a bad script or a bad
+/// controller database.
+std::unique_ptr<InputSource> make_input_source(const std::string& input, const SdlInputOptions& sdl);
 
 }  // namespace andros::cli
