@@ -8,8 +8,6 @@
 //   andros_bench_sdl_latency [TICKS]   (default 500, 20 s at 25 Hz)
 #include <poll.h>
 #include <sys/ioctl.h>
-#include <pty.h>
-#include <termios.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,6 +16,8 @@
 #include <vector>
 
 #include "andros/frame.hpp"
+#include "andros/io/pty_pair.hpp"
+#include "andros/io/serial_link.hpp"
 #include "sdl_bench.hpp"
 
 namespace {
@@ -58,16 +58,11 @@ int main(int argc, char** argv) {
   andros::bench::PadRig rig;
   andros::SdlInput& input = rig.input;
 
-  int master = -1;
-  int slave = -1;
-  if (openpty(&master, &slave, nullptr, nullptr, nullptr) != 0) {
-    std::perror("openpty");
-    return 1;
-  }
-  termios raw{};
-  tcgetattr(slave, &raw);
-  cfmakeraw(&raw);
-  tcsetattr(slave, TCSANOW, &raw);
+  // The bridge's own pty stand-in; the near end raw, as SerialLink sets a port.
+  const auto pty = andros::io::open_pty_pair();
+  const int master = pty.master.get();
+  const int slave = pty.slave.get();
+  andros::io::configure_raw_8n1(slave, 9600);
 
   const andros::FrameBuilder builder(0x01);
   andros::InputState state;
@@ -141,7 +136,5 @@ int main(int argc, char** argv) {
               deadline_to_bytes.size());
   std::printf("changes not seen on the next tick: %ld of %ld\n", missed, ticks);
   std::printf("unplug -> disconnect: after %d tick(s)\n", loss_ticks);
-  close(slave);
-  close(master);
   return missed == 0 && loss_ticks == 1 ? 0 : 1;
 }
