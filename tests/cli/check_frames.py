@@ -1,32 +1,32 @@
 #!/usr/bin/env python3
 """Checks a capture decoded by `andros-bridge frame decode` (JSON lines on stdin).
 
-  check_frames.py [--min N] [--enabled] [--neutral-tail N] [--code HEX] [--driving]
+  check_frames.py --bin BIN [--min N] [--enabled] [--neutral-tail N] [--code HEX] [--driving]
 
 Fails (exit 1, saying why) unless: there are at least N frames, every frame is
 valid, byte 11 is the code, at least one frame is enabled (--enabled) or
 drives (--driving), and the last N frames are neutral (contract section 5).
 """
-import argparse, json, sys
-
-SELECTORS = {"speed_high", "speed_low", "inset_3", "inset_4", "inset_video_1", "inset_video_2",
-             "main_video_2", "main_video_3", "main_video_4"}
-BYTES = {"pivot", "drive", "arm_speed", "light", "code", "byte12", "battery"}
-
-
-def neutral(s):
-    if s["drive"] != 128 or s["pivot"] != 128:
-        return False
-    return all(v == 0 for k, v in s.items() if k not in SELECTORS and k not in BYTES)
-
+import argparse, json, subprocess, sys
 
 ap = argparse.ArgumentParser()
+ap.add_argument("--bin", required=True, help="andros-bridge, whose `frame signals` names the kinds")
 ap.add_argument("--min", type=int, default=1)
 ap.add_argument("--enabled", action="store_true")
 ap.add_argument("--driving", action="store_true")
 ap.add_argument("--neutral-tail", type=int, default=0)
 ap.add_argument("--code")
 a = ap.parse_args()
+# Contract section 5: neutral = every motion, weapon and interlock bit 0, drive
+# and pivot at centre. The kinds come from the signal table, not a copy of it.
+catalogue = [json.loads(l) for l in subprocess.check_output([a.bin, "frame", "signals", "--json"]).splitlines()]
+ZEROED = {s["name"] for s in catalogue if s["kind"] in ("motion", "weapon", "interlock")}
+
+
+def neutral(s):
+    return s["drive"] == 128 and s["pivot"] == 128 and all(s[k] == 0 for k in ZEROED)
+
+
 frames = [json.loads(line) for line in sys.stdin if line.strip()]
 problems = []
 if len(frames) < a.min:

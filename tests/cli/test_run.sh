@@ -7,7 +7,7 @@ harness() { python3 "$HERE/pty_harness.py" "$@"; }
 # check CAPTURE ARGS...: the capture's frames pass check_frames.py ARGS.
 check() {
   local cap=$1; shift
-  "$BIN" frame decode "$cap" 2>/dev/null | python3 "$HERE/check_frames.py" "$@" >"$TMP/check" ||
+  "$BIN" frame decode "$cap" 2>/dev/null | python3 "$HERE/check_frames.py" --bin "$BIN" "$@" >"$TMP/check" ||
     fail "$cap: $(cat "$TMP/check")"
 }
 
