@@ -12,6 +12,9 @@ namespace {
 namespace fs = std::filesystem;
 using yaml::Reader;
 
+/// A mapping and its bases, each read by a nested call: the bound keeps the stack small.
+constexpr std::size_t kMaxExtendsChain = 16;
+
 InputUse use(const Reader& r, const YAML::Node& node, InputKey key) { return InputUse{key, r.pos(node)}; }
 
 void read_axis_extras(const Reader& r, const YAML::Node& n, bool& invert, double* threshold) {
@@ -115,7 +118,13 @@ Binding read_selector_binding(const Reader& r, const YAML::Node& n, Binding b) {
   for (const auto& p : positions) {
     r.expect_list(p, "a position (a list of the signals it sets, [] for none)");
     std::vector<SignalId> bits;
-    for (const auto& sig : p) bits.push_back(r.signal(sig));
+    for (const auto& sig : p) {
+      const SignalId id = r.signal(sig);
+      if (std::find(bits.begin(), bits.end(), id) != bits.end()) {
+        r.fail(sig, "'" + std::string(info(id).name) + "' is given twice in this position");
+      }
+      bits.push_back(id);
+    }
     s.positions.push_back(std::move(bits));
   }
   b.target_pos = r.pos(positions);
@@ -179,6 +188,11 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
 
 void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, std::vector<fs::path>& chain,
                    Mapping& out) {
+  if (chain.size() >= kMaxExtendsChain) {
+    r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.size() + 1) +
+                     " of the chain from '" + chain.front().filename().string() + "' (at most " +
+                     std::to_string(kMaxExtendsChain) + " files)");
+  }
   const auto base_path = file.parent_path() / r.text(node, "extends");
   // The base's values stand unless this file sets them; its robot does not carry over.
   out = read_file(base_path, chain, r.pos(node));
@@ -197,14 +211,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
   }
   chain.push_back(canonical);
   const Reader r(file.string());
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file.string());
-  } catch (const YAML::ParserException& e) {
-    throw InputError(SourcePos{file.string(), e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw InputError(SourcePos{file.string()}, std::string("cannot read: ") + e.what());
-  }
+  const YAML::Node root = r.load_document();
   r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
                 "a mapping file");
   Mapping m;

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace andros::yaml {
 namespace {
@@ -25,7 +26,47 @@ std::string catalogue_names() {
   return out;
 }
 
+// Walks the document as the loader will, each alias as a copy of what it
+// names, counting nodes as they are found so that the walk itself is bounded.
+void check_size(const Reader& r, const YAML::Node& root) {
+  std::vector<YAML::Node> todo{root};
+  std::size_t found = 1;
+  while (!todo.empty()) {
+    const YAML::Node node = todo.back();
+    todo.pop_back();
+    if (!node.IsMap() && !node.IsSequence()) continue;
+    found += node.IsMap() ? 2 * node.size() : node.size();
+    if (found > kMaxNodes) {
+      r.fail(node, "the document is too large: more than " + std::to_string(kMaxNodes) +
+                       " YAML nodes, counting each alias as a copy of what it names (docs/mapping.md)");
+    }
+    for (const auto& child : node) {
+      if (node.IsMap()) {
+        todo.push_back(child.first);
+        todo.push_back(child.second);
+      } else {
+        todo.push_back(child);
+      }
+    }
+  }
+}
+
 }  // namespace
+
+YAML::Node Reader::load_document() const {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAllFromFile(file_);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(SourcePos{file_, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(SourcePos{file_}, std::string("cannot read: ") + e.what());
+  }
+  if (documents.empty()) return YAML::Node();
+  if (documents.size() > 1) fail(documents[1], "a second YAML document ('---'): a mapping file holds one");
+  check_size(*this, documents[0]);
+  return documents[0];
+}
 
 SourcePos Reader::pos(const YAML::Node& node) const {
   const auto mark = node.Mark();
