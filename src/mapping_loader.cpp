@@ -166,12 +166,12 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n) {
   layer.name = r.text(name, "layer name");
   layer.pos = r.pos(name);
   if ((n["hold"] ? 1 : 0) + (n["toggle"] ? 1 : 0) != 1) {
-    r.fail(n, "layer '" + layer.name + "' needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'");
+    r.fail(n, "layer " + quote(layer.name) + " needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'");
   }
   layer.toggle = static_cast<bool>(n["toggle"]);
   const auto button = layer.toggle ? n["toggle"] : n["hold"];
   layer.input = use(r, button, r.button(button));
-  if (!n["bindings"]) r.fail(n, "layer '" + layer.name + "' needs 'bindings'");
+  if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
   layer.bindings = read_bindings(r, n["bindings"]);
   return layer;
 }
@@ -203,7 +203,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
   if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file '" + file.string() + "'");
+                                                       "cannot open mapping file " + quote(file.string()));
   if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
     std::string loop;
     for (const auto& f : chain) loop += f.filename().string() + " -> ";
@@ -220,7 +220,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
   if (root["robot"]) {
     const auto name = r.text(root["robot"], "robot");
     m.robot = canonical_robot(name);
-    if (!m.robot) r.fail(root["robot"], "unknown robot '" + name + "' (expected " + robot_list() + ")");
+    if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + robot_list() + ")");
     m.robot_pos = r.pos(root["robot"]);
   }
   if (root["center"]) {
@@ -238,7 +238,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
     const auto mode = r.text(b, "brake");
     if (mode == "enabled") m.brake = BrakeMode::kEnabled;
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
-    else r.fail(b, "brake must be 'enabled' or 'moving', not '" + mode + "'");
+    else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
   if (root["bindings"]) merge_bindings(m.bindings, read_bindings(r, root["bindings"]));
   if (const auto layers = root["layers"]) {
@@ -246,7 +246,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
     std::set<std::string> seen;
     for (const auto& kv : layers) {
       auto layer = read_layer(r, kv.first, kv.second);
-      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer '" + layer.name + "' given twice");
+      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer " + quote(layer.name) + " given twice");
       const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
       if (it == m.layers.end()) {
         m.layers.push_back(std::move(layer));

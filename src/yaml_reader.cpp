@@ -95,9 +95,9 @@ void Reader::expect_keys(const YAML::Node& map, std::initializer_list<std::strin
     bool known = false;
     for (const auto a : allowed) known = known || a == key;
     if (!known) {
-      fail(kv.first, "unknown key '" + key + "' in " + std::string(what) + " (expected " + join(allowed) + ")");
+      fail(kv.first, "unknown key " + quote(key) + " in " + std::string(what) + " (expected " + join(allowed) + ")");
     }
-    if (!seen.insert(key).second) fail(kv.first, "key '" + key + "' given twice");
+    if (!seen.insert(key).second) fail(kv.first, "key " + quote(key) + " given twice");
   }
 }
 
@@ -117,7 +117,7 @@ long long Reader::integer(const YAML::Node& node, long long min, long long max, 
   long long value = 0;
   const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
   if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size()) {
-    fail(node, std::string(what) + " '" + s + "' is not a whole number");
+    fail(node, std::string(what) + " " + quote(s) + " is not a whole number");
   }
   if (value < min || value > max) {
     fail(node, std::string(what) + " " + s + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
@@ -130,7 +130,7 @@ double Reader::number(const YAML::Node& node, double min, double max, bool max_o
   double value = 0;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(value)) {
-    fail(node, std::string(what) + " '" + s + "' is not a number");
+    fail(node, std::string(what) + " " + quote(s) + " is not a number");
   }
   if (value < min || value > max || (max_open && value == max)) {
     char range[64];
@@ -144,15 +144,15 @@ bool Reader::boolean(const YAML::Node& node, std::string_view what) const {
   const auto s = text(node, what);
   if (s == "true") return true;
   if (s == "false") return false;
-  fail(node, std::string(what) + " must be true or false, not '" + s + "'");
+  fail(node, std::string(what) + " must be true or false, not " + quote(s));
 }
 
 InputKey Reader::button(const YAML::Node& node) const {
   const auto name = text(node, "a button");
   const auto key = parse_button_name(name);
   if (!key) {
-    fail(node, "unknown button '" + name +
-                   "' (an SDL game-controller button such as a, leftshoulder, dpup; a joystick button "
+    fail(node, "unknown button " + quote(name) +
+                   " (an SDL game-controller button such as a, leftshoulder, dpup; a joystick button "
                    "number; or a hat direction such as hat0up)");
   }
   return *key;
@@ -162,8 +162,8 @@ InputKey Reader::axis(const YAML::Node& node) const {
   const auto name = text(node, "an axis");
   const auto key = parse_axis_name(name);
   if (!key) {
-    fail(node, "unknown axis '" + name +
-                   "' (leftx, lefty, rightx, righty, lefttrigger, righttrigger, or a joystick axis number)");
+    fail(node, "unknown axis " + quote(name) +
+                   " (leftx, lefty, rightx, righty, lefttrigger, righttrigger, or a joystick axis number)");
   }
   return *key;
 }
@@ -172,7 +172,7 @@ InputKey Reader::button_or_trigger(const YAML::Node& node, std::string_view what
   const auto name = text(node, what);
   if (const auto key = parse_button_name(name)) return *key;
   if (name == "lefttrigger" || name == "righttrigger") return *parse_axis_name(name);
-  fail(node, std::string(what) + " '" + name + "' is not a button or a trigger (lefttrigger, righttrigger)");
+  fail(node, std::string(what) + " " + quote(name) + " is not a button or a trigger (lefttrigger, righttrigger)");
 }
 
 SignalId Reader::signal(const YAML::Node& node) const {
@@ -205,7 +205,7 @@ SignalId Reader::signal(const YAML::Node& node) const {
                      ".0 .. byte" + std::to_string(byte) + ".7) or a signal");
     }
   }
-  fail(node, "unknown signal '" + name + "' (expected one of: " + catalogue_names() + ")");
+  fail(node, "unknown signal " + quote(name) + " (expected one of: " + catalogue_names() + ")");
 }
 
 }  // namespace andros::yaml

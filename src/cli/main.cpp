@@ -3,13 +3,68 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 
 #include "andros/error.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
+
+namespace {
+
+// Output that never reached its file is a failure even when the command went
+// well (as coreutils' close_stdout): a full disk must not pass for a complete
+// capture. An error already reported keeps its own line and code.
+int check_stdout(int exit_code) {
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;  // std::cout writes through stdout's buffer (synced)
+  const int error = errno;
+  if (flushed && std::ferror(stdout) == 0) return exit_code;
+  if (exit_code != andros::kExitOk) return exit_code;
+  std::fprintf(stderr, "andros-bridge: error: standard output: %s\n",
+               error != 0 ? std::strerror(error) : "write error");
+  return andros::kExitRuntime;
+}
+
+// An empty value would read as "not given" and fall back to a default
+// (`--mapping ""` running the shipped mapping): no option takes one.
+void refuse_empty_values(CLI::App& app) {
+  const auto takes_value = [](CLI::Option* o) { return !o->get_positional() && o->get_items_expected_min() > 0; };
+  for (auto* option : app.get_options(takes_value)) {
+    option->check([name = option->get_name()](const std::string& value) -> std::string {
+      if (value.empty()) {
+        throw andros::InputError(andros::SourcePos{name}, "empty value (give one, or leave the option out)");
+      }
+      return {};
+    });
+  }
+  for (auto* sub : app.get_subcommands([](CLI::App*) { return true; })) refuse_empty_values(*sub);
+}
+
+/// Parses (which runs the chosen command) and turns what escapes into a line and a code.
+int run(CLI::App& app, int argc, char** argv, const int& exit_code) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "andros-bridge: error: %s (see --help)\n", e.what());
+    return andros::kExitBadInput;
+  } catch (const andros::InputError& e) {
+    // With no file to name, say which program is talking.
+    std::fprintf(stderr, "%s%s\n", e.pos().file.empty() ? "andros-bridge: " : "", e.what());
+    return andros::kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+    return andros::kExitRuntime;
+  }
+  return exit_code;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -33,21 +88,7 @@ int main(int argc, char** argv) {
   andros::cli::add_monitor_command(app, exit_code);
   andros::cli::add_controllers_command(app, exit_code);
   andros::cli::add_record_command(app, exit_code);
+  refuse_empty_values(app);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {  // --help, --version
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s (see --help)\n", e.what());
-    return andros::kExitBadInput;
-  } catch (const andros::InputError& e) {
-    // With no file to name, say which program is talking.
-    std::fprintf(stderr, "%s%s\n", e.pos().file.empty() ? "andros-bridge: " : "", e.what());
-    return andros::kExitBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
-    return andros::kExitRuntime;
-  }
-  return exit_code;
+  return check_stdout(run(app, argc, argv, exit_code));
 }
