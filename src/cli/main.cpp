@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
       "andros-bridge"};
   app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
+  app.footer("Exit codes: 0 success, 1 runtime failure (also output lost to a full disk), 2 bad input.\n"
              "Run 'andros-bridge COMMAND --help' for a command's options.");
   // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
   spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
