@@ -184,13 +184,18 @@ void merge_bindings(std::vector<Binding>& base, std::vector<Binding> over) {
   for (auto& b : over) base.push_back(std::move(b));
 }
 
-Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const SourcePos& from);
+/// The files being read, outermost first, and the YAML nodes they may still hold.
+struct Chain {
+  std::vector<fs::path> files;
+  std::size_t node_budget = yaml::kMaxNodes;
+};
 
-void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, std::vector<fs::path>& chain,
-                   Mapping& out) {
-  if (chain.size() >= kMaxExtendsChain) {
-    r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.size() + 1) +
-                     " of the chain from '" + chain.front().filename().string() + "' (at most " +
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from);
+
+void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
+  if (chain.files.size() >= kMaxExtendsChain) {
+    r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.files.size() + 1) +
+                     " of the chain from '" + chain.files.front().filename().string() + "' (at most " +
                      std::to_string(kMaxExtendsChain) + " files)");
   }
   const auto base_path = file.parent_path() / r.text(node, "extends");
@@ -199,19 +204,19 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
   out.robot.reset();
 }
 
-Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const SourcePos& from) {
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
   if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
                                                        "cannot open mapping file " + quote(file.string()));
-  if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
+  if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
-    for (const auto& f : chain) loop += f.filename().string() + " -> ";
+    for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
     throw InputError(from, "'extends' makes a cycle: " + loop + canonical.filename().string());
   }
-  chain.push_back(canonical);
+  chain.files.push_back(canonical);
   const Reader r(file.string());
-  const YAML::Node root = r.load_document();
+  const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
@@ -258,14 +263,14 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
       }
     }
   }
-  chain.pop_back();
+  chain.files.pop_back();
   return m;
 }
 
 }  // namespace
 
 Mapping load_mapping_file(const fs::path& file) {
-  std::vector<fs::path> chain;
+  Chain chain;
   return read_file(file, chain, SourcePos{});
 }
 

@@ -28,7 +28,8 @@ std::string catalogue_names() {
 
 // Walks the document as the loader will, each alias as a copy of what it
 // names, counting nodes as they are found so that the walk itself is bounded.
-void check_size(const Reader& r, const YAML::Node& root) {
+// Returns how many it found, at most budget.
+std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t budget) {
   std::vector<YAML::Node> todo{root};
   std::size_t found = 1;
   while (!todo.empty()) {
@@ -36,9 +37,10 @@ void check_size(const Reader& r, const YAML::Node& root) {
     todo.pop_back();
     if (!node.IsMap() && !node.IsSequence()) continue;
     found += node.IsMap() ? 2 * node.size() : node.size();
-    if (found > kMaxNodes) {
-      r.fail(node, "the document is too large: more than " + std::to_string(kMaxNodes) +
-                       " YAML nodes, counting each alias as a copy of what it names (docs/mapping.md)");
+    if (found > budget) {
+      r.fail(node, "the mapping is too large: more than " + std::to_string(kMaxNodes) +
+                       " YAML nodes in this file and the files it extends, counting each alias as a copy of what "
+                       "it names (docs/mapping.md)");
     }
     for (const auto& child : node) {
       if (node.IsMap()) {
@@ -49,11 +51,12 @@ void check_size(const Reader& r, const YAML::Node& root) {
       }
     }
   }
+  return found;
 }
 
 }  // namespace
 
-YAML::Node Reader::load_document() const {
+YAML::Node Reader::load_document(std::size_t& budget) const {
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAllFromFile(file_);
@@ -64,7 +67,7 @@ YAML::Node Reader::load_document() const {
   }
   if (documents.empty()) return YAML::Node();
   if (documents.size() > 1) fail(documents[1], "a second YAML document ('---'): a mapping file holds one");
-  check_size(*this, documents[0]);
+  budget -= count_nodes(*this, documents[0], budget);
   return documents[0];
 }
 

@@ -163,9 +163,27 @@ TEST(MappingLoader, AliasBombsAreRefusedBeforeTheyAreExpanded) {
     } catch (const InputError& e) {
       EXPECT_EQ(fs::path(e.pos().file).filename(), "bomb.yaml");
       EXPECT_GT(e.pos().line, 0);
-      EXPECT_NE(e.message().find("the document is too large: more than 100000 YAML nodes"), std::string::npos)
+      EXPECT_NE(e.message().find("the mapping is too large: more than 100000 YAML nodes"), std::string::npos)
           << e.what();
     }
+  }
+}
+
+TEST(MappingLoader, NodeBoundCoversTheFilesExtendedToo) {
+  std::string list = "[tool_on";
+  for (int i = 1; i < 60'000; ++i) list += ", tool_on";
+  list += "]\n";
+  MappingDir dir;
+  dir.write("base.yaml", "bindings: " + list);
+  const auto file = dir.write("top.yaml", "robot: HD1\ndeadman: a\nextends: base.yaml\nbindings: " + list);
+  try {
+    load_mapping(file);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(fs::path(e.pos().file).filename(), "base.yaml");
+    EXPECT_EQ(e.pos().line, 1);
+    EXPECT_EQ(e.pos().column, 11);
+    EXPECT_NE(e.message().find("the mapping is too large"), std::string::npos) << e.what();
   }
 }
 

@@ -108,7 +108,7 @@ expect_error "deep15.yaml:1:10: error: 'extends' chain too long: this base would
 { printf "$head"'  - selector: cam\n    next: a\n    positions:\n      - &p [main_video_2'
   for _ in $(seq 1000); do printf ', main_video_2'; done; printf ']\n'
   yes '      - *p' | head -200000; } >bomb.yaml
-expect_error "bomb.yaml:7:7: error: the document is too large: more than 100000 YAML nodes, counting each alias as a copy of what it names (docs/mapping.md)" timeout 20 "$BIN" check bomb.yaml
+expect_error "bomb.yaml:7:7: error: the mapping is too large: more than 100000 YAML nodes in this file and the files it extends, counting each alias as a copy of what it names (docs/mapping.md)" timeout 20 "$BIN" check bomb.yaml
 
 # User text in an error is quoted: printable ASCII as is, other bytes (a NUL, a BOM) as \xNN, long text cut short.
 printf '0 conn\0ect\n' >nul.events
