@@ -12,7 +12,8 @@ namespace {
 namespace fs = std::filesystem;
 using yaml::Reader;
 
-/// A mapping and its bases, each read by a nested call: the bound keeps the stack small.
+/// The most files in an `extends` chain (the one loaded and its bases). Each
+/// is read by a nested call, so the bound also bounds the stack.
 constexpr std::size_t kMaxExtendsChain = 16;
 
 InputUse use(const Reader& r, const YAML::Node& node, InputKey key) { return InputUse{key, r.pos(node)}; }
