@@ -1,13 +1,19 @@
 // libFuzzer target: the mapping loader (YAML text in). Any text is either a
 // mapping that validates, and then runs in an Engine, or an InputError that
 // names the file; nothing else may escape, crash or hang.
+//
+// The input may hold several files, each after a line `#file` (a YAML
+// comment): they are written as 0.yaml, 1.yaml, ... and 0.yaml is loaded, so
+// that `extends: 1.yaml` chains, cycles and too-deep chains are reachable.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 
 #include "andros/engine.hpp"
 #include "andros/error.hpp"
@@ -17,14 +23,31 @@
 namespace {
 
 
-std::filesystem::path scratch_file() {
+constexpr std::string_view kFileSeparator = "\n#file\n";
+constexpr int kMaxFiles = 24;  // more than an extends chain may hold
+
+std::filesystem::path scratch_dir() {
   // A private folder, so `extends: x.yaml` finds only what the input makes.
   static const auto dir = [] {
     auto d = std::filesystem::temp_directory_path() / ("andros-fuzz-mapping-" + std::to_string(getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();
-  return dir / "fuzz.yaml";
+  return dir;
+}
+
+/// Writes the input's files (none left from the last input) and returns the first.
+std::filesystem::path write_files(std::string_view text) {
+  const auto dir = scratch_dir();
+  for (int i = 0; i < kMaxFiles; ++i) std::filesystem::remove(dir / (std::to_string(i) + ".yaml"));
+  for (int i = 0; i < kMaxFiles; ++i) {
+    const auto cut = i + 1 < kMaxFiles ? text.find(kFileSeparator) : std::string_view::npos;
+    std::ofstream out(dir / (std::to_string(i) + ".yaml"), std::ios::binary | std::ios::trunc);
+    out.write(text.data(), static_cast<std::streamsize>(std::min(cut, text.size())));
+    if (cut == std::string_view::npos) break;
+    text.remove_prefix(cut + kFileSeparator.size());
+  }
+  return dir / "0.yaml";
 }
 
 }  // namespace
@@ -32,11 +55,7 @@ std::filesystem::path scratch_file() {
 using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto file = scratch_file();
-  {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  }
+  const auto file = write_files(std::string_view(reinterpret_cast<const char*>(data), size));
   andros::Mapping mapping;
   try {
     mapping = andros::load_mapping_file(file);

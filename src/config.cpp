@@ -49,7 +49,7 @@ bool parse_weapons(std::string_view text, const SourcePos& pos) {
   const auto v = lower(text);
   if (v == "enabled" || v == "true" || v == "yes" || v == "on" || v == "1") return true;
   if (v == "disabled" || v == "false" || v == "no" || v == "off" || v == "0") return false;
-  throw InputError(pos, "weapons '" + std::string(text) + "' must be enabled or disabled");
+  throw InputError(pos, "weapons " + quote(text) + " must be enabled or disabled");
 }
 
 std::int64_t rate_millihertz(const RunConfig& config) {
@@ -67,7 +67,7 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
     const auto eq = text.find('=');
     if (eq == std::string_view::npos) {
       throw InputError(SourcePos{file_name, line_no, 1},
-                       "expected key=value, got '" + std::string(text) + "'");
+                       "expected key=value, got " + quote(text));
     }
     const auto key = lower(trim(text.substr(0, eq)));
     const auto value = trim(text.substr(eq + 1));
@@ -75,7 +75,7 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
     const int value_col = static_cast<int>(line.find('=')) + 2 +
                           static_cast<int>(text.substr(eq + 1).find_first_not_of(" \t"));
     const SourcePos pos{file_name, line_no, value.empty() ? 0 : value_col};
-    if (value.empty()) throw InputError(line_pos, "'" + key + "' has no value");
+    if (value.empty()) throw InputError(line_pos, quote(key) + " has no value");
 
     if (key == "baudrate") {
       config.baud = parse_baud(value, pos);
@@ -85,7 +85,7 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
     } else if (key == "robot") {
       const auto robot = canonical_robot(value);
       if (!robot) {
-        throw InputError(pos, "unknown robot '" + std::string(value) + "' (one of " + robot_list() + ")");
+        throw InputError(pos, "unknown robot " + quote(value) + " (one of " + robot_list() + ")");
       }
       config.robot = *robot;
     } else if (key == "code") {
@@ -103,8 +103,8 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
       config.input = relative_to(file_name, value);
     } else {
       throw InputError(SourcePos{file_name, line_no, 1},
-                       "unknown key '" + key +
-                           "' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)");
+                       "unknown key " + quote(key) +
+                           " (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)");
     }
   }
 }

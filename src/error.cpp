@@ -1,11 +1,44 @@
 #include "andros/error.hpp"
 
 namespace andros {
+namespace {
+
+bool printable(char c) { return c >= 0x20 && c < 0x7F; }
+
+void append_escaped(std::string& out, unsigned char c) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  out += "\\x";
+  out += kHex[c >> 4];
+  out += kHex[c & 0xF];
+}
+
+std::string escaped(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (printable(c)) out += c;
+    else append_escaped(out, static_cast<unsigned char>(c));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string quote(std::string_view text) {
+  std::string out = "'";
+  for (const char c : text.substr(0, kMaxQuoted)) {
+    if (c == '\\') out += "\\\\";
+    else if (printable(c)) out += c;
+    else append_escaped(out, static_cast<unsigned char>(c));
+  }
+  out += '\'';
+  if (text.size() > kMaxQuoted) out += "... (" + std::to_string(text.size()) + " bytes)";
+  return out;
+}
 
 std::string format_error(const SourcePos& pos, const std::string& message) {
   std::string out;
   if (!pos.file.empty()) {
-    out += pos.file;
+    out += escaped(pos.file);
     if (pos.line > 0) {
       out += ':' + std::to_string(pos.line);
       if (pos.column > 0) out += ':' + std::to_string(pos.column);
@@ -13,7 +46,7 @@ std::string format_error(const SourcePos& pos, const std::string& message) {
     out += ": ";
   }
   out += "error: ";
-  out += message;
+  out += escaped(message);
   return out;
 }
 

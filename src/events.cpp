@@ -87,7 +87,7 @@ std::optional<InputEvent> EventReader::next() {
       ev.type = T::kButton;
       const auto key = parse_button_name(tokens[2].text);
       if (!key || key->kind == InputKind::kHat) {
-        throw fail(tokens[2], "unknown button '" + std::string(tokens[2].text) + "'");
+        throw fail(tokens[2], "unknown button " + quote(tokens[2].text));
       }
       ev.key = *key;
       ev.value = static_cast<int>(parse_integer(tokens[3].text, 0, 1, "button value", at(tokens[3])));
@@ -95,7 +95,7 @@ std::optional<InputEvent> EventReader::next() {
       want_args(2, "axis NAME VALUE");
       ev.type = T::kAxis;
       const auto key = parse_axis_name(tokens[2].text);
-      if (!key) throw fail(tokens[2], "unknown axis '" + std::string(tokens[2].text) + "'");
+      if (!key) throw fail(tokens[2], "unknown axis " + quote(tokens[2].text));
       ev.key = *key;
       ev.value = static_cast<int>(parse_integer(tokens[3].text, -32768, 32767, "axis value", at(tokens[3])));
     } else if (kind.text == "hat") {
@@ -110,10 +110,10 @@ std::optional<InputEvent> EventReader::next() {
           found = true;
         }
       }
-      if (!found) throw fail(tokens[3], "unknown hat position '" + std::string(tokens[3].text) + "'");
+      if (!found) throw fail(tokens[3], "unknown hat position " + quote(tokens[3].text));
     } else {
-      throw fail(kind, "unknown event '" + std::string(kind.text) +
-                           "' (expected connect, disconnect, button, axis, hat or end)");
+      throw fail(kind, "unknown event " + quote(kind.text) +
+                           " (expected connect, disconnect, button, axis, hat or end)");
     }
     last_t_ = ev.t_ms;
     return ev;

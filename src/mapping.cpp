@@ -215,7 +215,7 @@ void validate(const Mapping& m, bool require_robot) {
         throw InputError(layer.input.pos, "'" + input_name(r.key) + "' already switches a layer or is the deadman");
       }
     }
-    if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer '" + layer.name + "' given twice");
+    if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer " + quote(layer.name) + " given twice");
     reserved.push_back(layer.input);
   }
   std::map<SignalId, SourcePos> selector_signals;

@@ -12,6 +12,10 @@ namespace {
 namespace fs = std::filesystem;
 using yaml::Reader;
 
+/// The most files in an `extends` chain (the one loaded and its bases). Each
+/// is read by a nested call, so the bound also bounds the stack.
+constexpr std::size_t kMaxExtendsChain = 16;
+
 InputUse use(const Reader& r, const YAML::Node& node, InputKey key) { return InputUse{key, r.pos(node)}; }
 
 void read_axis_extras(const Reader& r, const YAML::Node& n, bool& invert, double* threshold) {
@@ -115,7 +119,13 @@ Binding read_selector_binding(const Reader& r, const YAML::Node& n, Binding b) {
   for (const auto& p : positions) {
     r.expect_list(p, "a position (a list of the signals it sets, [] for none)");
     std::vector<SignalId> bits;
-    for (const auto& sig : p) bits.push_back(r.signal(sig));
+    for (const auto& sig : p) {
+      const SignalId id = r.signal(sig);
+      if (std::find(bits.begin(), bits.end(), id) != bits.end()) {
+        r.fail(sig, "'" + std::string(info(id).name) + "' is given twice in this position");
+      }
+      bits.push_back(id);
+    }
     s.positions.push_back(std::move(bits));
   }
   b.target_pos = r.pos(positions);
@@ -157,12 +167,12 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n) {
   layer.name = r.text(name, "layer name");
   layer.pos = r.pos(name);
   if ((n["hold"] ? 1 : 0) + (n["toggle"] ? 1 : 0) != 1) {
-    r.fail(n, "layer '" + layer.name + "' needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'");
+    r.fail(n, "layer " + quote(layer.name) + " needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'");
   }
   layer.toggle = static_cast<bool>(n["toggle"]);
   const auto button = layer.toggle ? n["toggle"] : n["hold"];
   layer.input = use(r, button, r.button(button));
-  if (!n["bindings"]) r.fail(n, "layer '" + layer.name + "' needs 'bindings'");
+  if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
   layer.bindings = read_bindings(r, n["bindings"]);
   return layer;
 }
@@ -175,36 +185,39 @@ void merge_bindings(std::vector<Binding>& base, std::vector<Binding> over) {
   for (auto& b : over) base.push_back(std::move(b));
 }
 
-Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const SourcePos& from);
+/// The files being read, outermost first, and the YAML nodes they may still hold.
+struct Chain {
+  std::vector<fs::path> files;
+  std::size_t node_budget = yaml::kMaxNodes;
+};
 
-void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, std::vector<fs::path>& chain,
-                   Mapping& out) {
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from);
+
+void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
+  if (chain.files.size() >= kMaxExtendsChain) {
+    r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.files.size() + 1) +
+                     " of the chain from '" + chain.files.front().filename().string() + "' (at most " +
+                     std::to_string(kMaxExtendsChain) + " files)");
+  }
   const auto base_path = file.parent_path() / r.text(node, "extends");
   // The base's values stand unless this file sets them; its robot does not carry over.
   out = read_file(base_path, chain, r.pos(node));
   out.robot.reset();
 }
 
-Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const SourcePos& from) {
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
   if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file '" + file.string() + "'");
-  if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
+                                                       "cannot open mapping file " + quote(file.string()));
+  if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
-    for (const auto& f : chain) loop += f.filename().string() + " -> ";
+    for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
     throw InputError(from, "'extends' makes a cycle: " + loop + canonical.filename().string());
   }
-  chain.push_back(canonical);
+  chain.files.push_back(canonical);
   const Reader r(file.string());
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file.string());
-  } catch (const YAML::ParserException& e) {
-    throw InputError(SourcePos{file.string(), e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw InputError(SourcePos{file.string()}, std::string("cannot read: ") + e.what());
-  }
+  const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
@@ -213,7 +226,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
   if (root["robot"]) {
     const auto name = r.text(root["robot"], "robot");
     m.robot = canonical_robot(name);
-    if (!m.robot) r.fail(root["robot"], "unknown robot '" + name + "' (expected " + robot_list() + ")");
+    if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + robot_list() + ")");
     m.robot_pos = r.pos(root["robot"]);
   }
   if (root["center"]) {
@@ -231,7 +244,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
     const auto mode = r.text(b, "brake");
     if (mode == "enabled") m.brake = BrakeMode::kEnabled;
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
-    else r.fail(b, "brake must be 'enabled' or 'moving', not '" + mode + "'");
+    else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
   if (root["bindings"]) merge_bindings(m.bindings, read_bindings(r, root["bindings"]));
   if (const auto layers = root["layers"]) {
@@ -239,7 +252,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
     std::set<std::string> seen;
     for (const auto& kv : layers) {
       auto layer = read_layer(r, kv.first, kv.second);
-      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer '" + layer.name + "' given twice");
+      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer " + quote(layer.name) + " given twice");
       const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
       if (it == m.layers.end()) {
         m.layers.push_back(std::move(layer));
@@ -251,14 +264,14 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
       }
     }
   }
-  chain.pop_back();
+  chain.files.pop_back();
   return m;
 }
 
 }  // namespace
 
 Mapping load_mapping_file(const fs::path& file) {
-  std::vector<fs::path> chain;
+  Chain chain;
   return read_file(file, chain, SourcePos{});
 }
 

@@ -27,7 +27,7 @@ std::vector<fs::path> mapping_search_path() {
 fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>& search_path) {
   const auto canonical = canonical_robot(robot);
   if (!canonical) {
-    throw InputError(SourcePos{"--robot"}, "unknown robot '" + std::string(robot) + "' (expected " + robot_list() + ")");
+    throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(robot) + " (expected " + robot_list() + ")");
   }
   std::string file = *canonical;
   for (auto& c : file) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -8,7 +8,7 @@
 namespace andros {
 
 std::int64_t parse_rate(std::string_view text, int baud, const SourcePos& pos) {
-  const auto bad = [&](const std::string& why) { return InputError(pos, "rate '" + std::string(text) + "' " + why); };
+  const auto bad = [&](const std::string& why) { return InputError(pos, "rate " + quote(text) + " " + why); };
   const auto dot = text.find('.');
   const auto whole = text.substr(0, dot);
   const auto frac = dot == std::string_view::npos ? std::string_view{} : text.substr(dot + 1);
@@ -41,7 +41,7 @@ ReplayFormat parse_replay_format(std::string_view text, const SourcePos& pos) {
   if (text == "hex") return ReplayFormat::kHex;
   if (text == "raw") return ReplayFormat::kRaw;
   if (text == "jsonl") return ReplayFormat::kJsonl;
-  throw InputError(pos, "format '" + std::string(text) + "' is not one of hex, raw, jsonl");
+  throw InputError(pos, "format " + quote(text) + " is not one of hex, raw, jsonl");
 }
 
 std::int64_t replay(ScriptPlayer& player, Engine& engine, const FrameClock& clock, const FrameSink& sink) {

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace andros::yaml {
 namespace {
@@ -25,7 +26,50 @@ std::string catalogue_names() {
   return out;
 }
 
+// Walks the document as the loader will, each alias as a copy of what it
+// names, counting nodes as they are found so that the walk itself is bounded.
+// Returns how many it found, at most budget.
+std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t budget) {
+  std::vector<YAML::Node> todo{root};
+  std::size_t found = 1;
+  while (!todo.empty()) {
+    const YAML::Node node = todo.back();
+    todo.pop_back();
+    if (!node.IsMap() && !node.IsSequence()) continue;
+    found += node.IsMap() ? 2 * node.size() : node.size();
+    if (found > budget) {
+      r.fail(node, "the mapping is too large: more than " + std::to_string(kMaxNodes) +
+                       " YAML nodes in this file and the files it extends, counting each alias as a copy of what "
+                       "it names (docs/mapping.md)");
+    }
+    for (const auto& child : node) {
+      if (node.IsMap()) {
+        todo.push_back(child.first);
+        todo.push_back(child.second);
+      } else {
+        todo.push_back(child);
+      }
+    }
+  }
+  return found;
+}
+
 }  // namespace
+
+YAML::Node Reader::load_document(std::size_t& budget) const {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAllFromFile(file_);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(SourcePos{file_, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(SourcePos{file_}, std::string("cannot read: ") + e.what());
+  }
+  if (documents.empty()) return YAML::Node();
+  if (documents.size() > 1) fail(documents[1], "a second YAML document ('---'): a mapping file holds one");
+  budget -= count_nodes(*this, documents[0], budget);
+  return documents[0];
+}
 
 SourcePos Reader::pos(const YAML::Node& node) const {
   const auto mark = node.Mark();
@@ -54,9 +98,9 @@ void Reader::expect_keys(const YAML::Node& map, std::initializer_list<std::strin
     bool known = false;
     for (const auto a : allowed) known = known || a == key;
     if (!known) {
-      fail(kv.first, "unknown key '" + key + "' in " + std::string(what) + " (expected " + join(allowed) + ")");
+      fail(kv.first, "unknown key " + quote(key) + " in " + std::string(what) + " (expected " + join(allowed) + ")");
     }
-    if (!seen.insert(key).second) fail(kv.first, "key '" + key + "' given twice");
+    if (!seen.insert(key).second) fail(kv.first, "key " + quote(key) + " given twice");
   }
 }
 
@@ -76,7 +120,7 @@ long long Reader::integer(const YAML::Node& node, long long min, long long max, 
   long long value = 0;
   const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
   if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size()) {
-    fail(node, std::string(what) + " '" + s + "' is not a whole number");
+    fail(node, std::string(what) + " " + quote(s) + " is not a whole number");
   }
   if (value < min || value > max) {
     fail(node, std::string(what) + " " + s + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
@@ -89,7 +133,7 @@ double Reader::number(const YAML::Node& node, double min, double max, bool max_o
   double value = 0;
   const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(value)) {
-    fail(node, std::string(what) + " '" + s + "' is not a number");
+    fail(node, std::string(what) + " " + quote(s) + " is not a number");
   }
   if (value < min || value > max || (max_open && value == max)) {
     char range[64];
@@ -103,15 +147,15 @@ bool Reader::boolean(const YAML::Node& node, std::string_view what) const {
   const auto s = text(node, what);
   if (s == "true") return true;
   if (s == "false") return false;
-  fail(node, std::string(what) + " must be true or false, not '" + s + "'");
+  fail(node, std::string(what) + " must be true or false, not " + quote(s));
 }
 
 InputKey Reader::button(const YAML::Node& node) const {
   const auto name = text(node, "a button");
   const auto key = parse_button_name(name);
   if (!key) {
-    fail(node, "unknown button '" + name +
-                   "' (an SDL game-controller button such as a, leftshoulder, dpup; a joystick button "
+    fail(node, "unknown button " + quote(name) +
+                   " (an SDL game-controller button such as a, leftshoulder, dpup; a joystick button "
                    "number; or a hat direction such as hat0up)");
   }
   return *key;
@@ -121,8 +165,8 @@ InputKey Reader::axis(const YAML::Node& node) const {
   const auto name = text(node, "an axis");
   const auto key = parse_axis_name(name);
   if (!key) {
-    fail(node, "unknown axis '" + name +
-                   "' (leftx, lefty, rightx, righty, lefttrigger, righttrigger, or a joystick axis number)");
+    fail(node, "unknown axis " + quote(name) +
+                   " (leftx, lefty, rightx, righty, lefttrigger, righttrigger, or a joystick axis number)");
   }
   return *key;
 }
@@ -131,7 +175,7 @@ InputKey Reader::button_or_trigger(const YAML::Node& node, std::string_view what
   const auto name = text(node, what);
   if (const auto key = parse_button_name(name)) return *key;
   if (name == "lefttrigger" || name == "righttrigger") return *parse_axis_name(name);
-  fail(node, std::string(what) + " '" + name + "' is not a button or a trigger (lefttrigger, righttrigger)");
+  fail(node, std::string(what) + " " + quote(name) + " is not a button or a trigger (lefttrigger, righttrigger)");
 }
 
 SignalId Reader::signal(const YAML::Node& node) const {
@@ -164,7 +208,7 @@ SignalId Reader::signal(const YAML::Node& node) const {
                      ".0 .. byte" + std::to_string(byte) + ".7) or a signal");
     }
   }
-  fail(node, "unknown signal '" + name + "' (expected one of: " + catalogue_names() + ")");
+  fail(node, "unknown signal " + quote(name) + " (expected one of: " + catalogue_names() + ")");
 }
 
 }  // namespace andros::yaml

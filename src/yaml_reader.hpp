@@ -14,11 +14,20 @@
 
 namespace andros::yaml {
 
+/// The most YAML nodes a mapping may hold, with all the files it extends,
+/// counting an alias as a copy of what it names: a few aliases can otherwise
+/// stand for billions of nodes.
+inline constexpr std::size_t kMaxNodes = 100'000;
+
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
   [[nodiscard]] const std::string& file() const { return file_; }
+  /// The file's one YAML document (a null node for an empty file), its nodes
+  /// taken from budget. A second document, or more nodes than budget holds,
+  /// is an InputError.
+  [[nodiscard]] YAML::Node load_document(std::size_t& budget) const;
   [[nodiscard]] SourcePos pos(const YAML::Node& node) const;
   [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
 

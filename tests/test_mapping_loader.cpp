@@ -99,12 +99,93 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"missing deadman", "robot: HD1\n", 0, 0, "missing 'deadman'"},
         BadMapping{"extends a missing file", "robot: HD1\nextends: nowhere.yaml\n", 2, 10, "cannot open mapping file"},
         BadMapping{"error inside the base", "robot: HD1\nextends: base.yaml\n", 4, 5, "unknown key 'buton'", "deadman: a\nbindings:\n  - signal: tool_on\n    buton: x\n", "base.yaml"},
+        BadMapping{"signal twice in a position", kHead + "  - selector: cam\n    next: a\n    positions: [[main_video_2, main_video_3, main_video_2], []]\n", 6, 46, "'main_video_2' is given twice in this position"},
+        BadMapping{"signal twice in a position through an alias", kHead + "  - selector: cam\n    next: a\n    positions: [[&v main_video_2, *v], []]\n", 6, 18, "'main_video_2' is given twice in this position"},
+        BadMapping{"a second document", "robot: HD1\ndeadman: a\n---\nrobot: F6A\n", 4, 1, "a second YAML document"},
+        BadMapping{"an empty second document", "robot: HD1\ndeadman: a\n---\n", 4, 1, "a second YAML document"},
+        BadMapping{"an alias inside what it names", "robot: HD1\ndeadman: a\nbindings: &b [*b]\n", 3, 11, "more than 100000 YAML nodes"},
         BadMapping{"extends cycle", "robot: HD1\nextends: base.yaml\n", 1, 10, "'extends' makes a cycle: bad.yaml -> base.yaml -> bad.yaml", "extends: bad.yaml\n", "base.yaml"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (auto& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       return name;
     });
+
+// c0.yaml extends c1.yaml ... extends c{n-1}.yaml, the last a plain base.
+fs::path write_chain(const MappingDir& dir, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::string text = i == 0 ? "robot: HD1\ndeadman: leftshoulder\n" : "";
+    text += i + 1 < n ? "extends: c" + std::to_string(i + 1) + ".yaml\n" : "bindings: []\n";
+    dir.write("c" + std::to_string(i) + ".yaml", text);
+  }
+  return dir.path() / "c0.yaml";
+}
+
+TEST(MappingLoader, ExtendsChainOfSixteenFilesLoads) {
+  MappingDir dir;
+  EXPECT_EQ(load_mapping(write_chain(dir, 16)).robot, "HD1");
+}
+
+TEST(MappingLoader, ExtendsChainLongerThanSixteenFilesIsRefusedAtTheExtendsTooFar) {
+  for (const int n : {17, 9000}) {  // 9,000 nested loads overflowed the stack
+    MappingDir dir;
+    try {
+      load_mapping(write_chain(dir, n));
+      FAIL() << n << " files accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(fs::path(e.pos().file).filename(), "c15.yaml");
+      EXPECT_EQ(e.pos().line, 1);
+      EXPECT_EQ(e.pos().column, 10);
+      EXPECT_EQ(e.message(), "'extends' chain too long: this base would be file 17 of the chain from 'c0.yaml' "
+                             "(at most 16 files)");
+    }
+  }
+}
+
+// Aliases are shared nodes in yaml-cpp: a short file can name billions of nodes.
+TEST(MappingLoader, AliasBombsAreRefusedBeforeTheyAreExpanded) {
+  std::string wide = kHead + "  - selector: cam\n    next: a\n    positions:\n      - &p [main_video_2";
+  for (int i = 0; i < 1000; ++i) wide += ", main_video_2";  // also a repeated signal, found too late
+  wide += "]\n";
+  for (int i = 0; i < 200'000; ++i) wide += "      - *p\n";
+  std::string deep = "robot: HD1\ndeadman: a\nl0: &l0 [tool_on, tool_on, tool_on, tool_on, tool_on, tool_on]\n";
+  for (int level = 1; level < 12; ++level) {
+    const auto below = "*l" + std::to_string(level - 1);
+    deep += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " [" + below + ", " + below + ", " +
+            below + ", " + below + ", " + below + ", " + below + "]\n";
+  }
+  for (const auto& text : {wide, deep}) {
+    MappingDir dir;
+    const auto file = dir.write("bomb.yaml", text);
+    try {
+      load_mapping(file);
+      FAIL() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(fs::path(e.pos().file).filename(), "bomb.yaml");
+      EXPECT_GT(e.pos().line, 0);
+      EXPECT_NE(e.message().find("the mapping is too large: more than 100000 YAML nodes"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+TEST(MappingLoader, NodeBoundCoversTheFilesExtendedToo) {
+  std::string list = "[tool_on";
+  for (int i = 1; i < 60'000; ++i) list += ", tool_on";
+  list += "]\n";
+  MappingDir dir;
+  dir.write("base.yaml", "bindings: " + list);
+  const auto file = dir.write("top.yaml", "robot: HD1\ndeadman: a\nextends: base.yaml\nbindings: " + list);
+  try {
+    load_mapping(file);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(fs::path(e.pos().file).filename(), "base.yaml");
+    EXPECT_EQ(e.pos().line, 1);
+    EXPECT_EQ(e.pos().column, 11);
+    EXPECT_NE(e.message().find("the mapping is too large"), std::string::npos) << e.what();
+  }
+}
 
 TEST(MappingLoader, ExtendsOverridesByInputAndKeepsTheRest) {
   MappingDir dir;

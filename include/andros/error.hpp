@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace andros {
 
@@ -40,7 +41,17 @@ class RuntimeError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Formats `FILE:LINE:COL: error: WHAT`, leaving out the unknown parts.
+/// Formats `FILE:LINE:COL: error: WHAT`, leaving out the unknown parts. Any
+/// byte outside printable ASCII is shown as \xNN, so that the line stays one
+/// line and is printed whole (a NUL would end it).
 std::string format_error(const SourcePos& pos, const std::string& message);
+
+/// How many bytes of a piece of input quote() shows before it cuts it short.
+inline constexpr std::size_t kMaxQuoted = 64;
+
+/// A piece of user input as an error shows it: in single quotes, printable
+/// ASCII as is, a backslash doubled, any other byte as \xNN (a NUL, a UTF-8
+/// BOM: \xEF\xBB\xBF), and at most kMaxQuoted bytes, then `...` and the length.
+std::string quote(std::string_view text);
 
 }  // namespace andros

@@ -1,4 +1,6 @@
 // `andros-bridge frame encode|decode`: the protocol's reference codec.
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -61,6 +63,10 @@ int run_decode(const DecodeOptions& opt) {
   }
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closer(
       from_stdin ? nullptr : in, [](std::FILE* f) { return std::fclose(f); });
+  struct stat st {};
+  if (::fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
+    throw InputError(SourcePos{opt.input}, "is a directory, not a capture file");
+  }
 
   Decoder decoder(code);
   FrameJsonWriter json;

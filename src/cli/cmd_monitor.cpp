@@ -147,6 +147,9 @@ int run_monitor(const MonitorOptions& opt) {
   if (::stat(opt.source.c_str(), &st) != 0) {
     throw InputError(SourcePos{opt.source}, std::string("cannot open: ") + std::strerror(errno));
   }
+  if (S_ISDIR(st.st_mode)) {
+    throw InputError(SourcePos{opt.source}, "is a directory, not a port or a capture file");
+  }
   if (S_ISREG(st.st_mode)) return monitor_file(opt.source, view);
   io::UniqueFd fd(::open(opt.source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd) throw RuntimeError(opt.source + ": cannot open: " + std::strerror(errno));

@@ -85,9 +85,11 @@ int run_record(const RecordCommandOptions& opt) {
                    static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
                    s.connected ? "connected" : "not connected");
     }
-    return g_stop_signal == 0;
+    return g_stop_signal == 0 && out.good();  // a full disk ends it: nothing more would be kept
   };
   const auto events = record_script(input, out, rec, keep_going);
+  out.flush();
+  if (!out) throw RuntimeError((opt.output == "-" ? std::string("standard output") : opt.output) + ": write error");
   if (progress) std::fputc('\n', stderr);
   std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(events),
                opt.output == "-" ? "" : " to ", opt.output == "-" ? "" : opt.output.c_str());

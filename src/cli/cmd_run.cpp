@@ -63,7 +63,7 @@ RunConfig resolve_config(const RunOptions& opt) {
   if (given("--robot")) {
     const auto robot = canonical_robot(opt.robot);
     if (!robot) {
-      throw InputError(SourcePos{"--robot"}, "unknown robot '" + opt.robot + "' (one of " + robot_list() + ")");
+      throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(opt.robot) + " (one of " + robot_list() + ")");
     }
     config.robot = *robot;
     config.mapping.clear();  // a robot on the command line beats a mapping from the file

@@ -3,7 +3,9 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 
@@ -11,29 +13,39 @@
 #include "andros/version.hpp"
 #include "commands.hpp"
 
-int main(int argc, char** argv) {
-  CLI::App app{
-      "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
-      "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
-      "command frames to the vehicle's serial link at 25 Hz, with the safety rules applied.",
-      "andros-bridge"};
-  app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
-  app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
-             "Run 'andros-bridge COMMAND --help' for a command's options.");
-  // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
-  spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
-  spdlog::set_pattern("%^%l%$: %v");
+namespace {
 
-  int exit_code = andros::kExitOk;
-  andros::cli::add_frame_command(app, exit_code);
-  andros::cli::add_replay_command(app, exit_code);
-  andros::cli::add_check_command(app, exit_code);
-  andros::cli::add_run_command(app, exit_code);
-  andros::cli::add_monitor_command(app, exit_code);
-  andros::cli::add_controllers_command(app, exit_code);
-  andros::cli::add_record_command(app, exit_code);
+// Output that never reached its file is a failure even when the command went
+// well (as coreutils' close_stdout): a full disk must not pass for a complete
+// capture. An error already reported keeps its own line and code.
+int check_stdout(int exit_code) {
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;  // std::cout writes through stdout's buffer (synced)
+  const int error = errno;
+  if (flushed && std::ferror(stdout) == 0) return exit_code;
+  if (exit_code != andros::kExitOk) return exit_code;
+  std::fprintf(stderr, "andros-bridge: error: standard output: %s\n",
+               error != 0 ? std::strerror(error) : "write error");
+  return andros::kExitRuntime;
+}
 
+// An empty value would read as "not given" and fall back to a default
+// (`--mapping ""` running the shipped mapping): no option takes one.
+void refuse_empty_values(CLI::App& app) {
+  const auto takes_value = [](CLI::Option* o) { return !o->get_positional() && o->get_items_expected_min() > 0; };
+  for (auto* option : app.get_options(takes_value)) {
+    option->check([name = option->get_name()](const std::string& value) -> std::string {
+      if (value.empty()) {
+        throw andros::InputError(andros::SourcePos{name}, "empty value (give one, or leave the option out)");
+      }
+      return {};
+    });
+  }
+  for (auto* sub : app.get_subcommands([](CLI::App*) { return true; })) refuse_empty_values(*sub);
+}
+
+/// Parses (which runs the chosen command) and turns what escapes into a line and a code.
+int run(CLI::App& app, int argc, char** argv, const int& exit_code) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -50,4 +62,33 @@ int main(int argc, char** argv) {
     return andros::kExitRuntime;
   }
   return exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
+      "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
+      "command frames to the vehicle's serial link at 25 Hz, with the safety rules applied.",
+      "andros-bridge"};
+  app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 success, 1 runtime failure (also output lost to a full disk), 2 bad input.\n"
+             "Run 'andros-bridge COMMAND --help' for a command's options.");
+  // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
+  spdlog::set_pattern("%^%l%$: %v");
+
+  int exit_code = andros::kExitOk;
+  andros::cli::add_frame_command(app, exit_code);
+  andros::cli::add_replay_command(app, exit_code);
+  andros::cli::add_check_command(app, exit_code);
+  andros::cli::add_run_command(app, exit_code);
+  andros::cli::add_monitor_command(app, exit_code);
+  andros::cli::add_controllers_command(app, exit_code);
+  andros::cli::add_record_command(app, exit_code);
+  refuse_empty_values(app);
+
+  return check_stdout(run(app, argc, argv, exit_code));
 }

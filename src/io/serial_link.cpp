@@ -29,16 +29,23 @@ void check_serial_port(const std::string& path, const SourcePos& pos) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
     if (errno == ENOENT) return;  // not plugged in yet: the link waits for it
-    throw InputError(pos, "serial port '" + path + "': " + std::strerror(errno));
+    throw InputError(pos, "serial port " + quote(path) + ": " + std::strerror(errno));
   }
   if (!S_ISCHR(st.st_mode)) {
     const char* what = S_ISDIR(st.st_mode) ? "a directory" : S_ISREG(st.st_mode) ? "a regular file" : "not a device";
-    throw InputError(pos, "serial port '" + path + "' is not a serial device (" + what + ")");
+    throw InputError(pos, "serial port " + quote(path) + " is not a serial device (" + what + ")");
   }
   if (::access(path.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
-    throw InputError(pos, "serial port '" + path +
-                              "': permission denied (join the dialout group, or install the udev rules: "
+    throw InputError(pos, "serial port " + quote(path) +
+                              ": permission denied (join the dialout group, or install the udev rules: "
                               "docs/running.md)");
+  }
+  // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
+  // One that cannot be opened just now (busy, gone) is left to the link, which waits for it.
+  const UniqueFd fd(::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+  if (fd && isatty(fd.get()) == 0) {
+    throw InputError(pos, "serial port " + quote(path) +
+                              " is not a serial device (a character device that is not a terminal)");
   }
 }
 

@@ -86,4 +86,59 @@ expect_error "--format: error: format 'xml' is not one of hex, raw, jsonl" "$BIN
 expect_error "andros-bridge: error: replay: give --robot or --mapping, not both" "$BIN" replay ok.events --robot hd1 --mapping x.yaml
 expect_error "andros-bridge: error: frame encode: expected 32 hex digits (16 data bytes), got 2 characters" "$BIN" frame encode 12
 expect_error "/nonexistent/dir/x.events: error: cannot create: No such file or directory" "$BIN" record --output /nonexistent/dir/x.events
+# Empty values, a device that is not a terminal, directories (each once fell back, retried for ever or exited 1).
+expect_error "--mapping: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --mapping "" --input ok.events
+expect_error "--config: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --config "" --input ok.events
+expect_error "--mapping: error: empty value (give one, or leave the option out)" "$BIN" replay ok.events --mapping ""
+expect_error "--output: error: empty value (give one, or leave the option out)" "$BIN" replay ok.events --output ""
+expect_error "--code: error: empty value (give one, or leave the option out)" "$BIN" frame decode --code "" ok.events
+expect_error "--port: error: serial port '/dev/null' is not a serial device (a character device that is not a terminal)" timeout 20 "$BIN" run --port /dev/null --input ok.events
+mkdir -p adir
+expect_error "adir: error: is a directory, not a capture file" "$BIN" frame decode adir
+expect_error "adir: error: is a directory, not a port or a capture file" timeout 20 "$BIN" monitor adir
+
+# More mapping files: the bounds of docs/mapping.md.
+w second_doc.yaml 'robot: HD1\ndeadman: leftshoulder\n---\nrobot: F6A\n'
+expect_error "second_doc.yaml:4:1: error: a second YAML document ('---'): a mapping file holds one" "$BIN" check second_doc.yaml
+w position.yaml "$head"'  - selector: cam\n    next: a\n    positions: [[main_video_2, main_video_3, main_video_2], []]\n'
+expect_error "position.yaml:6:46: error: 'main_video_2' is given twice in this position" "$BIN" check position.yaml
+for i in $(seq 0 19); do w "deep$i.yaml" "extends: deep$((i + 1)).yaml\n"; done
+w deep20.yaml 'bindings: []\n'
+expect_error "deep15.yaml:1:10: error: 'extends' chain too long: this base would be file 17 of the chain from 'deep0.yaml' (at most 16 files)" "$BIN" check deep0.yaml
+{ printf "$head"'  - selector: cam\n    next: a\n    positions:\n      - &p [main_video_2'
+  for _ in $(seq 1000); do printf ', main_video_2'; done; printf ']\n'
+  yes '      - *p' | head -200000; } >bomb.yaml
+expect_error "bomb.yaml:7:7: error: the mapping is too large: more than 100000 YAML nodes in this file and the files it extends, counting each alias as a copy of what it names (docs/mapping.md)" timeout 20 "$BIN" check bomb.yaml
+
+# User text in an error is quoted: printable ASCII as is, other bytes (a NUL, a BOM) as \xNN, long text cut short.
+printf '0 conn\0ect\n' >nul.events
+expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected connect, disconnect, button, axis, hat or end)" "$BIN" replay nul.events
+printf '0 %s\n' "$(printf 'x%.0s' $(seq 100))" >long.events
+expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat or end)" "$BIN" replay long.events
+printf '\xEF\xBB\xBFbaudrate=9600\n' >bom.conf
+expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config bom.conf --input ok.events
+w nul.yaml "$head"'  - signal: "tool\\0on"\n    button: a\n'
+expect_error "nul.yaml:4:13: error: unknown signal 'tool\\x00on' (expected one of: $("$BIN" frame signals --json | sed 's/^{"name":"\([^"]*\)".*/\1/' | tr '\n' ' ' | sed 's/ $//'))" "$BIN" check nul.yaml
+w bom_robot.yaml 'robot: \xEF\xBB\xBFHD1\ndeadman: a\n'
+expect_error "bom_robot.yaml:1:8: error: unknown robot '\\xEF\\xBB\\xBFHD1' (expected F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)" "$BIN" check bom_robot.yaml
+expect_error "--robot: error: unknown robot '\\xEF\\xBB\\xBFhd1' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)" "$BIN" run --robot $'\xEF\xBB\xBFhd1' --input ok.events
+
+# Output that cannot be written (a full disk) is exit 1 with one line, not a silent exit 0.
+expect_full() {
+  "$@" >/dev/full 2>"$TMP/err"
+  local code=$?
+  [[ $code -eq 1 ]] || fail "'$*' >/dev/full exited $code, expected 1"
+  grep -qE '(standard output: (No space left on device|write error)|stdout: write error|cannot write the event script)$' "$TMP/err" ||
+    fail "'$*' >/dev/full: stderr was '$(cat "$TMP/err")'"
+}
+zero=00000000000000000000000000000000
+"$BIN" frame encode --raw 00001C2000907F7E3E0000FFFF20CC02 >capture.bin
+expect_full "$BIN" frame encode $zero
+expect_full "$BIN" frame encode --raw $zero
+expect_full "$BIN" frame decode capture.bin
+expect_full "$BIN" frame signals
+expect_full "$BIN" check "$DATA/mappings/core.yaml"
+expect_full "$BIN" monitor capture.bin
+expect_full "$BIN" replay ok.events
+expect_full env SDL_VIDEODRIVER=dummy timeout 20 "$BIN" record -o -
 finish

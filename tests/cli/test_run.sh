@@ -61,7 +61,7 @@ expect_stderr_matches "fast.conf:1:6: error: rate '60' does not fit the link: 36
 expect_exit 2 "$BIN" run --config "$TMP/fast.conf" --baud 9600 --input "$LIVE/drive.events"
 expect_stderr_matches "fast.conf:1:6: error: rate '60' does not fit the link: 360-bit frames at 9600 baud"
 expect_exit 2 "$BIN" run --port "" --input "$LIVE/drive.events"
-expect_stderr_matches "^--port: error: the port is empty"
+expect_stderr_matches "^--port: error: empty value"
 for flag in "--baud 9601" "--code XYZ" "--robot R2D2" "--rate 0"; do
   expect_exit 2 "$BIN" run $flag --input "$LIVE/drive.events"
   expect_one_line_stderr

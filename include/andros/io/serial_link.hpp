@@ -26,7 +26,7 @@ class SerialLink final : public ReconnectingLink {
 
 /// Start-up check of a serial port path, so that a mistyped port is bad
 /// input (exit 2) rather than a link retried for ever: a path that exists but
-/// is not a character device, or that this user may not open, throws
+/// is not a terminal device (a file, /dev/null), or that this user may not open, throws
 /// InputError at pos. A path that does not exist yet passes: the adapter may
 /// be plugged in after the bridge starts, and the link waits for it.
 void check_serial_port(const std::string& path, const SourcePos& pos);
