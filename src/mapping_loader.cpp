@@ -4,6 +4,7 @@
 #include <set>
 
 #include "andros/robots.hpp"
+#include "andros/text_file.hpp"
 #include "yaml_reader.hpp"
 
 namespace andros {
@@ -199,7 +200,7 @@ Mapping read_file(const fs::path& file, std::vector<fs::path>& chain, const Sour
   const Reader r(file.string());
   YAML::Node root;
   try {
-    root = YAML::LoadFile(file.string());
+    root = YAML::Load(read_text_file(file.string(), kMappingLimits));
   } catch (const YAML::ParserException& e) {
     throw InputError(SourcePos{file.string(), e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
   } catch (const YAML::Exception& e) {
