@@ -25,8 +25,8 @@ inline constexpr std::size_t kKiB = 1024;
 inline constexpr std::size_t kMiB = 1024 * kKiB;
 inline constexpr std::size_t kMaxLineBytes = 4 * kKiB;
 
-/// A day of recording at about 100 events a second (a stick swept without
-/// pause) is some 260 MB: the cap is there to stop a runaway stream.
+/// 256 MiB holds a day of recording at over 90 events a second (a stick moved
+/// without pause on both axes makes 50): the cap is there to stop a runaway stream.
 inline constexpr TextLimits kEventScriptLimits{"event script", 256 * kMiB, kMaxLineBytes};
 inline constexpr TextLimits kConfigLimits{"config file", 64 * kKiB, kMaxLineBytes};
 inline constexpr TextLimits kMappingLimits{"mapping file", 1 * kMiB, kMaxLineBytes};
