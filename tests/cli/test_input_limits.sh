@@ -119,12 +119,15 @@ stop_while_reading() {
   grep -q 'stopped (SIGTERM) while reading the input, before the first frame' "$TMP/err" ||
     fail "$name: no closing line: $(cat "$TMP/err")"
 }
+# The writers are killed afterwards: ctest waits for whatever holds its pipes.
 mkfifo fifo
-sleep 60 >fifo &
+sleep 60 >fifo 2>/dev/null &
 writer=$!
 stop_while_reading "run --input FIFO" "$BIN" run --input fifo
 kill "$writer"
-exec 7< <(sleep 60)  # a pipe whose writer stays and writes nothing
+exec 7< <(exec sleep 60 2>/dev/null)  # a pipe whose writer stays and writes nothing
+writer=$!
 stop_while_reading "run --input PIPE" "$BIN" run --input /dev/fd/7
 exec 7<&-
+kill "$writer"
 finish
