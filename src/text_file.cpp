@@ -127,7 +127,7 @@ std::optional<std::string_view> TextReader::next_line() {
   while (true) {
     const auto nl = buf_.find('\n', scan_);
     std::string_view line;
-    bool ended = nl != std::string::npos;
+    const bool ended = nl != std::string::npos;
     if (ended) {
       line = std::string_view(buf_).substr(pos_, nl - pos_);
     } else {
@@ -156,7 +156,9 @@ std::optional<std::string_view> TextReader::next_line() {
 void TextReader::rewind() {
   if (!can_rewind()) throw std::logic_error(name_ + ": a stream cannot be rewound");
   if (fd_ >= 0) {
-    if (::lseek(fd_, start_offset_, SEEK_SET) < 0) throw RuntimeError(name_ + ": cannot rewind: " + std::strerror(errno));
+    if (::lseek(fd_, start_offset_, SEEK_SET) < 0) {
+      throw RuntimeError(name_ + ": cannot rewind: " + std::strerror(errno));
+    }
     buf_.clear();
     eof_ = false;
   }

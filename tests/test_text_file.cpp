@@ -50,7 +50,8 @@ TEST(TextReader, LineAndSizeLimitsAreInclusive) {
   // 32 bytes exactly, then one more line.
   const std::string full = "1234567\n1234567\n1234567\n1234567\n";
   EXPECT_EQ(error_of(TextReader(full, "f", kSmall)), "no error");
-  EXPECT_EQ(error_of(TextReader(full + "x", "f", kSmall)), "f:5: error: more than 32 bytes (the limit for a test file)");
+  EXPECT_EQ(error_of(TextReader(full + "x", "f", kSmall)),
+            "f:5: error: more than 32 bytes (the limit for a test file)");
 }
 
 TEST(TextReader, NamesTheLimitsAsTheDocsDo) {

@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "andros/events.hpp"
 #include "andros/error.hpp"
+#include "andros/events.hpp"
 #include "andros/mapping_loader.hpp"
 #include "andros/parse.hpp"
 #include "andros/replay.hpp"
@@ -78,8 +78,10 @@ void add_replay_command(CLI::App& app, int& exit_code) {
       "Run an event script through a mapping on a virtual clock and write the frames:\n"
       "one every 1000/rate ms from t=0 through the script's end. Deterministic: the same\n"
       "script gives the same bytes on any machine, at any speed.");
-  cmd->add_option("EVENTS", opt->events, "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
-                  "before the first frame is written")->required();
+  cmd->add_option("EVENTS", opt->events,
+                  "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
+                  "before the first frame is written")
+      ->required();
   cmd->add_option("--robot", opt->robot, "robot type (" + robot_list() + "); default HD1");
   cmd->add_option("--mapping", opt->mapping, "mapping file to use instead of a robot's shipped one");
   cmd->add_option("--code", opt->code, "dip-switch code for byte 11, in hex")->default_str("01");

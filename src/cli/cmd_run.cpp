@@ -104,9 +104,10 @@ int run_bridge(const RunOptions& opt) {
   std::unique_ptr<InputSource> input;
   try {
     input = make_input_source(config.input, opt.sdl, [&signals] { return signals.requested(); });
-  } catch (const ReadStopped& e) {
+  } catch (const ReadStopped&) {
     // Nothing has been sent: there is no frame to neutralise, and the stop was asked for.
-    spdlog::info("stopped (SIG{}) while reading the input, before the first frame", sigabbrev_np(signals.signal_number()));
+    spdlog::info("stopped (SIG{}) while reading the input, before the first frame",
+                 sigabbrev_np(signals.signal_number()));
     return kExitOk;
   }
   std::unique_ptr<io::SimVehicle> sim;
