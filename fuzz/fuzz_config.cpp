@@ -3,7 +3,6 @@
 // InputError naming the file and a line inside the text.
 #include <cstdint>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 
 #include "andros/config.hpp"
@@ -16,10 +15,10 @@ using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  std::istringstream in(text);
+  andros::TextReader in(text, "fuzz.conf", andros::kConfigLimits);
   andros::RunConfig config;
   try {
-    andros::parse_config(in, "fuzz.conf", config);
+    andros::parse_config(in, config);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" || e.pos().file == "--rate");
     check(e.pos().file != "fuzz.conf" || e.pos().line >= 1);

@@ -1,11 +1,8 @@
 #include "andros/config.hpp"
 
 #include <cctype>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "andros/parse.hpp"
 #include "andros/replay.hpp"
@@ -56,11 +53,11 @@ std::int64_t rate_millihertz(const RunConfig& config) {
   return parse_rate(config.rate, config.baud, config.rate_pos);
 }
 
-void parse_config(std::istream& in, const std::string& file_name, RunConfig& config) {
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
+void parse_config(TextReader& in, RunConfig& config) {
+  const std::string& file_name = in.name();
+  while (const auto next = in.next_line()) {
+    const std::string_view line = *next;
+    const int line_no = in.line_number();
     const auto text = trim(line);
     if (text.empty() || text.front() == '#') continue;
     const SourcePos line_pos{file_name, line_no, 0};
@@ -110,9 +107,8 @@ void parse_config(std::istream& in, const std::string& file_name, RunConfig& con
 }
 
 void read_config_file(const std::string& path, RunConfig& config) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourcePos{path}, std::string("cannot read the config file: ") + std::strerror(errno));
-  parse_config(in, path, config);
+  auto in = TextReader::open(path, kConfigLimits);
+  parse_config(in, config);
 }
 
 std::vector<std::string> default_config_paths() {

@@ -1,7 +1,6 @@
 #include "andros/events.hpp"
 
 #include <cstdio>
-#include <sstream>
 #include <string_view>
 
 #include "andros/error.hpp"
@@ -37,23 +36,25 @@ constexpr std::array<std::pair<std::string_view, int>, 9> kHatValues = {{
 
 std::optional<InputEvent> EventReader::next() {
   using T = InputEvent::Type;
-  std::string raw;
-  while (std::getline(in_, raw)) {
-    ++line_no_;
-    std::string_view line = raw;
+  while (const auto raw = text_.next_line()) {
+    std::string_view line = *raw;
     if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     const auto tokens = split(line);
     if (tokens.empty()) continue;
 
-    const auto at = [&](const Token& t) { return SourcePos{file_, line_no_, t.column}; };
+    const auto at = [&](const Token& t) { return SourcePos{text_.name(), text_.line_number(), t.column}; };
     const auto fail = [&](const Token& t, const std::string& what) -> InputError {
       return InputError(at(t), what);
     };
     if (ended_) throw fail(tokens[0], "event after 'end'");
 
     InputEvent ev;
-    ev.line = line_no_;
+    ev.line = text_.line_number();
     ev.t_ms = parse_integer(tokens[0].text, 0, INT64_MAX / 2, "time", at(tokens[0]));
+    if (ev.t_ms > kMaxScriptMs) {
+      throw fail(tokens[0], "time " + std::to_string(ev.t_ms) + " ms is past 24 h (" + std::to_string(kMaxScriptMs) +
+                                " ms), the longest an event script may last");
+    }
     if (ev.t_ms < last_t_) {
       throw fail(tokens[0], "time " + std::to_string(ev.t_ms) + " ms goes backwards (previous event at " +
                                 std::to_string(last_t_) + " ms)");
@@ -118,16 +119,24 @@ std::optional<InputEvent> EventReader::next() {
     last_t_ = ev.t_ms;
     return ev;
   }
-  if (in_.bad()) throw RuntimeError(file_ + ": read error");
   return std::nullopt;
 }
 
 std::vector<InputEvent> parse_event_script(const std::string& text, const std::string& file_name) {
-  std::istringstream in(text);
-  EventReader reader(in, file_name);
+  TextReader in(text, file_name, kEventScriptLimits);
+  EventReader reader(in);
   std::vector<InputEvent> events;
   while (auto ev = reader.next()) events.push_back(std::move(*ev));
   return events;
+}
+
+TextReader checked_event_script(TextReader text) {
+  if (!text.can_rewind()) text = hold_in_memory(std::move(text));
+  EventReader reader(text);
+  while (reader.next()) {
+  }
+  text.rewind();
+  return text;
 }
 
 std::string format_event(const InputEvent& event) {

@@ -5,6 +5,8 @@
 #include <set>
 #include <vector>
 
+#include "andros/text_file.hpp"
+
 namespace andros::yaml {
 namespace {
 
@@ -59,7 +61,7 @@ std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t bud
 YAML::Node Reader::load_document(std::size_t& budget) const {
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAllFromFile(file_);
+    documents = YAML::LoadAll(read_text_file(file_, kMappingLimits));
   } catch (const YAML::ParserException& e) {
     throw InputError(SourcePos{file_, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
   } catch (const YAML::Exception& e) {

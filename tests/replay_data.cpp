@@ -67,8 +67,8 @@ void expect_replay(Mapping mapping, bool weapons, std::int64_t rate_millihertz, 
                    const std::string& expected) {
   const std::uint8_t code = 0x01;
   Engine engine(std::move(mapping), EngineOptions{weapons, code});
-  std::istringstream in(read_text(events));
-  ScriptPlayer player(in, events);
+  TextReader in(read_text(events), events, kEventScriptLimits);
+  ScriptPlayer player(in);
   std::vector<std::pair<std::int64_t, DataBytes>> got;
   replay(player, engine, FrameClock(rate_millihertz), [&](std::int64_t t, const DataBytes& d) { got.emplace_back(t, d); });
 

@@ -80,8 +80,33 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{"0 hat 0 sideways\n", 1, 9, "unknown hat position 'sideways'"},
         BadScript{"0 end\n5 connect\n", 2, 1, "event after 'end'"},
         BadScript{"0 end now\n", 1, 7, "expected 'end'"},
-        BadScript{"12\n", 1, 1, "missing event after the time"}),
+        BadScript{"12\n", 1, 1, "missing event after the time"},
+        BadScript{"0 connect\n86400001 end\n", 2, 1,
+                  "time 86400001 ms is past 24 h (86400000 ms), the longest an event script may last"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
+
+TEST(EventScript, LastsAtMostADay) {
+  EXPECT_EQ(parse_event_script("0 connect\n86400000 end\n", "day.events").back().t_ms, kMaxScriptMs);
+}
+
+TEST(EventScript, ALineLongerThanTheLimitIsAnError) {
+  const std::string name(kMaxLineBytes, 'x');  // with "0 connect " in front: over the limit
+  try {
+    parse_event_script("0 end\n0 connect " + name + "\n", "long.events");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "long.events:2: error: line longer than 4 KiB (the limit for an event script)");
+  }
+}
+
+TEST(EventScript, CheckedWholeBeforeItPlays) {
+  // The bad line is far past anything a player would read ahead.
+  TextReader bad("0 connect\n100 end\n200 button a 1\n", "after.events", kEventScriptLimits);
+  EXPECT_THROW((void)checked_event_script(std::move(bad)), InputError);
+  auto good = checked_event_script(TextReader("0 connect\n100 end\n", "ok.events", kEventScriptLimits));
+  EXPECT_EQ(good.line_number(), 0);  // rewound
+  EXPECT_EQ(*good.next_line(), "0 connect");
+}
 
 TEST(EventScript, FormatReadsBack) {
   const std::string text =

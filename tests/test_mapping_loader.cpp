@@ -145,9 +145,10 @@ TEST(MappingLoader, ExtendsChainLongerThanSixteenFilesIsRefusedAtTheExtendsTooFa
 // Aliases are shared nodes in yaml-cpp: a short file can name billions of nodes.
 TEST(MappingLoader, AliasBombsAreRefusedBeforeTheyAreExpanded) {
   std::string wide = kHead + "  - selector: cam\n    next: a\n    positions:\n      - &p [main_video_2";
-  for (int i = 0; i < 1000; ++i) wide += ", main_video_2";  // also a repeated signal, found too late
+  for (int i = 0; i < 1000; ++i) wide += ",\n        main_video_2";  // also a repeated signal, found too late
   wide += "]\n";
-  for (int i = 0; i < 200'000; ++i) wide += "      - *p\n";
+  // Under the reader's 1 MiB and 4 KiB-line bounds, and still 80 million nodes.
+  for (int i = 0; i < 80'000; ++i) wide += "      - *p\n";
   std::string deep = "robot: HD1\ndeadman: a\nl0: &l0 [tool_on, tool_on, tool_on, tool_on, tool_on, tool_on]\n";
   for (int level = 1; level < 12; ++level) {
     const auto below = "*l" + std::to_string(level - 1);
@@ -170,9 +171,8 @@ TEST(MappingLoader, AliasBombsAreRefusedBeforeTheyAreExpanded) {
 }
 
 TEST(MappingLoader, NodeBoundCoversTheFilesExtendedToo) {
-  std::string list = "[tool_on";
-  for (int i = 1; i < 60'000; ++i) list += ", tool_on";
-  list += "]\n";
+  std::string list = "\n";  // a block list: no line over the reader's 4 KiB bound
+  for (int i = 0; i < 60'000; ++i) list += "  - tool_on\n";
   MappingDir dir;
   dir.write("base.yaml", "bindings: " + list);
   const auto file = dir.write("top.yaml", "robot: HD1\ndeadman: a\nextends: base.yaml\nbindings: " + list);
@@ -181,8 +181,8 @@ TEST(MappingLoader, NodeBoundCoversTheFilesExtendedToo) {
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(fs::path(e.pos().file).filename(), "base.yaml");
-    EXPECT_EQ(e.pos().line, 1);
-    EXPECT_EQ(e.pos().column, 11);
+    EXPECT_EQ(e.pos().line, 2);  // the list that passed the bound
+    EXPECT_EQ(e.pos().column, 3);
     EXPECT_NE(e.message().find("the mapping is too large"), std::string::npos) << e.what();
   }
 }

@@ -99,8 +99,8 @@ using Coverage = std::array<int, kSignalCount>;
 void check_script(const Mapping& mapping, const std::vector<InputEvent>& script, bool weapons, Coverage& coverage) {
   std::string text;
   for (const auto& e : script) text += format_event(e) + "\n";
-  std::istringstream in(text);
-  ScriptPlayer player(in, "random.events");
+  TextReader in(text, "random.events", kEventScriptLimits);
+  ScriptPlayer player(in);
   Engine engine(mapping, EngineOptions{weapons, 0x5A});
   EnabledOracle oracle(mapping.deadman->key);
   std::size_t next_event = 0;

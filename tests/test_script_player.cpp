@@ -1,8 +1,6 @@
 // ScriptPlayer: contract section 3's timing, on a clock it is told.
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include "andros/error.hpp"
 #include "andros/script_player.hpp"
 
@@ -10,8 +8,8 @@ namespace andros {
 namespace {
 
 TEST(ScriptPlayer, AppliesEventsUpToEachFrameTime) {
-  std::istringstream in("0 connect\n40 button a 1\n41 button b 1\n100 end\n");
-  ScriptPlayer player(in, "s.events");
+  TextReader in("0 connect\n40 button a 1\n41 button b 1\n100 end\n", "s.events", kEventScriptLimits);
+  ScriptPlayer player(in);
   InputState s;
   const auto a = *parse_button_name("a");
   const auto b = *parse_button_name("b");
@@ -37,8 +35,8 @@ struct Ending {
 class ScriptEnding : public ::testing::TestWithParam<Ending> {};
 
 TEST_P(ScriptEnding, LastFrameIsTheFirstAtOrAfterTheEnd) {
-  std::istringstream in(GetParam().script);
-  ScriptPlayer player(in, "s.events");
+  TextReader in(GetParam().script, "s.events", kEventScriptLimits);
+  ScriptPlayer player(in);
   InputState s;
   std::int64_t t = 0;
   for (player.advance_to(t, s); !player.finished_at(t); player.advance_to(t, s)) t += 40;
@@ -53,8 +51,8 @@ INSTANTIATE_TEST_SUITE_P(Cases, ScriptEnding,
                                            Ending{"0 end\n", 0}));
 
 TEST(ScriptPlayer, ParseErrorsSurfaceAsInputErrors) {
-  std::istringstream in("0 connect\n200 jump\n");
-  ScriptPlayer player(in, "s.events");
+  TextReader in("0 connect\n200 jump\n", "s.events", kEventScriptLimits);
+  ScriptPlayer player(in);
   InputState s;
   try {
     player.advance_to(0, s);  // reads one event ahead: line 2 is parsed here

@@ -4,12 +4,12 @@
 /// line on top. Parsing does no I/O beyond reading the file it is given.
 
 #include <cstdint>
-#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "andros/error.hpp"
+#include "andros/text_file.hpp"
 
 namespace andros {
 
@@ -39,9 +39,10 @@ struct RunConfig {
 /// code (the legacy four) and rate, mapping, weapons, input. A relative
 /// `mapping` or `input` path is taken relative to the file's directory. An
 /// unknown key or bad value throws InputError at FILE:LINE.
-void parse_config(std::istream& in, const std::string& file_name, RunConfig& config);
+void parse_config(TextReader& in, RunConfig& config);
 
-/// Opens and parses a config file; a file that cannot be read is an InputError too.
+/// Opens and parses a config file (within kConfigLimits); a file that cannot
+/// be read, a directory, a line or a file too long are InputErrors too.
 void read_config_file(const std::string& path, RunConfig& config);
 
 /// Where `run` looks for a config file when --config is not given, in order:

@@ -3,35 +3,42 @@
 /// and `run --input` read. One event a line: `T_MS EVENT ARGS`, `#` comments.
 
 #include <cstdint>
-#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "andros/input.hpp"
+#include "andros/text_file.hpp"
 
 namespace andros {
+
+/// The latest time an event may have: a script lasts at most a day.
+inline constexpr std::int64_t kMaxScriptMs = 24 * 3600 * 1000;
 
 /// Reads a script one event at a time, so a long script needs no memory to
 /// speak of. Every error is an InputError at FILE:LINE:COL.
 class EventReader {
  public:
-  EventReader(std::istream& in, std::string file_name) : in_(in), file_(std::move(file_name)) {}
+  explicit EventReader(TextReader& text) : text_(text) {}
 
   /// The next event, or nullopt at the end of the text. An `end` event is
   /// returned like any other; anything after it is an error.
   std::optional<InputEvent> next();
 
  private:
-  std::istream& in_;
-  std::string file_;
-  int line_no_ = 0;
+  TextReader& text_;
   std::int64_t last_t_ = 0;
   bool ended_ = false;
 };
 
 /// Parses a whole script held in memory.
 std::vector<InputEvent> parse_event_script(const std::string& text, const std::string& file_name);
+
+/// text checked to its end (every line, nothing after `end`, no time past
+/// kMaxScriptMs) and rewound, so that no bad line is found once the script
+/// plays. A stream (pipe, FIFO, standard input) is held in memory for that; a
+/// regular file is read twice.
+TextReader checked_event_script(TextReader text);
 
 /// One event as a script line (`120     axis        lefty -32768`), no newline.
 std::string format_event(const InputEvent& event);

@@ -4,7 +4,6 @@
 /// the scheduler's tick times. Contract section 3's timing lives here once.
 
 #include <cstdint>
-#include <istream>
 #include <optional>
 #include <string>
 
@@ -15,7 +14,8 @@ namespace andros {
 
 class ScriptPlayer {
  public:
-  ScriptPlayer(std::istream& in, std::string file_name) : reader_(in, std::move(file_name)) {}
+  /// Plays text, which must outlive the player.
+  explicit ScriptPlayer(TextReader& text) : reader_(text) {}
 
   /// Applies every event with a time <= t_ms (the state the frame at t_ms
   /// reflects). Parse errors surface here as InputError.

@@ -11,6 +11,7 @@
 
 #include "andros/input.hpp"
 #include "andros/input_source.hpp"
+#include "andros/text_file.hpp"
 
 namespace andros {
 
@@ -47,8 +48,9 @@ class SdlSession {
 
 /// Adds the SDL mappings in a gamecontrollerdb.txt-style file (lines for other
 /// platforms are skipped). Needs a live SdlSession. Throws InputError naming
-/// FILE (unreadable) or FILE:LINE (a mapping SDL rejects).
-void load_controller_db(const std::string& path);
+/// FILE (unreadable) or FILE:LINE (a mapping SDL rejects, a line or the file
+/// over kControllerDbLimits), ReadStopped when stop says so.
+void load_controller_db(const std::string& path, const StopCheck& stop = {});
 
 /// The live controller as an InputSource. Only the chosen controller feeds
 /// the state; the others are ignored. A connect is followed by the device's
@@ -56,10 +58,10 @@ void load_controller_db(const std::string& path);
 /// when it appears are not presses.
 class SdlInput final : public InputSource {
  public:
-  /// Starts SDL and loads options.controller_db. Throws InputError for a bad
-  /// selection or mapping file, RuntimeError when SDL cannot start. Opens no
-  /// device yet: the first poll() does.
-  explicit SdlInput(const SdlInputOptions& options);
+  /// Starts SDL and loads options.controller_db, asking stop while it reads
+  /// (ReadStopped). Throws InputError for a bad selection or mapping file,
+  /// RuntimeError when SDL cannot start. Opens no device yet: the first poll() does.
+  explicit SdlInput(const SdlInputOptions& options, const StopCheck& stop = {});
   ~SdlInput() override;
   SdlInput(const SdlInput&) = delete;
   SdlInput& operator=(const SdlInput&) = delete;
@@ -81,7 +83,7 @@ class SdlInput final : public InputSource {
 };
 
 /// The SDL input source for the run loop (an SdlInput).
-std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options);
+std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop = {});
 
 /// The devices attached now, in SDL device-index order. Starts its own
 /// SdlSession and loads options.controller_db (so names reflect the mappings).

@@ -101,7 +101,15 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
   const auto frames = make_engine_frames(config);
-  const auto input = make_input_source(config.input, opt.sdl);
+  std::unique_ptr<InputSource> input;
+  try {
+    input = make_input_source(config.input, opt.sdl, [&signals] { return signals.requested(); });
+  } catch (const ReadStopped&) {
+    // Nothing has been sent: there is no frame to neutralise, and the stop was asked for.
+    spdlog::info("stopped (SIG{}) while reading the input, before the first frame",
+                 sigabbrev_np(signals.signal_number()));
+    return kExitOk;
+  }
   std::unique_ptr<io::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<io::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());

@@ -12,8 +12,8 @@
 namespace andros {
 
 struct SdlInput::Impl {
-  explicit Impl(const SdlInputOptions& options) : selection(options.controller) {
-    if (!options.controller_db.empty()) load_controller_db(options.controller_db);
+  Impl(const SdlInputOptions& options, const StopCheck& stop) : selection(options.controller) {
+    if (!options.controller_db.empty()) load_controller_db(options.controller_db, stop);
   }
 
   void poll(std::int64_t now_ms);
@@ -120,7 +120,8 @@ void SdlInput::Impl::lose(std::int64_t now_ms) {
   rescan = true;  // another device matching the selection may be attached
 }
 
-SdlInput::SdlInput(const SdlInputOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+SdlInput::SdlInput(const SdlInputOptions& options, const StopCheck& stop)
+    : impl_(std::make_unique<Impl>(options, stop)) {}
 
 SdlInput::~SdlInput() = default;
 
@@ -135,8 +136,8 @@ void SdlInput::pump(InputState& state, std::int64_t now_ms) {
 
 std::string SdlInput::selection() const { return impl_->selection.describe(); }
 
-std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options) {
-  return std::make_unique<SdlInput>(options);
+std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop) {
+  return std::make_unique<SdlInput>(options, stop);
 }
 
 }  // namespace andros

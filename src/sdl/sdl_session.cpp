@@ -2,9 +2,6 @@
 #include <SDL.h>
 #include <spdlog/spdlog.h>
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 
 #include "andros/error.hpp"
 #include "andros/sdl_input.hpp"
@@ -15,10 +12,10 @@ namespace {
 
 constexpr Uint32 kSdlSubsystems = SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER;
 
-std::string trim(const std::string& line) {
+std::string trim(std::string_view line) {
   const auto first = line.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  return line.substr(first, line.find_last_not_of(" \t\r") - first + 1);
+  if (first == std::string_view::npos) return {};
+  return std::string(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
 }
 
 }  // namespace
@@ -40,29 +37,23 @@ SdlSession::~SdlSession() {
   if (SDL_WasInit(SDL_INIT_EVERYTHING) == 0) SDL_Quit();
 }
 
-void load_controller_db(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw InputError(SourcePos{path}, std::string("cannot read controller mappings: ") + std::strerror(errno));
-  }
+void load_controller_db(const std::string& path, const StopCheck& stop) {
+  auto in = TextReader::open(path, kControllerDbLimits, stop);
   // Line by line rather than SDL_GameControllerAddMappingsFromFile, which
   // skips bad lines silently: a mapping the operator wrote should either load
   // or be named.
   const std::string platform = std::string("platform:") + SDL_GetPlatform();
   int added = 0;
-  int line_no = 0;
-  for (std::string raw; std::getline(in, raw);) {
-    ++line_no;
-    const std::string line = trim(raw);
+  while (const auto raw = in.next_line()) {
+    const std::string line = trim(*raw);
     if (line.empty() || line[0] == '#') continue;
     const auto at = line.find("platform:");
     if (at != std::string::npos && line.compare(at, platform.size(), platform) != 0) continue;
     if (SDL_GameControllerAddMapping(line.c_str()) < 0) {
-      throw InputError(SourcePos{path, line_no, 1}, std::string("bad SDL mapping: ") + SDL_GetError());
+      throw InputError(SourcePos{path, in.line_number(), 1}, std::string("bad SDL mapping: ") + SDL_GetError());
     }
     ++added;
   }
-  if (in.bad()) throw InputError(SourcePos{path}, "read error");
   spdlog::debug("{}: {} controller mapping(s) for {}", path, added, SDL_GetPlatform());
 }
 

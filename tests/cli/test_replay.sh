@@ -87,7 +87,7 @@ expect_exit 2 "$BIN" replay "$pivot" --mapping "$core" --format csv
 expect_stderr_matches "^--format: error: format 'csv'"
 expect_exit 2 "$BIN" replay "$pivot" --mapping "$core" --code 1FF
 expect_exit 2 "$BIN" replay "$TMP/nothing.events" --mapping "$core"
-expect_stderr_matches "nothing.events: error: cannot open event script"
+expect_stderr_matches "nothing.events: error: cannot read the event script: No such file or directory"
 # bad_input FILE TEXT REGEX ARGS...: FILE holding TEXT makes `replay ARGS` exit 2 with one line.
 bad_input() {
   local file=$1 text=$2 regex=$3; shift 3

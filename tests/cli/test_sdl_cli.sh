@@ -9,7 +9,7 @@ expect_exit 0 "$BIN" controllers
 
 expect_exit 2 "$BIN" controllers --controller-db "$TMP/missing.txt"
 expect_one_line_stderr
-expect_stderr_matches "^$TMP/missing.txt: error: cannot read controller mappings"
+expect_stderr_matches "^$TMP/missing.txt: error: cannot read the controller database: No such file or directory"
 
 printf '# mine\nnot a mapping\n' >"$TMP/bad.txt"
 expect_exit 2 "$BIN" record --controller-db "$TMP/bad.txt" --output "$TMP/never.txt"

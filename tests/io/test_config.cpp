@@ -9,8 +9,8 @@ namespace {
 
 RunConfig parse(const std::string& text, const std::string& file = "dir/test.conf") {
   RunConfig c;
-  std::istringstream in(text);
-  parse_config(in, file, c);
+  TextReader in(text, file, kConfigLimits);
+  parse_config(in, c);
   return c;
 }
 
