@@ -41,7 +41,6 @@ Engine::Engine(Mapping mapping, EngineOptions options)
     slot_base_.push_back(slots);
   }
   all_ = all_bindings(mapping_);
-  toggled_.assign(slots, 0);
   selector_.assign(slots, 0);
   for (const auto ref : all_) {
     const auto& b = binding_at(mapping_, ref);
@@ -60,7 +59,7 @@ const Mapping& Engine::mapping() const { return mapping_; }
 
 std::size_t Engine::slot(BindingRef ref) const { return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index; }
 
-void Engine::clear_toggles() { std::fill(toggled_.begin(), toggled_.end(), 0); }
+void Engine::clear_toggles() { toggled_.reset(); }
 
 void Engine::start_session(const InputState& input, bool at_start_up) {
   connection_ = input.connection();
@@ -158,7 +157,7 @@ void Engine::apply(const InputState& input, BindingRef ref, std::int64_t dt_ms, 
   std::visit(Overload{
                  [&](const ButtonBinding& b) {
                    if (b.toggle) {
-                     if (new_presses(input, b.input) % 2 == 1) toggled_[k] ^= 1U;
+                     if (new_presses(input, b.input) % 2 == 1) toggled_.flip(b.signal);
                    } else if (b.input.is_button() ? active(b.input) : held(input, b.input, b.invert, b.threshold)) {
                      out[b.signal] = 1;
                    }
@@ -228,9 +227,8 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
     }
     // A toggle stays on in every layer until pressed again or the deadman is released.
-    for (const auto ref : all_) {
-      const auto* b = std::get_if<ButtonBinding>(&binding_at(mapping_, ref).rule);
-      if (b != nullptr && toggled_[slot(ref)] != 0) state[b->signal] = 1;
+    for (std::size_t i = 0; i < kSignalCount; ++i) {
+      if (toggled_[i]) state.values[i] = 1;
     }
   } else {
     clear_toggles();  // releasing the deadman stops everything a toggle started

@@ -160,6 +160,28 @@ TEST(Engine, MovedEngineKeepsWorking) {
   EXPECT_EQ(engine.mapping().robot, "HD1");
 }
 
+TEST(Engine, OneToggleStatePerSignal) {
+  Engine engine(from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
+                          "  - signal: tool_on\n    button: x\n    toggle: true\n"
+                          "layers:\n  cam:\n    toggle: back\n    bindings:\n"
+                          "      - signal: tool_on\n        button: y\n        toggle: true\n"),
+                EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 button x 1\n55 button x 0\n60 button back 1\n65 button back 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 80))[signal_id("tool_on")], 1);
+  apply_script(in, "90 button y 1\n95 button y 0\n");  // the camera layer's y flips the same state
+  EXPECT_EQ(read_signals(engine.step(in, 120))[signal_id("tool_on")], 0);
+  apply_script(in, "130 button y 1\n135 button y 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 160))[signal_id("tool_on")], 1);
+  apply_script(in, "170 button back 1\n175 button back 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 200))[signal_id("tool_on")], 1);  // stays on in the base layer
+  apply_script(in, "210 button x 1\n215 button x 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 240))[signal_id("tool_on")], 0);
+}
+
 TEST(Engine, RefusesAnInvalidMappingBuiltByHand) {
   Mapping m;
   SelectorBinding s;

@@ -54,7 +54,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"selector_cycling", "layers.yaml"},
         Case{"layers", "layers.yaml"},
         Case{"joystick", "joystick.yaml"},
-        Case{"rate_24hz", "core.yaml", false, 24'000}),
+        Case{"rate_24hz", "core.yaml", false, 24'000},
+        Case{"two_toggles_one_signal", "rest.yaml"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -85,7 +85,7 @@ class Engine {
   bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
   int layer_ = -1;                       ///< active layer, -1 = base
   int toggled_layer_ = -1;               ///< layer switched on by a toggle button
-  std::vector<std::uint8_t> toggled_;    ///< per binding slot
+  std::bitset<kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
   std::vector<int> selector_;            ///< per binding slot: a selector's position
   std::array<std::int64_t, kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;
