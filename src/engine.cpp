@@ -24,7 +24,7 @@ std::string_view describe(EnableState state) {
 }
 
 Engine::Engine(Mapping mapping, EngineOptions options)
-    : mapping_(std::move(mapping)), options_(options), builder_(options.code) {
+    : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(mapping_) {
   // A mapping built by hand gets the same checks as a loaded one; without a
   // deadman it is never enabled, so it only ever sends neutral frames.
   validate(mapping_, false);
@@ -75,13 +75,16 @@ void Engine::start_session(const InputState& input, bool at_start_up) {
   }
 }
 
+// An input the rest rule holds back neither holds nor presses (the deadman and
+// layer buttons are never held back).
 bool Engine::held(const InputState& input, InputKey key, bool invert, double threshold) const {
+  if (rest_.held_back(key)) return false;
   if (key.is_button()) return input.button(key).down;
   return shape_axis(normalise_axis(input.axis(key)), AxisShape{invert, 0.0, 0.0}) >= threshold;
 }
 
 std::uint32_t Engine::new_presses(const InputState& input, InputKey key) const {
-  if (!key.is_button()) return 0;
+  if (!key.is_button() || rest_.held_back(key)) return 0;
   const auto it = seen_presses_.find(key);
   const auto seen = it == seen_presses_.end() ? 0U : it->second;
   const auto now = input.button(key).presses;
@@ -168,11 +171,13 @@ void Engine::apply(const InputState& input, BindingRef ref, std::int64_t dt_ms, 
                    if (arm && active(b.input)) out[b.signal] = 1;
                  },
                  [&](const PairBinding& b) {
+                   if (rest_.held_back(b.axis)) return;
                    const double x = shape_axis(normalise_axis(input.axis(b.axis)), AxisShape{b.invert, 0.0, 0.0});
                    if (x <= -b.threshold) out[b.signals[0]] = 1;
                    if (x >= b.threshold) out[b.signals[1]] = 1;
                  },
                  [&](const AxisBinding& b) {
+                   if (rest_.held_back(b.axis)) return;  // drive/pivot stay at centre, a level keeps its value
                    const double z = shape_axis(normalise_axis(input.axis(b.axis)), b.shape);
                    if (info(b.analog).kind == SignalKind::kCentred) {
                      out[b.analog] = centred_byte(z, mapping_.center);
@@ -219,6 +224,8 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
   update_layer(input, enabled);
+  rest_.update(input, layer_, enabled, seen_presses_);
+  status_.held_back = rest_.held_back_inputs();
 
   ControlState state = resting_state();
   SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
