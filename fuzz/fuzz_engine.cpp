@@ -1,12 +1,15 @@
 // libFuzzer target: the engine driven by random controller input through
-// every shipped mapping. On every frame the safety rules of contract section 5
+// every shipped mapping. On every frame the safety rules of docs/mapping.md
 // are checked against this file's own reading of them, not the engine's:
 // a valid frame with the code, no opposing pair both 1, nothing moving while
-// not enabled, no weapon bit while weapons are off.
+// not enabled, no weapon bit while weapons are off, and drive and pivot at
+// centre after a change of meaning until their stick was seen at rest.
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "andros/engine.hpp"
@@ -43,6 +46,55 @@ bool is_neutral(const ControlState& s, int center) {
   }
   return true;
 }
+
+// The binding driving a centred byte in a layer ("" = base): the layer's own,
+// else the base's unless a layer binding takes its axis.
+const Binding* driver_of(const Mapping& m, const std::string& layer, SignalId analog) {
+  const auto drives = [&](const Binding& b) {
+    const auto* a = std::get_if<AxisBinding>(&b.rule);
+    return a != nullptr && a->analog == analog;
+  };
+  const Binding* base = nullptr;
+  for (const auto& b : m.bindings) {
+    if (drives(b)) base = &b;
+  }
+  for (const auto& l : m.layers) {
+    if (l.name != layer) continue;
+    for (const auto& b : l.bindings) {
+      if (drives(b)) return &b;
+      if (base == nullptr) continue;
+      const auto axis = std::get<AxisBinding>(base->rule).axis;
+      for (const auto& u : b.inputs) {
+        if (u.key == axis) return nullptr;
+      }
+      if (b.arm && b.arm->key == axis) return nullptr;
+    }
+  }
+  return base;
+}
+
+// The rest rule for one centred byte: after its binding changes, the bridge
+// becomes enabled or a new pad appears, it stays at centre until its stick is
+// seen inside that binding's deadzone at a frame.
+struct CentreWatch {
+  SignalId analog;
+  const Binding* bound = nullptr;
+  bool resting = false;
+
+  /// fresh: not enabled at the previous frame, or a new pad since.
+  bool must_centre(const Mapping& m, const InputState& input, const std::string& layer, bool enabled, bool fresh) {
+    const Binding* now = enabled ? driver_of(m, layer, analog) : nullptr;
+    if (!enabled || fresh || now != bound) resting = false;
+    bound = now;
+    if (!resting && now != nullptr) {
+      const auto& a = std::get<AxisBinding>(now->rule);
+      const int v = input.axis(a.axis);
+      const double x = v >= 0 ? v / 32767.0 : v / 32768.0;
+      resting = (x < 0 ? -x : x) <= a.shape.deadzone;
+    }
+    return !resting;
+  }
+};
 
 // Every 3 input bytes make one event: what, which input, value. Buttons and
 // axes of a standard pad, connects and disconnects, and time moving on.
@@ -82,6 +134,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   InputState input;
   bool fresh = false;  // the deadman went down after the last connect, not at it
+  std::array<CentreWatch, 2> centre{CentreWatch{signal_id("drive")}, CentreWatch{signal_id("pivot")}};
+  bool was_enabled = false;
+  int sessions = 0, seen_sessions = 0;
   std::int64_t t = 0, next_frame = 0;
   for (std::size_t i = 2; i + 3 <= size; i += 3) {
     t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
@@ -97,6 +152,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       const bool may_move = input.connected() && input.button(deadman).down && fresh;
       if (!may_move) check(is_neutral(s, mapping.center));
+      for (auto& c : centre) {
+        if (c.must_centre(mapping, input, engine.status().layer, may_move, !was_enabled || sessions != seen_sessions)) {
+          check(s[c.analog] == mapping.center);
+        }
+      }
+      was_enabled = may_move;
+      seen_sessions = sessions;
       check(s[signal_id("safety")] == (engine.status().enable == EnableState::kEnabled ? 1 : 0));
       next_frame += 40;
     }
@@ -105,6 +167,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool was_connected = input.connected();
     input.apply(event);
     if (event.type == InputEvent::Type::kConnect || !input.connected()) fresh = false;
+    if (event.type == InputEvent::Type::kConnect) ++sessions;
     if (was_connected && input.connected() && !was_down && input.button(deadman).down &&
         input.button(deadman).presses > 0) {
       fresh = true;

@@ -24,7 +24,7 @@ std::string_view describe(EnableState state) {
 }
 
 Engine::Engine(Mapping mapping, EngineOptions options)
-    : mapping_(std::move(mapping)), options_(options), builder_(options.code) {
+    : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(mapping_) {
   // A mapping built by hand gets the same checks as a loaded one; without a
   // deadman it is never enabled, so it only ever sends neutral frames.
   validate(mapping_, false);
@@ -41,7 +41,6 @@ Engine::Engine(Mapping mapping, EngineOptions options)
     slot_base_.push_back(slots);
   }
   all_ = all_bindings(mapping_);
-  toggled_.assign(slots, 0);
   selector_.assign(slots, 0);
   for (const auto ref : all_) {
     const auto& b = binding_at(mapping_, ref);
@@ -60,7 +59,7 @@ const Mapping& Engine::mapping() const { return mapping_; }
 
 std::size_t Engine::slot(BindingRef ref) const { return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index; }
 
-void Engine::clear_toggles() { std::fill(toggled_.begin(), toggled_.end(), 0); }
+void Engine::clear_toggles() { toggled_.reset(); }
 
 void Engine::start_session(const InputState& input, bool at_start_up) {
   connection_ = input.connection();
@@ -76,13 +75,16 @@ void Engine::start_session(const InputState& input, bool at_start_up) {
   }
 }
 
+// An input the rest rule holds back neither holds nor presses (the deadman and
+// layer buttons are never held back).
 bool Engine::held(const InputState& input, InputKey key, bool invert, double threshold) const {
+  if (rest_.held_back(key)) return false;
   if (key.is_button()) return input.button(key).down;
   return shape_axis(normalise_axis(input.axis(key)), AxisShape{invert, 0.0, 0.0}) >= threshold;
 }
 
 std::uint32_t Engine::new_presses(const InputState& input, InputKey key) const {
-  if (!key.is_button()) return 0;
+  if (!key.is_button() || rest_.held_back(key)) return 0;
   const auto it = seen_presses_.find(key);
   const auto seen = it == seen_presses_.end() ? 0U : it->second;
   const auto now = input.button(key).presses;
@@ -158,7 +160,7 @@ void Engine::apply(const InputState& input, BindingRef ref, std::int64_t dt_ms, 
   std::visit(Overload{
                  [&](const ButtonBinding& b) {
                    if (b.toggle) {
-                     if (new_presses(input, b.input) % 2 == 1) toggled_[k] ^= 1U;
+                     if (new_presses(input, b.input) % 2 == 1) toggled_.flip(b.signal);
                    } else if (b.input.is_button() ? active(b.input) : held(input, b.input, b.invert, b.threshold)) {
                      out[b.signal] = 1;
                    }
@@ -169,11 +171,13 @@ void Engine::apply(const InputState& input, BindingRef ref, std::int64_t dt_ms, 
                    if (arm && active(b.input)) out[b.signal] = 1;
                  },
                  [&](const PairBinding& b) {
+                   if (rest_.held_back(b.axis)) return;
                    const double x = shape_axis(normalise_axis(input.axis(b.axis)), AxisShape{b.invert, 0.0, 0.0});
                    if (x <= -b.threshold) out[b.signals[0]] = 1;
                    if (x >= b.threshold) out[b.signals[1]] = 1;
                  },
                  [&](const AxisBinding& b) {
+                   if (rest_.held_back(b.axis)) return;  // drive/pivot stay at centre, a level keeps its value
                    const double z = shape_axis(normalise_axis(input.axis(b.axis)), b.shape);
                    if (info(b.analog).kind == SignalKind::kCentred) {
                      out[b.analog] = centred_byte(z, mapping_.center);
@@ -220,6 +224,8 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
   update_layer(input, enabled);
+  rest_.update(input, layer_, enabled, seen_presses_);
+  status_.held_back = rest_.held_back_inputs();
 
   ControlState state = resting_state();
   SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
@@ -228,9 +234,8 @@ DataBytes Engine::step(const InputState& input, std::int64_t now_ms) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
     }
     // A toggle stays on in every layer until pressed again or the deadman is released.
-    for (const auto ref : all_) {
-      const auto* b = std::get_if<ButtonBinding>(&binding_at(mapping_, ref).rule);
-      if (b != nullptr && toggled_[slot(ref)] != 0) state[b->signal] = 1;
+    for (std::size_t i = 0; i < kSignalCount; ++i) {
+      if (toggled_[i]) state.values[i] = 1;
     }
   } else {
     clear_toggles();  // releasing the deadman stops everything a toggle started

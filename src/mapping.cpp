@@ -141,6 +141,29 @@ void check_arms(const Mapping& m, int layer) {
   }
 }
 
+// One signal has one toggle state, flipped by any of its toggle inputs; a
+// momentary binding on the same signal would leave "on" with two meanings.
+void check_toggles(const Mapping& m) {
+  std::map<SignalId, std::pair<bool, const Binding*>> first;  // signal -> (toggled?, its first binding)
+  for (const auto& ref : all_bindings(m)) {
+    const auto& b = binding_at(m, ref);
+    std::vector<std::pair<SignalId, bool>> uses;
+    if (const auto* x = std::get_if<ButtonBinding>(&b.rule)) uses.emplace_back(x->signal, x->toggle);
+    if (const auto* x = std::get_if<PairBinding>(&b.rule)) {
+      uses.emplace_back(x->signals[0], false);
+      uses.emplace_back(x->signals[1], false);
+    }
+    for (const auto& [id, toggle] : uses) {
+      const auto [it, fresh] = first.emplace(id, std::pair{toggle, &b});
+      if (fresh || it->second.first == toggle) continue;
+      const auto& other = it->second.second->pos;
+      const std::string where = "line " + std::to_string(other.line) + (other.file == b.pos.file ? "" : " of " + other.file);
+      throw InputError(b.target_pos, quoted(id) + (toggle ? " is momentary" : " is a toggle") + " at " + where +
+                                         "; a signal is either toggled or momentary, not both");
+    }
+  }
+}
+
 }  // namespace
 
 const Binding& binding_at(const Mapping& mapping, BindingRef ref) {
@@ -240,6 +263,7 @@ void validate(const Mapping& m, bool require_robot) {
   for (const auto& layer : m.layers) check_bindings(layer.bindings);
   check_arms(m, -1);
   for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i));
+  check_toggles(m);
 }
 
 }  // namespace andros

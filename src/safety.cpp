@@ -1,5 +1,11 @@
 #include "andros/safety.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "andros/axis.hpp"
+#include "overload.hpp"
+
 namespace andros {
 
 ControlState apply_safety(ControlState state, const SafetyContext& ctx) {
@@ -31,6 +37,93 @@ ControlState apply_safety(ControlState state, const SafetyContext& ctx) {
     if (partner && asked.values[i] != 0 && asked[*partner] != 0) state.values[i] = 0;
   }
   return state;
+}
+
+RestRule::RestRule(const Mapping& mapping) {
+  for (int layer = -1; layer < static_cast<int>(mapping.layers.size()); ++layer) {
+    Readers& readers = readers_.emplace_back();
+    for (const auto ref : effective_bindings(mapping, layer)) {
+      const auto& b = binding_at(mapping, ref);
+      // A button rests released whoever reads it; an axis rests where its binding sends nothing.
+      Reader r{{ref.layer, ref.index}, Reader::Rest::kReleased, false, 0.0};
+      std::visit(Overload{
+                     [&](const ButtonBinding& x) { r = {r.binding, Reader::Rest::kBelow, x.invert, x.threshold}; },
+                     [&](const PairBinding& x) { r = {r.binding, Reader::Rest::kInsideBand, false, x.threshold}; },
+                     [&](const AxisBinding& x) {
+                       const bool centred = info(x.analog).kind == SignalKind::kCentred;
+                       r = {r.binding, centred ? Reader::Rest::kInsideDeadzone : Reader::Rest::kNotPositive,
+                            x.shape.invert, x.shape.deadzone};
+                     },
+                     [](const auto&) {},
+                 },
+                 b.rule);
+      for (const auto& u : b.inputs) {
+        readers[u.key].push_back(u.key.is_button() ? Reader{r.binding, Reader::Rest::kReleased, false, 0.0} : r);
+      }
+      // An arming trigger counts as held past half way.
+      if (b.arm) {
+        readers[b.arm->key].push_back(b.arm->key.is_button()
+                                          ? Reader{r.binding, Reader::Rest::kReleased, false, 0.0}
+                                          : Reader{r.binding, Reader::Rest::kBelow, false, kDefaultThreshold});
+      }
+    }
+  }
+}
+
+bool RestRule::at_rest(const InputState& input, InputKey key, const std::vector<Reader>& readers) {
+  if (key.is_button()) return !input.button(key).down;
+  const double x = normalise_axis(input.axis(key));
+  return std::all_of(readers.begin(), readers.end(), [x](const Reader& r) {
+    const double v = r.invert ? -x : x;
+    switch (r.rest) {
+      case Reader::Rest::kReleased: return true;
+      case Reader::Rest::kBelow: return v < r.limit;
+      case Reader::Rest::kInsideBand: return std::abs(v) < r.limit;
+      case Reader::Rest::kInsideDeadzone: return std::abs(v) <= r.limit;
+      case Reader::Rest::kNotPositive: return v <= r.limit;
+    }
+    return false;
+  });
+}
+
+void RestRule::update(const InputState& input, int layer, bool enabled, std::map<InputKey, std::uint32_t>& seen) {
+  if (!enabled) {
+    enabled_ = false;
+    held_.clear();
+    return;
+  }
+  // Becoming enabled, also with a new controller between two frames, changes every input's meaning.
+  const bool edge = !enabled_ || input.connection() != connection_;
+  const auto& now = readers_[static_cast<std::size_t>(layer + 1)];
+  const auto& before = readers_[static_cast<std::size_t>(layer_ + 1)];
+  const auto same_bindings = [](const std::vector<Reader>& a, const std::vector<Reader>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const Reader& x, const Reader& y) { return x.binding == y.binding; });
+  };
+  // An input nothing reads cannot act; if a binding reads it again, that is a change of meaning.
+  std::erase_if(held_, [&](const auto& h) { return !now.contains(h.first); });
+  for (const auto& [key, readers] : now) {
+    const auto was = before.find(key);
+    const bool changed = edge || was == before.end() || !same_bindings(was->second, readers);
+    const std::uint32_t presses = key.is_button() ? input.button(key).presses : 0;
+    const bool rest = at_rest(input, key, readers);
+    if (changed) {
+      if (key.is_button()) seen[key] = presses;  // presses up to this frame meant something else
+      if (rest) held_.erase(key);
+      else held_[key] = presses;
+    } else if (const auto h = held_.find(key); h != held_.end() && (rest || presses > h->second)) {
+      held_.erase(h);  // released, or released and pressed again since it was held back
+    }
+  }
+  enabled_ = true;
+  connection_ = input.connection();
+  layer_ = layer;
+}
+
+std::vector<InputKey> RestRule::held_back_inputs() const {
+  std::vector<InputKey> keys;
+  for (const auto& h : held_) keys.push_back(h.first);
+  return keys;
 }
 
 }  // namespace andros

@@ -35,11 +35,18 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
   EXPECT_EQ(f[signal_id("safety")], 1);
   EXPECT_EQ(f[signal_id("drive_brake")], 1);
-  EXPECT_EQ(f[signal_id("drive")], 255);  // full forward: 128 + round(1 * 127)
+  EXPECT_EQ(f[signal_id("drive")], 128);  // pushed since before the press: at rest first
+  EXPECT_EQ(engine.status().held_back, std::vector{*parse_axis_name("lefty")});
   EXPECT_EQ(f[signal_id("code")], 0x01);
 
-  apply_script(in, "130 disconnect\n");
-  f = read_signals(engine.step(in, 160));
+  apply_script(in, "125 axis lefty 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 160))[signal_id("drive")], 128);
+  EXPECT_TRUE(engine.status().held_back.empty());
+  apply_script(in, "165 axis lefty -32768\n");
+  EXPECT_EQ(read_signals(engine.step(in, 200))[signal_id("drive")], 255);  // full forward: 128 + round(1 * 127)
+
+  apply_script(in, "210 disconnect\n");
+  f = read_signals(engine.step(in, 240));
   EXPECT_EQ(engine.status().enable, EnableState::kNoController);
   EXPECT_EQ(f[signal_id("drive")], 128);
   EXPECT_EQ(f[signal_id("safety")], 0);
@@ -54,8 +61,10 @@ TEST(Engine, PivotContractValue) {
   Engine engine(std::move(m), EngineOptions{});
   InputState in;
   engine.step(in, 0);  // start-up: presses before the first tick would not count
-  apply_script(in, "0 connect\n10 button leftshoulder 1\n10 axis leftx 16384\n");
-  const auto f = read_signals(engine.step(in, 40));
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 axis leftx 16384\n");  // after the enabling frame: not held back
+  const auto f = read_signals(engine.step(in, 80));
   EXPECT_EQ(f[signal_id("pivot")], 162);
 }
 
@@ -99,8 +108,11 @@ TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
   engine.step(in, 80);
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
   apply_script(in, "90 axis lefttrigger 16384\n");
-  const auto f = read_signals(engine.step(in, 120));
+  auto f = read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(f[signal_id("tool_on")], 0);  // a held since the connect: released first
+  apply_script(in, "130 button a 0\n140 button a 1\n");
+  f = read_signals(engine.step(in, 160));
   EXPECT_EQ(f[signal_id("tool_on")], 1);
 }
 
@@ -108,20 +120,26 @@ TEST(Engine, LayersHoldBeatsToggleAndLossClearsTheToggle) {
   Engine engine(from_yaml(kLayered), EngineOptions{});
   InputState in;
   engine.step(in, 0);
-  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button back 1\n25 button back 0\n30 button a 1\n");
-  auto f = read_signals(engine.step(in, 40));
+  // A layer toggle pressed in the enabling frame counts: layer buttons are not held back.
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button back 1\n25 button back 0\n");
+  engine.step(in, 40);
   EXPECT_EQ(engine.status().layer, "cam");
+  apply_script(in, "50 button a 1\n");
+  auto f = read_signals(engine.step(in, 80));
   EXPECT_EQ(f[signal_id("focus_up")], 1);
-  apply_script(in, "50 button rightshoulder 1\n");
-  f = read_signals(engine.step(in, 80));
+  apply_script(in, "90 button rightshoulder 1\n");
+  f = read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().layer, "arm");
-  EXPECT_EQ(f[signal_id("elbow_cw")], 1);
+  EXPECT_EQ(f[signal_id("elbow_cw")], 0);  // a, held across the change: released first
   EXPECT_EQ(f[signal_id("focus_up")], 0);
-  apply_script(in, "90 button rightshoulder 0\n");
-  engine.step(in, 120);
+  apply_script(in, "130 button a 0\n135 button a 1\n");
+  EXPECT_EQ(read_signals(engine.step(in, 160))[signal_id("elbow_cw")], 1);
+  apply_script(in, "170 button rightshoulder 0\n");
+  f = read_signals(engine.step(in, 200));
   EXPECT_EQ(engine.status().layer, "cam");
-  apply_script(in, "130 disconnect\n140 connect\n150 button leftshoulder 1\n");
-  engine.step(in, 160);
+  EXPECT_EQ(f[signal_id("focus_up")], 0);
+  apply_script(in, "210 disconnect\n220 connect\n230 button leftshoulder 1\n");
+  engine.step(in, 240);
   EXPECT_EQ(engine.status().layer, "");
 }
 
@@ -130,22 +148,25 @@ TEST(Engine, DeadmanReleaseClearsTogglesButSelectorsAndKnobsStay) {
   InputState in;
   EXPECT_EQ(read_signals(engine.neutral())[signal_id("light")], 40);  // the knob's initial value
   engine.step(in, 0);
-  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button x 1\n21 button x 0\n22 button y 1\n"
-                   "23 button y 0\n30 button dpright 1\n");
-  auto f = read_signals(engine.step(in, 40));
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 button x 1\n51 button x 0\n52 button y 1\n53 button y 0\n60 button dpright 1\n");
+  auto f = read_signals(engine.step(in, 80));
   EXPECT_EQ(f[signal_id("tool_on")], 1);
   EXPECT_EQ(f[signal_id("main_video_2")], 1);
   EXPECT_EQ(f[signal_id("light")], 80);  // 40 + 1000/s x 40 ms
-  apply_script(in, "50 button leftshoulder 0\n");
-  f = read_signals(engine.step(in, 80));
+  apply_script(in, "90 button leftshoulder 0\n");
+  f = read_signals(engine.step(in, 120));
   EXPECT_EQ(f[signal_id("tool_on")], 0);
   EXPECT_EQ(f[signal_id("main_video_2")], 1);
   EXPECT_EQ(f[signal_id("light")], 80);
-  EXPECT_EQ(engine.neutral(), engine.step(in, 120));
-  apply_script(in, "130 button leftshoulder 1\n");
-  f = read_signals(engine.step(in, 160));
+  EXPECT_EQ(engine.neutral(), engine.step(in, 160));
+  apply_script(in, "170 button leftshoulder 1\n");
+  f = read_signals(engine.step(in, 200));
   EXPECT_EQ(f[signal_id("tool_on")], 0);  // stays off until pressed again
-  EXPECT_EQ(f[signal_id("light")], 120);
+  EXPECT_EQ(f[signal_id("light")], 80);   // dpright held across the enable: the knob waits for a release
+  apply_script(in, "210 button dpright 0\n215 button dpright 1\n");
+  EXPECT_EQ(read_signals(engine.step(in, 240))[signal_id("light")], 120);
 }
 
 TEST(Engine, MovedEngineKeepsWorking) {
@@ -153,11 +174,96 @@ TEST(Engine, MovedEngineKeepsWorking) {
   Engine engine = std::move(first);
   InputState in;
   engine.step(in, 0);
-  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button rightshoulder 1\n20 button a 1\n");
-  const auto data = engine.step(in, 40);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button rightshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 button a 1\n");
+  const auto data = engine.step(in, 80);
   EXPECT_EQ(read_signals(data)[signal_id("elbow_cw")], 1);
   EXPECT_EQ(data[kCodeByte], 0x3C);
   EXPECT_EQ(engine.mapping().robot, "HD1");
+}
+
+// The issue's own case on the shipped layout: hold RB (arm layer), push the
+// left stick full and squeeze RT, release RB. Drive and fiber_unwind wait.
+TEST(Engine, ReleasingALayerWithTheStickHeldDoesNotMove) {
+  Engine engine(hd1(), EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button rightshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 axis lefty -32768\n50 axis righttrigger 32767\n");
+  auto f = read_signals(engine.step(in, 80));
+  EXPECT_EQ(f[signal_id("shoulder_ccw")], 1);
+  apply_script(in, "90 button rightshoulder 0\n");
+  f = read_signals(engine.step(in, 120));
+  EXPECT_EQ(engine.status().layer, "");
+  EXPECT_EQ(f[signal_id("drive")], 128);
+  EXPECT_EQ(f[signal_id("fiber_unwind")], 0);
+  EXPECT_EQ(engine.status().held_back.size(), 2U);
+  apply_script(in, "130 axis lefty -3000\n130 axis righttrigger 16383\n");  // inside deadzone 0.1, below 0.5
+  engine.step(in, 160);
+  apply_script(in, "170 axis lefty -32768\n170 axis righttrigger 32767\n");
+  f = read_signals(engine.step(in, 200));
+  EXPECT_EQ(f[signal_id("drive")], 255);
+  EXPECT_EQ(f[signal_id("fiber_unwind")], 1);
+}
+
+TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
+  Engine engine(hd1(), EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  // dpup pressed while the deadman is pressed (one frame): held back, then a tap counts.
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n20 button dpup 1\n");
+  EXPECT_EQ(read_signals(engine.step(in, 40))[signal_id("front_art_up")], 0);
+  apply_script(in, "50 button dpup 0\n55 button dpup 1\n60 button dpup 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 80))[signal_id("front_art_up")], 1);
+  // b tapped in the frame that switches the camera layer on (b: the light knob there): dropped.
+  apply_script(in, "90 button rightstick 1\n95 button rightstick 0\n100 button b 1\n105 button b 0\n");
+  auto f = read_signals(engine.step(in, 120));
+  EXPECT_EQ(engine.status().layer, "camera");
+  EXPECT_EQ(f[signal_id("light")], 0);
+  apply_script(in, "130 button rightstick 1\n135 button rightstick 0\n");
+  engine.step(in, 160);
+  // A tap of an input the change leaves alone (start: the speed selector in both layers) still counts.
+  apply_script(in, "170 button rightshoulder 1\n180 button start 1\n185 button start 0\n");
+  f = read_signals(engine.step(in, 200));
+  EXPECT_EQ(engine.status().layer, "arm");
+  EXPECT_EQ(f[signal_id("speed_low")], 0);  // low -> medium
+}
+
+TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
+  Engine engine(hd1(), EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 40);
+  // Lost, back with the stick pushed, and the deadman pressed afresh, all in one frame.
+  apply_script(in, "50 disconnect\n60 connect\n60 axis lefty -32768\n70 button leftshoulder 1\n");
+  const auto f = read_signals(engine.step(in, 80));
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(f[signal_id("drive")], 128);
+}
+
+TEST(Engine, OneToggleStatePerSignal) {
+  Engine engine(from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
+                          "  - signal: tool_on\n    button: x\n    toggle: true\n"
+                          "layers:\n  cam:\n    toggle: back\n    bindings:\n"
+                          "      - signal: tool_on\n        button: y\n        toggle: true\n"),
+                EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 40);
+  apply_script(in, "50 button x 1\n55 button x 0\n60 button back 1\n65 button back 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 80))[signal_id("tool_on")], 1);
+  apply_script(in, "90 button y 1\n95 button y 0\n");  // the camera layer's y flips the same state
+  EXPECT_EQ(read_signals(engine.step(in, 120))[signal_id("tool_on")], 0);
+  apply_script(in, "130 button y 1\n135 button y 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 160))[signal_id("tool_on")], 1);
+  apply_script(in, "170 button back 1\n175 button back 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 200))[signal_id("tool_on")], 1);  // stays on in the base layer
+  apply_script(in, "210 button x 1\n215 button x 0\n");
+  EXPECT_EQ(read_signals(engine.step(in, 240))[signal_id("tool_on")], 0);
 }
 
 TEST(Engine, RefusesAnInvalidMappingBuiltByHand) {

@@ -1,11 +1,16 @@
 // Property test: random event scripts through every shipped mapping. Whatever
 // the operator does, every frame passes validation, no opposing pair is both
-// 1, nothing moves while not enabled, and weapons stay 0 without --weapons.
-// `enabled` is checked against an independent reading of contract section 5.
+// 1, nothing moves while not enabled, weapons stay 0 without --weapons, and
+// drive and pivot stay at centre after a change of meaning until their stick
+// was seen at rest. `enabled` and the rest rule are checked against
+// independent readings of docs/mapping.md's safety rules.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <map>
 #include <sstream>
+#include <string>
 
 #include "andros/events.hpp"
 #include "andros/mapping_loader.hpp"
@@ -34,6 +39,7 @@ class Random {
 
 std::vector<InputEvent> random_script(Random& rng) {
   using T = InputEvent::Type;
+  const auto deadman = *parse_button_name("leftshoulder");
   std::vector<InputEvent> events;
   std::int64_t t = 0;
   const auto add = [&](T type, InputKey key = {}, int value = 0) {
@@ -45,7 +51,7 @@ std::vector<InputEvent> random_script(Random& rng) {
     events.push_back(e);
   };
   add(T::kConnect);
-  const int n = 20 + static_cast<int>(rng.below(40));
+  const int n = 20 + static_cast<int>(rng.below(60));
   for (int i = 0; i < n; ++i) {
     t += rng.below(4) == 0 ? 0 : rng.below(60);
     const auto roll = rng.below(100);
@@ -53,12 +59,17 @@ std::vector<InputEvent> random_script(Random& rng) {
       add(rng.below(2) == 0 ? T::kDisconnect : T::kConnect);
     } else if (roll < 30) {  // the deadman and the layer buttons, often
       const std::array<std::string_view, 4> busy = {"leftshoulder", "rightshoulder", "leftstick", "rightstick"};
-      add(T::kButton, *parse_button_name(busy[rng.below(busy.size())]), static_cast<int>(rng.below(2)));
+      const auto key = *parse_button_name(busy[rng.below(busy.size())]);
+      // The deadman is held more often than not, so that sessions last long enough to do something.
+      add(T::kButton, key, key == deadman ? static_cast<int>(rng.below(4) != 0) : static_cast<int>(rng.below(2)));
+    } else if (roll < 38) {  // the weapons' arming trigger (LT), squeezed or at rest
+      add(T::kAxis, *parse_axis_name("lefttrigger"), rng.below(2) == 0 ? 0 : 32767);
     } else if (roll < 65) {
       add(T::kButton, InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(rng.below(15))},
           static_cast<int>(rng.below(2)));
     } else {
-      const std::array<int, 7> values = {-32768, -16384, -3000, 0, 3000, 16384, 32767};
+      // Rest (0) often: an input that changed meaning acts again only once seen at rest.
+      const std::array<int, 9> values = {-32768, -16384, -3000, 0, 0, 0, 3000, 16384, 32767};
       const int v = rng.below(2) == 0 ? values[rng.below(values.size())] : static_cast<int>(rng.below(65536)) - 32768;
       add(T::kAxis, InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(rng.below(6))}, v);
     }
@@ -94,6 +105,86 @@ class EnabledOracle {
   std::int64_t connect_t_ = -1;
 };
 
+// The rest rule for drive and pivot, read off the mapping and the events: when
+// the binding that drives one changes (a layer), or the bridge becomes enabled
+// (also with a new pad between two frames), it stays at centre until its axis
+// is seen inside that binding's deadzone at a frame.
+class CentreOracle {
+ public:
+  explicit CentreOracle(const Mapping& mapping) : mapping_(mapping) {}
+
+  void apply(const InputEvent& e) {
+    using T = InputEvent::Type;
+    if (e.type == T::kConnect || e.type == T::kDisconnect) {
+      connected_ = e.type == T::kConnect;
+      sessions_ += connected_ ? 1 : 0;
+      axes_.clear();
+    } else if (connected_ && e.type == T::kAxis) {
+      axes_[e.key] = e.value;
+    }
+  }
+
+  /// Once per frame: must `analog` be at centre now?
+  bool must_centre(SignalId analog, const std::string& layer, bool enabled) {
+    auto& w = watch_[analog];
+    const Binding* now = enabled ? driver(layer, analog) : nullptr;
+    if (!enabled || !enabled_ || now != w.driver || sessions_ != seen_sessions_) w.resting = false;
+    w.driver = now;
+    if (!w.resting && now != nullptr) {
+      const auto& a = std::get<AxisBinding>(now->rule);
+      const auto it = axes_.find(a.axis);
+      const int v = it == axes_.end() ? 0 : it->second;
+      const double x = v >= 0 ? v / 32767.0 : v / 32768.0;
+      w.resting = std::abs(x) <= a.shape.deadzone;
+    }
+    return !w.resting;
+  }
+
+  void end_frame(bool enabled) {
+    enabled_ = enabled;
+    seen_sessions_ = sessions_;
+  }
+
+ private:
+  struct Watch {
+    const Binding* driver = nullptr;
+    bool resting = false;
+  };
+
+  // The binding driving `analog` in the layer: the layer's own, else the base's
+  // unless a layer binding takes its axis or its byte.
+  const Binding* driver(const std::string& layer, SignalId analog) const {
+    const auto drives = [&](const Binding& b) {
+      const auto* a = std::get_if<AxisBinding>(&b.rule);
+      return a != nullptr && a->analog == analog;
+    };
+    const Binding* base = nullptr;
+    for (const auto& b : mapping_.bindings) {
+      if (drives(b)) base = &b;
+    }
+    for (const auto& l : mapping_.layers) {
+      if (l.name != layer) continue;
+      for (const auto& b : l.bindings) {
+        if (drives(b)) return &b;
+        const auto axis = base == nullptr ? InputKey{} : std::get<AxisBinding>(base->rule).axis;
+        for (const auto& u : b.inputs) {
+          if (base != nullptr && u.key == axis) return nullptr;
+        }
+        if (base != nullptr && b.arm && b.arm->key == axis) return nullptr;
+      }
+    }
+    return base;
+  }
+
+  const Mapping& mapping_;
+  std::map<InputKey, int> axes_;
+  std::map<SignalId, Watch> watch_;
+  bool connected_ = false;
+  bool enabled_ = false;
+  int sessions_ = 0;
+  int seen_sessions_ = 0;
+};
+
 using Coverage = std::array<int, kSignalCount>;
 
 void check_script(const Mapping& mapping, const std::vector<InputEvent>& script, bool weapons, Coverage& coverage) {
@@ -103,10 +194,14 @@ void check_script(const Mapping& mapping, const std::vector<InputEvent>& script,
   ScriptPlayer player(in);
   Engine engine(mapping, EngineOptions{weapons, 0x5A});
   EnabledOracle oracle(mapping.deadman->key);
+  CentreOracle centre(mapping);
   std::size_t next_event = 0;
   ControlState previous = read_signals(engine.neutral());
   replay(player, engine, FrameClock(kDefaultRateMillihertz), [&](std::int64_t t, const DataBytes& data) {
-    while (next_event < script.size() && script[next_event].t_ms <= t) oracle.apply(script[next_event++]);
+    for (; next_event < script.size() && script[next_event].t_ms <= t; ++next_event) {
+      oracle.apply(script[next_event]);
+      centre.apply(script[next_event]);
+    }
     const auto s = read_signals(data);
     const bool enabled = oracle.enabled();
     const auto where = [&] { return "t=" + std::to_string(t) + " in\n" + text; };
@@ -114,6 +209,14 @@ void check_script(const Mapping& mapping, const std::vector<InputEvent>& script,
     ASSERT_EQ(data[kCodeByte], 0x5A);
     ASSERT_EQ(engine.status().enable == EnableState::kEnabled, enabled) << where();
     ASSERT_EQ(s[signal_id("safety")], enabled ? 1 : 0) << where();
+    for (const auto id : {signal_id("drive"), signal_id("pivot")}) {
+      if (centre.must_centre(id, engine.status().layer, enabled)) {
+        ASSERT_EQ(s[id], mapping.center) << info(id).name << " before its stick was seen at rest, " << where();
+      } else if (enabled && s[id] != mapping.center) {
+        ++coverage[id];
+      }
+    }
+    centre.end_frame(enabled);
     for (std::size_t i = 0; i < kSignalCount; ++i) {
       const auto id = static_cast<SignalId>(i);
       const auto& sig = kSignals[i];
@@ -154,7 +257,8 @@ TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
     }
   }
   // The scripts do reach what the properties are about: motion and weapons.
-  for (const auto name : {"drive_brake", "front_art_up", "pt_left", "shoulder_cw", "focus_up", "weapon_1", "laser"}) {
+  for (const auto name :
+       {"drive_brake", "drive", "pivot", "front_art_up", "pt_left", "shoulder_cw", "focus_up", "weapon_1", "laser"}) {
     EXPECT_GT(coverage[*find_signal(name)], 0) << name << " never sent";
   }
 }

@@ -2,6 +2,8 @@
 // hand-derived NAME.expected (see replay_data.hpp for the format).
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "andros/mapping_loader.hpp"
 #include "andros/replay.hpp"
 #include "replay_data.hpp"
@@ -11,7 +13,7 @@ namespace {
 
 struct Case {
   const char* name;
-  const char* mapping;  // under tests/data/mappings/
+  std::string mapping;  // under tests/data/mappings/, or an absolute path
   bool weapons = false;
   std::int64_t rate_mhz = kDefaultRateMillihertz;
 };
@@ -25,7 +27,8 @@ class ReplayData : public ::testing::TestWithParam<Case> {};
 TEST_P(ReplayData, FramesMatchTheHandDerivedOnes) {
   const auto& c = GetParam();
   const std::string base = kData + "/replay/" + c.name;
-  testing::expect_replay(load_mapping(kData + "/mappings/" + c.mapping), c.weapons, c.rate_mhz, base + ".events",
+  const auto mapping = c.mapping.starts_with('/') ? c.mapping : kData + "/mappings/" + c.mapping;
+  testing::expect_replay(load_mapping(mapping), c.weapons, c.rate_mhz, base + ".events",
                          base + ".expected");
 }
 
@@ -54,7 +57,16 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"selector_cycling", "layers.yaml"},
         Case{"layers", "layers.yaml"},
         Case{"joystick", "joystick.yaml"},
-        Case{"rate_24hz", "core.yaml", false, 24'000}),
+        Case{"rate_24hz", "core.yaml", false, 24'000},
+        // No motion from a change of meaning; one toggle state per signal.
+        Case{"layer_release_stick_held", ANDROS_MAPPINGS_DIR "/hd1.yaml"},
+        Case{"layer_entered_stick_held", "layers.yaml"},
+        Case{"toggle_layer_stick_held", "rest.yaml"},
+        Case{"deadman_pressed_stick_deflected", "core.yaml"},
+        Case{"trigger_held_across_layer", "rest.yaml"},
+        Case{"button_held_across_layer", "rest.yaml"},
+        Case{"toggle_held_across_layer", "rest.yaml"},
+        Case{"two_toggles_one_signal", "rest.yaml"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

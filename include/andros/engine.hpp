@@ -1,8 +1,9 @@
 #pragma once
 /// The mapping engine: a pure function of (input snapshot, its own previous
 /// state, tick time) to the frame's data bytes. No SDL, no clock reads, no I/O.
-/// The safety rules of contract section 5 are applied after the bindings, in
-/// one place, so that no mapping can bypass them.
+/// The safety rules (docs/mapping.md) are applied in one place, the rest rule
+/// before the bindings and apply_safety() after them, so that no mapping can
+/// bypass them.
 
 #include <bitset>
 #include <cstdint>
@@ -35,6 +36,7 @@ std::string_view describe(EnableState state);
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;  ///< the active layer's name ("" for the base layer)
+  std::vector<InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
 };
 
 class Engine {
@@ -85,7 +87,8 @@ class Engine {
   bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
   int layer_ = -1;                       ///< active layer, -1 = base
   int toggled_layer_ = -1;               ///< layer switched on by a toggle button
-  std::vector<std::uint8_t> toggled_;    ///< per binding slot
+  std::bitset<kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
+  RestRule rest_;
   std::vector<int> selector_;            ///< per binding slot: a selector's position
   std::array<std::int64_t, kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;

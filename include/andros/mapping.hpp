@@ -133,7 +133,8 @@ struct Mapping {
 
 /// Checks the rules that span bindings (contract section 4): an input bound
 /// twice in a layer, two bindings on one analog byte, a weapon without arm,
-/// targets a binding kind cannot drive, a missing deadman or robot. Throws
+/// targets a binding kind cannot drive, a signal both toggled and momentary
+/// (anywhere in the mapping), a missing deadman or robot. Throws
 /// InputError at the offending FILE:LINE:COL. A base mapping (require_robot
 /// false) may lack robot and deadman.
 void validate(const Mapping& mapping, bool require_robot = true);

@@ -48,7 +48,8 @@ armed="$DATA/replay/weapons_on_armed.events"
 expect_exit 0 "$BIN" replay "$armed" --mapping "$core" --format jsonl
 grep -q '"weapon_1":1' "$TMP/out" && fail "weapon_1 sent without --weapons"
 expect_exit 0 "$BIN" replay "$armed" --mapping "$core" --format jsonl --weapons
-[[ $(grep -c '"weapon_1":1' "$TMP/out") -eq 2 ]] || fail "weapon_1 with --weapons: $(grep -c '"weapon_1":1' "$TMP/out") frames"
+# One frame: after the deadman is pressed again, b and the arm (held since) must be released first.
+[[ $(grep -c '"weapon_1":1' "$TMP/out") -eq 1 ]] || fail "weapon_1 with --weapons: $(grep -c '"weapon_1":1' "$TMP/out") frames"
 
 # Rates: frame times floor(k * 1000 / rate); at most 26.666 Hz (360 bits at 9600 baud).
 expect_exit 0 "$BIN" replay "$DATA/replay/rate_24hz.events" --mapping "$core" --rate 24
