@@ -1,17 +1,22 @@
 // andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
-#include <spdlog/sinks/stdout_color_sinks.h>
-#include <spdlog/spdlog.h>
-
 #include <CLI/CLI.hpp>
-#include <cstdio>
+#include <csignal>
 #include <exception>
 #include <string>
 
 #include "andros/error.hpp"
+#include "andros/io/log_sink.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
+  // A reader that went away (`| head`, a hung-up ssh session) is a write
+  // error, never a signal that kills the bridge between two frames.
+  std::signal(SIGPIPE, SIG_IGN);
+  // Log lines go to stderr through a queue and a thread of their own: stdout
+  // carries data (frame decode, `record -o -`) or the status view.
+  const auto log = andros::io::install_stderr_log();
+
   CLI::App app{
       "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
       "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
@@ -21,10 +26,6 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 runtime failure, 2 bad input.\n"
              "Run 'andros-bridge COMMAND --help' for a command's options.");
-  // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
-  spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
-  spdlog::set_pattern("%^%l%$: %v");
-
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
   andros::cli::add_replay_command(app, exit_code);
@@ -39,14 +40,14 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s (see --help)\n", e.what());
+    log->write_line(std::string("andros-bridge: error: ") + e.what() + " (see --help)");
     return andros::kExitBadInput;
   } catch (const andros::InputError& e) {
     // With no file to name, say which program is talking.
-    std::fprintf(stderr, "%s%s\n", e.pos().file.empty() ? "andros-bridge: " : "", e.what());
+    log->write_line((e.pos().file.empty() ? "andros-bridge: " : "") + std::string(e.what()));
     return andros::kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+    log->write_line(std::string("andros-bridge: error: ") + e.what());
     return andros::kExitRuntime;
   }
   return exit_code;
