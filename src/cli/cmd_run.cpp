@@ -12,6 +12,7 @@
 #include "andros/config.hpp"
 #include "andros/error.hpp"
 #include "andros/io/bridge.hpp"
+#include "andros/io/job_control.hpp"
 #include "andros/io/serial_link.hpp"
 #include "andros/io/shutdown_signals.hpp"
 #include "andros/io/sim_vehicle.hpp"
@@ -94,12 +95,34 @@ std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicl
   return std::make_unique<io::SerialLink>(config.port, config.baud);
 }
 
+io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& job) {
+  if (signals.requested()) return io::Request::kStop;
+  switch (job.poll()) {
+    case io::JobControlSignals::Event::kStopAsked: return io::Request::kSuspend;
+    case io::JobControlSignals::Event::kContinued: return io::Request::kResumed;
+    case io::JobControlSignals::Event::kNone: break;
+  }
+  return io::Request::kNone;
+}
+
+/// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
+/// out, then stop until continued (fg, bg, SIGCONT), and redraw.
+void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay>& display) {
+  if (display) display->stop();
+  spdlog::info("suspended (SIG{}): neutral frames sent, link closed", sigabbrev_np(job.stop_signal()));
+  spdlog::default_logger()->flush();  // bounded
+  job.stop_process();
+  spdlog::info("resumed: not enabled until the deadman is pressed again");
+  if (display) display->start();
+}
+
 int run_bridge(const RunOptions& opt) {
   const RunConfig config = resolve_config(opt);
   const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
 
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
+  io::JobControlSignals job;
   const auto frames = make_engine_frames(config);
   const auto input = make_input_source(config.input, opt.sdl);
   std::unique_ptr<io::SimVehicle> sim;
@@ -121,7 +144,7 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
   io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
-  bridge.run([&signals] { return signals.requested(); },
+  bridge.run(io::RunControl{[&] { return poll_requests(signals, job); }, [&] { suspend_process(job, display); }},
              [&board](const io::TickReport& r) { board.observe(r); });
   display.reset();
 
