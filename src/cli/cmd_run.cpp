@@ -99,7 +99,10 @@ io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& j
   if (signals.requested()) return io::Request::kStop;
   switch (job.poll()) {
     case io::JobControlSignals::Event::kStopAsked: return io::Request::kSuspend;
-    case io::JobControlSignals::Event::kContinued: return io::Request::kResumed;
+    case io::JobControlSignals::Event::kContinued:
+      // Stopped by a SIGSTOP the loop could not answer: no neutral frames went first.
+      spdlog::info("continued (SIGCONT): not enabled until the deadman is pressed again");
+      return io::Request::kResumed;
     case io::JobControlSignals::Event::kNone: break;
   }
   return io::Request::kNone;
@@ -170,8 +173,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "run",
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
-      "frames, drain, close. Flags override the config file. With no port, frames go to a\n"
-      "built-in simulated vehicle (sim).");
+      "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
+      "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
+      "to a built-in simulated vehicle (sim).");
   opt->cmd = cmd;
   cmd->add_option("--config", opt->config,
                   "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"
