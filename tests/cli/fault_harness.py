@@ -230,6 +230,32 @@ def job_control(bin_, data, port):
         fail(f"exit {code}")
 
 
+def background_stop(bin_, data, port):
+    """SIGTTOU (as a terminal sends a background job that writes to it) is a stop request like
+    Ctrl-Z: neutral frames first, then stopped; continued, it runs on and stops as usual."""
+    proc = start([bin_, "run", "--port", port.path, "--input", f"{data}/live/long_drive.events"],
+                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
+    if not port.wait(lambda f: driving(f) >= 5, 10):
+        fail("no driving frames")
+    proc.send_signal(signal.SIGTTOU)
+    for _ in range(500):
+        if proc_state(proc.pid) == "T":
+            break
+        time.sleep(0.01)
+    else:
+        fail("not stopped after SIGTTOU")
+    before = port.snapshot()
+    if [d for _, d, _ in before[-3:]] != [128, 128, 128]:
+        fail(f"the frames before the stop do not end neutral: drive {[d for _, d, _ in before[-6:]]}")
+    proc.send_signal(signal.SIGCONT)
+    if not port.wait(lambda f: len(f) >= len(before) + 5, 5):
+        fail("no frames after SIGCONT")
+    proc.send_signal(signal.SIGTERM)
+    code = wait_exit(proc, 10)
+    if code != 0:
+        fail(f"exit {code}")
+
+
 def terminal(argv, env_extra=None):
     """Runs argv with stdout on a pty (the display on), stderr to /dev/null; returns (proc, master)."""
     m, s = pty.openpty()
@@ -293,7 +319,8 @@ def monitor_zero(bin_, data, port):
 
 
 SCENARIOS = {"closed-log": closed_log, "stuck-log": stuck_log, "stop-tick": stop_tick,
-             "job-control": job_control, "paused-terminal": paused_terminal, "monitor-zero": monitor_zero}
+             "job-control": job_control,
+             "background-stop": background_stop, "paused-terminal": paused_terminal, "monitor-zero": monitor_zero}
 
 
 def main():

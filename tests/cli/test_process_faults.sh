@@ -18,6 +18,7 @@ scenario closed-log --min 10 --driving --neutral-tail 3
 scenario stuck-log --min 10 --driving --neutral-tail 3
 scenario stop-tick --driving --neutral-tail 3
 scenario job-control --driving --enabled --neutral-tail 3
+scenario background-stop --driving --neutral-tail 3
 scenario paused-terminal --min 25 --driving --neutral-tail 3
 scenario monitor-zero
 finish
