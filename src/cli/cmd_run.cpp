@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -123,6 +124,10 @@ int run_bridge(const RunOptions& opt) {
   const RunConfig config = resolve_config(opt);
   const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
 
+  // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
+  // write error, never a signal that ends the run between two frames. (The
+  // data commands keep the default: `frame decode | head` just ends.)
+  std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
   io::JobControlSignals job;

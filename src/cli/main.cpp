@@ -1,6 +1,5 @@
 // andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <exception>
 #include <string>
 
@@ -10,11 +9,9 @@
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
-  // A reader that went away (`| head`, a hung-up ssh session) is a write
-  // error, never a signal that kills the bridge between two frames.
-  std::signal(SIGPIPE, SIG_IGN);
-  // Log lines go to stderr through a queue and a thread of their own: stdout
-  // carries data (frame decode, `record -o -`) or the status view.
+  // Log lines go to stderr through a queue and a thread of their own (which
+  // blocks every signal, SIGPIPE included): stdout carries data (frame
+  // decode, `record -o -`) or the status view.
   const auto log = andros::io::install_stderr_log();
 
   CLI::App app{
