@@ -45,6 +45,8 @@ JobControlSignals::Event JobControlSignals::poll() {
 }
 
 void JobControlSignals::stop_process() {
+  // A second Ctrl-Z during the neutral frames is answered by this stop too.
+  discard_pending(set_);
   kill(getpid(), SIGSTOP);
   // Continued: the SIGCONT that did it is answered by returning.
   sigset_t cont;
