@@ -38,6 +38,7 @@ class FixedFrames final : public io::FrameSource {
   DataBytes neutral() const override { return neutral_frame(); }
   std::string enable_text() const override { return "no controller"; }
   bool enabled() const override { return false; }
+  void restart() override {}
 };
 
 class Idle final : public InputSource {

@@ -3,6 +3,7 @@
 random event script, with every frame checked. Not part of CI.
 
   scripts/soak.py [--seconds 3600] [--seed N] [--robot hd1] [--bin PATH] [--keep DIR]
+                  [--close-log-after SECONDS]
 
 It writes a random script (connects, disconnects, deadman presses and stuck
 deadman, sticks, toggles, layers, selectors, taps), runs
@@ -19,9 +20,14 @@ timestamp per frame, samples the bridge's RSS, then decodes the capture with
   script's own, not the engine's.
 
 Opposing pairs and signal kinds come from `andros-bridge frame signals --json`.
-Prints a report; exits 1 if any frame broke a rule.
+With --close-log-after S, the bridge's stdout and stderr go into one pipe
+whose reader keeps what it reads and closes its end S seconds in (an ssh
+session carrying `| tee` that hangs up): the bridge must run on, and end on
+its neutral frames.
+Prints a report; exits 1 if any frame broke a rule, the run did not end with
+at least 3 neutral frames, or the bridge did not exit 0.
 """
-import argparse, bisect, json, os, pty, random, select, statistics, subprocess, sys, tempfile, time, tty
+import argparse, bisect, json, os, pty, random, select, statistics, subprocess, sys, tempfile, threading, time, tty
 
 PERIOD_MS = 40.0
 
@@ -93,6 +99,19 @@ def vm_kb(pid, field):
     return None
 
 
+def log_reader(fd, path, close_after, started, result):
+    """Reads the bridge's log pipe into path; closes the pipe close_after seconds after started."""
+    with open(path, "wb") as out:
+        while time.monotonic() - started < close_after:
+            if select.select([fd], [], [], 0.2)[0]:
+                chunk = os.read(fd, 65536)
+                if not chunk:
+                    break
+                out.write(chunk)
+    os.close(fd)
+    result["closed_at"] = time.monotonic() - started
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--seconds", type=int, default=3600)
@@ -101,6 +120,8 @@ def main():
     ap.add_argument("--code", default="01")
     ap.add_argument("--bin", default=os.path.join(os.path.dirname(__file__), "..", "build", "src", "andros-bridge"))
     ap.add_argument("--keep", help="folder to keep the script, capture and decoded frames in")
+    ap.add_argument("--close-log-after", type=float, metavar="SECONDS",
+                    help="pipe the bridge's stdout and stderr through a reader that closes its end after SECONDS")
     a = ap.parse_args()
 
     work = a.keep or tempfile.mkdtemp(prefix="andros-soak-")
@@ -116,9 +137,18 @@ def main():
     tty.setraw(slave)
     port = os.ttyname(slave)
     started = time.monotonic()
-    proc = subprocess.Popen([a.bin, "run", "--robot", a.robot, "--port", port, "--code", a.code,
-                             "--input", script], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                            stderr=open(os.path.join(work, "bridge.log"), "w"))
+    argv = [a.bin, "run", "--robot", a.robot, "--port", port, "--code", a.code, "--input", script]
+    log_path = os.path.join(work, "bridge.log")
+    log_pipe = {}
+    if a.close_log_after is None:
+        proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=open(log_path, "w"))
+        reader = None
+    else:
+        r, w = os.pipe()
+        proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=w, stderr=w)
+        os.close(w)
+        reader = threading.Thread(target=log_reader, args=(r, log_path, a.close_log_after, started, log_pipe))
+        reader.start()
     capture, arrivals, pending = bytearray(), [], bytearray()
     rss_start = rss_end = None
     next_report = started + 60
@@ -148,6 +178,8 @@ def main():
         if proc.poll() is not None and not r:
             break
     exit_code = proc.wait()
+    if reader:
+        reader.join()
     os.close(master)
     os.close(slave)
 
@@ -199,6 +231,7 @@ def main():
     drift_ms = ((arrivals[-1] - t0) * 1000 - (len(arrivals) - 1) * PERIOD_MS) if len(arrivals) > 1 else 0
     dev = sorted(abs(p - PERIOD_MS) for p in periods)
     enabled = sum(1 for f in frames if f["signals"]["safety"])
+    neutral_end = len(frames) >= 3 and all(neutral(f["signals"]) for f in frames[-3:])
     print(f"soak: {a.seconds} s, seed {a.seed}, robot {a.robot}, bridge exit {exit_code}")
     print(f"frames sent (decoded): {len(frames)}  enabled: {enabled}  moving: "
           f"{sum(1 for f in frames if f['signals']['drive'] != 128 or f['signals']['pivot'] != 128)}")
@@ -210,11 +243,15 @@ def main():
               f"max deviation {dev[-1]:.3f} ms")
         print(f"drift: {drift_ms:+.2f} ms over {span_min:.1f} min ({drift_ms / max(span_min, 1e-9):+.3f} ms/min)")
     print(f"RSS: {rss_start} KiB at 5 s, {rss_end} KiB near the end")
+    if reader:
+        print(f"log pipe: its reader closed it {log_pipe.get('closed_at', 0):.1f} s in; "
+              f"{os.path.getsize(log_path)} bytes of log read before that")
+    print(f"end: the last 3 frames are neutral: {'yes' if neutral_end else 'NO'}")
     for k, broke, data in examples:
         print(f"  frame {k}: {', '.join(broke)}: {data}")
     print(f"files in {work}")
     bad = sum(violations.values())
-    sys.exit(0 if bad == 0 and exit_code == 0 else 1)
+    sys.exit(0 if bad == 0 and exit_code == 0 and neutral_end else 1)
 
 
 if __name__ == "__main__":

@@ -96,6 +96,31 @@ TEST(Engine, PressesBeforeStartUpAreNotFresh) {
   EXPECT_EQ(describe(EnableState::kEnabled), "enabled");
 }
 
+TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
+  Engine engine(hd1(), EngineOptions{});
+  InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n10 button leftshoulder 1\n");
+  engine.step(in, 20);  // enabled; the stick and x act from the next frame (the rest rule)
+  apply_script(in, "30 axis lefty -32768\n30 button x 1\n35 button x 0\n");
+  auto f = read_signals(engine.step(in, 40));
+  ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
+  ASSERT_EQ(f[signal_id("drive")], 255);
+  ASSERT_EQ(f[signal_id("tool_on")], 1);
+  engine.restart();  // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
+  apply_script(in, "50 button y 1\n");  // a press while stopped is history too
+  f = read_signals(engine.step(in, 80));
+  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(f[signal_id("drive")], 128);
+  EXPECT_EQ(f[signal_id("tool_on")], 0);
+  apply_script(in, "90 button leftshoulder 0\n95 axis lefty 0\n100 button leftshoulder 1\n");
+  f = read_signals(engine.step(in, 120));
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(f[signal_id("tool_on")], 0);  // the toggle did not come back
+  apply_script(in, "130 axis lefty -32768\n");
+  EXPECT_EQ(read_signals(engine.step(in, 160))[signal_id("drive")], 255);
+}
+
 TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
   Engine engine(from_yaml("robot: HD1\ndeadman: lefttrigger\nbindings:\n  - signal: tool_on\n    button: a\n"),
                 EngineOptions{});

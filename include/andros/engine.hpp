@@ -50,6 +50,10 @@ class Engine {
   /// call is start-up: deadman presses counted before it are not fresh.
   DataBytes step(const InputState& input, std::int64_t now_ms);
 
+  /// Makes the next step a start-up again (after the process was paused):
+  /// presses made before it are history, the deadman needs a fresh press.
+  void restart() { started_ = false; }
+
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at centre.
   [[nodiscard]] DataBytes neutral() const;

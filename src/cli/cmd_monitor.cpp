@@ -35,6 +35,9 @@ struct MonitorOptions {
 
 constexpr int kRedrawsPerSecond = 4;
 constexpr std::int64_t kQuietNs = 1'000'000'000;  ///< no frame for this long: the stream stopped
+/// After a stop, what has already arrived is still read, up to these bounds.
+constexpr std::size_t kDrainBytes = 256 * 1024;
+constexpr std::int64_t kDrainNs = 200'000'000;
 
 /// Off a terminal: one line when frames start or stop arriving or errors grow.
 class MonitorLog {
@@ -119,12 +122,17 @@ int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleVie
     }
   }
   {
-    // Stopped by a signal: what has already arrived still counts.
+    // Stopped by a signal: what has already arrived still counts, but a
+    // source that never runs dry (/dev/zero) must not hold the stop up.
     const std::lock_guard lock(mutex);
     pollfd p{fd, POLLIN, 0};
     long n = 0;
-    while (!ended && poll(&p, 1, 0) == 1 && (n = ::read(fd, buf, sizeof buf)) > 0) {
+    std::size_t taken = 0;
+    const auto deadline = io::monotonic_ns() + kDrainNs;
+    while (!ended && taken < kDrainBytes && io::monotonic_ns() < deadline && poll(&p, 1, 0) == 1 &&
+           (n = ::read(fd, buf, sizeof buf)) > 0) {
       view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), io::monotonic_ns());
+      taken += static_cast<std::size_t>(n);
     }
     view.finish();
   }

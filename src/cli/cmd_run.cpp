@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "andros/config.hpp"
 #include "andros/error.hpp"
 #include "andros/io/bridge.hpp"
+#include "andros/io/job_control.hpp"
 #include "andros/io/serial_link.hpp"
 #include "andros/io/shutdown_signals.hpp"
 #include "andros/io/sim_vehicle.hpp"
@@ -94,12 +96,41 @@ std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicl
   return std::make_unique<io::SerialLink>(config.port, config.baud);
 }
 
+io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& job) {
+  if (signals.requested()) return io::Request::kStop;
+  switch (job.poll()) {
+    case io::JobControlSignals::Event::kStopAsked: return io::Request::kSuspend;
+    case io::JobControlSignals::Event::kContinued:
+      // Stopped by a SIGSTOP the loop could not answer: no neutral frames went first.
+      spdlog::info("continued (SIGCONT): not enabled until the deadman is pressed again");
+      return io::Request::kResumed;
+    case io::JobControlSignals::Event::kNone: break;
+  }
+  return io::Request::kNone;
+}
+
+/// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
+/// out, then stop until continued (fg, bg, SIGCONT), and redraw.
+void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay>& display) {
+  if (display) display->stop();
+  spdlog::info("suspended (SIG{}): neutral frames sent, link closed", sigabbrev_np(job.stop_signal()));
+  spdlog::default_logger()->flush();  // bounded
+  job.stop_process();
+  spdlog::info("resumed: not enabled until the deadman is pressed again");
+  if (display) display->start();
+}
+
 int run_bridge(const RunOptions& opt) {
   const RunConfig config = resolve_config(opt);
   const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
 
+  // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
+  // write error, never a signal that ends the run between two frames. (The
+  // data commands keep the default: `frame decode | head` just ends.)
+  std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
+  io::JobControlSignals job;
   const auto frames = make_engine_frames(config);
   std::unique_ptr<InputSource> input;
   try {
@@ -129,7 +160,7 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
   io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
-  bridge.run([&signals] { return signals.requested(); },
+  bridge.run(io::RunControl{[&] { return poll_requests(signals, job); }, [&] { suspend_process(job, display); }},
              [&board](const io::TickReport& r) { board.observe(r); });
   display.reset();
 
@@ -155,8 +186,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "run",
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
-      "frames, drain, close. Flags override the config file. With no port, frames go to a\n"
-      "built-in simulated vehicle (sim).");
+      "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
+      "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
+      "to a built-in simulated vehicle (sim).");
   opt->cmd = cmd;
   cmd->add_option("--config", opt->config,
                   "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"

@@ -17,6 +17,7 @@ class EngineFrames final : public io::FrameSource {
   }
   [[nodiscard]] bool enabled() const override { return engine_.status().enable == EnableState::kEnabled; }
   [[nodiscard]] std::string layer() const override { return engine_.status().layer; }
+  void restart() override { engine_.restart(); }
 
  private:
   Engine engine_;

@@ -1,7 +1,4 @@
 // andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
-#include <spdlog/sinks/stdout_color_sinks.h>
-#include <spdlog/spdlog.h>
-
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdio>
@@ -10,6 +7,7 @@
 #include <string>
 
 #include "andros/error.hpp"
+#include "andros/io/log_sink.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
 
@@ -18,14 +16,14 @@ namespace {
 // Output that never reached its file is a failure even when the command went
 // well (as coreutils' close_stdout): a full disk must not pass for a complete
 // capture. An error already reported keeps its own line and code.
-int check_stdout(int exit_code) {
+int check_stdout(int exit_code, andros::io::FdLogSink& log) {
   errno = 0;
   const bool flushed = std::fflush(stdout) == 0;  // std::cout writes through stdout's buffer (synced)
   const int error = errno;
   if (flushed && std::ferror(stdout) == 0) return exit_code;
   if (exit_code != andros::kExitOk) return exit_code;
-  std::fprintf(stderr, "andros-bridge: error: standard output: %s\n",
-               error != 0 ? std::strerror(error) : "write error");
+  log.write_line(std::string("andros-bridge: error: standard output: ") +
+                 (error != 0 ? std::strerror(error) : "write error"));
   return andros::kExitRuntime;
 }
 
@@ -45,20 +43,20 @@ void refuse_empty_values(CLI::App& app) {
 }
 
 /// Parses (which runs the chosen command) and turns what escapes into a line and a code.
-int run(CLI::App& app, int argc, char** argv, const int& exit_code) {
+int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::io::FdLogSink& log) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s (see --help)\n", e.what());
+    log.write_line(std::string("andros-bridge: error: ") + e.what() + " (see --help)");
     return andros::kExitBadInput;
   } catch (const andros::InputError& e) {
     // With no file to name, say which program is talking.
-    std::fprintf(stderr, "%s%s\n", e.pos().file.empty() ? "andros-bridge: " : "", e.what());
+    log.write_line((e.pos().file.empty() ? "andros-bridge: " : "") + std::string(e.what()));
     return andros::kExitBadInput;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+    log.write_line(std::string("andros-bridge: error: ") + e.what());
     return andros::kExitRuntime;
   }
   return exit_code;
@@ -67,6 +65,12 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Log lines go to stderr through a queue and a thread of their own (which
+  // blocks every signal, SIGPIPE included): stdout carries data (frame
+  // decode, `record -o -`) or the status view. Error lines take the same
+  // queue, so they keep their order.
+  const auto log = andros::io::install_stderr_log();
+
   CLI::App app{
       "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
       "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
@@ -76,10 +80,6 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 runtime failure (also output lost to a full disk), 2 bad input.\n"
              "Run 'andros-bridge COMMAND --help' for a command's options.");
-  // Log lines go to stderr: stdout carries data (frame decode, `record -o -`) or the status view.
-  spdlog::set_default_logger(spdlog::stderr_color_mt("andros-bridge"));
-  spdlog::set_pattern("%^%l%$: %v");
-
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
   andros::cli::add_replay_command(app, exit_code);
@@ -90,5 +90,5 @@ int main(int argc, char** argv) {
   andros::cli::add_record_command(app, exit_code);
   refuse_empty_values(app);
 
-  return check_stdout(run(app, argc, argv, exit_code));
+  return check_stdout(run(app, argc, argv, exit_code, *log), *log);
 }

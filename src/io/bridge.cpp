@@ -15,23 +15,39 @@ void sleep_until_ns(std::int64_t abs_ns) {
 }
 
 void Bridge::run(const StopCheck& stop, const Observer& observe) {
+  run(RunControl{[&stop] { return stop() ? Request::kStop : Request::kNone; }, [] {}}, observe);
+}
+
+void Bridge::run(const RunControl& control, const Observer& observe) {
   const std::int64_t start_ns = monotonic_ns();
-  std::int64_t tick = 0;
+  std::int64_t tick = 0;  // the tick to send next
   std::int64_t skipped = 0;
   try {
     while (true) {
       sleep_until_ns(start_ns + schedule_.tick_ns(tick));
-      if (stop()) break;
+      const Request request = control.poll();
+      if (request == Request::kStop) break;
+      if (request == Request::kSuspend) {
+        shutdown(start_ns, tick, observe);
+        control.pause();
+        frames_.restart();
+        // Go on at the first tick still to come (the latest one due was the
+        // pause's, or is past); unlike a stall, this gap was asked for.
+        tick = schedule_.next_tick(tick, monotonic_ns() - start_ns) + 1;
+        skipped = 0;
+        continue;
+      }
+      if (request == Request::kResumed) frames_.restart();
       const std::int64_t t_ms = schedule_.tick_ms(tick);
       // The input is read right after the tick's time: never older than the frame.
       input_.pump(state_, t_ms);
       const DataBytes data = frames_.step(state_, t_ms);
       const SendResult result = link_.send(encode(data), monotonic_ns());
       observe(TickReport{tick, t_ms, skipped, &data, result, false, &state_});
-      if (input_.finished(t_ms)) break;
       const std::int64_t next = schedule_.next_tick(tick, monotonic_ns() - start_ns);
       skipped = next - tick - 1;
       tick = next;
+      if (input_.finished(t_ms)) break;
     }
   } catch (...) {
     shutdown(start_ns, tick, observe);
@@ -40,6 +56,7 @@ void Bridge::run(const StopCheck& stop, const Observer& observe) {
   shutdown(start_ns, tick, observe);
 }
 
+/// Neutral frames from tick `tick` (not sent yet) on.
 void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe) {
   const DataBytes neutral = frames_.neutral();
   const Frame frame = encode(neutral);
@@ -49,7 +66,7 @@ void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& 
   for (int i = 0; sent < options_.shutdown_frames &&
                   i < options_.shutdown_frames + options_.shutdown_extra_ticks;
        ++i) {
-    tick = schedule_.next_tick(tick, monotonic_ns() - start_ns);
+    if (i > 0) tick = schedule_.next_tick(tick, monotonic_ns() - start_ns);
     sleep_until_ns(start_ns + schedule_.tick_ns(tick));
     const SendResult result = link_.send(frame, monotonic_ns());
     if (result == SendResult::kSent) ++sent;

@@ -1,15 +1,24 @@
 #include "andros/io/status_display.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
+#include "andros/io/link.hpp"
+
 namespace andros::io {
+namespace {
+
+constexpr int kFinalDrawMs = 300;  ///< the last screen's time limit: exit never waits longer on the terminal
+
+}  // namespace
 
 bool is_interactive(int fd) {
   const char* term = std::getenv("TERM");
@@ -21,15 +30,26 @@ StatusDisplay::StatusDisplay(Compose compose, int redraws_per_second)
       period_ms_(1000 / redraws_per_second),
       log_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(6)) {
   log_->set_pattern("%H:%M:%S %l: %v");
+  // A description of the terminal of its own: O_NONBLOCK on stdout's would
+  // reach the shell and every other process sharing it.
+  const char* tty = ttyname(STDOUT_FILENO);
+  if (tty != nullptr) fd_ = ::open(tty, O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  own_fd_ = fd_ >= 0;
+  if (!own_fd_) fd_ = STDOUT_FILENO;
 }
 
-StatusDisplay::~StatusDisplay() { stop(); }
+StatusDisplay::~StatusDisplay() {
+  stop();
+  if (own_fd_) ::close(fd_);
+}
 
 void StatusDisplay::start() {
+  if (thread_.joinable()) return;
   auto& sinks = spdlog::default_logger()->sinks();
   saved_sinks_ = sinks;
   sinks.assign({log_});
-  std::fputs("\x1b[2J\x1b[?25l", stdout);  // clear, and hide the cursor while redrawing
+  stopping_ = false;
+  if (foreground()) write_out("\x1b[2J\x1b[?25l", period_ms_);  // clear, and hide the cursor while redrawing
   thread_ = std::thread([this] { run(); });
 }
 
@@ -45,6 +65,35 @@ void StatusDisplay::stop() {
   spdlog::default_logger()->sinks() = saved_sinks_;
 }
 
+// In the background (bg, or continued there) the terminal is the shell's. A
+// terminal that is not the controlling one has no foreground to respect.
+bool StatusDisplay::foreground() const {
+  const pid_t owner = tcgetpgrp(fd_);
+  return owner < 0 || owner == getpgrp();
+}
+
+bool StatusDisplay::write_out(const std::string& text, int timeout_ms) {
+  const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
+  std::size_t done = 0;
+  while (!broken_ && done < text.size()) {
+    const long n = ::write(fd_, text.data() + done, text.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
+      broken_ = true;  // the terminal is gone (EIO after a hang-up): the run goes on without a screen
+      break;
+    }
+    const std::int64_t left_ms = (deadline - monotonic_ns()) / 1'000'000;
+    if (left_ms <= 0) break;
+    pollfd p{fd_, POLLOUT, 0};
+    poll(&p, 1, static_cast<int>(left_ms));
+  }
+  return done == text.size();
+}
+
 void StatusDisplay::run() {
   std::unique_lock lock(mutex_);
   while (!stopping_) {
@@ -56,6 +105,7 @@ void StatusDisplay::run() {
 }
 
 void StatusDisplay::draw(bool final) {
+  if (!foreground()) return;
   std::string screen = "\x1b[H" + compose_();
   screen += "\nlog:\n";
   for (const auto& line : log_->last_formatted()) screen += "  " + line;
@@ -69,8 +119,8 @@ void StatusDisplay::draw(bool final) {
     if (c == '\n') out += "\x1b[K";
     out += c;
   }
-  std::fputs(out.c_str(), stdout);
-  std::fflush(stdout);
+  // A screen the terminal cannot take in time is cut short; the next one starts from the top.
+  write_out(out, final ? kFinalDrawMs : period_ms_);
 }
 
 }  // namespace andros::io

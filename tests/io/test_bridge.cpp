@@ -36,6 +36,8 @@ class PressToDrive final : public io::FrameSource {
   }
   std::string enable_text() const override { return enabled_ ? "enabled" : "a released"; }
   bool enabled() const override { return enabled_; }
+  void restart() override { ++restarts; }
+  int restarts = 0;
 
  private:
   bool enabled_ = false;
@@ -103,6 +105,61 @@ TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
   EXPECT_EQ(reader.next(7, 2000).size(), 7u);
 }
 
+TEST(Bridge, TheTickThatSeesAStopCarriesTheFirstNeutralFrame) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  std::int64_t polls = 0;
+  std::vector<io::TickReport> ticks;
+  bridge.run([&] { return ++polls > 4; }, [&](const io::TickReport& r) { ticks.push_back(r); });
+  // Polled before ticks 0..4; the stop is seen on tick 4, which is neutral, not left out.
+  ASSERT_EQ(ticks.size(), 7u);
+  for (std::size_t i = 0; i < ticks.size(); ++i) {
+    EXPECT_EQ(ticks[i].tick, static_cast<std::int64_t>(i));
+    EXPECT_EQ(ticks[i].shutting_down, i >= 4) << "tick " << i;
+  }
+}
+
+TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink link(pty.path, 9600);
+  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  int polls = 0;
+  int paused = 0;
+  std::vector<io::TickReport> ticks;
+  std::vector<std::size_t> ticks_at_pause;
+  const io::RunControl control{
+      [&] {
+        ++polls;
+        if (polls == 3) return io::Request::kSuspend;
+        if (polls == 6) return io::Request::kResumed;
+        return polls >= 8 ? io::Request::kStop : io::Request::kNone;
+      },
+      [&] {
+        ++paused;
+        ticks_at_pause.push_back(ticks.size());
+        EXPECT_EQ(link.state(), io::LinkState::kConnecting);  // drained and closed
+      }};
+  bridge.run(control, [&](const io::TickReport& r) { ticks.push_back(r); });
+  EXPECT_EQ(paused, 1);
+  EXPECT_EQ(frames.restarts, 2);  // after the pause, and on the resume
+  // Ticks 0, 1; the suspend seen on tick 2 sends neutral frames on 2, 3, 4; the pause.
+  ASSERT_EQ(ticks_at_pause, std::vector<std::size_t>{5});
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(ticks[i].shutting_down, i >= 2) << "tick " << i;
+  // Then the run goes on after the neutral ticks, without a burst, and ends on 3 neutral frames.
+  ASSERT_EQ(ticks.size(), 5u + 4u + 3u);
+  EXPECT_GT(ticks[5].tick, ticks[4].tick);
+  EXPECT_EQ(ticks[5].skipped, 0);
+  EXPECT_FALSE(ticks[5].shutting_down);
+  EXPECT_TRUE(ticks[9].shutting_down);
+  test::FrameReader reader(pty.master.get());
+  EXPECT_EQ(reader.next(12, 2000).size(), 12u);
+}
+
 TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
   Idle input;
   PressToDrive frames;
@@ -127,6 +184,7 @@ class StallOnce final : public io::FrameSource {
   DataBytes neutral() const override { return inner_.neutral(); }
   std::string enable_text() const override { return inner_.enable_text(); }
   bool enabled() const override { return inner_.enabled(); }
+  void restart() override {}
 
  private:
   PressToDrive inner_;

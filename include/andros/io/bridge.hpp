@@ -1,7 +1,8 @@
 #pragma once
 /// The run loop: on every tick of an absolute-time clock, pump the input,
 /// compute the frame, send it; on a stop request or the end of the input,
-/// send neutral frames at the normal period, drain and close the link.
+/// send neutral frames at the normal period, drain and close the link. A
+/// suspend request (job control) sends the same neutral frames, then pauses.
 
 #include <cstdint>
 #include <functional>
@@ -29,6 +30,9 @@ class FrameSource {
   [[nodiscard]] virtual bool enabled() const = 0;
   /// The mapping layer in use ("" for the base layer).
   [[nodiscard]] virtual std::string layer() const { return {}; }
+  /// After a pause: the next step is a start-up again (presses made before it
+  /// are history; the deadman needs a fresh press).
+  virtual void restart() = 0;
 };
 
 /// What one tick did, for the status view and the log.
@@ -49,6 +53,21 @@ struct BridgeOptions {
   int drain_timeout_ms = 300;
 };
 
+/// What the world around the loop asks of it, read at each tick.
+enum class Request : std::uint8_t {
+  kNone,
+  kStop,     ///< end the run (SIGINT, SIGTERM, SIGHUP)
+  kSuspend,  ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
+  kResumed,  ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
+};
+
+struct RunControl {
+  std::function<Request()> poll;
+  /// Called after a suspend's neutral frames (link drained and closed);
+  /// returns when the run goes on.
+  std::function<void()> pause;
+};
+
 class Bridge {
  public:
   using StopCheck = std::function<bool()>;
@@ -57,9 +76,12 @@ class Bridge {
   Bridge(InputSource& input, FrameSource& frames, Link& link, BridgeOptions options)
       : input_(input), frames_(frames), link_(link), options_(options), schedule_(options.rate_millihertz) {}
 
-  /// Runs until stop() says so or the input finishes, then shuts down. Never
-  /// throws for a link problem; an InputError from a script still escapes
-  /// (after the neutral frames).
+  /// Runs until a stop request or the end of the input, then shuts down. A
+  /// request seen on tick k is answered on tick k: its frame is the first
+  /// neutral one. Never throws for a link problem; an InputError from a
+  /// script still escapes (after the neutral frames).
+  void run(const RunControl& control, const Observer& observe);
+  /// The same, with stop() as the only request.
   void run(const StopCheck& stop, const Observer& observe);
 
  private:
