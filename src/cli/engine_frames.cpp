@@ -12,8 +12,15 @@ class EngineFrames final : public io::FrameSource {
 
   DataBytes step(const InputState& input, std::int64_t now_ms) override { return engine_.step(input, now_ms); }
   [[nodiscard]] DataBytes neutral() const override { return engine_.neutral(); }
+  /// While enabled, the inputs the rest rule still holds back ("enabled; at rest
+  /// first: lefty"), so that a stick pushed through the deadman press explains itself.
   [[nodiscard]] std::string enable_text() const override {
-    return std::string(describe(engine_.status().enable));
+    const auto& status = engine_.status();
+    std::string text(describe(status.enable));
+    if (status.enable != EnableState::kEnabled || status.held_back.empty()) return text;
+    text += "; at rest first:";
+    for (const auto key : status.held_back) text += " " + input_name(key);
+    return text;
   }
   [[nodiscard]] bool enabled() const override { return engine_.status().enable == EnableState::kEnabled; }
   [[nodiscard]] std::string layer() const override { return engine_.status().layer; }

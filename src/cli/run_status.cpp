@@ -40,7 +40,7 @@ void RunStatusBoard::log_changes(const io::RunStatus& before, const io::RunStatu
     else spdlog::info("controller: none connected");
   }
   if (first_tick_ || before.enabled != after.enabled || before.enable_text != after.enable_text) {
-    if (after.enabled) spdlog::info("enabled");
+    if (after.enabled) spdlog::info("{}", after.enable_text);
     else spdlog::info("not enabled: {}", after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {

@@ -46,6 +46,12 @@ std::string gauge(std::string_view name, std::uint8_t value, bool centred) {
   return fmt("  %-10s [%s] %3u\n", std::string(name).c_str(), bar.c_str(), unsigned{value});
 }
 
+/// "; at rest first: lefty" from the enabled text "enabled; at rest first: lefty".
+std::string held_back_note(const std::string& enable_text) {
+  constexpr std::string_view kEnabled = "enabled";
+  return enable_text.starts_with(kEnabled) ? enable_text.substr(kEnabled.size()) : std::string();
+}
+
 }  // namespace
 
 const std::vector<SignalGroup>& signal_groups() {
@@ -109,7 +115,7 @@ std::string render_run_view(const RunStatus& s, bool ansi) {
              s.rate_hz, static_cast<double>(s.t_ms) / 1000.0, s.input.c_str());
   out += fmt("controller  %s\n", s.connected ? s.controller.c_str() : "no controller");
   std::string state = s.shutting_down ? "SHUTTING DOWN: sending neutral frames"
-                      : s.enabled     ? "ENABLED"
+                      : s.enabled     ? "ENABLED" + held_back_note(s.enable_text)
                                       : "not enabled: " + s.enable_text;
   if (ansi && s.enabled && !s.shutting_down) state = std::string(kReverse) + state + std::string(kReset);
   state += s.layer.empty() ? "" : "   layer: " + s.layer;

@@ -72,6 +72,11 @@ printf '0 connect\n10 button nosuch 1\n' >"$TMP/bad.events"
 expect_exit 2 "$BIN" run --input "$TMP/bad.events"
 expect_stderr_matches "bad.events:2"
 
+# A stick pushed through the deadman press is held back until centred, and the log says so.
+printf '0 connect\n100 button leftshoulder 1\n100 axis lefty -32768\n500 axis lefty 0\n600 axis lefty -32768\n1000 end\n' >"$TMP/held.events"
+expect_exit 0 "$BIN" run --input "$TMP/held.events"
+expect_stderr_matches "info: enabled; at rest first: lefty"
+
 # SIGTERM mid-drive: neutral frames, drain, exit 0 (the harness bounds the wait).
 run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 10 -- \
   "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"

@@ -35,6 +35,15 @@ TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
   }
 }
 
+TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
+  io::RunStatus s;
+  s.enabled = true;
+  s.enable_text = "enabled";
+  EXPECT_NE(io::render_run_view(s, false).find("state       ENABLED\n"), std::string::npos);
+  s.enable_text = "enabled; at rest first: lefty";
+  EXPECT_NE(io::render_run_view(s, false).find("state       ENABLED; at rest first: lefty\n"), std::string::npos);
+}
+
 TEST(FrameTiming, MeasuresRateAndJitter) {
   io::FrameTiming t;
   const std::int64_t p = 40'000'000;
