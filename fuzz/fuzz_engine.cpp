@@ -17,6 +17,7 @@
 #include "andros/robots.hpp"
 #include "andros/version.hpp"
 #include "fuzz_check.hpp"
+#include "oracle/centre_watch.hpp"
 
 namespace {
 
@@ -46,55 +47,6 @@ bool is_neutral(const ControlState& s, int center) {
   }
   return true;
 }
-
-// The binding driving a centred byte in a layer ("" = base): the layer's own,
-// else the base's unless a layer binding takes its axis.
-const Binding* driver_of(const Mapping& m, const std::string& layer, SignalId analog) {
-  const auto drives = [&](const Binding& b) {
-    const auto* a = std::get_if<AxisBinding>(&b.rule);
-    return a != nullptr && a->analog == analog;
-  };
-  const Binding* base = nullptr;
-  for (const auto& b : m.bindings) {
-    if (drives(b)) base = &b;
-  }
-  for (const auto& l : m.layers) {
-    if (l.name != layer) continue;
-    for (const auto& b : l.bindings) {
-      if (drives(b)) return &b;
-      if (base == nullptr) continue;
-      const auto axis = std::get<AxisBinding>(base->rule).axis;
-      for (const auto& u : b.inputs) {
-        if (u.key == axis) return nullptr;
-      }
-      if (b.arm && b.arm->key == axis) return nullptr;
-    }
-  }
-  return base;
-}
-
-// The rest rule for one centred byte: after its binding changes, the bridge
-// becomes enabled or a new pad appears, it stays at centre until its stick is
-// seen inside that binding's deadzone at a frame.
-struct CentreWatch {
-  SignalId analog;
-  const Binding* bound = nullptr;
-  bool resting = false;
-
-  /// fresh: not enabled at the previous frame, or a new pad since.
-  bool must_centre(const Mapping& m, const InputState& input, const std::string& layer, bool enabled, bool fresh) {
-    const Binding* now = enabled ? driver_of(m, layer, analog) : nullptr;
-    if (!enabled || fresh || now != bound) resting = false;
-    bound = now;
-    if (!resting && now != nullptr) {
-      const auto& a = std::get<AxisBinding>(now->rule);
-      const int v = input.axis(a.axis);
-      const double x = v >= 0 ? v / 32767.0 : v / 32768.0;
-      resting = (x < 0 ? -x : x) <= a.shape.deadzone;
-    }
-    return !resting;
-  }
-};
 
 // Every 3 input bytes make one event: what, which input, value. Buttons and
 // axes of a standard pad, connects and disconnects, and time moving on.
@@ -134,7 +86,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   InputState input;
   bool fresh = false;  // the deadman went down after the last connect, not at it
-  std::array<CentreWatch, 2> centre{CentreWatch{signal_id("drive")}, CentreWatch{signal_id("pivot")}};
+  const std::array<SignalId, 2> centred{signal_id("drive"), signal_id("pivot")};
+  std::array<test::CentreWatch, 2> centre{};
   bool was_enabled = false;
   int sessions = 0, seen_sessions = 0;
   std::int64_t t = 0, next_frame = 0;
@@ -152,9 +105,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       const bool may_move = input.connected() && input.button(deadman).down && fresh;
       if (!may_move) check(is_neutral(s, mapping.center));
-      for (auto& c : centre) {
-        if (c.must_centre(mapping, input, engine.status().layer, may_move, !was_enabled || sessions != seen_sessions)) {
-          check(s[c.analog] == mapping.center);
+      for (std::size_t c = 0; c < centred.size(); ++c) {
+        const Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
+        if (centre[c].must_centre(now, !was_enabled || sessions != seen_sessions,
+                                  [&](InputKey key) { return input.axis(key); })) {
+          check(s[centred[c]] == mapping.center);
         }
       }
       was_enabled = may_move;

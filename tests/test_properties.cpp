@@ -16,6 +16,7 @@
 #include "andros/mapping_loader.hpp"
 #include "andros/replay.hpp"
 #include "andros/robots.hpp"
+#include "oracle/centre_watch.hpp"
 
 namespace andros {
 namespace {
@@ -126,18 +127,11 @@ class CentreOracle {
 
   /// Once per frame: must `analog` be at centre now?
   bool must_centre(SignalId analog, const std::string& layer, bool enabled) {
-    auto& w = watch_[analog];
-    const Binding* now = enabled ? driver(layer, analog) : nullptr;
-    if (!enabled || !enabled_ || now != w.driver || sessions_ != seen_sessions_) w.resting = false;
-    w.driver = now;
-    if (!w.resting && now != nullptr) {
-      const auto& a = std::get<AxisBinding>(now->rule);
-      const auto it = axes_.find(a.axis);
-      const int v = it == axes_.end() ? 0 : it->second;
-      const double x = v >= 0 ? v / 32767.0 : v / 32768.0;
-      w.resting = std::abs(x) <= a.shape.deadzone;
-    }
-    return !w.resting;
+    const Binding* now = enabled ? test::centre_driver(mapping_, layer, analog) : nullptr;
+    return watch_[analog].must_centre(now, !enabled_ || sessions_ != seen_sessions_, [this](InputKey key) {
+      const auto it = axes_.find(key);
+      return it == axes_.end() ? 0 : it->second;
+    });
   }
 
   void end_frame(bool enabled) {
@@ -146,39 +140,9 @@ class CentreOracle {
   }
 
  private:
-  struct Watch {
-    const Binding* driver = nullptr;
-    bool resting = false;
-  };
-
-  // The binding driving `analog` in the layer: the layer's own, else the base's
-  // unless a layer binding takes its axis or its byte.
-  const Binding* driver(const std::string& layer, SignalId analog) const {
-    const auto drives = [&](const Binding& b) {
-      const auto* a = std::get_if<AxisBinding>(&b.rule);
-      return a != nullptr && a->analog == analog;
-    };
-    const Binding* base = nullptr;
-    for (const auto& b : mapping_.bindings) {
-      if (drives(b)) base = &b;
-    }
-    for (const auto& l : mapping_.layers) {
-      if (l.name != layer) continue;
-      for (const auto& b : l.bindings) {
-        if (drives(b)) return &b;
-        const auto axis = base == nullptr ? InputKey{} : std::get<AxisBinding>(base->rule).axis;
-        for (const auto& u : b.inputs) {
-          if (base != nullptr && u.key == axis) return nullptr;
-        }
-        if (base != nullptr && b.arm && b.arm->key == axis) return nullptr;
-      }
-    }
-    return base;
-  }
-
   const Mapping& mapping_;
   std::map<InputKey, int> axes_;
-  std::map<SignalId, Watch> watch_;
+  std::map<SignalId, test::CentreWatch> watch_;
   bool connected_ = false;
   bool enabled_ = false;
   int sessions_ = 0;
