@@ -89,7 +89,7 @@ RunConfig resolve_config(const RunOptions& opt) {
 
 std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<io::SerialLink>(sim->port_path(), config.baud);
-  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port));
+  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port, config.port_pos));
   io::check_serial_port(config.port, config.port_pos);
   return std::make_unique<io::SerialLink>(config.port, config.baud);
 }

@@ -49,8 +49,9 @@ void ReconnectingLink::lose(const std::string& why, std::int64_t now_ns) {
   fd_.reset();
   state_ = LinkState::kConnecting;
   detail_ = why;
-  retry_ms_ = min_retry_ms_;
-  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(min_retry_ms_) * 1'000'000;
+  if (now_ns - up_since_ns_ >= kStableNs) retry_ms_ = min_retry_ms_;
+  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * 1'000'000;
+  retry_ms_ = std::min(retry_ms_ * 2, max_retry_ms_);
 }
 
 SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
@@ -72,7 +73,6 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
     }
     state_ = LinkState::kUp;
     detail_.clear();
-    retry_ms_ = min_retry_ms_;
     up_since_ns_ = now_ns;
     if (!quiet_) spdlog::info("link {}: up", name_);
   }

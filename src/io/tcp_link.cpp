@@ -14,8 +14,7 @@
 
 namespace andros::io {
 
-TcpAddress parse_tcp_spec(std::string_view spec) {
-  const SourcePos pos{"--port"};
+TcpAddress parse_tcp_spec(std::string_view spec, const SourcePos& pos) {
   if (!spec.starts_with("tcp:")) throw InputError(pos, "expected tcp:HOST:PORT");
   auto rest = spec.substr(4);
   TcpAddress out;
@@ -34,10 +33,13 @@ TcpAddress parse_tcp_spec(std::string_view spec) {
     out.host = std::string(rest.substr(0, colon));
     out.port = std::string(rest.substr(colon + 1));
   }
-  const bool digits = !out.port.empty() && out.port.find_first_not_of("0123456789") == std::string::npos;
-  if (out.host.empty() || !digits || std::stol(out.port) < 1 || std::stol(out.port) > 65535) {
+  // Digits only, compared as text first: 99999999999999999999 is out of range, not an overflow.
+  const bool digits = !out.port.empty() && out.port.size() <= 5 &&
+                      out.port.find_first_not_of("0123456789") == std::string::npos;
+  if (out.host.empty() || !digits || std::stoi(out.port) < 1 || std::stoi(out.port) > 65535) {
     throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT (PORT 1..65535)");
   }
+  out.pos = pos;
   return out;
 }
 
@@ -49,7 +51,7 @@ TcpLink::TcpLink(const TcpAddress& address)
   addrinfo* found = nullptr;
   const int rc = getaddrinfo(address.host.c_str(), address.port.c_str(), &hints, &found);
   if (rc != 0 || found == nullptr) {
-    throw InputError(SourcePos{"--port"}, "cannot resolve '" + address.host + "': " + gai_strerror(rc));
+    throw InputError(address.pos, "cannot resolve '" + address.host + "': " + gai_strerror(rc));
   }
   std::memcpy(&addr_, found->ai_addr, found->ai_addrlen);
   addr_len_ = found->ai_addrlen;

@@ -57,6 +57,43 @@ TEST(TcpLink, ParsesTheSpec) {
   EXPECT_THROW(io::parse_tcp_spec("tcp:host:0"), InputError);
   EXPECT_THROW(io::parse_tcp_spec("tcp::4001"), InputError);
   EXPECT_THROW(io::parse_tcp_spec("tcp:host:70000"), InputError);
+  EXPECT_THROW(io::parse_tcp_spec("tcp:127.0.0.1:99999999999999999999"), InputError);
+}
+
+TEST(TcpLink, PortErrorsNameWhereThePortWasWritten) {
+  try {
+    io::parse_tcp_spec("tcp:host:0", SourcePos{"bridge.conf", 3, 12});
+    FAIL() << "port 0 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "bridge.conf");
+    EXPECT_EQ(e.pos().line, 3);
+    EXPECT_EQ(e.pos().column, 12);
+  }
+  try {
+    io::TcpLink(io::parse_tcp_spec("tcp:no-such-host.invalid:4001", SourcePos{"bridge.conf", 4, 12}));
+    FAIL() << "unresolvable host accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "bridge.conf");
+    EXPECT_EQ(e.pos().line, 4);
+  }
+}
+
+TEST(TcpLink, AServerThatAcceptsAndClosesIsRetriedWithBackOff) {
+  Listener server;
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  // 3 s: attempts at 0, 0.25, 0.75 and 1.75 s (250 ms doubling), not every few ticks.
+  int accepts = 0;
+  const std::int64_t end = io::monotonic_ns() + 3'000'000'000;
+  while (io::monotonic_ns() < end) {
+    link.send(frame_with_drive(128), io::monotonic_ns());
+    pollfd p{server.fd.get(), POLLIN, 0};
+    if (poll(&p, 1, 10) == 1) {
+      UniqueFd(accept(server.fd.get(), nullptr, nullptr)).reset();
+      ++accepts;
+    }
+  }
+  EXPECT_GE(accepts, 2);
+  EXPECT_LE(accepts, 5);
 }
 
 TEST(TcpLink, StreamsToALocalListenerAndReconnects) {

@@ -49,6 +49,9 @@ class ReconnectingLink : public Link {
   int retry_ms_;
   std::int64_t next_attempt_ns_ = 0;
   static constexpr std::int64_t kFlapNs = 1'000'000'000;
+  /// A connection lost sooner than this after it came up (a server that
+  /// accepts and closes, a stalled one) does not reset the back-off.
+  static constexpr std::int64_t kStableNs = 5'000'000'000;
   std::int64_t up_since_ns_ = 0;
   std::string last_loss_;
   bool quiet_ = false;  ///< flapping: the loss and the next recovery go unlogged

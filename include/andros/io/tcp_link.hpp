@@ -6,6 +6,7 @@
 #include <netdb.h>
 #include <sys/socket.h>
 
+#include "andros/error.hpp"
 #include "andros/io/reconnecting_link.hpp"
 
 namespace andros::io {
@@ -18,10 +19,12 @@ inline constexpr std::int64_t kTcpConnectTimeoutNs = 3'000'000'000;
 struct TcpAddress {
   std::string host;
   std::string port;
+  SourcePos pos{"--port"};  ///< where it was written, for errors about it
 };
 
-/// Splits "tcp:HOST:PORT" ("tcp:[::1]:4001" for IPv6). Throws InputError.
-TcpAddress parse_tcp_spec(std::string_view spec);
+/// Splits "tcp:HOST:PORT" ("tcp:[::1]:4001" for IPv6). Throws InputError at
+/// pos (the flag, or the config file's line).
+TcpAddress parse_tcp_spec(std::string_view spec, const SourcePos& pos = SourcePos{"--port"});
 
 class TcpLink final : public ReconnectingLink {
  public:
