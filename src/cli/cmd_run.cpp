@@ -136,6 +136,16 @@ int run_bridge(const RunOptions& opt) {
     spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames,
                  v.stats.valid, v.stats.bad_checksum, v.stats.invalid);
   }
+  const auto& shut = bridge.shutdown_report();
+  if (!shut.ok()) {
+    const std::string what =
+        shut.neutral_sent < shut.neutral_wanted
+            ? "only " + std::to_string(shut.neutral_sent) + " of " + std::to_string(shut.neutral_wanted) +
+                  " neutral frames could be handed to the link"
+            : std::string("the neutral frames had not left the link when it closed");
+    spdlog::error("{} ({}): the vehicle may still be acting on the last command it got", what, initial.link_name);
+    return kExitRuntime;
+  }
   return kExitOk;
 }
 

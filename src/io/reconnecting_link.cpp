@@ -108,19 +108,22 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
   return SendResult::kDown;
 }
 
-void ReconnectingLink::drain_and_close(int timeout_ms) {
+bool ReconnectingLink::drain_and_close(int timeout_ms) {
+  bool drained = false;
   if (state_ == LinkState::kUp && fd_) {
     const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
     // Bounded, unlike a bare tcdrain, which waits for ever on a pty nobody reads.
-    while (queued_bytes() > 0 && monotonic_ns() < deadline) {
+    while (undelivered_bytes() > 0 && monotonic_ns() < deadline) {
       const timespec pause{0, 2'000'000};
       nanosleep(&pause, nullptr);
     }
-    if (queued_bytes() == 0) finish_drain();
+    drained = undelivered_bytes() == 0;
+    if (drained) finish_drain();
   }
   fd_.reset();
   state_ = LinkState::kConnecting;
   detail_ = "closed";
+  return drained;
 }
 
 }  // namespace andros::io

@@ -39,8 +39,11 @@ class Link {
   /// monotonic clock, for the link's own retry timing.
   virtual SendResult send(const Frame& frame, std::int64_t now_ns) = 0;
 
-  /// Waits, at most timeout_ms, until the bytes written have left; then closes.
-  virtual void drain_and_close(int timeout_ms) = 0;
+  /// Waits, at most timeout_ms, until the bytes written have left (a serial
+  /// driver's queue is empty; a TCP server has acknowledged them); then
+  /// closes. False when they had not: the link was down, or they were still
+  /// waiting at the timeout.
+  virtual bool drain_and_close(int timeout_ms) = 0;
 
   [[nodiscard]] virtual LinkState state() const = 0;
   /// What the link is, for the operator ("/dev/ttyUSB0 9600 8N1", "tcp 10.0.0.5:4001").

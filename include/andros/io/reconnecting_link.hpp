@@ -13,7 +13,7 @@ namespace andros::io {
 class ReconnectingLink : public Link {
  public:
   SendResult send(const Frame& frame, std::int64_t now_ns) final;
-  void drain_and_close(int timeout_ms) final;
+  bool drain_and_close(int timeout_ms) final;
 
   [[nodiscard]] LinkState state() const final { return state_; }
   [[nodiscard]] const std::string& name() const final { return name_; }
@@ -30,6 +30,9 @@ class ReconnectingLink : public Link {
   virtual OpenResult open_step(std::string& why) = 0;
   /// Bytes written but still in the driver, or -1 with errno set.
   virtual int queued_bytes() const = 0;
+  /// Bytes written that the far end does not have yet, for the drain at
+  /// shutdown (TCP: also those sent and not acknowledged).
+  virtual int undelivered_bytes() const { return queued_bytes(); }
   virtual long write_bytes(const std::uint8_t* data, std::size_t size);
   /// After the queue is empty: let the last bytes leave the hardware (tcdrain).
   virtual void finish_drain() {}
