@@ -30,6 +30,8 @@ long ReconnectingLink::write_bytes(const std::uint8_t* data, std::size_t size) {
   return ::write(fd_.get(), data, size);
 }
 
+int ReconnectingLink::backlog(std::int64_t /*now_ns*/, std::string& /*stalled*/) { return queued_bytes(); }
+
 void ReconnectingLink::fail_open(const std::string& why, std::int64_t now_ns) {
   fd_.reset();
   if (why != detail_) spdlog::warn("link {}: cannot open: {}; retrying", name_, why);
@@ -77,9 +79,10 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
     if (!quiet_) spdlog::info("link {}: up", name_);
   }
 
-  const int queued = queued_bytes();
-  if (queued < 0) {
-    lose(std::strerror(errno), now_ns);
+  std::string stalled;
+  const int queued = backlog(now_ns, stalled);
+  if (queued < 0 || !stalled.empty()) {
+    lose(queued < 0 ? std::string(std::strerror(errno)) : stalled, now_ns);
     ++counters_.down;
     return SendResult::kDown;
   }

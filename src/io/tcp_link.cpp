@@ -2,12 +2,14 @@
 
 #include <fcntl.h>
 #include <linux/sockios.h>
+#include <linux/tcp.h>  // tcp_info with tcpi_snd_wnd (glibc's netinet/tcp.h lacks it)
 #include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/ioctl.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 
 #include "andros/error.hpp"
@@ -68,9 +70,14 @@ ReconnectingLink::OpenResult TcpLink::open_step(std::string& why) {
     const int one = 1;
     // A frame is one small write: send it now, not after Nagle's delay.
     setsockopt(fd.get(), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    // What this side may hold: one frame unsent, a few kB in all.
+    const int lowat = static_cast<int>(kFrameSize);
+    setsockopt(fd.get(), IPPROTO_TCP, TCP_NOTSENT_LOWAT, &lowat, sizeof lowat);
+    const int sndbuf = 4096;
+    setsockopt(fd.get(), SOL_SOCKET, SO_SNDBUF, &sndbuf, sizeof sndbuf);
     if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&addr_), addr_len_) == 0) {
       fd_ = std::move(fd);
-      return OpenResult::kOpen;
+      return opened();
     }
     if (errno != EINPROGRESS) {
       why = std::strerror(errno);
@@ -95,6 +102,11 @@ ReconnectingLink::OpenResult TcpLink::open_step(std::string& why) {
     why = std::strerror(err);
     return OpenResult::kFailed;
   }
+  return opened();
+}
+
+ReconnectingLink::OpenResult TcpLink::opened() {
+  progress_ = Progress{.since_ns = monotonic_ns()};
   return OpenResult::kOpen;
 }
 
@@ -104,6 +116,41 @@ int TcpLink::queued_bytes() const {
   int queued = 0;
   if (ioctl(fd_.get(), SIOCOUTQNSD, &queued) != 0) return -1;
   return queued;
+}
+
+int TcpLink::undelivered_bytes() const {
+  int outq = 0;  // unsent, and sent but not acknowledged
+  if (ioctl(fd_.get(), SIOCOUTQ, &outq) != 0) return -1;
+  return outq;
+}
+
+int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
+  const int unsent = queued_bytes();
+  const int outq = undelivered_bytes();
+  tcp_info info{};
+  socklen_t len = sizeof info;
+  if (unsent < 0 || outq < 0 || getsockopt(fd_.get(), IPPROTO_TCP, TCP_INFO, &info, &len) != 0) return -1;
+  // The server's window shrinks as its kernel holds bytes its program has not
+  // read (kernels before 5.4 do not report it: then only acknowledgements count).
+  const bool has_window = len >= offsetof(tcp_info, tcpi_snd_wnd) + sizeof info.tcpi_snd_wnd;
+  const std::uint32_t window = has_window ? info.tcpi_snd_wnd : 0;
+  progress_.max_window = std::max(progress_.max_window, window);
+  const std::uint32_t unread = progress_.max_window - window;
+  const std::uint64_t edge = info.tcpi_bytes_acked + window;
+  const bool waiting = outq > 0 || unread > kTcpMaxUnreadBytes;
+  if (!waiting || edge > progress_.edge) progress_.since_ns = now_ns;
+  progress_.edge = std::max(progress_.edge, edge);
+  if (now_ns - progress_.since_ns >= kTcpStallNs) {
+    // Dropped with a reset, so that the frame still unsent here is never delivered late.
+    const linger abort{1, 0};
+    setsockopt(fd_.get(), SOL_SOCKET, SO_LINGER, &abort, sizeof abort);
+    stalled = "stalled: the server took nothing for " + std::to_string(kTcpStallNs / 1'000'000) + " ms";
+    return 0;
+  }
+  if (unsent > 0) return unsent;
+  if (unread > kTcpMaxUnreadBytes && now_ns - progress_.probe_ns < kTcpProbeNs) return static_cast<int>(unread);
+  if (unread > kTcpMaxUnreadBytes) progress_.probe_ns = now_ns;
+  return 0;
 }
 
 long TcpLink::write_bytes(const std::uint8_t* data, std::size_t size) {

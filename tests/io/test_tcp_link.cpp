@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
+
+#include <algorithm>
 
 #include "andros/error.hpp"
 #include "andros/io/tcp_link.hpp"
@@ -15,9 +18,12 @@ namespace {
 using io::SendResult;
 using io::UniqueFd;
 
-/// A TCP listener on 127.0.0.1, on a port the kernel picks.
+/// A TCP listener on 127.0.0.1, on a port the kernel picks. With rcvbuf set,
+/// its connections have that fixed receive buffer (an embedded serial
+/// server's), so their window shows what waits unread.
 struct Listener {
-  Listener() : fd(socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0)) {
+  explicit Listener(int rcvbuf = 0) : fd(socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0)) {
+    if (rcvbuf > 0) setsockopt(fd.get(), SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
     sockaddr_in a{};
     a.sin_family = AF_INET;
     a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -76,6 +82,55 @@ TEST(TcpLink, PortErrorsNameWhereThePortWasWritten) {
     EXPECT_EQ(e.pos().file, "bridge.conf");
     EXPECT_EQ(e.pos().line, 4);
   }
+}
+
+/// Whole frames waiting unread on a server's connection.
+std::size_t frames_waiting(int fd) {
+  int bytes = 0;
+  ioctl(fd, FIONREAD, &bytes);
+  return static_cast<std::size_t>(bytes) / kFrameSize;
+}
+
+TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
+  Listener server(4096);
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  auto conn = server.accept_while_sending(link, frame_with_drive(200));
+  ASSERT_TRUE(conn);
+  // 25 Hz, never read: at most 5 s for the link to give up on the server.
+  int ticks = 0;
+  for (; ticks < 125 && link.counters().losses == 0; ++ticks) {
+    link.send(frame_with_drive(200), io::monotonic_ns());
+    poll(nullptr, 0, 40);
+  }
+  EXPECT_EQ(link.counters().losses, 1u);
+  EXPECT_EQ(link.state(), io::LinkState::kConnecting);
+  EXPECT_LE(ticks, 60);  // 4 frames, then 1 s without progress (25 ticks), with room for a loaded machine
+  EXPECT_GT(link.counters().busy, 0u);
+  // docs/running.md: 4 waiting, one each 200 ms while held back, 1 s: at most 10.
+  EXPECT_LE(frames_waiting(conn.get()), 10u);
+  // The link comes back on its own.
+  EXPECT_TRUE(server.accept_while_sending(link, frame_with_drive(128)));
+}
+
+TEST(TcpLink, ASlowReaderIsNotAStallAndNeverFallsFarBehind) {
+  Listener server(4096);
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  auto conn = server.accept_while_sending(link, frame_with_drive(200));
+  ASSERT_TRUE(conn);
+  // 3 s at 25 Hz to a server that reads one frame every other period.
+  std::size_t most_waiting = 0;
+  std::uint8_t scratch[kFrameSize];
+  for (int tick = 0; tick < 75; ++tick) {
+    link.send(frame_with_drive(200), io::monotonic_ns());
+    if (tick % 2 == 0) {
+      most_waiting = std::max(most_waiting, frames_waiting(conn.get()));
+      recv(conn.get(), scratch, sizeof scratch, MSG_DONTWAIT);
+    }
+    poll(nullptr, 0, 40);
+  }
+  EXPECT_EQ(link.counters().losses, 0u);
+  EXPECT_GT(link.counters().busy, 0u);
+  EXPECT_LE(most_waiting, 10u);
 }
 
 TEST(TcpLink, AServerThatAcceptsAndClosesIsRetriedWithBackOff) {

@@ -33,6 +33,10 @@ class ReconnectingLink : public Link {
   /// Bytes written that the far end does not have yet, for the drain at
   /// shutdown (TCP: also those sent and not acknowledged).
   virtual int undelivered_bytes() const { return queued_bytes(); }
+  /// Before each frame while up: bytes that hold this frame back (0: send
+  /// it), or -1 with errno set. Sets stalled to why when the far end has
+  /// taken nothing for too long: the link is then lost and reopened.
+  virtual int backlog(std::int64_t now_ns, std::string& stalled);
   virtual long write_bytes(const std::uint8_t* data, std::size_t size);
   /// After the queue is empty: let the last bytes leave the hardware (tcdrain).
   virtual void finish_drain() {}

@@ -15,6 +15,15 @@ inline constexpr int kTcpMinRetryMs = 250;
 inline constexpr int kTcpMaxRetryMs = 4000;
 /// A connect that has not completed by then is abandoned and retried.
 inline constexpr std::int64_t kTcpConnectTimeoutNs = 3'000'000'000;
+/// The most the server may hold unread (as its window shows) before frames
+/// are held back: 4 frames.
+inline constexpr std::uint32_t kTcpMaxUnreadBytes = 4 * kFrameSize;
+/// While held back, one frame this often still goes, so that the server's
+/// acknowledgement reports its window again.
+inline constexpr std::int64_t kTcpProbeNs = 200'000'000;
+/// Data waiting and the server's window not moving for this long: the link
+/// is stalled, and is dropped and reopened.
+inline constexpr std::int64_t kTcpStallNs = 1'000'000'000;
 
 struct TcpAddress {
   std::string host;
@@ -35,9 +44,21 @@ class TcpLink final : public ReconnectingLink {
  protected:
   OpenResult open_step(std::string& why) override;
   int queued_bytes() const override;
+  int undelivered_bytes() const override;
+  int backlog(std::int64_t now_ns, std::string& stalled) override;
   long write_bytes(const std::uint8_t* data, std::size_t size) override;
 
  private:
+  /// What the server's acknowledgements have shown on this connection.
+  struct Progress {
+    std::uint64_t edge = 0;         ///< right edge of its window: bytes acknowledged + window
+    std::uint32_t max_window = 0;   ///< the widest window it has offered
+    std::int64_t since_ns = 0;      ///< when the edge last moved, or nothing was waiting
+    std::int64_t probe_ns = 0;      ///< when a held-back frame last went anyway
+  };
+  OpenResult opened();
+
+  Progress progress_;
   sockaddr_storage addr_{};
   socklen_t addr_len_ = 0;
   bool connecting_ = false;
