@@ -142,7 +142,7 @@ int run_bridge(const RunOptions& opt) {
         shut.neutral_sent < shut.neutral_wanted
             ? "only " + std::to_string(shut.neutral_sent) + " of " + std::to_string(shut.neutral_wanted) +
                   " neutral frames could be handed to the link"
-            : std::string("the neutral frames had not left the link when it closed");
+            : std::string("the neutral frames were not seen to reach the far end before the link closed");
     spdlog::error("{} ({}): the vehicle may still be acting on the last command it got", what, initial.link_name);
     return kExitRuntime;
   }

@@ -121,7 +121,7 @@ int TcpLink::queued_bytes() const {
 int TcpLink::undelivered_bytes() const {
   int outq = 0;  // unsent, and sent but not acknowledged
   if (ioctl(fd_.get(), SIOCOUTQ, &outq) != 0) return -1;
-  return outq;
+  return suspect_ ? static_cast<int>(std::max<std::int64_t>(outq, progress_.written)) : outq;
 }
 
 int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
@@ -137,6 +137,8 @@ int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
   progress_.max_window = std::max(progress_.max_window, window);
   const std::uint32_t unread = progress_.max_window - window;
   const std::uint64_t edge = info.tcpi_bytes_acked + window;
+  if (progress_.first_edge == 0) progress_.first_edge = edge;
+  if (edge > progress_.first_edge) suspect_ = false;  // its program has read
   const bool waiting = outq > 0 || unread > kTcpMaxUnreadBytes;
   if (!waiting || edge > progress_.edge) progress_.since_ns = now_ns;
   progress_.edge = std::max(progress_.edge, edge);
@@ -144,6 +146,7 @@ int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
     // Dropped with a reset, so that the frame still unsent here is never delivered late.
     const linger abort{1, 0};
     setsockopt(fd_.get(), SOL_SOCKET, SO_LINGER, &abort, sizeof abort);
+    suspect_ = true;
     stalled = "stalled: the server took nothing for " + std::to_string(kTcpStallNs / 1'000'000) + " ms";
     return 0;
   }
@@ -162,7 +165,9 @@ long TcpLink::write_bytes(const std::uint8_t* data, std::size_t size) {
     errno = ECONNRESET;
     return -1;
   }
-  return ::send(fd_.get(), data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+  const long sent = ::send(fd_.get(), data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+  if (sent > 0) progress_.written += sent;
+  return sent;
 }
 
 }  // namespace andros::io

@@ -45,28 +45,27 @@ wait $server_pid || fail "the good server failed"
 
 # A server that accepts and never reads (its 4 kB buffer fills): the bridge
 # notices within a bounded time, drops the connection and reconnects; no
-# connection ever holds more than a few frames (docs/running.md: 4 waiting
-# unread, one each 200 ms while held back, 1 s to give up: at most 10).
+# connection ever holds more than a few frames (docs/running.md: at most 32).
 server stall stall 30
 "$BIN" run --port "tcp:127.0.0.1:$port" --input "$LIVE/long_drive.events" >/dev/null 2>"$TMP/err" &
 bridge=$!
-# Each stall after the first waits out a longer back-off (250, 500, 1000 ms...):
-# after the third, the link stays down longer than the shutdown's 8 ticks.
-wait_for_log "link tcp .*: lost \(stalled: the server took nothing for 1000 ms\)" 3 15 ||
-  fail "no three stalls reported: $(cat "$TMP/err")"
+wait_for_log "link tcp .*: lost \(stalled: the server took nothing for 2000 ms\)" 1 15 ||
+  fail "no stall reported: $(cat "$TMP/err")"
+wait_for_log "link tcp .*: up" 2 10 || fail "no reconnection after the stall: $(cat "$TMP/err")"
 kill -TERM $bridge
 wait $bridge
 code=$?
 rm -f "$TMP/stall.port"
 wait $server_pid
-# SIGTERM with the link stalled: the neutral frames could not be handed over.
+# SIGTERM on the new connection to the server that stalled: it acknowledges
+# the neutral frames, but has not been seen reading since, so they do not count.
 [[ $code -eq 1 ]] || fail "SIGTERM against a stalled server exited $code, expected 1: $(cat "$TMP/err")"
-grep -q "^error: only [0-2] of 3 neutral frames could be handed to the link (tcp 127.0.0.1:$port)" "$TMP/err" ||
+grep -Eq "^error: (only [0-2] of 3 neutral frames could be handed to the link|the neutral frames were not seen to reach the far end before the link closed) \(tcp 127.0.0.1:$port\): the vehicle may still be acting on the last command it got" "$TMP/err" ||
   fail "no error line for the lost neutral frames: $(cat "$TMP/err")"
 (($(grep -c "^error:" "$TMP/err") == 1)) || fail "not one error line: $(cat "$TMP/err")"
-(($(wc -l <"$TMP/stall.out") >= 3)) || fail "fewer than 3 connections: $(cat "$TMP/stall.out")"
+(($(wc -l <"$TMP/stall.out") >= 2)) || fail "fewer than 2 connections: $(cat "$TMP/stall.out")"
 while read -r held; do
-  ((held <= 10)) || fail "a stalled connection held $held frames (bound 10): $(tr '\n' ' ' <"$TMP/stall.out")"
+  ((held <= 32)) || fail "a stalled connection held $held frames (bound 32): $(tr '\n' ' ' <"$TMP/stall.out")"
 done <"$TMP/stall.out"
 
 # A server that accepts and at once closes: retried with the back-off

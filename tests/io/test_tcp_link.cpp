@@ -104,12 +104,14 @@ TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
   }
   EXPECT_EQ(link.counters().losses, 1u);
   EXPECT_EQ(link.state(), io::LinkState::kConnecting);
-  EXPECT_LE(ticks, 60);  // 4 frames, then 1 s without progress (25 ticks), with room for a loaded machine
+  EXPECT_LE(ticks, 100);  // 19 frames, then 2 s without progress (50 ticks), with room for a loaded machine
   EXPECT_GT(link.counters().busy, 0u);
-  // docs/running.md: 4 waiting, one each 200 ms while held back, 1 s: at most 10.
-  EXPECT_LE(frames_waiting(conn.get()), 10u);
-  // The link comes back on its own.
-  EXPECT_TRUE(server.accept_while_sending(link, frame_with_drive(128)));
+  EXPECT_LE(frames_waiting(conn.get()), 32u);  // docs/running.md
+  // The link comes back on its own, but the server that stalled has not been
+  // seen reading since: what it acknowledges does not count as delivered.
+  auto again = server.accept_while_sending(link, frame_with_drive(128));
+  EXPECT_TRUE(again);
+  EXPECT_FALSE(link.drain_and_close(100));
 }
 
 TEST(TcpLink, ASlowReaderIsNotAStallAndNeverFallsFarBehind) {
@@ -117,20 +119,23 @@ TEST(TcpLink, ASlowReaderIsNotAStallAndNeverFallsFarBehind) {
   io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
   auto conn = server.accept_while_sending(link, frame_with_drive(200));
   ASSERT_TRUE(conn);
-  // 3 s at 25 Hz to a server that reads one frame every other period.
+  // 4 s at 25 Hz to a server that reads one frame each 80 ms (by the clock,
+  // however slowly this loop runs on a loaded machine).
   std::size_t most_waiting = 0;
   std::uint8_t scratch[kFrameSize];
-  for (int tick = 0; tick < 75; ++tick) {
+  const std::int64_t start = io::monotonic_ns();
+  std::int64_t read = 0;
+  for (int tick = 0; tick < 100; ++tick) {
     link.send(frame_with_drive(200), io::monotonic_ns());
-    if (tick % 2 == 0) {
-      most_waiting = std::max(most_waiting, frames_waiting(conn.get()));
+    most_waiting = std::max(most_waiting, frames_waiting(conn.get()));
+    for (; read < (io::monotonic_ns() - start) / 80'000'000; ++read) {
       recv(conn.get(), scratch, sizeof scratch, MSG_DONTWAIT);
     }
     poll(nullptr, 0, 40);
   }
   EXPECT_EQ(link.counters().losses, 0u);
   EXPECT_GT(link.counters().busy, 0u);
-  EXPECT_LE(most_waiting, 10u);
+  EXPECT_LE(most_waiting, 32u);
 }
 
 TEST(TcpLink, AServerThatAcceptsAndClosesIsRetriedWithBackOff) {
@@ -178,6 +183,7 @@ TEST(TcpLink, StreamsToALocalListenerAndReconnects) {
   EXPECT_EQ(link.counters().losses, 1u);
   auto again = server.accept_while_sending(link, frame_with_drive(62));
   EXPECT_TRUE(again);
+  EXPECT_TRUE(link.drain_and_close(300));  // acknowledged, by a server never seen stalling
 }
 
 TEST(TcpLink, UnresolvableHostIsBadInput) {
