@@ -91,7 +91,7 @@ RunConfig resolve_config(const RunOptions& opt) {
 
 std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<io::SerialLink>(sim->port_path(), config.baud);
-  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port));
+  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port, config.port_pos));
   io::check_serial_port(config.port, config.port_pos);
   return std::make_unique<io::SerialLink>(config.port, config.baud);
 }
@@ -109,11 +109,26 @@ io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& j
   return io::Request::kNone;
 }
 
+/// The error line for neutral frames that did not reach the link.
+std::string failed_neutral_frames(const io::ShutdownReport& shut, const std::string& link) {
+  const std::string what =
+      shut.neutral_sent < shut.neutral_wanted
+          ? "only " + std::to_string(shut.neutral_sent) + " of " + std::to_string(shut.neutral_wanted) +
+                " neutral frames could be handed to the link"
+          : std::string("the neutral frames were not seen to reach the far end before the link closed");
+  return what + " (" + link + "): the vehicle may still be acting on the last command it got";
+}
+
 /// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
 /// out, then stop until continued (fg, bg, SIGCONT), and redraw.
-void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay>& display) {
+void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay>& display,
+                     const io::ShutdownReport& neutral, const std::string& link) {
   if (display) display->stop();
-  spdlog::info("suspended (SIG{}): neutral frames sent, link closed", sigabbrev_np(job.stop_signal()));
+  if (neutral.ok()) {
+    spdlog::info("suspended (SIG{}): neutral frames sent, link closed", sigabbrev_np(job.stop_signal()));
+  } else {
+    spdlog::error("suspended (SIG{}): {}", sigabbrev_np(job.stop_signal()), failed_neutral_frames(neutral, link));
+  }
   spdlog::default_logger()->flush();  // bounded
   job.stop_process();
   spdlog::info("resumed: not enabled until the deadman is pressed again");
@@ -160,8 +175,10 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
   io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
-  bridge.run(io::RunControl{[&] { return poll_requests(signals, job); }, [&] { suspend_process(job, display); }},
-             [&board](const io::TickReport& r) { board.observe(r); });
+  const io::RunControl control{
+      [&] { return poll_requests(signals, job); },
+      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
+  bridge.run(control, [&board](const io::TickReport& r) { board.observe(r); });
   display.reset();
 
   const auto end = board.snapshot();
@@ -174,6 +191,10 @@ int run_bridge(const RunOptions& opt) {
     const auto v = sim->snapshot();
     spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames,
                  v.stats.valid, v.stats.bad_checksum, v.stats.invalid);
+  }
+  if (!bridge.shutdown_report().ok()) {
+    spdlog::error("{}", failed_neutral_frames(bridge.shutdown_report(), initial.link_name));
+    return kExitRuntime;
   }
   return kExitOk;
 }

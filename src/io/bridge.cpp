@@ -72,7 +72,9 @@ void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& 
     if (result == SendResult::kSent) ++sent;
     observe(TickReport{tick, schedule_.tick_ms(tick), 0, &neutral, result, true, &state_});
   }
-  link_.drain_and_close(options_.drain_timeout_ms);
+  shutdown_report_.neutral_sent = sent;
+  shutdown_report_.neutral_wanted = options_.shutdown_frames;
+  shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
 }
 
 }  // namespace andros::io

@@ -30,6 +30,8 @@ long ReconnectingLink::write_bytes(const std::uint8_t* data, std::size_t size) {
   return ::write(fd_.get(), data, size);
 }
 
+int ReconnectingLink::backlog(std::int64_t /*now_ns*/, std::string& /*stalled*/) { return queued_bytes(); }
+
 void ReconnectingLink::fail_open(const std::string& why, std::int64_t now_ns) {
   fd_.reset();
   if (why != detail_) spdlog::warn("link {}: cannot open: {}; retrying", name_, why);
@@ -49,8 +51,9 @@ void ReconnectingLink::lose(const std::string& why, std::int64_t now_ns) {
   fd_.reset();
   state_ = LinkState::kConnecting;
   detail_ = why;
-  retry_ms_ = min_retry_ms_;
-  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(min_retry_ms_) * 1'000'000;
+  if (now_ns - up_since_ns_ >= kStableNs) retry_ms_ = min_retry_ms_;
+  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * 1'000'000;
+  retry_ms_ = std::min(retry_ms_ * 2, max_retry_ms_);
 }
 
 SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
@@ -72,14 +75,14 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
     }
     state_ = LinkState::kUp;
     detail_.clear();
-    retry_ms_ = min_retry_ms_;
     up_since_ns_ = now_ns;
     if (!quiet_) spdlog::info("link {}: up", name_);
   }
 
-  const int queued = queued_bytes();
-  if (queued < 0) {
-    lose(std::strerror(errno), now_ns);
+  std::string stalled;
+  const int queued = backlog(now_ns, stalled);
+  if (queued < 0 || !stalled.empty()) {
+    lose(queued < 0 ? std::string(std::strerror(errno)) : stalled, now_ns);
     ++counters_.down;
     return SendResult::kDown;
   }
@@ -108,19 +111,22 @@ SendResult ReconnectingLink::send(const Frame& frame, std::int64_t now_ns) {
   return SendResult::kDown;
 }
 
-void ReconnectingLink::drain_and_close(int timeout_ms) {
+bool ReconnectingLink::drain_and_close(int timeout_ms) {
+  bool drained = false;
   if (state_ == LinkState::kUp && fd_) {
     const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
     // Bounded, unlike a bare tcdrain, which waits for ever on a pty nobody reads.
-    while (queued_bytes() > 0 && monotonic_ns() < deadline) {
+    while (undelivered_bytes() > 0 && monotonic_ns() < deadline) {
       const timespec pause{0, 2'000'000};
       nanosleep(&pause, nullptr);
     }
-    if (queued_bytes() == 0) finish_drain();
+    drained = undelivered_bytes() == 0;
+    if (drained) finish_drain();
   }
   fd_.reset();
   state_ = LinkState::kConnecting;
   detail_ = "closed";
+  return drained;
 }
 
 }  // namespace andros::io

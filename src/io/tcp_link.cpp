@@ -2,20 +2,21 @@
 
 #include <fcntl.h>
 #include <linux/sockios.h>
+#include <linux/tcp.h>  // tcp_info with tcpi_snd_wnd (glibc's netinet/tcp.h lacks it)
 #include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/ioctl.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 
 #include "andros/error.hpp"
 
 namespace andros::io {
 
-TcpAddress parse_tcp_spec(std::string_view spec) {
-  const SourcePos pos{"--port"};
+TcpAddress parse_tcp_spec(std::string_view spec, const SourcePos& pos) {
   if (!spec.starts_with("tcp:")) throw InputError(pos, "expected tcp:HOST:PORT");
   auto rest = spec.substr(4);
   TcpAddress out;
@@ -34,10 +35,13 @@ TcpAddress parse_tcp_spec(std::string_view spec) {
     out.host = std::string(rest.substr(0, colon));
     out.port = std::string(rest.substr(colon + 1));
   }
-  const bool digits = !out.port.empty() && out.port.find_first_not_of("0123456789") == std::string::npos;
-  if (out.host.empty() || !digits || std::stol(out.port) < 1 || std::stol(out.port) > 65535) {
+  // Digits only, compared as text first: 99999999999999999999 is out of range, not an overflow.
+  const bool digits = !out.port.empty() && out.port.size() <= 5 &&
+                      out.port.find_first_not_of("0123456789") == std::string::npos;
+  if (out.host.empty() || !digits || std::stoi(out.port) < 1 || std::stoi(out.port) > 65535) {
     throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT (PORT 1..65535)");
   }
+  out.pos = pos;
   return out;
 }
 
@@ -49,7 +53,7 @@ TcpLink::TcpLink(const TcpAddress& address)
   addrinfo* found = nullptr;
   const int rc = getaddrinfo(address.host.c_str(), address.port.c_str(), &hints, &found);
   if (rc != 0 || found == nullptr) {
-    throw InputError(SourcePos{"--port"}, "cannot resolve '" + address.host + "': " + gai_strerror(rc));
+    throw InputError(address.pos, "cannot resolve '" + address.host + "': " + gai_strerror(rc));
   }
   std::memcpy(&addr_, found->ai_addr, found->ai_addrlen);
   addr_len_ = found->ai_addrlen;
@@ -66,9 +70,14 @@ ReconnectingLink::OpenResult TcpLink::open_step(std::string& why) {
     const int one = 1;
     // A frame is one small write: send it now, not after Nagle's delay.
     setsockopt(fd.get(), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    // What this side may hold: one frame unsent, a few kB in all.
+    const int lowat = static_cast<int>(kFrameSize);
+    setsockopt(fd.get(), IPPROTO_TCP, TCP_NOTSENT_LOWAT, &lowat, sizeof lowat);
+    const int sndbuf = 4096;
+    setsockopt(fd.get(), SOL_SOCKET, SO_SNDBUF, &sndbuf, sizeof sndbuf);
     if (::connect(fd.get(), reinterpret_cast<const sockaddr*>(&addr_), addr_len_) == 0) {
       fd_ = std::move(fd);
-      return OpenResult::kOpen;
+      return opened();
     }
     if (errno != EINPROGRESS) {
       why = std::strerror(errno);
@@ -93,6 +102,11 @@ ReconnectingLink::OpenResult TcpLink::open_step(std::string& why) {
     why = std::strerror(err);
     return OpenResult::kFailed;
   }
+  return opened();
+}
+
+ReconnectingLink::OpenResult TcpLink::opened() {
+  progress_ = Progress{.since_ns = monotonic_ns()};
   return OpenResult::kOpen;
 }
 
@@ -104,6 +118,44 @@ int TcpLink::queued_bytes() const {
   return queued;
 }
 
+int TcpLink::undelivered_bytes() const {
+  int outq = 0;  // unsent, and sent but not acknowledged
+  if (ioctl(fd_.get(), SIOCOUTQ, &outq) != 0) return -1;
+  return suspect_ ? static_cast<int>(std::max<std::int64_t>(outq, progress_.written)) : outq;
+}
+
+int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
+  const int unsent = queued_bytes();
+  const int outq = undelivered_bytes();
+  tcp_info info{};
+  socklen_t len = sizeof info;
+  if (unsent < 0 || outq < 0 || getsockopt(fd_.get(), IPPROTO_TCP, TCP_INFO, &info, &len) != 0) return -1;
+  // The server's window shrinks as its kernel holds bytes its program has not
+  // read (kernels before 5.4 do not report it: then only acknowledgements count).
+  const bool has_window = len >= offsetof(tcp_info, tcpi_snd_wnd) + sizeof info.tcpi_snd_wnd;
+  const std::uint32_t window = has_window ? info.tcpi_snd_wnd : 0;
+  progress_.max_window = std::max(progress_.max_window, window);
+  const std::uint32_t unread = progress_.max_window - window;
+  const std::uint64_t edge = info.tcpi_bytes_acked + window;
+  if (progress_.first_edge == 0) progress_.first_edge = edge;
+  if (edge > progress_.first_edge) suspect_ = false;  // its program has read
+  const bool waiting = outq > 0 || unread > kTcpMaxUnreadBytes;
+  if (!waiting || edge > progress_.edge) progress_.since_ns = now_ns;
+  progress_.edge = std::max(progress_.edge, edge);
+  if (now_ns - progress_.since_ns >= kTcpStallNs) {
+    // Dropped with a reset, so that the frame still unsent here is never delivered late.
+    const linger abort{1, 0};
+    setsockopt(fd_.get(), SOL_SOCKET, SO_LINGER, &abort, sizeof abort);
+    suspect_ = true;
+    stalled = "stalled: the server took nothing for " + std::to_string(kTcpStallNs / 1'000'000) + " ms";
+    return 0;
+  }
+  if (unsent > 0) return unsent;
+  if (unread > kTcpMaxUnreadBytes && now_ns - progress_.probe_ns < kTcpProbeNs) return static_cast<int>(unread);
+  if (unread > kTcpMaxUnreadBytes) progress_.probe_ns = now_ns;
+  return 0;
+}
+
 long TcpLink::write_bytes(const std::uint8_t* data, std::size_t size) {
   // The vehicle never talks back; anything a serial server sends is read and
   // dropped, and an orderly close by the server shows here as a loss.
@@ -113,7 +165,9 @@ long TcpLink::write_bytes(const std::uint8_t* data, std::size_t size) {
     errno = ECONNRESET;
     return -1;
   }
-  return ::send(fd_.get(), data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+  const long sent = ::send(fd_.get(), data, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+  if (sent > 0) progress_.written += sent;
+  return sent;
 }
 
 }  // namespace andros::io

@@ -210,6 +210,27 @@ TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
   for (std::size_t i = 4; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].skipped, ticks[i].tick - ticks[i - 1].tick - 1);
 }
 
+TEST(Bridge, ReportsWhetherTheNeutralFramesReachedTheLink) {
+  auto pty = io::open_pty_pair();
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink good(pty.path, 9600);
+  io::Bridge delivered(input, frames, good, io::BridgeOptions{.rate_millihertz = 50'000});
+  int ticks = 0;
+  delivered.run([&] { return ticks >= 2; }, [&](const io::TickReport&) { ++ticks; });
+  EXPECT_TRUE(delivered.shutdown_report().ok());
+  EXPECT_EQ(delivered.shutdown_report().neutral_sent, 3);
+
+  // A device gone: nothing could be handed over, and the caller is told.
+  io::SerialLink gone("/nonexistent/andros-port", 9600);
+  io::Bridge lost(input, frames, gone, io::BridgeOptions{.rate_millihertz = 50'000});
+  ticks = 0;
+  lost.run([&] { return ticks >= 2; }, [&](const io::TickReport&) { ++ticks; });
+  EXPECT_FALSE(lost.shutdown_report().ok());
+  EXPECT_EQ(lost.shutdown_report().neutral_sent, 0);
+  EXPECT_EQ(lost.shutdown_report().neutral_wanted, 3);
+}
+
 TEST(ShutdownSignals, ASignalBecomesARequest) {
   io::ShutdownSignals signals;
   EXPECT_FALSE(signals.requested());

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
+
+#include <algorithm>
 
 #include "andros/error.hpp"
 #include "andros/io/tcp_link.hpp"
@@ -15,9 +18,12 @@ namespace {
 using io::SendResult;
 using io::UniqueFd;
 
-/// A TCP listener on 127.0.0.1, on a port the kernel picks.
+/// A TCP listener on 127.0.0.1, on a port the kernel picks. With rcvbuf set,
+/// its connections have that fixed receive buffer (an embedded serial
+/// server's), so their window shows what waits unread.
 struct Listener {
-  Listener() : fd(socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0)) {
+  explicit Listener(int rcvbuf = 0) : fd(socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0)) {
+    if (rcvbuf > 0) setsockopt(fd.get(), SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
     sockaddr_in a{};
     a.sin_family = AF_INET;
     a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
@@ -57,6 +63,97 @@ TEST(TcpLink, ParsesTheSpec) {
   EXPECT_THROW(io::parse_tcp_spec("tcp:host:0"), InputError);
   EXPECT_THROW(io::parse_tcp_spec("tcp::4001"), InputError);
   EXPECT_THROW(io::parse_tcp_spec("tcp:host:70000"), InputError);
+  EXPECT_THROW(io::parse_tcp_spec("tcp:127.0.0.1:99999999999999999999"), InputError);
+}
+
+TEST(TcpLink, PortErrorsNameWhereThePortWasWritten) {
+  try {
+    io::parse_tcp_spec("tcp:host:0", SourcePos{"bridge.conf", 3, 12});
+    FAIL() << "port 0 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "bridge.conf");
+    EXPECT_EQ(e.pos().line, 3);
+    EXPECT_EQ(e.pos().column, 12);
+  }
+  try {
+    io::TcpLink(io::parse_tcp_spec("tcp:no-such-host.invalid:4001", SourcePos{"bridge.conf", 4, 12}));
+    FAIL() << "unresolvable host accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "bridge.conf");
+    EXPECT_EQ(e.pos().line, 4);
+  }
+}
+
+/// Whole frames waiting unread on a server's connection.
+std::size_t frames_waiting(int fd) {
+  int bytes = 0;
+  ioctl(fd, FIONREAD, &bytes);
+  return static_cast<std::size_t>(bytes) / kFrameSize;
+}
+
+TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
+  Listener server(4096);
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  auto conn = server.accept_while_sending(link, frame_with_drive(200));
+  ASSERT_TRUE(conn);
+  // 25 Hz, never read: at most 5 s for the link to give up on the server.
+  int ticks = 0;
+  for (; ticks < 125 && link.counters().losses == 0; ++ticks) {
+    link.send(frame_with_drive(200), io::monotonic_ns());
+    poll(nullptr, 0, 40);
+  }
+  EXPECT_EQ(link.counters().losses, 1u);
+  EXPECT_EQ(link.state(), io::LinkState::kConnecting);
+  EXPECT_LE(ticks, 100);  // 19 frames, then 2 s without progress (50 ticks), with room for a loaded machine
+  EXPECT_GT(link.counters().busy, 0u);
+  EXPECT_LE(frames_waiting(conn.get()), 32u);  // docs/running.md
+  // The link comes back on its own, but the server that stalled has not been
+  // seen reading since: what it acknowledges does not count as delivered.
+  auto again = server.accept_while_sending(link, frame_with_drive(128));
+  EXPECT_TRUE(again);
+  EXPECT_FALSE(link.drain_and_close(100));
+}
+
+TEST(TcpLink, ASlowReaderIsNotAStallAndNeverFallsFarBehind) {
+  Listener server(4096);
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  auto conn = server.accept_while_sending(link, frame_with_drive(200));
+  ASSERT_TRUE(conn);
+  // 4 s at 25 Hz to a server that reads one frame each 80 ms (by the clock,
+  // however slowly this loop runs on a loaded machine).
+  std::size_t most_waiting = 0;
+  std::uint8_t scratch[kFrameSize];
+  const std::int64_t start = io::monotonic_ns();
+  std::int64_t read = 0;
+  for (int tick = 0; tick < 100; ++tick) {
+    link.send(frame_with_drive(200), io::monotonic_ns());
+    most_waiting = std::max(most_waiting, frames_waiting(conn.get()));
+    for (; read < (io::monotonic_ns() - start) / 80'000'000; ++read) {
+      recv(conn.get(), scratch, sizeof scratch, MSG_DONTWAIT);
+    }
+    poll(nullptr, 0, 40);
+  }
+  EXPECT_EQ(link.counters().losses, 0u);
+  EXPECT_GT(link.counters().busy, 0u);
+  EXPECT_LE(most_waiting, 32u);
+}
+
+TEST(TcpLink, AServerThatAcceptsAndClosesIsRetriedWithBackOff) {
+  Listener server;
+  io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
+  // 3 s: attempts at 0, 0.25, 0.75 and 1.75 s (250 ms doubling), not every few ticks.
+  int accepts = 0;
+  const std::int64_t end = io::monotonic_ns() + 3'000'000'000;
+  while (io::monotonic_ns() < end) {
+    link.send(frame_with_drive(128), io::monotonic_ns());
+    pollfd p{server.fd.get(), POLLIN, 0};
+    if (poll(&p, 1, 10) == 1) {
+      UniqueFd(accept(server.fd.get(), nullptr, nullptr)).reset();
+      ++accepts;
+    }
+  }
+  EXPECT_GE(accepts, 2);
+  EXPECT_LE(accepts, 5);
 }
 
 TEST(TcpLink, StreamsToALocalListenerAndReconnects) {
@@ -86,6 +183,7 @@ TEST(TcpLink, StreamsToALocalListenerAndReconnects) {
   EXPECT_EQ(link.counters().losses, 1u);
   auto again = server.accept_while_sending(link, frame_with_drive(62));
   EXPECT_TRUE(again);
+  EXPECT_TRUE(link.drain_and_close(300));  // acknowledged, by a server never seen stalling
 }
 
 TEST(TcpLink, UnresolvableHostIsBadInput) {

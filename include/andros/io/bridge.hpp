@@ -68,6 +68,14 @@ struct RunControl {
   std::function<void()> pause;
 };
 
+/// How the neutral frames at the end went.
+struct ShutdownReport {
+  int neutral_sent = 0;  ///< neutral frames the link took
+  int neutral_wanted = 0;
+  bool drained = false;  ///< and the link then had them out before it closed
+  [[nodiscard]] bool ok() const { return neutral_sent >= neutral_wanted && drained; }
+};
+
 class Bridge {
  public:
   using StopCheck = std::function<bool()>;
@@ -84,6 +92,11 @@ class Bridge {
   /// The same, with stop() as the only request.
   void run(const StopCheck& stop, const Observer& observe);
 
+  /// After run(): whether the neutral frames reached the link. When not, the
+  /// vehicle may still be acting on the last frame it got: the caller says so
+  /// and exits 1.
+  [[nodiscard]] const ShutdownReport& shutdown_report() const { return shutdown_report_; }
+
  private:
   void shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe);
 
@@ -93,6 +106,7 @@ class Bridge {
   BridgeOptions options_;
   TickSchedule schedule_;
   InputState state_;
+  ShutdownReport shutdown_report_;
 };
 
 /// Sleeps until the monotonic clock reads abs_ns (clock_nanosleep, TIMER_ABSTIME).

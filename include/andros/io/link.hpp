@@ -19,13 +19,13 @@ enum class LinkState : std::uint8_t {
 
 enum class SendResult : std::uint8_t {
   kSent,  ///< the whole frame was handed to the driver
-  kBusy,  ///< the driver still held bytes: this tick skipped, so that no stale frame queues
+  kBusy,  ///< the driver (or a TCP server, as its window shows) still held bytes: this tick skipped, so that no stale frame queues
   kDown,  ///< no connection this tick
 };
 
 struct LinkCounters {
   std::uint64_t sent = 0;
-  std::uint64_t busy = 0;   ///< ticks skipped because the output queue was not empty
+  std::uint64_t busy = 0;   ///< ticks skipped because the output queue (or the server) was not empty
   std::uint64_t down = 0;   ///< ticks with no connection
   std::uint64_t losses = 0; ///< times an open link was lost
 };
@@ -39,8 +39,11 @@ class Link {
   /// monotonic clock, for the link's own retry timing.
   virtual SendResult send(const Frame& frame, std::int64_t now_ns) = 0;
 
-  /// Waits, at most timeout_ms, until the bytes written have left; then closes.
-  virtual void drain_and_close(int timeout_ms) = 0;
+  /// Waits, at most timeout_ms, until the bytes written have left (a serial
+  /// driver's queue is empty; a TCP server has acknowledged them); then
+  /// closes. False when they had not: the link was down, or they were still
+  /// waiting at the timeout.
+  virtual bool drain_and_close(int timeout_ms) = 0;
 
   [[nodiscard]] virtual LinkState state() const = 0;
   /// What the link is, for the operator ("/dev/ttyUSB0 9600 8N1", "tcp 10.0.0.5:4001").

@@ -13,7 +13,7 @@ namespace andros::io {
 class ReconnectingLink : public Link {
  public:
   SendResult send(const Frame& frame, std::int64_t now_ns) final;
-  void drain_and_close(int timeout_ms) final;
+  bool drain_and_close(int timeout_ms) final;
 
   [[nodiscard]] LinkState state() const final { return state_; }
   [[nodiscard]] const std::string& name() const final { return name_; }
@@ -30,6 +30,13 @@ class ReconnectingLink : public Link {
   virtual OpenResult open_step(std::string& why) = 0;
   /// Bytes written but still in the driver, or -1 with errno set.
   virtual int queued_bytes() const = 0;
+  /// Bytes written that the far end does not have yet, for the drain at
+  /// shutdown (TCP: also those sent and not acknowledged).
+  virtual int undelivered_bytes() const { return queued_bytes(); }
+  /// Before each frame while up: bytes that hold this frame back (0: send
+  /// it), or -1 with errno set. Sets stalled to why when the far end has
+  /// taken nothing for too long: the link is then lost and reopened.
+  virtual int backlog(std::int64_t now_ns, std::string& stalled);
   virtual long write_bytes(const std::uint8_t* data, std::size_t size);
   /// After the queue is empty: let the last bytes leave the hardware (tcdrain).
   virtual void finish_drain() {}
@@ -49,6 +56,9 @@ class ReconnectingLink : public Link {
   int retry_ms_;
   std::int64_t next_attempt_ns_ = 0;
   static constexpr std::int64_t kFlapNs = 1'000'000'000;
+  /// A connection lost sooner than this after it came up (a server that
+  /// accepts and closes, a stalled one) does not reset the back-off.
+  static constexpr std::int64_t kStableNs = 5'000'000'000;
   std::int64_t up_since_ns_ = 0;
   std::string last_loss_;
   bool quiet_ = false;  ///< flapping: the loss and the next recovery go unlogged
