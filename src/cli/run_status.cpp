@@ -3,6 +3,11 @@
 #include <spdlog/spdlog.h>
 
 namespace andros::cli {
+namespace {
+
+constexpr const char* kNeutralOnly = "neutral frames only: the server stalled and has not been seen reading since";
+
+}  // namespace
 
 void RunStatusBoard::observe(const io::TickReport& r) {
   const auto now = io::monotonic_ns();
@@ -20,7 +25,8 @@ void RunStatusBoard::observe(const io::TickReport& r) {
     next.enable_text = frames_.enable_text();
     next.layer = frames_.layer();
     next.link_state = link_.state();
-    next.link_detail = link_.detail();
+    next.motion_allowed = link_.motion_allowed();
+    next.link_detail = next.motion_allowed ? link_.detail() : kNeutralOnly;
     next.link = link_.counters();
     next.sent_timing = timing_.summary(now);
     std::swap(status_, next);  // next now holds the previous status
@@ -34,6 +40,10 @@ void RunStatusBoard::log_changes(const io::RunStatus& before, const io::RunStatu
   if (after.shutting_down) {
     if (!before.shutting_down) spdlog::info("stopping: sending neutral frames");
     return;
+  }
+  if (before.motion_allowed != after.motion_allowed) {
+    if (after.motion_allowed) spdlog::info("link {}: the server is reading again: frames follow the controller", after.link_name);
+    else spdlog::warn("link {}: {}", after.link_name, kNeutralOnly);
   }
   if (first_tick_ || before.connected != after.connected) {
     if (after.connected) spdlog::info("controller: {}", after.controller);

@@ -41,7 +41,8 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
       const std::int64_t t_ms = schedule_.tick_ms(tick);
       // The input is read right after the tick's time: never older than the frame.
       input_.pump(state_, t_ms);
-      const DataBytes data = frames_.step(state_, t_ms);
+      DataBytes data = frames_.step(state_, t_ms);
+      if (!link_.motion_allowed()) data = frames_.neutral();
       const SendResult result = link_.send(encode(data), monotonic_ns());
       observe(TickReport{tick, t_ms, skipped, &data, result, false, &state_});
       const std::int64_t next = schedule_.next_tick(tick, monotonic_ns() - start_ns);

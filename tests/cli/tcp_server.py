@@ -11,7 +11,8 @@ first client closes.
   stall  a 4 kB receive buffer (as an embedded serial server has), accepts
          every connection and never reads until S seconds pass; then reads
          what each connection holds and writes one line per connection to
-         OUT: the number of whole frames it held
+         OUT: the number of frames it held, and how many of them drive
+         (drive byte not 0x80)
   close  accepts and at once closes every connection; writes one line per
          accept to OUT: its time in seconds since the first
 """
@@ -66,7 +67,9 @@ def main():
                     data += d
             except OSError:
                 pass
-            f.write(f"{data.count(FRAME_START)}\n")
+            starts = [i for i in range(len(data) - 17) if data.startswith(FRAME_START, i)]
+            driving = sum(1 for i in starts if data[i + 16:i + 18] != b"80")
+            f.write(f"{len(starts)} {driving}\n")
 
 
 main()

@@ -64,9 +64,18 @@ grep -Eq "^error: (only [0-2] of 3 neutral frames could be handed to the link|th
   fail "no error line for the lost neutral frames: $(cat "$TMP/err")"
 (($(grep -c "^error:" "$TMP/err") == 1)) || fail "not one error line: $(cat "$TMP/err")"
 (($(wc -l <"$TMP/stall.out") >= 2)) || fail "fewer than 2 connections: $(cat "$TMP/stall.out")"
-while read -r held; do
+connection=0
+while read -r held driving; do
   ((held <= 32)) || fail "a stalled connection held $held frames (bound 32): $(tr '\n' ' ' <"$TMP/stall.out")"
+  # After the stall the server is sent nothing that moves until it is seen reading.
+  ((connection == 0 || driving == 0)) ||
+    fail "connection $connection to the server that stalled held $driving driving frames: $(tr '\n' ' ' <"$TMP/stall.out")"
+  connection=$((connection + 1))
 done <"$TMP/stall.out"
+((driving_first = $(head -1 "$TMP/stall.out" | cut -d' ' -f2), driving_first > 0)) ||
+  fail "the first connection held no driving frame: the check above proves nothing"
+grep -q "neutral frames only: the server stalled and has not been seen reading since" "$TMP/err" ||
+  fail "the neutral-only state is not logged: $(cat "$TMP/err")"
 
 # A server that accepts and at once closes: retried with the back-off
 # (250 ms doubling to 4 s), not every few ticks.

@@ -96,6 +96,7 @@ TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
   io::TcpLink link(io::TcpAddress{"127.0.0.1", std::to_string(server.port)});
   auto conn = server.accept_while_sending(link, frame_with_drive(200));
   ASSERT_TRUE(conn);
+  EXPECT_TRUE(link.motion_allowed());
   // 25 Hz, never read: at most 5 s for the link to give up on the server.
   int ticks = 0;
   for (; ticks < 125 && link.counters().losses == 0; ++ticks) {
@@ -107,6 +108,8 @@ TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
   EXPECT_LE(ticks, 100);  // 19 frames, then 2 s without progress (50 ticks), with room for a loaded machine
   EXPECT_GT(link.counters().busy, 0u);
   EXPECT_LE(frames_waiting(conn.get()), 32u);  // docs/running.md
+  // Until it is seen reading, it is sent nothing that moves (the run loop asks).
+  EXPECT_FALSE(link.motion_allowed());
   // The link comes back on its own, but the server that stalled has not been
   // seen reading since: what it acknowledges does not count as delivered.
   auto again = server.accept_while_sending(link, frame_with_drive(128));

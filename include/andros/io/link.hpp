@@ -51,6 +51,10 @@ class Link {
   /// Why it is not up (the last error), empty when up.
   [[nodiscard]] virtual const std::string& detail() const = 0;
   [[nodiscard]] virtual const LinkCounters& counters() const = 0;
+  /// False while the far end may keep frames to deliver later (a TCP server
+  /// that stalled and has not been seen reading since): the run loop then
+  /// sends only neutral frames, so that nothing held there can move the vehicle.
+  [[nodiscard]] virtual bool motion_allowed() const { return true; }
 };
 
 std::string_view to_string(LinkState state);

@@ -43,6 +43,7 @@ struct RunStatus {
   std::string link_name;
   LinkState link_state = LinkState::kConnecting;
   std::string link_detail;
+  bool motion_allowed = true;    ///< false: the link gets neutral frames only (Link::motion_allowed)
   LinkCounters link;
   TimingSummary sent_timing;     ///< frames handed to the link
   DataBytes sent{};              ///< the last frame computed

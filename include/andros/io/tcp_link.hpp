@@ -47,6 +47,8 @@ class TcpLink final : public ReconnectingLink {
   /// host is an InputError.
   explicit TcpLink(const TcpAddress& address);
 
+  [[nodiscard]] bool motion_allowed() const override { return !suspect_; }
+
  protected:
   OpenResult open_step(std::string& why) override;
   int queued_bytes() const override;
