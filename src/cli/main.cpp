@@ -1,6 +1,10 @@
 // andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -42,6 +46,18 @@ void refuse_empty_values(CLI::App& app) {
   for (auto* sub : app.get_subcommands([](CLI::App*) { return true; })) refuse_empty_values(*sub);
 }
 
+// Started with stdin, stdout or stderr closed (`2>&-`), the first file the
+// program opens (the serial port) would take that number, and log lines or the
+// status view would go out on the vehicle's link: each closed one is held on
+// /dev/null instead, before anything else is opened.
+void keep_standard_descriptors_taken() {
+  for (int fd = STDIN_FILENO; fd <= STDERR_FILENO; ++fd) {
+    if (fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int null = open("/dev/null", O_RDWR);  // the lowest free number: this one
+    if (null < 0) std::abort();  // no /dev/null: nothing safe to run on
+  }
+}
+
 /// Parses (which runs the chosen command) and turns what escapes into a line and a code.
 int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::io::FdLogSink& log) {
   try {
@@ -65,6 +81,7 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::io::
 }  // namespace
 
 int main(int argc, char** argv) {
+  keep_standard_descriptors_taken();
   // Log lines go to stderr through a queue and a thread of their own (which
   // blocks every signal, SIGPIPE included): stdout carries data (frame
   // decode, `record -o -`) or the status view. Error lines take the same

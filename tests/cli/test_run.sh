@@ -19,6 +19,30 @@ grep -q "stopped (end of the input)" "$TMP/err" || fail "no closing line: $(cat 
 grep -q "link .*: up" "$TMP/err" || fail "link state not logged"
 [[ $(grep -c "link .*: up" "$TMP/err") -eq 1 ]] || fail "link state logged more than once"
 
+# Started with stdin, stdout and stderr closed (`<&- >&- 2>&-`): the port must
+# not take descriptor 0, 1 or 2, or log lines (and the status view) would go
+# out on the vehicle's link between the frames, depending on a race.
+python3 - "$BIN" "$LIVE/long_drive.events" <<'PY' || fail "a standard descriptor became the port"
+import os, pty, subprocess, sys, time
+master, slave = pty.openpty()
+port = os.ttyname(slave)
+p = subprocess.Popen(["sh", "-c", 'exec "$0" "$@" <&- >&- 2>&-', sys.argv[1], "run", "--port", port,
+                      "--input", sys.argv[2]])
+os.set_blocking(master, False)
+data, deadline = b"", time.monotonic() + 10
+while data.count(b"\xf1\xf1") < 10 and time.monotonic() < deadline:  # frames flow: the port is open
+    time.sleep(0.05)
+    try:
+        data += os.read(master, 65536)
+    except BlockingIOError:
+        pass
+fds = {fd: os.readlink(f"/proc/{p.pid}/fd/{fd}") for fd in (0, 1, 2) if os.path.exists(f"/proc/{p.pid}/fd/{fd}")}
+p.terminate()
+p.wait(10)
+print(fds)
+sys.exit(0 if data.count(b"\xf1\xf1") >= 10 and all(t == "/dev/null" for t in fds.values()) and len(fds) == 3 else 1)
+PY
+
 # The legacy config file drives a run: serialport = the pty, code = 3C -> byte 11.
 sed "s|serialport=PORT|serialport=$TMP/port|" "$LIVE/legacy.conf" >"$TMP/legacy.conf"
 run_cmd harness "$TMP/cap" --link "$TMP/port" -- "$BIN" run --config "$TMP/legacy.conf" --input "$LIVE/drive.events"
