@@ -75,6 +75,9 @@ std::optional<InputEvent> EventReader::next() {
         while (!ev.name.empty() && (ev.name.back() == ' ' || ev.name.back() == '\t' || ev.name.back() == '\r')) {
           ev.name.pop_back();
         }
+        if (ev.name.size() > kMaxControllerNameBytes) {
+          throw fail(tokens[2], "controller name longer than " + std::to_string(kMaxControllerNameBytes) + " bytes");
+        }
       }
     } else if (kind.text == "disconnect") {
       want_args(0, "disconnect");
@@ -149,7 +152,9 @@ std::string format_event(const InputEvent& event) {
     return word + ' ';
   };
   switch (event.type) {
-    case T::kConnect: out += event.name.empty() ? "connect" : pad("connect") + event.name; break;
+    case T::kConnect:
+      out += event.name.empty() ? "connect" : pad("connect") + event.name.substr(0, kMaxControllerNameBytes);
+      break;
     case T::kDisconnect: out += "disconnect"; break;
     case T::kEnd: out += "end"; break;
     case T::kButton: out += pad("button") + input_name(event.key) + ' ' + std::to_string(event.value); break;

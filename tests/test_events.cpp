@@ -122,6 +122,29 @@ TEST(EventScript, FormatReadsBack) {
   EXPECT_EQ(again, text);
 }
 
+// Every event written back stays inside the line bound (a fuzz finding: a
+// connect line just under 4 KiB came back longer once its columns were padded).
+TEST(EventScript, ControllerNamesAreBoundedSoWrittenEventsReadBack) {
+  const std::string longest(kMaxControllerNameBytes, 'x');
+  const auto events = parse_event_script("0 connect " + longest + "\n", "f");
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].name, longest);
+  try {
+    (void)parse_event_script("0 connect " + longest + "y\n", "f");
+    FAIL() << "a longer name was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().line, 1);
+    EXPECT_EQ(e.pos().column, 11);
+    EXPECT_NE(e.message().find("controller name longer than 256 bytes"), std::string::npos) << e.what();
+  }
+  InputEvent from_sdl;  // a name as long as a device may report goes out cut to the bound
+  from_sdl.type = T::kConnect;
+  from_sdl.name = std::string(5000, 'n');
+  const auto line = format_event(from_sdl);
+  EXPECT_LT(line.size(), kMaxLineBytes);
+  EXPECT_EQ(parse_event_script(line + "\n", "f")[0].name, std::string(kMaxControllerNameBytes, 'n'));
+}
+
 InputEvent ev(std::int64_t t, T type, std::string_view name = "", int value = 0) {
   InputEvent e;
   e.t_ms = t;

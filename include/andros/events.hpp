@@ -14,6 +14,9 @@ namespace andros {
 
 /// The latest time an event may have: a script lasts at most a day.
 inline constexpr std::int64_t kMaxScriptMs = 24 * 3600 * 1000;
+/// The longest controller name a `connect` line may carry, so that every
+/// event written back (`record`) stays far inside the line bound.
+inline constexpr std::size_t kMaxControllerNameBytes = 256;
 
 /// Reads a script one event at a time, so a long script needs no memory to
 /// speak of. Every error is an InputError at FILE:LINE:COL.
