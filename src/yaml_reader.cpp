@@ -2,8 +2,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <vector>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "andros/text_file.hpp"
 
@@ -56,21 +60,76 @@ std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t bud
   return found;
 }
 
+/// Where the first node of each document starts, read off the parser's events.
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> marks;
+
+  void OnDocumentStart(const YAML::Mark& /*mark*/) override { in_new_document_ = true; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t /*anchor*/) override { note(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t /*anchor*/) override { note(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string& /*tag*/, YAML::anchor_t /*anchor*/,
+                const std::string& /*value*/) override {
+    note(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string& /*tag*/, YAML::anchor_t /*anchor*/,
+                       YAML::EmitterStyle::value /*style*/) override {
+    note(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string& /*tag*/, YAML::anchor_t /*anchor*/,
+                  YAML::EmitterStyle::value /*style*/) override {
+    note(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  void note(const YAML::Mark& mark) {
+    if (in_new_document_) marks.push_back(mark);
+    in_new_document_ = false;
+  }
+  bool in_new_document_ = false;
+};
+
+/// Where a second document starts, if the text has one. At most two documents
+/// are read: yaml-cpp 0.7's parser, given text it cannot take up (a lone ','),
+/// reports an empty document there again and again without moving on, so
+/// YAML::LoadAll never returns. Such text is a syntax error at that place.
+std::optional<YAML::Mark> second_document(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentStarts starts;
+  if (!parser.HandleNextDocument(starts) || !parser.HandleNextDocument(starts) || starts.marks.size() < 2) {
+    return std::nullopt;
+  }
+  if (starts.marks[1].pos <= starts.marks[0].pos) {
+    const auto at = static_cast<std::size_t>(starts.marks[1].pos);
+    throw YAML::ParserException(starts.marks[1], "unexpected " + (at < text.size() ? quote(text.substr(at, 1)) : "text"));
+  }
+  return starts.marks[1];
+}
+
 }  // namespace
 
 YAML::Node Reader::load_document(std::size_t& budget) const {
-  std::vector<YAML::Node> documents;
+  const std::string text = read_text_file(file_, kMappingLimits);
+  YAML::Node document;
+  std::optional<YAML::Mark> second;
   try {
-    documents = YAML::LoadAll(read_text_file(file_, kMappingLimits));
+    document = YAML::Load(text);
+    second = second_document(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(SourcePos{file_, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
   } catch (const YAML::Exception& e) {
     throw InputError(SourcePos{file_}, std::string("cannot read: ") + e.what());
   }
-  if (documents.empty()) return YAML::Node();
-  if (documents.size() > 1) fail(documents[1], "a second YAML document ('---'): a mapping file holds one");
-  budget -= count_nodes(*this, documents[0], budget);
-  return documents[0];
+  if (second) {
+    throw InputError(SourcePos{file_, second->line + 1, second->column + 1},
+                     "a second YAML document ('---'): a mapping file holds one");
+  }
+  budget -= count_nodes(*this, document, budget);
+  return document;
 }
 
 SourcePos Reader::pos(const YAML::Node& node) const {

@@ -106,6 +106,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"signal twice in a position through an alias", kHead + "  - selector: cam\n    next: a\n    positions: [[&v main_video_2, *v], []]\n", 6, 18, "'main_video_2' is given twice in this position"},
         BadMapping{"a second document", "robot: HD1\ndeadman: a\n---\nrobot: F6A\n", 4, 1, "a second YAML document"},
         BadMapping{"an empty second document", "robot: HD1\ndeadman: a\n---\n", 4, 1, "a second YAML document"},
+        // yaml-cpp's parser stands still on a lone ',' (reading every document never ends): a fuzz finding.
+        BadMapping{"a lone comma", ",\n", 1, 1, "YAML syntax: unexpected ','"},
+        BadMapping{"a comma before a key", ",extends: other.yaml\n\n", 1, 1, "YAML syntax: unexpected ','"},
         BadMapping{"an alias inside what it names", "robot: HD1\ndeadman: a\nbindings: &b [*b]\n", 3, 11, "more than 100000 YAML nodes"},
         BadMapping{"extends cycle", "robot: HD1\nextends: base.yaml\n", 1, 10, "'extends' makes a cycle: bad.yaml -> base.yaml -> bad.yaml", "extends: bad.yaml\n", "base.yaml"}),
     [](const auto& info) {

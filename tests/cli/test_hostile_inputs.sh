@@ -100,6 +100,8 @@ expect_error "adir: error: is a directory, not a port or a capture file" timeout
 # More mapping files: the bounds of docs/mapping.md.
 w second_doc.yaml 'robot: HD1\ndeadman: leftshoulder\n---\nrobot: F6A\n'
 expect_error "second_doc.yaml:4:1: error: a second YAML document ('---'): a mapping file holds one" "$BIN" check second_doc.yaml
+w comma.yaml ',extends: x.yaml\n'  # once read for ever, memory growing (a fuzz finding)
+expect_error "comma.yaml:1:1: error: YAML syntax: unexpected ','" timeout 20 "$BIN" check comma.yaml
 w position.yaml "$head"'  - selector: cam\n    next: a\n    positions: [[main_video_2, main_video_3, main_video_2], []]\n'
 expect_error "position.yaml:6:46: error: 'main_video_2' is given twice in this position" "$BIN" check position.yaml
 for i in $(seq 0 19); do w "deep$i.yaml" "extends: deep$((i + 1)).yaml\n"; done
