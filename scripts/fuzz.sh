@@ -25,7 +25,8 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus" "fuzz/crashes/$t"
   cp -n fuzz/corpus/"$t"/* "$corpus"/ 2>/dev/null || true
   log="$build/fuzz_$t.log"
-  if "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -rss_limit_mb=2048 \
+  # -timeout: an input that runs for ever is a finding (written as timeout-*), not a stuck run.
+  if "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -print_final_stats=1 -rss_limit_mb=2048 -timeout=10 \
       -artifact_prefix="fuzz/crashes/$t/" "$corpus" >"$log" 2>&1; then
     result=ok
   else
