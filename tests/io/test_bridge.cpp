@@ -50,6 +50,15 @@ class Idle final : public InputSource {
   bool finished(std::int64_t) const override { return false; }
 };
 
+/// A bridge at 25 Hz from an idle input to a pty, the far end read by the test.
+struct OnPty {
+  io::PtyPair pty = io::open_pty_pair();
+  Idle input;
+  PressToDrive frames;
+  io::SerialLink link{pty.path, 9600};
+  io::Bridge bridge{input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000}};
+};
+
 std::string write_script(const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("andros-bridge-test-" + std::to_string(getpid()) + ".events");
@@ -88,11 +97,8 @@ TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
 }
 
 TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
-  auto pty = io::open_pty_pair();
-  Idle input;
-  PressToDrive frames;
-  io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  OnPty on;
+  auto& [pty, input, frames, link, bridge] = on;
   int ticks = 0;
   int neutral = 0;
   bridge.run([&] { return ticks >= 4; },
@@ -106,11 +112,8 @@ TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
 }
 
 TEST(Bridge, TheTickThatSeesAStopCarriesTheFirstNeutralFrame) {
-  auto pty = io::open_pty_pair();
-  Idle input;
-  PressToDrive frames;
-  io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  OnPty on;
+  auto& [pty, input, frames, link, bridge] = on;
   std::int64_t polls = 0;
   std::vector<io::TickReport> ticks;
   bridge.run([&] { return ++polls > 4; }, [&](const io::TickReport& r) { ticks.push_back(r); });
@@ -123,11 +126,8 @@ TEST(Bridge, TheTickThatSeesAStopCarriesTheFirstNeutralFrame) {
 }
 
 TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
-  auto pty = io::open_pty_pair();
-  Idle input;
-  PressToDrive frames;
-  io::SerialLink link(pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = 25'000});
+  OnPty on;
+  auto& [pty, input, frames, link, bridge] = on;
   int polls = 0;
   int paused = 0;
   std::vector<io::TickReport> ticks;
@@ -211,11 +211,8 @@ TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
 }
 
 TEST(Bridge, ReportsWhetherTheNeutralFramesReachedTheLink) {
-  auto pty = io::open_pty_pair();
-  Idle input;
-  PressToDrive frames;
-  io::SerialLink good(pty.path, 9600);
-  io::Bridge delivered(input, frames, good, io::BridgeOptions{.rate_millihertz = 50'000});
+  OnPty on;  // a pty: the frames go out
+  auto& [pty, input, frames, link, delivered] = on;
   int ticks = 0;
   delivered.run([&] { return ticks >= 2; }, [&](const io::TickReport&) { ++ticks; });
   EXPECT_TRUE(delivered.shutdown_report().ok());
