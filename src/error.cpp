@@ -35,7 +35,7 @@ std::string quote(std::string_view text) {
   return out;
 }
 
-std::string format_error(const SourcePos& pos, const std::string& message) {
+std::string format_error(const SourcePos& pos, const std::string& message, std::string_view severity) {
   std::string out;
   if (!pos.file.empty()) {
     out += escaped(pos.file);
@@ -45,7 +45,8 @@ std::string format_error(const SourcePos& pos, const std::string& message) {
     }
     out += ": ";
   }
-  out += "error: ";
+  out += severity;
+  out += ": ";
   out += escaped(message);
   return out;
 }

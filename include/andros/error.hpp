@@ -41,10 +41,11 @@ class RuntimeError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Formats `FILE:LINE:COL: error: WHAT`, leaving out the unknown parts. Any
-/// byte outside printable ASCII is shown as \xNN, so that the line stays one
-/// line and is printed whole (a NUL would end it).
-std::string format_error(const SourcePos& pos, const std::string& message);
+/// Formats `FILE:LINE:COL: error: WHAT` (or another severity word, such as
+/// `warning`), leaving out the unknown parts. Any byte outside printable ASCII
+/// is shown as \xNN, so that the line stays one line and is printed whole (a
+/// NUL would end it).
+std::string format_error(const SourcePos& pos, const std::string& message, std::string_view severity = "error");
 
 /// How many bytes of a piece of input quote() shows before it cuts it short.
 inline constexpr std::size_t kMaxQuoted = 64;

@@ -9,6 +9,27 @@
 #include "commands.hpp"
 
 namespace andros::cli {
+namespace {
+
+/// Loads, but would surprise the operator: a stick driving drive or pivot with
+/// no deadzone must read exactly 0 to count as at rest after the deadman press
+/// or a layer change (the rest rule), which a worn stick may never do.
+std::vector<std::string> warnings(const Mapping& mapping) {
+  std::vector<std::string> out;
+  for (const auto ref : all_bindings(mapping)) {
+    const auto& b = binding_at(mapping, ref);
+    const auto* axis = std::get_if<AxisBinding>(&b.rule);
+    if (axis == nullptr || info(axis->analog).kind != SignalKind::kCentred || axis->shape.deadzone > 0) continue;
+    out.push_back(format_error(b.pos,
+                               "no deadzone on the stick driving '" + std::string(info(axis->analog).name) +
+                                   "': after the deadman press or a layer change it acts only once it reads "
+                                   "exactly 0 (give it a deadzone, e.g. 0.1)",
+                               "warning"));
+  }
+  return out;
+}
+
+}  // namespace
 
 void add_check_command(CLI::App& app, int& exit_code) {
   auto files = std::make_shared<std::vector<std::string>>();
@@ -16,7 +37,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "check",
       "Load and validate mapping files: prints 'FILE: ok' for each good one and the\n"
       "error (FILE:LINE:COL: error: ...) for each bad one; exits 2 if any is bad.\n"
-      "A file with no 'robot:' is checked as a base for other files to extend.");
+      "A file with no 'robot:' is checked as a base for other files to extend. Warnings\n"
+      "(FILE:LINE:COL: warning: ...) point at what loads but may surprise: a stick on\n"
+      "drive or pivot with no deadzone. They do not change the exit code.");
   cmd->add_option("FILE", *files, "mapping files (YAML)")->required();
   cmd->callback([files, &exit_code] {
     bool all_ok = true;
@@ -25,6 +48,8 @@ void add_check_command(CLI::App& app, int& exit_code) {
         const auto mapping = load_mapping_file(file);
         validate(mapping, mapping.robot.has_value());
         std::printf("%s: ok%s\n", file.c_str(), mapping.robot ? "" : " (a base mapping: no robot)");
+        std::fflush(stdout);
+        for (const auto& w : warnings(mapping)) std::fprintf(stderr, "%s\n", w.c_str());
       } catch (const InputError& e) {
         std::fflush(stdout);
         std::fprintf(stderr, "%s\n", e.what());

@@ -16,6 +16,14 @@ grep -q "hd1.yaml: ok$" "$TMP/out" || fail "good file among bad ones: $(cat "$TM
 expect_stderr_matches "twice.yaml:7:13: error: 'a' is bound twice in this layer \(first at line 5\)"
 expect_stderr_matches "unarmed.yaml:4:5: error: weapon binding for 'weapon_3' needs 'arm'"
 
+# A stick on drive with no deadzone loads, with a warning: after an enable it
+# acts only once it reads exactly 0 (the rest rule, docs/mapping.md).
+printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - analog: drive\n    axis: lefty\n  - analog: pivot\n    axis: leftx\n    deadzone: 0.1\n' >"$TMP/nodz.yaml"
+expect_exit 0 "$BIN" check "$TMP/nodz.yaml"
+grep -q "nodz.yaml: ok$" "$TMP/out" || fail "no ok line: $(cat "$TMP/out")"
+[[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "one warning expected: $(cat "$TMP/err")"
+expect_stderr_matches "nodz.yaml:4:5: warning: no deadzone on the stick driving 'drive'"
+
 expect_exit 2 "$BIN" check "$TMP/missing.yaml"
 expect_stderr_matches "missing.yaml: error: cannot open mapping file"
 expect_exit 2 "$BIN" check
