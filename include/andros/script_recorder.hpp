@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "andros/events.hpp"
 #include "andros/sdl_input.hpp"
 
 namespace andros {
@@ -17,6 +18,9 @@ struct RecordOptions {
   int period_ms = 40;
   /// Written first, each line prefixed with "# ".
   std::string header;
+  /// The recording ends here at the latest, so that `replay` and `run
+  /// --input` take what it wrote (a script lasts at most a day).
+  std::int64_t max_ms = kMaxScriptMs;
 };
 
 /// What the recording has reached, for a progress line and for stopping.
@@ -25,14 +29,15 @@ struct RecordStatus {
   std::int64_t t_ms = 0;  ///< time of the last tick, ms from the start
   std::int64_t events = 0;
   bool connected = false;
+  bool at_limit = false;  ///< ended at RecordOptions::max_ms, not by keep_going
 };
 
 /// Reads input every period on absolute time (missed ticks are skipped, not
 /// burst) and writes each event as a script line, t_ms from the start, until
 /// keep_going returns false; then writes `T end`. keep_going runs after every
 /// tick and whenever a signal interrupts the wait. Throws RuntimeError when
-/// out fails. Returns the number of events written.
-std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+/// out fails. Ends by itself at options.max_ms. Returns where it ended.
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
                            const std::function<bool(const RecordStatus&)>& keep_going);
 
 }  // namespace andros

@@ -87,11 +87,12 @@ int run_record(const RecordCommandOptions& opt) {
     }
     return g_stop_signal == 0 && out.good();  // a full disk ends it: nothing more would be kept
   };
-  const auto events = record_script(input, out, rec, keep_going);
+  const auto ended = record_script(input, out, rec, keep_going);
   out.flush();
   if (!out) throw RuntimeError((opt.output == "-" ? std::string("standard output") : opt.output) + ": write error");
   if (progress) std::fputc('\n', stderr);
-  std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(events),
+  if (ended.at_limit) std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
+  std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events),
                opt.output == "-" ? "" : " to ", opt.output == "-" ? "" : opt.output.c_str());
   return kExitOk;
 }

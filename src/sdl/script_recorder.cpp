@@ -33,7 +33,7 @@ void write_line(std::ostream& out, const std::string& line) {
 
 }  // namespace
 
-std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
                            const std::function<bool(const RecordStatus&)>& keep_going) {
   std::istringstream header(options.header);
   for (std::string line; std::getline(header, line);) write_line(out, "# " + line);
@@ -44,6 +44,10 @@ std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptio
   RecordStatus status;
   std::int64_t tick = 0;
   while (true) {
+    if (tick * options.period_ms > options.max_ms) {
+      status.at_limit = true;
+      break;
+    }
     status.t_ms = tick * options.period_ms;
     const auto& events = input.poll(status.t_ms);
     for (const auto& event : events) {
@@ -72,7 +76,7 @@ std::int64_t record_script(SdlInput& input, std::ostream& out, const RecordOptio
   end.type = InputEvent::Type::kEnd;
   write_line(out, format_event(end));
   out.flush();
-  return status.events;
+  return status;
 }
 
 }  // namespace andros

@@ -36,7 +36,7 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
     }
     return step < 7;
   };
-  const auto written = record_script(input, out, options, script);
+  const auto written = record_script(input, out, options, script).events;
 
   const std::string text = out.str();
   EXPECT_EQ(text.rfind("# test recording\n# controller: Test Pad\n", 0), 0U) << text;
@@ -60,4 +60,26 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
 }
 
 }  // namespace
+// A recording ends by itself at its longest (a day for `record`, so that
+// replay and run take what it wrote; 100 ms here), with its `end` no later.
+TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
+  test::use_dummy_video();
+  const SdlSession session;
+  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
+  SdlInput input(SdlInputOptions{});
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 10;
+  options.max_ms = 100;
+  int calls = 0;
+  const auto ended = record_script(input, out, options, [&](const RecordStatus&) { return ++calls < 10'000; });
+  EXPECT_TRUE(ended.at_limit);
+  EXPECT_LE(ended.t_ms, 100);
+  const auto events = parse_event_script(out.str(), "recorded");
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back().type, T::kEnd);
+  EXPECT_LE(events.back().t_ms, 100);
+  EXPECT_LT(calls, 10'000);
+}
+
 }  // namespace andros
