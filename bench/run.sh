@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds and runs the benchmarks and prints their tables (issue 4): cadence,
+# Builds and runs the benchmarks and prints their tables: cadence,
 # process cost, first frame, loss/SIGTERM/replug timing, then the SDL input
 # path's cost and latency with a virtual joystick. Run it on an otherwise
 # quiet machine; it takes about 2 minutes.

@@ -1,4 +1,4 @@
-// libFuzzer target: the configuration-file parser (contract section 2). Any
+// libFuzzer target: the configuration-file parser (docs/running.md, "The configuration file"). Any
 // text either configures a run with values the bridge accepts, or is an
 // InputError naming the file and a line inside the text.
 #include <cstdint>

@@ -16,7 +16,7 @@ timestamp per frame, samples the bridge's RSS, then decodes the capture with
 - safety = 0 => neutral (motion, weapon and interlock bits 0, drive/pivot at centre);
 - while the script says the bridge may not move (no controller, deadman not
   held, or not pressed afresh since the connect), with a frame of margin on
-  either side, the frame is neutral: this reading of contract section 5 is the
+  either side, the frame is neutral: this reading of the safety rules (docs/mapping.md) is the
   script's own, not the engine's.
 
 Opposing pairs and signal kinds come from `andros-bridge frame signals --json`.

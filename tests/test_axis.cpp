@@ -1,4 +1,4 @@
-// The contract's axis arithmetic, value by value (hand-computed in the comments).
+// The axis arithmetic of docs/mapping.md, value by value (hand-computed in the comments).
 #include <gtest/gtest.h>
 
 #include "andros/axis.hpp"
@@ -24,7 +24,7 @@ TEST_P(AxisArithmetic, MatchesTheContract) {
 INSTANTIATE_TEST_SUITE_P(
     Values, AxisArithmetic,
     ::testing::Values(
-        AxisCase{16384, {false, 0.1, 0.5}, true, 162},   // the contract's example
+        AxisCase{16384, {false, 0.1, 0.5}, true, 162},   // docs/mapping.md's example
         AxisCase{0, {}, true, 128},
         AxisCase{32767, {}, true, 255},                  // 128 + 127
         AxisCase{-32768, {}, true, 0},                   // -1 exactly: 128 - 128

@@ -1,4 +1,4 @@
-// The mapping loader and validate(): every class of bad file the contract
+// The mapping loader and validate(): every class of bad file docs/mapping.md
 // lists is rejected at its FILE:LINE:COL, and good files mean what they say.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// apply_safety(): the rules of contract section 5 on a state that asks for everything.
+// apply_safety(): the safety rules of docs/mapping.md on a state that asks for everything.
 #include <gtest/gtest.h>
 
 #include "andros/safety.hpp"

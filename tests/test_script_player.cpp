@@ -1,4 +1,4 @@
-// ScriptPlayer: contract section 3's timing, on a clock it is told.
+// ScriptPlayer: the timing of docs/event-scripts.md, on a clock it is told.
 #include <gtest/gtest.h>
 
 #include "andros/error.hpp"

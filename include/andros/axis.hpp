@@ -1,5 +1,5 @@
 #pragma once
-/// The axis arithmetic of contract section 4, once, so that every binding,
+/// The axis arithmetic of docs/mapping.md, once, so that every binding,
 /// test and doc agrees to the last unit.
 
 #include <cstdint>
@@ -15,7 +15,7 @@ double normalise_axis(std::int16_t value);
 /// expo e ((1-e)y + e y^3).
 double shape_axis(double x, const AxisShape& shape);
 
-/// Rounds halves away from zero (std::round does; named for the contract).
+/// Rounds halves away from zero (std::round does; named for docs/mapping.md).
 long round_half_away(double value);
 
 /// drive/pivot: c + round(z(255-c)) for z >= 0, c + round(z c) below; clamped.

@@ -1,5 +1,5 @@
 #pragma once
-/// The run configuration (contract section 2): the legacy packet generator's
+/// The run configuration (docs/running.md): the legacy packet generator's
 /// `key=value` file read as is, plus the bridge's own keys, then the command
 /// line on top. Parsing does no I/O beyond reading the file it is given.
 

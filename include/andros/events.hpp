@@ -1,5 +1,5 @@
 #pragma once
-/// Event scripts (contract section 3): what `record` writes and what `replay`
+/// Event scripts (docs/event-scripts.md): what `record` writes and what `replay`
 /// and `run --input` read. One event a line: `T_MS EVENT ARGS`, `#` comments.
 
 #include <cstdint>

@@ -21,7 +21,7 @@ inline constexpr std::uint8_t kDefaultByte12 = 0x00;
 inline constexpr std::uint8_t kDefaultBattery = 0xCC;
 inline constexpr double kDefaultThreshold = 0.5;
 
-/// How a stick or trigger value becomes a number in [-1, 1] (contract section 4).
+/// How a stick or trigger value becomes a number in [-1, 1] (docs/mapping.md).
 struct AxisShape {
   bool invert = false;
   double deadzone = 0.0;
@@ -114,7 +114,7 @@ struct Layer {
 
 /// When drive_brake is 1 (it is always 0 while not enabled).
 enum class BrakeMode : std::uint8_t {
-  kEnabled,  ///< released whenever the engine is enabled (contract default)
+  kEnabled,  ///< released whenever the engine is enabled (the default)
   kMoving,   ///< released only while drive or pivot is off centre
 };
 
@@ -131,7 +131,7 @@ struct Mapping {
   std::vector<Layer> layers;
 };
 
-/// Checks the rules that span bindings (contract section 4): an input bound
+/// Checks the rules that span bindings (docs/mapping.md): an input bound
 /// twice in a layer, two bindings on one analog byte, a weapon without arm,
 /// targets a binding kind cannot drive, a signal both toggled and momentary
 /// (anywhere in the mapping), a missing deadman or robot. Throws

@@ -1,5 +1,5 @@
 #pragma once
-/// Reading mapping files (contract section 4) and finding a robot's file.
+/// Reading mapping files (docs/mapping.md) and finding a robot's file.
 
 #include <filesystem>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-/// Replay (contract sections 1 and 3): an event script through the engine on a
+/// Replay (docs/event-scripts.md): an event script through the engine on a
 /// virtual clock. Same script, same mapping, same options: same bytes, on any
 /// machine, at any speed. The CLI's `replay` is a thin wrapper over this.
 

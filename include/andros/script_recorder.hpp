@@ -1,6 +1,6 @@
 #pragma once
 /// `andros-bridge record`: the live controller's events written as an event
-/// script (contract section 3) that replay and `run --input` read back.
+/// script (docs/event-scripts.md) that replay and `run --input` read back.
 
 #include <cstdint>
 #include <functional>

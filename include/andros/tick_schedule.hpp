@@ -22,7 +22,7 @@ class TickSchedule {
     return k / mhz * kNsPerMillihertzCycle + k % mhz * kNsPerMillihertzCycle / mhz;
   }
   /// Tick k's time in ms as the mapping and event scripts see it: the same
-  /// frame times as replay (contract section 3: frames at 0, P, 2P, ...).
+  /// frame times as replay (docs/event-scripts.md: frames at 0, P, 2P, ...).
   [[nodiscard]] std::int64_t tick_ms(std::int64_t k) const { return clock_.time_of(k); }
 
   /// The tick to run after tick `last`, `elapsed_ns` after the start. Normally

@@ -5,7 +5,7 @@
 
 Fails (exit 1, saying why) unless: there are at least N frames, every frame is
 valid, byte 11 is the code, at least one frame is enabled (--enabled) or
-drives (--driving), and the last N frames are neutral (contract section 5).
+drives (--driving), and the last N frames are neutral (docs/mapping.md, the safety rules).
 """
 import argparse, json, subprocess, sys
 
