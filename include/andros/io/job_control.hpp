@@ -7,9 +7,9 @@
 /// raised by the terminal either: a bridge put in the background goes on
 /// writing instead of stopping there.
 
-#include <signal.h>
-
 #include <cstdint>
+
+#include "andros/io/blocked_signals.hpp"
 
 namespace andros::io {
 
@@ -22,10 +22,7 @@ class JobControlSignals {
   };
 
   /// Blocks the signals in the calling thread. Construct before any thread starts.
-  JobControlSignals();
-  ~JobControlSignals();
-  JobControlSignals(const JobControlSignals&) = delete;
-  JobControlSignals& operator=(const JobControlSignals&) = delete;
+  JobControlSignals() : signals_{SIGTSTP, SIGTTIN, SIGTTOU, SIGCONT} {}
 
   /// What arrived since the last call. Never blocks.
   Event poll();
@@ -35,8 +32,8 @@ class JobControlSignals {
   void stop_process();
 
  private:
-  sigset_t set_{};
-  sigset_t old_{};
+  /// A Ctrl-Z during the shutdown was answered by it: dropped on the way out, it cannot stop the process.
+  BlockedSignals signals_;
   int stop_signal_ = 0;
 };
 

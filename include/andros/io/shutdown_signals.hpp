@@ -4,17 +4,14 @@
 /// inherits the mask, so no handler runs on some library's thread, and the
 /// loop picks the request up synchronously (within one period).
 
-#include <signal.h>
+#include "andros/io/blocked_signals.hpp"
 
 namespace andros::io {
 
 class ShutdownSignals {
  public:
   /// Blocks the signals in the calling thread. Construct before any thread starts.
-  ShutdownSignals();
-  ~ShutdownSignals();
-  ShutdownSignals(const ShutdownSignals&) = delete;
-  ShutdownSignals& operator=(const ShutdownSignals&) = delete;
+  ShutdownSignals() : signals_{SIGINT, SIGTERM, SIGHUP} {}
 
   /// True once a shutdown signal has arrived. Never blocks.
   bool requested();
@@ -22,8 +19,7 @@ class ShutdownSignals {
   [[nodiscard]] int signal_number() const { return received_; }
 
  private:
-  sigset_t set_{};
-  sigset_t old_{};
+  BlockedSignals signals_;  ///< one arriving during shutdown stays pending and is dropped: it was answered
   int received_ = 0;
 };
 
