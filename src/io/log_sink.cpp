@@ -1,6 +1,5 @@
 #include "andros/io/log_sink.hpp"
 
-#include <poll.h>
 #include <pthread.h>
 #include <spdlog/pattern_formatter.h>
 #include <spdlog/spdlog.h>
@@ -17,6 +16,7 @@
 #include <thread>
 
 #include "andros/io/status_display.hpp"
+#include "andros/io/write_fully.hpp"
 
 namespace andros::io {
 
@@ -40,23 +40,6 @@ struct FdLogSink::Queue {
 };
 
 namespace {
-
-/// 0, or the errno of a write that failed. Waits (on this thread only) while fd is full.
-int write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const long n = ::write(fd, text.data() + done, text.size() - done);
-    if (n > 0) {
-      done += static_cast<std::size_t>(n);
-    } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      pollfd p{fd, POLLOUT, 0};
-      poll(&p, 1, -1);
-    } else if (n < 0 && errno != EINTR) {
-      return errno;
-    }
-  }
-  return 0;
-}
 
 const char* level_colour(spdlog::level::level_enum level) {
   switch (level) {
@@ -92,7 +75,7 @@ void FdLogSink::write_out(const std::shared_ptr<Queue>& q) {
     }
     q->writing = true;
     lock.unlock();
-    const int error = write_all(q->fd, text);
+    const int error = write_fully(q->fd, text);
     lock.lock();
     q->writing = false;
     if (error != 0) {
@@ -103,7 +86,7 @@ void FdLogSink::write_out(const std::shared_ptr<Queue>& q) {
         const std::string note = "andros-bridge: log: " + q->name + ": " + std::strerror(error) +
                                  "; no more log lines go there\n";
         lock.unlock();
-        write_all(q->note_fd, note);
+        write_fully(q->note_fd, note);
         lock.lock();
       }
     }

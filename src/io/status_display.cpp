@@ -1,7 +1,6 @@
 #include "andros/io/status_display.hpp"
 
 #include <fcntl.h>
-#include <poll.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -11,7 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "andros/io/link.hpp"
+#include "andros/io/write_fully.hpp"
 
 namespace andros::io {
 namespace {
@@ -73,25 +72,11 @@ bool StatusDisplay::foreground() const {
 }
 
 bool StatusDisplay::write_out(const std::string& text, int timeout_ms) {
-  const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
-  std::size_t done = 0;
-  while (!broken_ && done < text.size()) {
-    const long n = ::write(fd_, text.data() + done, text.size() - done);
-    if (n > 0) {
-      done += static_cast<std::size_t>(n);
-      continue;
-    }
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
-      broken_ = true;  // the terminal is gone (EIO after a hang-up): the run goes on without a screen
-      break;
-    }
-    const std::int64_t left_ms = (deadline - monotonic_ns()) / 1'000'000;
-    if (left_ms <= 0) break;
-    pollfd p{fd_, POLLOUT, 0};
-    poll(&p, 1, static_cast<int>(left_ms));
-  }
-  return done == text.size();
+  if (broken_) return false;
+  const int error = write_fully(fd_, text, timeout_ms);
+  // Any failure but a slow terminal (EIO after a hang-up): the run goes on without a screen.
+  if (error != 0 && error != ETIMEDOUT) broken_ = true;
+  return error == 0;
 }
 
 void StatusDisplay::run() {
