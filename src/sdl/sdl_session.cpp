@@ -2,7 +2,6 @@
 #include <SDL.h>
 #include <spdlog/spdlog.h>
 
-
 #include "andros/error.hpp"
 #include "andros/sdl_input.hpp"
 #include "controller_selection.hpp"
