@@ -7,6 +7,7 @@
 
 #include "andros/error.hpp"
 #include "andros/sdl_input.hpp"
+#include "../temp_dir.hpp"
 #include "virtual_device.hpp"
 
 namespace andros {
@@ -100,12 +101,11 @@ TEST(SdlOptions, AnIndexOutOfRangeIsBadInput) {
 
 class ControllerDbTest : public SdlSelectionTest {
  protected:
-  std::string write(const std::string& text) {
-    std::ofstream(path_) << text;
-    return path_;
-  }
-  ~ControllerDbTest() override { std::remove(path_.c_str()); }
-  std::string path_ = ::testing::TempDir() + "andros_controller_db.txt";
+  // A directory of this test's own: ctest runs the cases as processes side by
+  // side, and a shared file name let one case read another's database.
+  std::string write(const std::string& text) { return dir_.write("controller_db.txt", text).string(); }
+  testing::TempDir dir_;
+  std::string path_ = (dir_.path() / "controller_db.txt").string();
 };
 
 TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
