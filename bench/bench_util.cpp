@@ -10,7 +10,8 @@
 #include <cstdio>
 #include <fstream>
 
-#include "andros/io/link.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/link/link.hpp"
 
 namespace andros::bench {
 
@@ -25,11 +26,11 @@ bool exited(pid_t pid) {
 }  // namespace
 
 std::vector<Arrival> read_arrivals(int fd, std::int64_t stop_ns, std::size_t max_frames, pid_t until_exit) {
-  Decoder decoder;
+  protocol::Decoder decoder;
   std::vector<Arrival> out;
   std::uint8_t buf[512];
   while (out.size() < max_frames) {
-    const auto left_ms = (stop_ns - io::monotonic_ns()) / 1'000'000;
+    const auto left_ms = (stop_ns - monotonic_ns()) / 1'000'000;
     if (left_ms <= 0) break;
     pollfd p{fd, POLLIN, 0};
     // Short polls while waiting for a child's exit, so that its time is measured closely.
@@ -39,10 +40,10 @@ std::vector<Arrival> read_arrivals(int fd, std::int64_t stop_ns, std::size_t max
       continue;
     }
     const auto n = read(fd, buf, sizeof buf);
-    const auto now = io::monotonic_ns();
+    const auto now = monotonic_ns();
     if (n <= 0) continue;
     decoder.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)),
-                 [&](const DecodedFrame& f) { out.push_back({now, f.data}); });
+                 [&](const protocol::DecodedFrame& f) { out.push_back({now, f.data}); });
   }
   return out;
 }
@@ -76,10 +77,10 @@ double quantile(std::vector<double>& values, double q) {
 }
 
 BridgeProcess::BridgeProcess(const std::string& bin, const std::string& script_text, const std::string& port)
-    : pty(io::open_pty_pair()),
-      script("/tmp/andros-bench-" + std::to_string(getpid()) + "-" + std::to_string(io::monotonic_ns()) + ".events") {
+    : pty(link::open_pty_pair()),
+      script("/tmp/andros-bench-" + std::to_string(getpid()) + "-" + std::to_string(monotonic_ns()) + ".events") {
   std::ofstream(script) << script_text;
-  t0 = io::monotonic_ns();
+  t0 = monotonic_ns();
   pid = spawn({bin, "run", "--port", port.empty() ? pty.path : port, "--input", script});
 }
 

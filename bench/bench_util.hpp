@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "andros/decoder.hpp"
-#include "andros/io/pty_pair.hpp"
+#include "andros/link/pty_pair.hpp"
+#include "andros/protocol/decoder.hpp"
 
 namespace andros::bench {
 
 struct Arrival {
   std::int64_t t_ns;
-  DataBytes data;
+  protocol::DataBytes data;
 };
 
 /// Reads frames from fd until stop_ns (monotonic), `max_frames`, or (with a
@@ -42,7 +42,7 @@ struct BridgeProcess {
   BridgeProcess(const BridgeProcess&) = delete;
   BridgeProcess& operator=(const BridgeProcess&) = delete;
 
-  io::PtyPair pty;
+  link::PtyPair pty;
   std::string script;
   std::int64_t t0 = 0;  ///< monotonic ns just before the fork
   pid_t pid = -1;

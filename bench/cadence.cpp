@@ -13,8 +13,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "andros/io/bridge.hpp"
-#include "andros/io/serial_link.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/link/serial_link.hpp"
+#include "andros/run/bridge.hpp"
 #include "bench_util.hpp"
 
 namespace {
@@ -24,26 +25,26 @@ using namespace andros;
 constexpr int kRate = 25;
 constexpr double kPeriodMs = 1000.0 / kRate;
 
-DataBytes neutral_frame() {
-  ControlState s;
-  s[signal_id("drive")] = 128;
-  s[signal_id("pivot")] = 128;
-  s[signal_id("battery")] = 0xCC;
-  return FrameBuilder(0x01).build(s);
+protocol::DataBytes neutral_frame() {
+  protocol::ControlState s;
+  s[protocol::signal_id("drive")] = 128;
+  s[protocol::signal_id("pivot")] = 128;
+  s[protocol::signal_id("battery")] = 0xCC;
+  return protocol::FrameBuilder(0x01).build(s);
 }
 
-class FixedFrames final : public io::FrameSource {
+class FixedFrames final : public run::FrameSource {
  public:
-  DataBytes step(const InputState&, std::int64_t) override { return neutral_frame(); }
-  DataBytes neutral() const override { return neutral_frame(); }
+  protocol::DataBytes step(const input::InputState&, std::int64_t) override { return neutral_frame(); }
+  protocol::DataBytes neutral() const override { return neutral_frame(); }
   std::string enable_text() const override { return "no controller"; }
   bool enabled() const override { return false; }
   void restart() override {}
 };
 
-class Idle final : public InputSource {
+class Idle final : public input::InputSource {
  public:
-  void pump(InputState&, std::int64_t) override {}
+  void pump(input::InputState&, std::int64_t) override {}
   bool finished(std::int64_t) const override { return false; }
 };
 
@@ -95,17 +96,17 @@ void print_row(const char* name, const Result& r) {
 int main(int argc, char** argv) {
   const int seconds = argc > 1 ? std::atoi(argv[1]) : 30;
   spdlog::set_level(spdlog::level::warn);
-  auto bridge_pty = io::open_pty_pair();
-  auto plain_pty = io::open_pty_pair();
+  auto bridge_pty = link::open_pty_pair();
+  auto plain_pty = link::open_pty_pair();
   Idle input;
   FixedFrames frames;
-  io::SerialLink link(bridge_pty.path, 9600);
-  io::Bridge bridge(input, frames, link, io::BridgeOptions{.rate_millihertz = kRate * 1000});
-  io::UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
-  io::configure_raw_8n1(plain_fd.get(), 9600);
-  const Frame frame = encode(neutral_frame());
+  link::SerialLink link(bridge_pty.path, 9600);
+  run::Bridge bridge(input, frames, link, run::BridgeOptions{.rate_millihertz = kRate * 1000});
+  UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
+  link::configure_raw_8n1(plain_fd.get(), 9600);
+  const protocol::Frame frame = protocol::encode(neutral_frame());
 
-  const std::int64_t stop_ns = io::monotonic_ns() + std::int64_t{seconds} * 1'000'000'000;
+  const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * 1'000'000'000;
   std::atomic<bool> stop{false};
   std::vector<bench::Arrival> bridge_got;
   std::vector<bench::Arrival> plain_got;
@@ -120,16 +121,16 @@ int main(int argc, char** argv) {
   std::thread plain_loop([&] {
     // Half a period out of phase with the bridge, so that the two loops (and
     // their readers) never wake at the same instant and queue for a core.
-    const std::int64_t t0 = io::monotonic_ns() + 500'000'000 / kRate;
+    const std::int64_t t0 = monotonic_ns() + 500'000'000 / kRate;
     for (std::int64_t k = 0; !stop; ++k) {
-      io::sleep_until_ns(t0 + k * 1'000'000'000 / kRate);
+      andros::sleep_until_ns_uninterrupted(t0 + k * 1'000'000'000 / kRate);
       [[maybe_unused]] const auto n = write(plain_fd.get(), frame.data(), frame.size());
-      if (io::monotonic_ns() < stop_ns) plain_wrote.push_back({io::monotonic_ns(), {}});
+      if (monotonic_ns() < stop_ns) plain_wrote.push_back({monotonic_ns(), {}});
     }
   });
   std::thread bridge_loop([&] {
-    bridge.run([&] { return stop.load(); }, [&](const io::TickReport& r) {
-      if (!r.shutting_down && io::monotonic_ns() < stop_ns) bridge_wrote.push_back({io::monotonic_ns(), {}});
+    bridge.run([&] { return stop.load(); }, [&](const run::TickReport& r) {
+      if (!r.shutting_down && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
     });
   });
   bridge_reader.join();

@@ -18,7 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "andros/io/link.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/link/link.hpp"
 #include "bench_util.hpp"
 
 namespace {
@@ -31,7 +32,7 @@ constexpr std::int64_t kWaitNs = 5'000'000'000;  ///< the bound on every wait
 /// Deadman pressed fresh at 100 ms, full drive from 200 ms.
 constexpr const char* kDrive = "0 connect pad\n100 button leftshoulder 1\n200 axis lefty -32768\n";
 
-bool is_neutral(const DataBytes& d) { return d[7] == 128 && d[6] == 128 && (d[0] & 0x02) == 0; }
+bool is_neutral(const protocol::DataBytes& d) { return d[7] == 128 && d[6] == 128 && (d[0] & 0x02) == 0; }
 
 double seconds_of(const timeval& tv) { return static_cast<double>(tv.tv_sec) + static_cast<double>(tv.tv_usec) / 1e6; }
 
@@ -72,11 +73,11 @@ void controller_loss(const std::string& bin) {
 void shutdown_time(const std::string& bin) {
   bench::BridgeProcess run(bin, std::string(kDrive) + "60000 end\n");
   bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 15);  // driving by now
-  const auto t_term = io::monotonic_ns();
+  const auto t_term = monotonic_ns();
   kill(run.pid, SIGTERM);
   const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);
   const int status = bench::wait_child(run.pid, nullptr);
-  const double ms = static_cast<double>(io::monotonic_ns() - t_term) / 1e6;
+  const double ms = static_cast<double>(monotonic_ns() - t_term) / 1e6;
   std::size_t neutral_tail = 0;
   for (auto it = tail.rbegin(); it != tail.rend() && is_neutral(it->data); ++it) ++neutral_tail;
   std::printf("| SIGTERM mid-drive to exit | exit %d after %.0f ms, the last %zu frames neutral | < 1 s, >= 3 neutral | %s |\n",
@@ -93,7 +94,7 @@ void first_neutral_after_stop(const std::string& bin) {
     bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 15 + i);  // driving by now
     const timespec pause{0, static_cast<long>(i) * 4'000'000};  // 0..36 ms into the period
     nanosleep(&pause, nullptr);
-    const auto t_term = io::monotonic_ns();
+    const auto t_term = monotonic_ns();
     kill(run.pid, SIGTERM);
     const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);
     bench::wait_child(run.pid, nullptr);
@@ -113,15 +114,15 @@ void first_neutral_after_stop(const std::string& bin) {
 
 void replug(const std::string& bin) {
   const std::string link = "/tmp/andros-bench-" + std::to_string(getpid()) + "-switchbox";
-  auto first = std::make_unique<io::PtyPair>(io::open_pty_pair());
+  auto first = std::make_unique<link::PtyPair>(link::open_pty_pair());
   std::remove(link.c_str());
   if (symlink(first->path.c_str(), link.c_str()) != 0) return;
   bench::BridgeProcess run(bin, "0 connect pad\n60000 end\n", link);
   bench::read_arrivals(first->master.get(), run.t0 + kWaitNs, 10);
   first.reset();  // unplug: the device and its symlink go
   std::remove(link.c_str());
-  const auto second = io::open_pty_pair();
-  const auto t_plug = io::monotonic_ns();
+  const auto second = link::open_pty_pair();
+  const auto t_plug = monotonic_ns();
   if (symlink(second.path.c_str(), link.c_str()) != 0) return;
   const auto got = bench::read_arrivals(second.master.get(), t_plug + kWaitNs, 1);
   const double ms = got.empty() ? -1 : static_cast<double>(got[0].t_ns - t_plug) / 1e6;
@@ -138,7 +139,7 @@ void cost(const std::string& bin, int seconds, bool sim) {
   if (!sim) bench::read_arrivals(run.pty.master.get(), run.t0 + std::int64_t{seconds} * 1'000'000'000 + kWaitNs, SIZE_MAX, run.pid);
   rusage usage{};
   bench::wait_child(run.pid, &usage);
-  const double wall = static_cast<double>(io::monotonic_ns() - run.t0) / 1e9;
+  const double wall = static_cast<double>(monotonic_ns() - run.t0) / 1e9;
   const double user = seconds_of(usage.ru_utime);
   const double sys = seconds_of(usage.ru_stime);
   const double pct = 100.0 * (user + sys) / wall;

@@ -12,7 +12,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "andros/sdl_input.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/input/sdl_input.hpp"
 
 namespace andros::bench {
 
@@ -20,14 +21,6 @@ inline std::int64_t now_ns() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
-inline void sleep_until_ns(std::int64_t deadline) {
-  timespec ts{};
-  ts.tv_sec = static_cast<time_t>(deadline / 1'000'000'000);
-  ts.tv_nsec = static_cast<long>(deadline % 1'000'000'000);
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) != 0) {
-  }
 }
 
 /// A virtual game controller, opened so that the benchmark can move it.
@@ -49,7 +42,7 @@ inline SDL_Joystick* attach_virtual_pad() {
 
 /// SDL started headless, the input source, and a virtual pad to move.
 struct PadRig {
-  PadRig() : input((setenv("SDL_VIDEODRIVER", "dummy", 0), SdlInputOptions{})), pad(attach_virtual_pad()) {
+  PadRig() : input((setenv("SDL_VIDEODRIVER", "dummy", 0), input::SdlInputOptions{})), pad(attach_virtual_pad()) {
     spdlog::set_level(spdlog::level::err);  // keep the table clean
   }
   ~PadRig() {
@@ -58,7 +51,7 @@ struct PadRig {
   PadRig(const PadRig&) = delete;
   PadRig& operator=(const PadRig&) = delete;
 
-  SdlInput input;
+  input::SdlInput input;
   SDL_Joystick* pad;
 };
 

@@ -34,7 +34,7 @@ Phase run_phase(double seconds, Work&& work) {
   const double cpu0 = cpu_seconds();
   const std::int64_t start = now_ns();
   for (long k = 1; k <= ticks; ++k) {
-    andros::bench::sleep_until_ns(start + k * kPeriodNs);
+    andros::sleep_until_ns_uninterrupted(start + k * kPeriodNs);
     work(k * 40);
   }
   return Phase{static_cast<double>(now_ns() - start) / 1e9, cpu_seconds() - cpu0, ticks};
@@ -50,7 +50,7 @@ void print(const char* name, const Phase& p) {
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 20.0;
   andros::bench::PadRig rig;
-  andros::InputState state;
+  andros::input::InputState state;
 
   const Phase idle = run_phase(seconds, [](std::int64_t) {});
   const Phase pumped = run_phase(seconds, [&](std::int64_t t) { rig.input.pump(state, t); });

@@ -15,9 +15,10 @@
 #include <random>
 #include <vector>
 
-#include "andros/frame.hpp"
-#include "andros/io/pty_pair.hpp"
-#include "andros/io/serial_link.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/link/pty_pair.hpp"
+#include "andros/link/serial_link.hpp"
+#include "andros/protocol/frame.hpp"
 #include "sdl_bench.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ using andros::bench::now_ns;
 using andros::bench::quantile;
 
 constexpr std::int64_t kPeriodNs = 40'000'000;
-const andros::InputKey kLeftY{andros::InputKind::kPadAxis, SDL_CONTROLLER_AXIS_LEFTY};
+const andros::input::InputKey kLeftY{andros::input::InputKind::kPadAxis, SDL_CONTROLLER_AXIS_LEFTY};
 
 void row(const char* name, const std::vector<double>& ms) {
   std::printf("| %-34s | %8.3f | %8.3f | %8.3f | %5zu |\n", name, quantile(ms, 0.5), quantile(ms, 0.99),
@@ -39,9 +40,9 @@ std::int64_t wait_for_frame(int master) {
   const std::int64_t give_up = now_ns() + 1'000'000'000;
   int queued = 0;
   while (now_ns() < give_up) {
-    if (ioctl(master, FIONREAD, &queued) == 0 && queued >= static_cast<int>(andros::kFrameSize)) {
+    if (ioctl(master, FIONREAD, &queued) == 0 && queued >= static_cast<int>(andros::protocol::kFrameSize)) {
       const std::int64_t at = now_ns();
-      std::uint8_t buf[andros::kFrameSize];
+      std::uint8_t buf[andros::protocol::kFrameSize];
       if (read(master, buf, sizeof buf) != static_cast<ssize_t>(sizeof buf)) return 0;
       return at;
     }
@@ -56,16 +57,16 @@ std::int64_t wait_for_frame(int master) {
 int main(int argc, char** argv) {
   const long ticks = argc > 1 ? std::atol(argv[1]) : 500;
   andros::bench::PadRig rig;
-  andros::SdlInput& input = rig.input;
+  andros::input::SdlInput& input = rig.input;
 
   // The bridge's own pty stand-in; the near end raw, as SerialLink sets a port.
-  const auto pty = andros::io::open_pty_pair();
+  const auto pty = andros::link::open_pty_pair();
   const int master = pty.master.get();
   const int slave = pty.slave.get();
-  andros::io::configure_raw_8n1(slave, 9600);
+  andros::link::configure_raw_8n1(slave, 9600);
 
-  const andros::FrameBuilder builder(0x01);
-  andros::InputState state;
+  const andros::protocol::FrameBuilder builder(0x01);
+  andros::input::InputState state;
   std::mt19937 rng(42);
   std::uniform_int_distribution<std::int64_t> offset(2'000'000, kPeriodNs - 2'000'000);
   std::vector<double> set_to_state;
@@ -80,16 +81,16 @@ int main(int argc, char** argv) {
   for (long k = 0; k <= ticks; ++k) {
     const std::int64_t tick = start + k * kPeriodNs;
     const auto value = static_cast<Sint16>(k % 2 == 0 ? 20000 + k : -20000 - k);
-    andros::bench::sleep_until_ns(tick - offset(rng));
+    andros::sleep_until_ns_uninterrupted(tick - offset(rng));
     const std::int64_t set = now_ns();
     SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY, value);
-    andros::bench::sleep_until_ns(tick);
+    andros::sleep_until_ns_uninterrupted(tick);
     tick_at[static_cast<std::size_t>(k)] = now_ns();
     input.pump(state, k * 40);
     const std::int64_t seen = now_ns();
-    andros::ControlState control;
-    control[andros::signal_id("drive")] = static_cast<std::uint8_t>(128 + state.axis(kLeftY) / 256);
-    const auto frame = andros::encode(builder.build(control));
+    andros::protocol::ControlState control;
+    control[andros::protocol::signal_id("drive")] = static_cast<std::uint8_t>(128 + state.axis(kLeftY) / 256);
+    const auto frame = andros::protocol::encode(builder.build(control));
     if (write(slave, frame.data(), frame.size()) != static_cast<ssize_t>(frame.size())) {
       std::perror("write");
       return 1;

@@ -5,10 +5,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "andros/config.hpp"
-#include "andros/error.hpp"
-#include "andros/replay.hpp"
-#include "andros/robots.hpp"
+#include "andros/base/error.hpp"
+#include "andros/cli/config.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/run/replay.hpp"
 #include "fuzz_check.hpp"
 
 using andros::fuzz::check;
@@ -16,24 +16,24 @@ using andros::fuzz::check;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   andros::TextReader in(text, "fuzz.conf", andros::kConfigLimits);
-  andros::RunConfig config;
+  andros::cli::RunConfig config;
   try {
-    andros::parse_config(in, config);
+    andros::cli::parse_config(in, config);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" || e.pos().file == "--rate");
     check(e.pos().file != "fuzz.conf" || e.pos().line >= 1);
     return 0;
   }
-  check(andros::canonical_robot(config.robot).value_or("") == config.robot);
+  check(andros::protocol::canonical_robot(config.robot).value_or("") == config.robot);
   bool known_baud = false;
-  for (const int b : andros::kBauds) known_baud = known_baud || b == config.baud;
+  for (const int b : andros::cli::kBauds) known_baud = known_baud || b == config.baud;
   check(known_baud);
   check(!config.port.empty() && !config.input.empty());
   try {
     // Merged with the flags' defaults: either a rate the link carries or an
     // error at the line that set it.
-    const auto mhz = andros::rate_millihertz(config);
-    check(mhz >= 1000 && mhz * andros::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
+    const auto mhz = andros::cli::rate_millihertz(config);
+    check(mhz >= 1000 && mhz * andros::timing::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" && e.pos().line >= 1);
   }

@@ -6,23 +6,23 @@
 #include <span>
 #include <vector>
 
-#include "andros/decoder.hpp"
+#include "andros/protocol/decoder.hpp"
 #include "fuzz_check.hpp"
 
 namespace {
 
 struct Seen {
   std::uint64_t offset;
-  andros::DataBytes data;
+  andros::protocol::DataBytes data;
   bool valid;
   bool operator==(const Seen&) const = default;
 };
 
 std::vector<Seen> decode(std::span<const std::uint8_t> bytes, std::size_t chunk,
-                         andros::DecoderStats* stats) {
-  andros::Decoder decoder;
+                         andros::protocol::DecoderStats* stats) {
+  andros::protocol::Decoder decoder;
   std::vector<Seen> seen;
-  const auto sink = [&](const andros::DecodedFrame& f) { seen.push_back({f.offset, f.data, f.valid}); };
+  const auto sink = [&](const andros::protocol::DecodedFrame& f) { seen.push_back({f.offset, f.data, f.valid}); };
   for (std::size_t pos = 0; pos < bytes.size(); pos += chunk) {
     decoder.push(bytes.subspan(pos, std::min(chunk, bytes.size() - pos)), sink);
   }
@@ -41,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::size_t chunk = 1 + data[0] % 40;  // the first byte picks a chunking
   const std::span bytes(data + 1, size - 1);
 
-  andros::DecoderStats whole_stats, chunked_stats;
+  andros::protocol::DecoderStats whole_stats, chunked_stats;
   const auto whole = decode(bytes, bytes.size() + 1, &whole_stats);
   const auto chunked = decode(bytes, chunk, &chunked_stats);
   check(whole == chunked);
@@ -50,10 +50,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(whole_stats.bytes_skipped <= bytes.size());
   for (const auto& f : whole) {
     if (!f.valid) continue;
-    const auto frame = andros::encode(f.data);
+    const auto frame = andros::protocol::encode(f.data);
     check(f.offset + frame.size() <= bytes.size());
     check(std::equal(frame.begin(), frame.end(), bytes.begin() + static_cast<std::ptrdiff_t>(f.offset)));
-    check(andros::validation_errors(f.data).empty());
+    check(andros::protocol::validation_errors(f.data).empty());
   }
   return 0;
 }

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "andros/engine.hpp"
-#include "andros/mapping_loader.hpp"
-#include "andros/robots.hpp"
+#include "andros/mapping/engine.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
 #include "andros/version.hpp"
 #include "fuzz_check.hpp"
 #include "oracle/centre_watch.hpp"
@@ -24,11 +24,11 @@ namespace {
 using namespace andros;
 
 
-const std::vector<Mapping>& shipped() {
+const std::vector<mapping::Mapping>& shipped() {
   static const auto mappings = [] {
-    std::vector<Mapping> out;
-    for (const auto robot : kRobotTypes) {
-      out.push_back(load_mapping(find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
+    std::vector<mapping::Mapping> out;
+    for (const auto robot : protocol::kRobotTypes) {
+      out.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
     }
     return out;
   }();
@@ -36,36 +36,36 @@ const std::vector<Mapping>& shipped() {
 }
 
 // The frame is neutral: every motion and weapon bit 0, drive and pivot at centre.
-bool is_neutral(const ControlState& s, int center) {
-  for (std::size_t i = 0; i < kSignalCount; ++i) {
-    const auto kind = kSignals[i].kind;
-    if ((kind == SignalKind::kMotion || kind == SignalKind::kWeapon || kind == SignalKind::kInterlock) &&
+bool is_neutral(const protocol::ControlState& s, int center) {
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    const auto kind = protocol::kSignals[i].kind;
+    if ((kind == protocol::SignalKind::kMotion || kind == protocol::SignalKind::kWeapon || kind == protocol::SignalKind::kInterlock) &&
         s.values[i] != 0) {
       return false;
     }
-    if (kind == SignalKind::kCentred && s.values[i] != center) return false;
+    if (kind == protocol::SignalKind::kCentred && s.values[i] != center) return false;
   }
   return true;
 }
 
 // Every 3 input bytes make one event: what, which input, value. Buttons and
 // axes of a standard pad, connects and disconnects, and time moving on.
-InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
-  InputEvent e;
+input::InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
+  input::InputEvent e;
   e.t_ms = t;
   switch (p[0] % 8) {
-    case 0: e.type = InputEvent::Type::kConnect; break;
-    case 1: e.type = InputEvent::Type::kDisconnect; break;
+    case 0: e.type = input::InputEvent::Type::kConnect; break;
+    case 1: e.type = input::InputEvent::Type::kDisconnect; break;
     case 2:
     case 3:
     case 4:
-      e.type = InputEvent::Type::kButton;
-      e.key = InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(p[1] % kPadButtonNames.size())};
+      e.type = input::InputEvent::Type::kButton;
+      e.key = input::InputKey{input::InputKind::kPadButton, static_cast<std::uint16_t>(p[1] % input::kPadButtonNames.size())};
       e.value = p[2] & 1;
       break;
     default:
-      e.type = InputEvent::Type::kAxis;
-      e.key = InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % kPadAxisNames.size())};
+      e.type = input::InputEvent::Type::kAxis;
+      e.key = input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % input::kPadAxisNames.size())};
       e.value = static_cast<int>(p[2] * 257) - 32768;
       break;
   }
@@ -81,12 +81,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto& mapping = shipped()[data[0] % shipped().size()];
   const bool weapons = (data[1] & 1) != 0;
   const std::uint8_t code = data[1];
-  Engine engine(mapping, EngineOptions{weapons, code});
-  const InputKey deadman = mapping.deadman->key;
+  mapping::Engine engine(mapping, mapping::EngineOptions{weapons, code});
+  const input::InputKey deadman = mapping.deadman->key;
 
-  InputState input;
+  input::InputState input;
   bool fresh = false;  // the deadman went down after the last connect, not at it
-  const std::array<SignalId, 2> centred{signal_id("drive"), signal_id("pivot")};
+  const std::array<protocol::SignalId, 2> centred{protocol::signal_id("drive"), protocol::signal_id("pivot")};
   std::array<test::CentreWatch, 2> centre{};
   bool was_enabled = false;
   int sessions = 0, seen_sessions = 0;
@@ -95,34 +95,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
     while (next_frame <= t) {
       const auto frame = engine.step(input, next_frame);
-      const auto s = read_signals(frame);
-      check(validation_errors(frame).empty());
-      check(frame[kCodeByte] == code);
-      for (std::size_t k = 0; k < kSignalCount; ++k) {
-        const auto partner = partner_of(static_cast<SignalId>(k));
+      const auto s = protocol::read_signals(frame);
+      check(protocol::validation_errors(frame).empty());
+      check(frame[protocol::kCodeByte] == code);
+      for (std::size_t k = 0; k < protocol::kSignalCount; ++k) {
+        const auto partner = protocol::partner_of(static_cast<protocol::SignalId>(k));
         check(!partner || s.values[k] == 0 || s[*partner] == 0);
-        if (kSignals[k].kind == SignalKind::kWeapon && !weapons) check(s.values[k] == 0);
+        if (protocol::kSignals[k].kind == protocol::SignalKind::kWeapon && !weapons) check(s.values[k] == 0);
       }
       const bool may_move = input.connected() && input.button(deadman).down && fresh;
       if (!may_move) check(is_neutral(s, mapping.center));
       for (std::size_t c = 0; c < centred.size(); ++c) {
-        const Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
+        const mapping::Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
         if (centre[c].must_centre(now, !was_enabled || sessions != seen_sessions,
-                                  [&](InputKey key) { return input.axis(key); })) {
+                                  [&](input::InputKey key) { return input.axis(key); })) {
           check(s[centred[c]] == mapping.center);
         }
       }
       was_enabled = may_move;
       seen_sessions = sessions;
-      check(s[signal_id("safety")] == (engine.status().enable == EnableState::kEnabled ? 1 : 0));
+      check(s[protocol::signal_id("safety")] == (engine.status().enable == mapping::EnableState::kEnabled ? 1 : 0));
       next_frame += 40;
     }
     const auto event = next_event(data + i, t);
     const bool was_down = input.button(deadman).down;
     const bool was_connected = input.connected();
     input.apply(event);
-    if (event.type == InputEvent::Type::kConnect || !input.connected()) fresh = false;
-    if (event.type == InputEvent::Type::kConnect) ++sessions;
+    if (event.type == input::InputEvent::Type::kConnect || !input.connected()) fresh = false;
+    if (event.type == input::InputEvent::Type::kConnect) ++sessions;
     if (was_connected && input.connected() && !was_down && input.button(deadman).down &&
         input.button(deadman).presses > 0) {
       fresh = true;

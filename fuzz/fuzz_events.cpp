@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include "andros/error.hpp"
-#include "andros/events.hpp"
+#include "andros/base/error.hpp"
+#include "andros/input/events.hpp"
 #include "fuzz_check.hpp"
 
 using andros::fuzz::check;
@@ -31,16 +31,16 @@ std::size_t longest_line(std::string_view text) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  std::vector<andros::InputEvent> events;
+  std::vector<andros::input::InputEvent> events;
   // The check before a script plays agrees with the parser, line for line.
   int checked_line = 0;
   try {
-    (void)andros::checked_event_script(andros::TextReader(text, "fuzz.events", andros::kEventScriptLimits));
+    (void)andros::input::checked_event_script(andros::TextReader(text, "fuzz.events", andros::kEventScriptLimits));
   } catch (const andros::InputError& e) {
     checked_line = e.pos().line;
   }
   try {
-    events = andros::parse_event_script(text, "fuzz.events");
+    events = andros::input::parse_event_script(text, "fuzz.events");
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.events");
     check(e.pos().line >= 1);
@@ -50,12 +50,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(checked_line == 0);
   check(longest_line(text) <= andros::kMaxLineBytes);
   for (std::size_t i = 0; i < events.size(); ++i) {
-    check(events[i].t_ms >= 0 && events[i].t_ms <= andros::kMaxScriptMs);
-    check(events[i].type != andros::InputEvent::Type::kEnd || i + 1 == events.size());
+    check(events[i].t_ms >= 0 && events[i].t_ms <= andros::input::kMaxScriptMs);
+    check(events[i].type != andros::input::InputEvent::Type::kEnd || i + 1 == events.size());
   }
   std::string again;
-  for (const auto& e : events) again += andros::format_event(e) + "\n";
-  const auto reparsed = andros::parse_event_script(again, "again.events");
+  for (const auto& e : events) again += andros::input::format_event(e) + "\n";
+  const auto reparsed = andros::input::parse_event_script(again, "again.events");
   check(reparsed.size() == events.size());
   for (std::size_t i = 0; i < events.size(); ++i) {
     check(reparsed[i].t_ms == events[i].t_ms);

@@ -15,9 +15,9 @@
 #include <string>
 #include <string_view>
 
-#include "andros/engine.hpp"
-#include "andros/error.hpp"
-#include "andros/mapping_loader.hpp"
+#include "andros/base/error.hpp"
+#include "andros/mapping/engine.hpp"
+#include "andros/mapping/loader.hpp"
 #include "fuzz_check.hpp"
 
 namespace {
@@ -56,20 +56,20 @@ using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = write_files(std::string_view(reinterpret_cast<const char*>(data), size));
-  andros::Mapping mapping;
+  andros::mapping::Mapping mapping;
   try {
-    mapping = andros::load_mapping_file(file);
-    andros::validate(mapping, false);
+    mapping = andros::mapping::load_mapping_file(file);
+    andros::mapping::validate(mapping, false);
   } catch (const andros::InputError& e) {
     check(!e.pos().file.empty());
     return 0;
   }
   if (!mapping.robot) return 0;
-  andros::Engine engine(mapping, andros::EngineOptions{});
-  andros::InputState input;
-  andros::InputEvent connect;
-  connect.type = andros::InputEvent::Type::kConnect;
+  andros::mapping::Engine engine(mapping, andros::mapping::EngineOptions{});
+  andros::input::InputState input;
+  andros::input::InputEvent connect;
+  connect.type = andros::input::InputEvent::Type::kConnect;
   input.apply(connect);
-  for (std::int64_t t = 0; t < 200; t += 40) check(andros::validation_errors(engine.step(input, t)).empty());
+  for (std::int64_t t = 0; t < 200; t += 40) check(andros::protocol::validation_errors(engine.step(input, t)).empty());
   return 0;
 }

@@ -17,8 +17,8 @@
 #include <variant>
 #include <vector>
 
-#include "andros/error.hpp"
-#include "andros/text_file.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/text_file.hpp"
 #include "fuzz_check.hpp"
 
 using andros::fuzz::check;

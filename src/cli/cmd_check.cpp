@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "andros/error.hpp"
-#include "andros/mapping_loader.hpp"
+#include "andros/base/error.hpp"
+#include "andros/mapping/loader.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {
@@ -14,14 +14,14 @@ namespace {
 /// Loads, but would surprise the operator: a stick driving drive or pivot with
 /// no deadzone must read exactly 0 to count as at rest after the deadman press
 /// or a layer change (the rest rule), which a worn stick may never do.
-std::vector<std::string> warnings(const Mapping& mapping) {
+std::vector<std::string> warnings(const mapping::Mapping& mapping) {
   std::vector<std::string> out;
-  for (const auto ref : all_bindings(mapping)) {
-    const auto& b = binding_at(mapping, ref);
-    const auto* axis = std::get_if<AxisBinding>(&b.rule);
-    if (axis == nullptr || info(axis->analog).kind != SignalKind::kCentred || axis->shape.deadzone > 0) continue;
+  for (const auto ref : mapping::all_bindings(mapping)) {
+    const auto& b = mapping::binding_at(mapping, ref);
+    const auto* axis = std::get_if<mapping::AxisBinding>(&b.rule);
+    if (axis == nullptr || protocol::info(axis->analog).kind != protocol::SignalKind::kCentred || axis->shape.deadzone > 0) continue;
     out.push_back(format_error(b.pos,
-                               "no deadzone on the stick driving '" + std::string(info(axis->analog).name) +
+                               "no deadzone on the stick driving '" + std::string(protocol::info(axis->analog).name) +
                                    "': after the deadman press or a layer change it acts only once it reads "
                                    "exactly 0 (give it a deadzone, e.g. 0.1)",
                                "warning"));
@@ -45,7 +45,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
     bool all_ok = true;
     for (const auto& file : *files) {
       try {
-        const auto mapping = load_mapping_file(file);
+        const auto mapping = mapping::load_mapping_file(file);
         validate(mapping, mapping.robot.has_value());
         std::printf("%s: ok%s\n", file.c_str(), mapping.robot ? "" : " (a base mapping: no robot)");
         std::fflush(stdout);

@@ -3,8 +3,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "andros/error.hpp"
-#include "andros/sdl_input.hpp"
+#include "andros/base/error.hpp"
+#include "andros/input/sdl_input.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
 
@@ -12,12 +12,12 @@ namespace andros::cli {
 namespace {
 
 struct ControllersOptions {
-  SdlInputOptions sdl;
+  input::SdlInputOptions sdl;
   bool json = false;
 };
 
 int run_controllers(const ControllersOptions& opt) {
-  const auto list = list_controllers(opt.sdl);
+  const auto list = input::list_controllers(opt.sdl);
   if (opt.json) {
     for (const auto& c : list) {
       const nlohmann::json line = {{"index", c.index},

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "andros/decoder.hpp"
-#include "andros/error.hpp"
-#include "andros/frame.hpp"
-#include "andros/json.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
+#include "andros/protocol/decoder.hpp"
+#include "andros/protocol/frame.hpp"
+#include "andros/protocol/json.hpp"
 #include "commands.hpp"
-#include "andros/parse.hpp"
 
 namespace andros::cli {
 namespace {
@@ -38,17 +38,17 @@ void run_encode(const EncodeOptions& opt) {
       if (c != ' ' && c != '\t') digits += c;
     }
   }
-  DataBytes data;
+  protocol::DataBytes data;
   try {
-    data = parse_data_hex(digits);
+    data = protocol::parse_data_hex(digits);
   } catch (const InputError& e) {
     throw InputError("frame encode: " + e.message());
   }
-  const auto frame = encode(data);
+  const auto frame = protocol::encode(data);
   if (opt.raw) {
     std::fwrite(frame.data(), 1, frame.size(), stdout);
   } else {
-    std::printf("%s\n", to_hex(frame).c_str());
+    std::printf("%s\n", protocol::to_hex(frame).c_str());
   }
 }
 
@@ -68,9 +68,9 @@ int run_decode(const DecodeOptions& opt) {
     throw InputError(SourcePos{opt.input}, "is a directory, not a capture file");
   }
 
-  Decoder decoder(code);
-  FrameJsonWriter json;
-  const auto print = [&json](const DecodedFrame& f) {
+  protocol::Decoder decoder(code);
+  protocol::FrameJsonWriter json;
+  const auto print = [&json](const protocol::DecodedFrame& f) {
     const auto line = json.line(f);
     std::fwrite(line.data(), 1, line.size(), stdout);
     std::fputc('\n', stdout);
@@ -101,7 +101,7 @@ int run_decode(const DecodeOptions& opt) {
 }
 
 void run_signals(bool as_json) {
-  for (const auto& sig : kSignals) {
+  for (const auto& sig : protocol::kSignals) {
     const std::string name(sig.name), kind(to_string(sig.kind)), partner(sig.partner), label(sig.label);
     if (as_json) {
       nlohmann::ordered_json row;

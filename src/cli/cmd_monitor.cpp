@@ -13,15 +13,16 @@
 #include <optional>
 #include <string>
 
-#include "andros/config.hpp"
-#include "andros/error.hpp"
-#include "andros/io/serial_link.hpp"
-#include "andros/io/shutdown_signals.hpp"
-#include "andros/io/status_display.hpp"
-#include "andros/io/status_view.hpp"
-#include "andros/io/unique_fd.hpp"
-#include "andros/io/vehicle_view.hpp"
-#include "andros/parse.hpp"
+#include "andros/base/clock.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/shutdown_signals.hpp"
+#include "andros/base/text.hpp"
+#include "andros/base/unique_fd.hpp"
+#include "andros/cli/config.hpp"
+#include "andros/link/serial_link.hpp"
+#include "andros/link/vehicle_view.hpp"
+#include "andros/view/status_display.hpp"
+#include "andros/view/status_view.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {
@@ -42,7 +43,7 @@ constexpr std::int64_t kDrainNs = 200'000'000;
 /// Off a terminal: one line when frames start or stop arriving or errors grow.
 class MonitorLog {
  public:
-  void update(const io::VehicleSnapshot& v, std::int64_t now_ns, std::int64_t last_frame_ns) {
+  void update(const link::VehicleSnapshot& v, std::int64_t now_ns, std::int64_t last_frame_ns) {
     const bool flowing = v.stats.frames > 0 && now_ns - last_frame_ns < kQuietNs;
     const auto errors = v.stats.bad_checksum + v.stats.invalid;
     if (flowing != flowing_) {
@@ -62,8 +63,8 @@ class MonitorLog {
   std::uint64_t errors_ = 0;
 };
 
-int monitor_file(const std::string& path, io::VehicleView& view) {
-  io::UniqueFd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+int monitor_file(const std::string& path, link::VehicleView& view) {
+  UniqueFd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (!fd) throw InputError(SourcePos{path}, std::string("cannot open: ") + std::strerror(errno));
   std::uint8_t buf[64 * 1024];
   long n = 0;
@@ -72,23 +73,23 @@ int monitor_file(const std::string& path, io::VehicleView& view) {
   }
   if (n < 0) throw RuntimeError(path + ": read error: " + std::strerror(errno));
   view.finish();
-  std::fputs(io::render_monitor_view(path, view.snapshot(0), false, false).c_str(), stdout);
+  std::fputs(view::render_monitor_view(path, view.snapshot(0), false, false).c_str(), stdout);
   return kExitOk;
 }
 
 /// Decodes fd live until a signal or its end. is_port: fd is a serial port,
 /// whose end means it was unplugged (exit 1); a pipe's end is just the end.
-int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleView& view) {
-  io::ShutdownSignals signals;  // before the display's thread starts
+int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleView& view) {
+  ShutdownSignals signals;  // before the display's thread starts
   std::mutex mutex;
-  const bool interactive = io::is_interactive(STDOUT_FILENO);
-  std::optional<io::StatusDisplay> display;
+  const bool interactive = view::is_interactive(STDOUT_FILENO);
+  std::optional<view::StatusDisplay> display;
   if (interactive) {
     display.emplace(
         [&] {
-          const auto now = io::monotonic_ns();
+          const auto now = monotonic_ns();
           const std::lock_guard lock(mutex);
-          return io::render_monitor_view(name, view.snapshot(now), true, true);
+          return view::render_monitor_view(name, view.snapshot(now), true, true);
         },
         kRedrawsPerSecond);
     display->start();
@@ -101,7 +102,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleVie
   while (!signals.requested() && !ended) {
     pollfd p{fd, POLLIN, 0};
     const int ready = poll(&p, 1, 1000 / kRedrawsPerSecond);
-    const auto now = io::monotonic_ns();
+    const auto now = monotonic_ns();
     if (ready > 0) {
       const long n = ::read(fd, buf, sizeof buf);
       if (n > 0) {
@@ -128,10 +129,10 @@ int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleVie
     pollfd p{fd, POLLIN, 0};
     long n = 0;
     std::size_t taken = 0;
-    const auto deadline = io::monotonic_ns() + kDrainNs;
-    while (!ended && taken < kDrainBytes && io::monotonic_ns() < deadline && poll(&p, 1, 0) == 1 &&
+    const auto deadline = monotonic_ns() + kDrainNs;
+    while (!ended && taken < kDrainBytes && monotonic_ns() < deadline && poll(&p, 1, 0) == 1 &&
            (n = ::read(fd, buf, sizeof buf)) > 0) {
-      view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), io::monotonic_ns());
+      view.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), monotonic_ns());
       taken += static_cast<std::size_t>(n);
     }
     view.finish();
@@ -139,7 +140,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, io::VehicleVie
   if (display) {
     display->stop();  // draws the last screen, taking the lock itself
   } else {
-    std::fputs(io::render_monitor_view(name, view.snapshot(io::monotonic_ns()), true, false).c_str(), stdout);
+    std::fputs(view::render_monitor_view(name, view.snapshot(monotonic_ns()), true, false).c_str(), stdout);
   }
   return failed ? kExitRuntime : kExitOk;
 }
@@ -148,7 +149,7 @@ int run_monitor(const MonitorOptions& opt) {
   const int baud = opt.baud.empty() ? kDefaultBaud : parse_baud(opt.baud, SourcePos{"--baud"});
   std::optional<std::uint8_t> code;
   if (!opt.code.empty()) code = parse_code(opt.code, SourcePos{"--code"});
-  io::VehicleView view(code);
+  link::VehicleView view(code);
 
   if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, false, view);
   struct stat st{};
@@ -159,10 +160,10 @@ int run_monitor(const MonitorOptions& opt) {
     throw InputError(SourcePos{opt.source}, "is a directory, not a port or a capture file");
   }
   if (S_ISREG(st.st_mode)) return monitor_file(opt.source, view);
-  io::UniqueFd fd(::open(opt.source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+  UniqueFd fd(::open(opt.source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd) throw RuntimeError(opt.source + ": cannot open: " + std::strerror(errno));
   const bool is_port = isatty(fd.get()) != 0;
-  if (is_port && !io::configure_raw_8n1(fd.get(), baud)) {
+  if (is_port && !link::configure_raw_8n1(fd.get(), baud)) {
     throw RuntimeError(opt.source + ": cannot set 8N1: " + std::strerror(errno));
   }
   return monitor_stream(opt.source, fd.get(), is_port, view);

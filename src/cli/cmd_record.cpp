@@ -9,8 +9,8 @@
 #include <iostream>
 #include <memory>
 
-#include "andros/error.hpp"
-#include "andros/script_recorder.hpp"
+#include "andros/base/error.hpp"
+#include "andros/input/script_recorder.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
@@ -19,7 +19,7 @@ namespace andros::cli {
 namespace {
 
 struct RecordCommandOptions {
-  SdlInputOptions sdl;
+  input::SdlInputOptions sdl;
   std::string output = "-";
   int rate_hz = 25;
 };
@@ -62,7 +62,7 @@ std::string utc_now() {
 
 int run_record(const RecordCommandOptions& opt) {
   // SDL first (bad selection or mapping file: exit 2 before any file is made).
-  SdlInput input(opt.sdl);
+  input::SdlInput input(opt.sdl);
   std::ofstream file;
   if (opt.output != "-") {
     file.open(opt.output, std::ios::out | std::ios::trunc);
@@ -70,7 +70,7 @@ int run_record(const RecordCommandOptions& opt) {
   }
   std::ostream& out = opt.output == "-" ? std::cout : file;
 
-  RecordOptions rec;
+  input::RecordOptions rec;
   rec.period_ms = 1000 / opt.rate_hz;
   rec.header = "andros-bridge " + std::string(kVersion) + " record, started " + utc_now() +
                "\ncontroller: " + input.selection() + "\nt_ms    event       arguments";
@@ -78,7 +78,7 @@ int run_record(const RecordCommandOptions& opt) {
   const StopOnSignals stop_on_signals;
   const bool progress = isatty(STDERR_FILENO) == 1;
   std::int64_t last_progress_ms = -1000;
-  const auto keep_going = [&](const RecordStatus& s) {
+  const auto keep_going = [&](const input::RecordStatus& s) {
     if (progress && (s.t_ms - last_progress_ms >= 500 || g_stop_signal != 0)) {
       last_progress_ms = s.t_ms;
       std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s (Ctrl-C ends)\033[K",
@@ -87,7 +87,7 @@ int run_record(const RecordCommandOptions& opt) {
     }
     return g_stop_signal == 0 && out.good();  // a full disk ends it: nothing more would be kept
   };
-  const auto ended = record_script(input, out, rec, keep_going);
+  const auto ended = input::record_script(input, out, rec, keep_going);
   out.flush();
   if (!out) throw RuntimeError((opt.output == "-" ? std::string("standard output") : opt.output) + ": write error");
   if (progress) std::fputc('\n', stderr);

@@ -6,13 +6,13 @@
 #include <memory>
 #include <string>
 
-#include "andros/error.hpp"
-#include "andros/events.hpp"
-#include "andros/mapping_loader.hpp"
-#include "andros/parse.hpp"
-#include "andros/replay.hpp"
-#include "andros/robots.hpp"
-#include "andros/text_file.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
+#include "andros/base/text_file.hpp"
+#include "andros/input/events.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/run/replay.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {
@@ -55,17 +55,17 @@ void run_replay(const ReplayOptions& opt) {
   // Everything is checked, the whole script included, before a frame is written.
   if (!opt.robot.empty() && !opt.mapping.empty()) throw InputError("replay: give --robot or --mapping, not both");
   const auto code = parse_code(opt.code, SourcePos{"--code"});
-  const FrameClock clock(parse_rate(opt.rate, kReplayBaud, SourcePos{"--rate"}));
-  const auto format = parse_replay_format(opt.format, SourcePos{"--format"});
-  Mapping mapping = opt.mapping.empty() ? load_robot_mapping(opt.robot.empty() ? kDefaultRobot : opt.robot)
-                                        : load_mapping(opt.mapping);
-  auto script = checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
+  const timing::FrameClock clock(timing::parse_rate(opt.rate, timing::kReplayBaud, SourcePos{"--rate"}));
+  const auto format = run::parse_replay_format(opt.format, SourcePos{"--format"});
+  mapping::Mapping mapping = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot.empty() ? protocol::kDefaultRobot : opt.robot)
+                                        : mapping::load_mapping(opt.mapping);
+  auto script = input::checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
                                                        : TextReader::open(opt.events, kEventScriptLimits));
 
-  ScriptPlayer player(script);
-  Engine engine(std::move(mapping), EngineOptions{opt.weapons, code});
+  input::ScriptPlayer player(script);
+  mapping::Engine engine(std::move(mapping), mapping::EngineOptions{opt.weapons, code});
   write_frames(opt, [&](std::ostream& out) {
-    replay(player, engine, clock, [&](std::int64_t t, const DataBytes& data) { write_frame(out, format, t, data); });
+    run::replay(player, engine, clock, [&](std::int64_t t, const protocol::DataBytes& data) { run::write_frame(out, format, t, data); });
   });
 }
 
@@ -82,7 +82,7 @@ void add_replay_command(CLI::App& app, int& exit_code) {
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
                   "before the first frame is written")
       ->required();
-  cmd->add_option("--robot", opt->robot, "robot type (" + robot_list() + "); default HD1");
+  cmd->add_option("--robot", opt->robot, "robot type (" + protocol::robot_list() + "); default HD1");
   cmd->add_option("--mapping", opt->mapping, "mapping file to use instead of a robot's shipped one");
   cmd->add_option("--code", opt->code, "dip-switch code for byte 11, in hex")->default_str("01");
   cmd->add_option("--rate", opt->rate, "frames per second (at most 26.666: 360-bit frames at 9600 baud)")

@@ -10,21 +10,22 @@
 #include <optional>
 #include <string>
 
-#include "andros/config.hpp"
-#include "andros/error.hpp"
-#include "andros/io/bridge.hpp"
-#include "andros/io/job_control.hpp"
-#include "andros/io/serial_link.hpp"
-#include "andros/io/shutdown_signals.hpp"
-#include "andros/io/sim_vehicle.hpp"
-#include "andros/io/status_display.hpp"
-#include "andros/io/tcp_link.hpp"
-#include "andros/parse.hpp"
-#include "andros/robots.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/job_control.hpp"
+#include "andros/base/shutdown_signals.hpp"
+#include "andros/base/text.hpp"
+#include "andros/cli/config.hpp"
+#include "andros/link/serial_link.hpp"
+#include "andros/link/sim_vehicle.hpp"
+#include "andros/link/tcp_link.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/run/bridge.hpp"
+#include "andros/run/engine_frames.hpp"
+#include "andros/view/run_status.hpp"
+#include "andros/view/status_display.hpp"
 #include "commands.hpp"
-#include "engine_frames.hpp"
 #include "run_input.hpp"
-#include "run_status.hpp"
 #include "sdl_options.hpp"
 
 namespace andros::cli {
@@ -42,7 +43,7 @@ struct RunOptions {
   std::string rate;
   std::string input;
   bool weapons = false;
-  SdlInputOptions sdl;  ///< --controller, --controller-db
+  input::SdlInputOptions sdl;  ///< --controller, --controller-db
   CLI::App* cmd = nullptr;
 };
 
@@ -63,9 +64,9 @@ RunConfig resolve_config(const RunOptions& opt) {
   }
   const auto given = [&](const char* flag) { return opt.cmd->count(flag) > 0; };
   if (given("--robot")) {
-    const auto robot = canonical_robot(opt.robot);
+    const auto robot = protocol::canonical_robot(opt.robot);
     if (!robot) {
-      throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(opt.robot) + " (one of " + robot_list() + ")");
+      throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(opt.robot) + " (one of " + protocol::robot_list() + ")");
     }
     config.robot = *robot;
     config.mapping.clear();  // a robot on the command line beats a mapping from the file
@@ -89,28 +90,28 @@ RunConfig resolve_config(const RunOptions& opt) {
   return config;
 }
 
-std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicle* sim) {
-  if (sim != nullptr) return std::make_unique<io::SerialLink>(sim->port_path(), config.baud);
-  if (config.port.starts_with("tcp:")) return std::make_unique<io::TcpLink>(io::parse_tcp_spec(config.port, config.port_pos));
-  io::check_serial_port(config.port, config.port_pos);
-  return std::make_unique<io::SerialLink>(config.port, config.baud);
+std::unique_ptr<link::Link> make_link(const RunConfig& config, const link::SimVehicle* sim) {
+  if (sim != nullptr) return std::make_unique<link::SerialLink>(sim->port_path(), config.baud);
+  if (config.port.starts_with("tcp:")) return std::make_unique<link::TcpLink>(link::parse_tcp_spec(config.port, config.port_pos));
+  link::check_serial_port(config.port, config.port_pos);
+  return std::make_unique<link::SerialLink>(config.port, config.baud);
 }
 
-io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& job) {
-  if (signals.requested()) return io::Request::kStop;
+run::Request poll_requests(ShutdownSignals& signals, JobControlSignals& job) {
+  if (signals.requested()) return run::Request::kStop;
   switch (job.poll()) {
-    case io::JobControlSignals::Event::kStopAsked: return io::Request::kSuspend;
-    case io::JobControlSignals::Event::kContinued:
+    case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;
+    case JobControlSignals::Event::kContinued:
       // Stopped by a SIGSTOP the loop could not answer: no neutral frames went first.
       spdlog::info("continued (SIGCONT): not enabled until the deadman is pressed again");
-      return io::Request::kResumed;
-    case io::JobControlSignals::Event::kNone: break;
+      return run::Request::kResumed;
+    case JobControlSignals::Event::kNone: break;
   }
-  return io::Request::kNone;
+  return run::Request::kNone;
 }
 
 /// The error line for neutral frames that did not reach the link.
-std::string failed_neutral_frames(const io::ShutdownReport& shut, const std::string& link) {
+std::string failed_neutral_frames(const run::ShutdownReport& shut, const std::string& link) {
   const std::string what =
       shut.neutral_sent < shut.neutral_wanted
           ? "only " + std::to_string(shut.neutral_sent) + " of " + std::to_string(shut.neutral_wanted) +
@@ -121,8 +122,8 @@ std::string failed_neutral_frames(const io::ShutdownReport& shut, const std::str
 
 /// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
 /// out, then stop until continued (fg, bg, SIGCONT), and redraw.
-void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay>& display,
-                     const io::ShutdownReport& neutral, const std::string& link) {
+void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>& display,
+                     const run::ShutdownReport& neutral, const std::string& link) {
   if (display) display->stop();
   if (neutral.ok()) {
     spdlog::info("suspended (SIG{}): neutral frames sent, link closed", sigabbrev_np(job.stop_signal()));
@@ -144,10 +145,13 @@ int run_bridge(const RunOptions& opt) {
   // data commands keep the default: `frame decode | head` just ends.)
   std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
-  io::ShutdownSignals signals;
-  io::JobControlSignals job;
-  const auto frames = make_engine_frames(config);
-  std::unique_ptr<InputSource> input;
+  ShutdownSignals signals;
+  JobControlSignals job;
+  mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
+                                                    : mapping::load_mapping(config.mapping);
+  const auto frames = run::make_engine_frames(
+      mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
+  std::unique_ptr<input::InputSource> input;
   try {
     input = make_input_source(config.input, opt.sdl, [&signals] { return signals.requested(); });
   } catch (const ReadStopped&) {
@@ -156,29 +160,29 @@ int run_bridge(const RunOptions& opt) {
                  sigabbrev_np(signals.signal_number()));
     return kExitOk;
   }
-  std::unique_ptr<io::SimVehicle> sim;
-  if (config.port == kSimPort) sim = std::make_unique<io::SimVehicle>(config.code);
+  std::unique_ptr<link::SimVehicle> sim;
+  if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());
 
-  io::RunStatus initial;
+  view::RunStatus initial;
   initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == "sdl" ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
-  RunStatusBoard board(initial, *link, *frames, sim.get());
-  std::optional<io::StatusDisplay> display;
-  if (io::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
+  view::RunStatusBoard board(initial, *link, *frames, sim.get());
+  std::optional<view::StatusDisplay> display;
+  if (view::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
-  io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
-  const io::RunControl control{
+  run::Bridge bridge(*input, *frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  const run::RunControl control{
       [&] { return poll_requests(signals, job); },
       [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
-  bridge.run(control, [&board](const io::TickReport& r) { board.observe(r); });
+  bridge.run(control, [&board](const run::TickReport& r) { board.observe(r); });
   display.reset();
 
   const auto end = board.snapshot();
@@ -214,7 +218,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--config", opt->config,
                   "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"
                   "then /etc/andros-bridge/andros-bridge.conf, if present)");
-  cmd->add_option("--robot", opt->robot, "robot type: " + robot_list() + " (default HD1)");
+  cmd->add_option("--robot", opt->robot, "robot type: " + protocol::robot_list() + " (default HD1)");
   cmd->add_option("--mapping", opt->mapping, "a mapping file instead of the robot's shipped one");
   cmd->add_option("--port", opt->port, "PATH (serial device), sim (default) or tcp:HOST:PORT");
   cmd->add_option("--baud", opt->baud, "9600 (default), 19200, 38400, 57600 or 115200");

@@ -10,9 +10,9 @@
 #include <exception>
 #include <string>
 
-#include "andros/error.hpp"
-#include "andros/io/log_sink.hpp"
+#include "andros/base/error.hpp"
 #include "andros/version.hpp"
+#include "andros/view/log_sink.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -20,7 +20,7 @@ namespace {
 // Output that never reached its file is a failure even when the command went
 // well (as coreutils' close_stdout): a full disk must not pass for a complete
 // capture. An error already reported keeps its own line and code.
-int check_stdout(int exit_code, andros::io::FdLogSink& log) {
+int check_stdout(int exit_code, andros::view::FdLogSink& log) {
   errno = 0;
   const bool flushed = std::fflush(stdout) == 0;  // std::cout writes through stdout's buffer (synced)
   const int error = errno;
@@ -59,7 +59,7 @@ void keep_standard_descriptors_taken() {
 }
 
 /// Parses (which runs the chosen command) and turns what escapes into a line and a code.
-int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::io::FdLogSink& log) {
+int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view::FdLogSink& log) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
   // blocks every signal, SIGPIPE included): stdout carries data (frame
   // decode, `record -o -`) or the status view. Error lines take the same
   // queue, so they keep their order.
-  const auto log = andros::io::install_stderr_log();
+  const auto log = andros::view::install_stderr_log();
 
   CLI::App app{
       "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"

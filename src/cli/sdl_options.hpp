@@ -3,12 +3,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "andros/sdl_input.hpp"
+#include "andros/input/sdl_input.hpp"
 
 namespace andros::cli {
 
 /// Adds --controller-db FILE to cmd, filling opts.controller_db.
-inline void add_controller_db_option(CLI::App* cmd, SdlInputOptions& opts) {
+inline void add_controller_db_option(CLI::App* cmd, input::SdlInputOptions& opts) {
   cmd->add_option("--controller-db", opts.controller_db,
                   "a file of extra SDL controller mappings (gamecontrollerdb.txt format); the\n"
                   "SDL_GAMECONTROLLERCONFIG environment variable is read as well")
@@ -18,7 +18,7 @@ inline void add_controller_db_option(CLI::App* cmd, SdlInputOptions& opts) {
 /// Adds --controller INDEX|NAME|GUID and --controller-db FILE to cmd, filling
 /// opts. opts must outlive parsing (hold it in a shared_ptr like the other
 /// commands' options).
-inline void add_sdl_options(CLI::App* cmd, SdlInputOptions& opts) {
+inline void add_sdl_options(CLI::App* cmd, input::SdlInputOptions& opts) {
   cmd->add_option("--controller", opts.controller,
                   "which controller to use when several are attached: INDEX (as 'andros-bridge\n"
                   "controllers' lists them), GUID (32 hex digits) or NAME (case-insensitive, a\n"

@@ -8,18 +8,18 @@
 #include <string>
 #include <variant>
 
-#include "andros/mapping.hpp"
+#include "andros/mapping/model.hpp"
 
 namespace andros::test {
 
 /// The binding driving the centred byte `analog` in `layer` ("" = base): the
 /// layer's own, else the base's unless a layer binding takes its axis.
-inline const Binding* centre_driver(const Mapping& m, const std::string& layer, SignalId analog) {
-  const auto drives = [&](const Binding& b) {
-    const auto* a = std::get_if<AxisBinding>(&b.rule);
+inline const mapping::Binding* centre_driver(const mapping::Mapping& m, const std::string& layer, protocol::SignalId analog) {
+  const auto drives = [&](const mapping::Binding& b) {
+    const auto* a = std::get_if<mapping::AxisBinding>(&b.rule);
     return a != nullptr && a->analog == analog;
   };
-  const Binding* base = nullptr;
+  const mapping::Binding* base = nullptr;
   for (const auto& b : m.bindings) {
     if (drives(b)) base = &b;
   }
@@ -28,7 +28,7 @@ inline const Binding* centre_driver(const Mapping& m, const std::string& layer, 
     for (const auto& b : l.bindings) {
       if (drives(b)) return &b;
       if (base == nullptr) continue;
-      const auto axis = std::get<AxisBinding>(base->rule).axis;
+      const auto axis = std::get<mapping::AxisBinding>(base->rule).axis;
       for (const auto& u : b.inputs) {
         if (u.key == axis) return nullptr;
       }
@@ -46,11 +46,11 @@ class CentreWatch {
   /// enabled or a new pad appeared since the last frame, `axis_value(key)`
   /// reads a raw axis.
   template <typename AxisValue>
-  bool must_centre(const Binding* now, bool restart, const AxisValue& axis_value) {
+  bool must_centre(const mapping::Binding* now, bool restart, const AxisValue& axis_value) {
     if (now == nullptr || restart || now != driver_) resting_ = false;
     driver_ = now;
     if (!resting_ && now != nullptr) {
-      const auto& a = std::get<AxisBinding>(now->rule);
+      const auto& a = std::get<mapping::AxisBinding>(now->rule);
       const int v = axis_value(a.axis);
       const double x = v >= 0 ? v / 32767.0 : v / 32768.0;
       resting_ = (x < 0 ? -x : x) <= a.shape.deadzone;
@@ -59,7 +59,7 @@ class CentreWatch {
   }
 
  private:
-  const Binding* driver_ = nullptr;
+  const mapping::Binding* driver_ = nullptr;
   bool resting_ = false;
 };
 

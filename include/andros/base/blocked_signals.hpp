@@ -1,0 +1,31 @@
+#pragma once
+/// A set of signals blocked in the calling thread (and so in every thread it
+/// starts later) and taken synchronously, never handled: the one mechanism
+/// behind ShutdownSignals and JobControlSignals.
+
+#include <signal.h>
+
+#include <initializer_list>
+
+namespace andros {
+
+class BlockedSignals {
+ public:
+  /// Blocks the signals. Construct before any thread starts.
+  explicit BlockedSignals(std::initializer_list<int> signals);
+  /// Discards what is still pending (it was answered already), then unblocks.
+  ~BlockedSignals();
+  BlockedSignals(const BlockedSignals&) = delete;
+  BlockedSignals& operator=(const BlockedSignals&) = delete;
+
+  /// One pending signal of the set, or 0 when none. Never blocks.
+  int take();
+  /// Drops every pending signal of the set, or of `only` among them.
+  void discard(std::initializer_list<int> only = {});
+
+ private:
+  sigset_t set_{};
+  sigset_t old_{};
+};
+
+}  // namespace andros

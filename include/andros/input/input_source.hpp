@@ -1,0 +1,27 @@
+#pragma once
+/// Where controller events come from: SDL (live) or an event script played in
+/// real time. The run loop calls pump() once per tick, right after the tick's
+/// time is reached, so the state a frame uses is never older than its tick and
+/// nothing polls between ticks.
+
+#include <cstdint>
+
+#include "andros/input/snapshot.hpp"
+
+namespace andros::input {
+
+class InputSource {
+ public:
+  virtual ~InputSource() = default;
+
+  /// Applies to state every event that happened up to now_ms (ms since the
+  /// run started). Never blocks for long and never throws at run time: a
+  /// source that loses its device reports a disconnect event instead.
+  virtual void pump(InputState& state, std::int64_t now_ms) = 0;
+
+  /// True when the source has nothing more to give (the end of a script).
+  /// A live controller source never finishes.
+  [[nodiscard]] virtual bool finished(std::int64_t now_ms) const = 0;
+};
+
+}  // namespace andros::input

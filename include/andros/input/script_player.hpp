@@ -1,0 +1,35 @@
+#pragma once
+/// Plays an event script into an InputState against a clock it is told, not
+/// one it reads: replay drives it with a virtual clock, `run --input` with
+/// the scheduler's tick times. Contract section 3's timing lives here once.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "andros/input/events.hpp"
+#include "andros/input/snapshot.hpp"
+
+namespace andros::input {
+
+class ScriptPlayer {
+ public:
+  /// Plays text, which must outlive the player.
+  explicit ScriptPlayer(TextReader& text) : reader_(text) {}
+
+  /// Applies every event with a time <= t_ms (the state the frame at t_ms
+  /// reflects). Parse errors surface here as InputError.
+  void advance_to(std::int64_t t_ms, InputState& state);
+
+  /// True once the frame at t_ms is the script's last: the first frame time
+  /// >= the `end` time (or the last event's time, for a script with no `end`).
+  [[nodiscard]] bool finished_at(std::int64_t t_ms) const;
+
+ private:
+  EventReader reader_;
+  std::optional<InputEvent> pending_;  ///< read but not yet due
+  bool exhausted_ = false;
+  std::int64_t last_t_ = 0;
+};
+
+}  // namespace andros::input

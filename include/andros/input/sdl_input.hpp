@@ -1,0 +1,92 @@
+#pragma once
+/// The live controller: SDL2's game-controller API for pads SDL knows, its
+/// joystick API for the rest, turned into InputEvents for one chosen device.
+/// Single-threaded: construct it (SDL_Init happens here) before any thread
+/// starts, and call pump()/poll() from one thread only.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "andros/base/text_file.hpp"
+#include "andros/input/input_source.hpp"
+#include "andros/input/snapshot.hpp"
+
+namespace andros::input {
+
+/// How to choose the controller and which extra SDL mappings to load.
+struct SdlInputOptions {
+  /// INDEX (a position in `andros-bridge controllers`), GUID (32 hex digits)
+  /// or NAME (case-insensitive, a part of the name is enough). Empty: the
+  /// first controller found.
+  std::string controller;
+  /// A file of extra SDL controller mappings (gamecontrollerdb.txt format).
+  /// Empty: none beyond SDL's own and SDL_GAMECONTROLLERCONFIG.
+  std::string controller_db;
+};
+
+/// One attached device, as `andros-bridge controllers` lists it.
+struct ControllerInfo {
+  int index = 0;              ///< SDL device index: what --controller INDEX means
+  std::string name;
+  std::string guid;           ///< 32 hex digits
+  bool game_controller = false;  ///< false: a plain joystick (numbered buttons, axes, hats)
+};
+
+/// Initialises SDL's joystick, game-controller and event subsystems for as
+/// long as it lives (reference-counted, so sessions may nest), with hints for
+/// a program without a window: background events on, SDL's own SIGINT/SIGTERM
+/// handlers off. Throws RuntimeError when SDL cannot start.
+class SdlSession {
+ public:
+  SdlSession();
+  ~SdlSession();
+  SdlSession(const SdlSession&) = delete;
+  SdlSession& operator=(const SdlSession&) = delete;
+};
+
+/// Adds the SDL mappings in a gamecontrollerdb.txt-style file (lines for other
+/// platforms are skipped). Needs a live SdlSession. Throws InputError naming
+/// FILE (unreadable) or FILE:LINE (a mapping SDL rejects, a line or the file
+/// over kControllerDbLimits), ReadStopped when stop says so.
+void load_controller_db(const std::string& path, const StopCheck& stop = {});
+
+/// The live controller as an InputSource. Only the chosen controller feeds
+/// the state; the others are ignored. A connect is followed by the device's
+/// current state, all stamped with the connect's time, so that buttons held
+/// when it appears are not presses.
+class SdlInput final : public InputSource {
+ public:
+  /// Starts SDL and loads options.controller_db, asking stop while it reads
+  /// (ReadStopped). Throws InputError for a bad selection or mapping file,
+  /// RuntimeError when SDL cannot start. Opens no device yet: the first poll() does.
+  explicit SdlInput(const SdlInputOptions& options, const StopCheck& stop = {});
+  ~SdlInput() override;
+  SdlInput(const SdlInput&) = delete;
+  SdlInput& operator=(const SdlInput&) = delete;
+
+  /// Drains SDL's queue without blocking and returns the chosen controller's
+  /// events since the last call, every one stamped now_ms (valid until the
+  /// next call). Never throws.
+  const std::vector<InputEvent>& poll(std::int64_t now_ms);
+
+  void pump(InputState& state, std::int64_t now_ms) override;
+  [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
+
+  /// "the first controller", "controller 1", "controller named 'xbox'"...
+  [[nodiscard]] std::string selection() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The SDL input source for the run loop (an SdlInput).
+std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop = {});
+
+/// The devices attached now, in SDL device-index order. Starts its own
+/// SdlSession and loads options.controller_db (so names reflect the mappings).
+std::vector<ControllerInfo> list_controllers(const SdlInputOptions& options);
+
+}  // namespace andros::input

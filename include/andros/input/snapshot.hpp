@@ -1,0 +1,105 @@
+#pragma once
+/// The controller as the mapping sees it: named inputs, the events that move
+/// them (from SDL or an event script), and the snapshot they build.
+
+#include <array>
+#include <compare>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace andros::input {
+
+/// SDL game-controller button names, in SDL_GameControllerButton order.
+inline constexpr std::array<std::string_view, 21> kPadButtonNames = {
+    "a",          "b",             "x",      "y",      "back",    "guide",   "start",
+    "leftstick",  "rightstick",    "leftshoulder", "rightshoulder", "dpup", "dpdown", "dpleft",
+    "dpright",    "misc1",         "paddle1", "paddle2", "paddle3", "paddle4", "touchpad"};
+
+/// SDL game-controller axis names, in SDL_GameControllerAxis order.
+inline constexpr std::array<std::string_view, 6> kPadAxisNames = {
+    "leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger"};
+
+/// Hat directions, in the order of the bits of SDL_HAT_* (up 1, right 2, down 4, left 8).
+inline constexpr std::array<std::string_view, 4> kHatDirectionNames = {"up", "right", "down", "left"};
+
+inline constexpr int kMaxJoystickIndex = 255;
+
+enum class InputKind : std::uint8_t {
+  kPadButton,  ///< index into kPadButtonNames
+  kPadAxis,    ///< index into kPadAxisNames
+  kJoyButton,  ///< a plain joystick's button number
+  kJoyAxis,    ///< a plain joystick's axis number
+  kHat,        ///< a hat direction as a button: index = hat * 4 + direction
+};
+
+/// One physical input. Hat directions are buttons, so that every binding that
+/// takes a button (momentary, toggle, deadman...) can take a hat direction.
+struct InputKey {
+  InputKind kind = InputKind::kPadButton;
+  std::uint16_t index = 0;
+
+  auto operator<=>(const InputKey&) const = default;
+  [[nodiscard]] bool is_button() const {
+    return kind == InputKind::kPadButton || kind == InputKind::kJoyButton || kind == InputKind::kHat;
+  }
+};
+
+/// "a" / "dpup" -> pad button, "3" -> joystick button 3, "hat0up" -> hat direction.
+std::optional<InputKey> parse_button_name(std::string_view name);
+/// "leftx" -> pad axis, "2" -> joystick axis 2.
+std::optional<InputKey> parse_axis_name(std::string_view name);
+/// The name parse_*_name reads back ("a", "3", "hat0up", "leftx").
+std::string input_name(InputKey key);
+
+struct InputEvent {
+  enum class Type : std::uint8_t { kConnect, kDisconnect, kButton, kAxis, kHat, kEnd };
+
+  std::int64_t t_ms = 0;
+  Type type = Type::kEnd;
+  InputKey key{};       ///< button or axis; for kHat, {kHat, hat * 4}
+  int value = 0;        ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
+  std::string name;     ///< controller name, for kConnect
+  int line = 0;         ///< source line in an event script, 0 when live
+};
+
+struct ButtonState {
+  bool down = false;
+  /// Presses (0 -> 1) since this connection began, not counting buttons held
+  /// at connect: a tap between two frames still shows, and a deadman held at
+  /// connect is not a fresh press.
+  std::uint32_t presses = 0;
+};
+
+/// The controller snapshot a frame is computed from.
+class InputState {
+ public:
+  /// Applies one event. Button, axis and hat events stamped with the same
+  /// time as the connect before them are the controller's state when it
+  /// appeared, not presses.
+  void apply(const InputEvent& event);
+
+  [[nodiscard]] bool connected() const { return connected_; }
+  /// Counts connects; a new value means a new controller session.
+  [[nodiscard]] std::uint32_t connection() const { return connection_; }
+  [[nodiscard]] const std::string& name() const { return name_; }
+
+  [[nodiscard]] ButtonState button(InputKey key) const;
+  [[nodiscard]] std::int16_t axis(InputKey key) const;
+  /// The hat's SDL_HAT_* mask (0 = centred).
+  [[nodiscard]] int hat(int hat_index) const;
+
+ private:
+  void set_button(InputKey key, bool down, bool initial);
+
+  bool connected_ = false;
+  std::uint32_t connection_ = 0;
+  std::int64_t connect_t_ = -1;
+  std::string name_;
+  std::map<InputKey, ButtonState> buttons_;
+  std::map<InputKey, std::int16_t> axes_;
+};
+
+}  // namespace andros::input

@@ -1,0 +1,62 @@
+#pragma once
+/// Where frames go: a serial device (or the simulator's pseudo-terminal) or a
+/// TCP serial server. A link never throws and never blocks the frame clock
+/// for long: when the far end is gone it reports so, keeps reconnecting on its
+/// own schedule, and the run loop goes on computing frames.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "andros/protocol/frame.hpp"
+
+namespace andros::link {
+
+enum class LinkState : std::uint8_t {
+  kConnecting,  ///< not open yet, or reopening after a loss
+  kUp,          ///< frames are being written
+};
+
+enum class SendResult : std::uint8_t {
+  kSent,  ///< the whole frame was handed to the driver
+  kBusy,  ///< the driver (or a TCP server, as its window shows) still held bytes: this tick skipped, so that no stale frame queues
+  kDown,  ///< no connection this tick
+};
+
+struct LinkCounters {
+  std::uint64_t sent = 0;
+  std::uint64_t busy = 0;   ///< ticks skipped because the output queue (or the server) was not empty
+  std::uint64_t down = 0;   ///< ticks with no connection
+  std::uint64_t losses = 0; ///< times an open link was lost
+};
+
+class Link {
+ public:
+  virtual ~Link() = default;
+
+  /// Sends one frame if the link can take it now; when the link is down, may
+  /// try to reconnect first (at most every few hundred ms). now_ns is the
+  /// monotonic clock, for the link's own retry timing.
+  virtual SendResult send(const protocol::Frame& frame, std::int64_t now_ns) = 0;
+
+  /// Waits, at most timeout_ms, until the bytes written have left (a serial
+  /// driver's queue is empty; a TCP server has acknowledged them); then
+  /// closes. False when they had not: the link was down, or they were still
+  /// waiting at the timeout.
+  virtual bool drain_and_close(int timeout_ms) = 0;
+
+  [[nodiscard]] virtual LinkState state() const = 0;
+  /// What the link is, for the operator ("/dev/ttyUSB0 9600 8N1", "tcp 10.0.0.5:4001").
+  [[nodiscard]] virtual const std::string& name() const = 0;
+  /// Why it is not up (the last error), empty when up.
+  [[nodiscard]] virtual const std::string& detail() const = 0;
+  [[nodiscard]] virtual const LinkCounters& counters() const = 0;
+  /// False while the far end may keep frames to deliver later (a TCP server
+  /// that stalled and has not been seen reading since): the run loop then
+  /// sends only neutral frames, so that nothing held there can move the vehicle.
+  [[nodiscard]] virtual bool motion_allowed() const { return true; }
+};
+
+std::string_view to_string(LinkState state);
+
+}  // namespace andros::link

@@ -1,0 +1,43 @@
+#pragma once
+/// The vehicle's side of the link: what it decodes from the bytes that
+/// arrive, and how regularly. The simulated vehicle and `monitor` both feed one.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "andros/protocol/decoder.hpp"
+#include "andros/timing/frame_timing.hpp"
+
+namespace andros::link {
+
+struct VehicleSnapshot {
+  std::optional<protocol::DataBytes> last;     ///< the last frame decoded, valid or not
+  bool last_valid = false;
+  std::vector<std::string> last_errors;
+  protocol::DecoderStats stats;
+  timing::TimingSummary timing;
+};
+
+class VehicleView {
+ public:
+  explicit VehicleView(std::optional<std::uint8_t> expected_code = std::nullopt)
+      : decoder_(expected_code) {}
+
+  /// Bytes that arrived at now_ns.
+  void push(std::span<const std::uint8_t> bytes, std::int64_t now_ns);
+  void finish() { decoder_.finish(); }
+  [[nodiscard]] VehicleSnapshot snapshot(std::int64_t now_ns) const;
+  [[nodiscard]] const protocol::DecoderStats& stats() const { return decoder_.stats(); }
+
+ private:
+  protocol::Decoder decoder_;
+  timing::FrameTiming timing_;
+  std::optional<protocol::DataBytes> last_;
+  bool last_valid_ = false;
+  std::vector<std::string> last_errors_;
+};
+
+}  // namespace andros::link

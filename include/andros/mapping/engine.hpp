@@ -1,0 +1,101 @@
+#pragma once
+/// The mapping engine: a pure function of (input snapshot, its own previous
+/// state, tick time) to the frame's data bytes. No SDL, no clock reads, no I/O.
+/// The safety rules (docs/mapping.md) are applied in one place, the rest rule
+/// before the bindings and apply_safety() after them, so that no mapping can
+/// bypass them.
+
+#include <bitset>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "andros/input/snapshot.hpp"
+#include "andros/mapping/model.hpp"
+#include "andros/mapping/safety.hpp"
+#include "andros/protocol/frame.hpp"
+
+namespace andros::mapping {
+
+struct EngineOptions {
+  bool weapons = false;       ///< --weapons / weapons=enabled
+  std::uint8_t code = 0x01;   ///< byte 11, the dip-switch code
+};
+
+/// Why the engine is (not) enabled, for the operator's status view and logs.
+enum class EnableState : std::uint8_t {
+  kEnabled,
+  kNoController,     ///< no controller connected
+  kDeadmanReleased,  ///< the deadman is not held
+  kDeadmanNotFresh,  ///< held since connect or start-up: release and press again
+};
+
+std::string_view describe(EnableState state);
+
+struct EngineStatus {
+  EnableState enable = EnableState::kNoController;
+  std::string layer;  ///< the active layer's name ("" for the base layer)
+  std::vector<input::InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
+};
+
+class Engine {
+ public:
+  /// Runs validate(mapping, false) and throws its InputError: a mapping built
+  /// by hand gets the same checks as a loaded one.
+  Engine(Mapping mapping, EngineOptions options);
+
+  /// One tick at time now_ms (ms since start, non-decreasing): the data bytes
+  /// of the frame to send. Always a frame that passes validation. The first
+  /// call is start-up: deadman presses counted before it are not fresh.
+  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms);
+
+  /// Makes the next step a start-up again (after the process was paused):
+  /// presses made before it are history, the deadman needs a fresh press.
+  void restart() { started_ = false; }
+
+  /// The neutral frame for the current analog/selector state (shutdown, link
+  /// loss): every motion and weapon bit 0, drive and pivot at centre.
+  [[nodiscard]] protocol::DataBytes neutral() const;
+
+  [[nodiscard]] const EngineStatus& status() const;
+  [[nodiscard]] const Mapping& mapping() const;
+
+ private:
+  void start_session(const input::InputState& input, bool at_start_up);
+  void clear_toggles();
+  [[nodiscard]] bool held(const input::InputState& input, input::InputKey key, bool invert = false,
+                          double threshold = kDefaultThreshold) const;
+  [[nodiscard]] std::uint32_t new_presses(const input::InputState& input, input::InputKey key) const;
+  [[nodiscard]] bool deadman_held(const input::InputState& input) const;
+  [[nodiscard]] EnableState enable_state(const input::InputState& input);
+  void update_layer(const input::InputState& input, bool enabled);
+  void apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
+             std::bitset<protocol::kSignalCount>& armed);
+  [[nodiscard]] std::size_t slot(BindingRef ref) const;
+  [[nodiscard]] protocol::ControlState resting_state() const;
+
+  Mapping mapping_;
+  EngineOptions options_;
+  protocol::FrameBuilder builder_;
+  EngineStatus status_;
+  std::vector<BindingRef> all_;                     ///< every binding; its slot is its index here
+  std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
+  std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
+  std::vector<input::InputKey> buttons_;                   ///< every button the mapping reads
+  // State carried from tick to tick.
+  bool started_ = false;
+  std::uint32_t connection_ = 0;
+  std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
+  std::uint32_t deadman_base_ = 0;       ///< deadman presses that are not fresh
+  bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
+  int layer_ = -1;                       ///< active layer, -1 = base
+  int toggled_layer_ = -1;               ///< layer switched on by a toggle button
+  std::bitset<protocol::kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
+  RestRule rest_;
+  std::vector<int> selector_;            ///< per binding slot: a selector's position
+  std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
+  std::int64_t last_ms_ = 0;
+};
+
+}  // namespace andros::mapping

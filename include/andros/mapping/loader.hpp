@@ -1,0 +1,34 @@
+#pragma once
+/// Reading mapping files (docs/mapping.md) and finding a robot's file.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "andros/mapping/model.hpp"
+
+namespace andros::mapping {
+
+/// Loads a mapping file and the chain of files it `extends`, merged, without
+/// validate(). Every error is an InputError at FILE:LINE:COL.
+Mapping load_mapping_file(const std::filesystem::path& file);
+
+/// Loads a robot's mapping from an explicit file (`--mapping FILE`) and
+/// validates it; it must name a robot.
+Mapping load_mapping(const std::filesystem::path& file);
+
+/// Where `--robot NAME` looks, in order: $XDG_CONFIG_HOME/andros-bridge/mappings
+/// (default ~/.config/...), the source tree's mappings/ when it exists, the
+/// installed mappings/.
+std::vector<std::filesystem::path> mapping_search_path();
+
+/// The first `<robot in lower case>.yaml` on the search path. Throws
+/// InputError for an unknown robot or when no directory has the file.
+std::filesystem::path find_robot_mapping(std::string_view robot,
+                                         const std::vector<std::filesystem::path>& search_path);
+
+/// Finds, loads and validates a robot type's mapping; its `robot` must match.
+Mapping load_robot_mapping(std::string_view robot);
+
+}  // namespace andros::mapping

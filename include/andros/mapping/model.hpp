@@ -1,0 +1,163 @@
+#pragma once
+/// A robot's mapping: which controller input drives which switchbox signal.
+/// Plain data, filled by the YAML loader (mapping_loader.hpp) or by hand in a
+/// test, and checked by validate() before an Engine runs it.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "andros/base/error.hpp"
+#include "andros/input/snapshot.hpp"
+#include "andros/protocol/signals.hpp"
+
+namespace andros::mapping {
+
+inline constexpr int kDefaultCenter = 128;
+inline constexpr std::uint8_t kDefaultByte12 = 0x00;
+inline constexpr std::uint8_t kDefaultBattery = 0xCC;
+inline constexpr double kDefaultThreshold = 0.5;
+
+/// How a stick or trigger value becomes a number in [-1, 1] (docs/mapping.md).
+struct AxisShape {
+  bool invert = false;
+  double deadzone = 0.0;
+  double expo = 0.0;
+};
+
+/// A bit signal that is 1 while a button is held (or, with toggle, flips on
+/// each press). The input may be an axis: held when its value >= threshold
+/// (after invert).
+struct ButtonBinding {
+  protocol::SignalId signal = 0;
+  input::InputKey input{};
+  bool toggle = false;
+  bool invert = false;
+  double threshold = kDefaultThreshold;
+};
+
+/// A weapon signal: 1 while the button and the arming input are both held
+/// (and weapons are enabled for the run, and the deadman is held).
+struct WeaponBinding {
+  protocol::SignalId signal = 0;
+  input::InputKey input{};
+  std::optional<input::InputKey> arm;  ///< required; validate() rejects a missing one
+};
+
+/// One axis drives two signals: the first at value <= -threshold, the second
+/// at value >= +threshold.
+struct PairBinding {
+  std::array<protocol::SignalId, 2> signals{};
+  input::InputKey axis{};
+  bool invert = false;
+  double threshold = kDefaultThreshold;
+};
+
+/// An axis drives a whole byte: drive/pivot around the centre, or a
+/// trigger spanning arm_speed/light from 0 to 255.
+struct AxisBinding {
+  protocol::SignalId analog = 0;
+  input::InputKey axis{};
+  AxisShape shape{};
+};
+
+/// Two buttons move a level byte (arm_speed, light) at rate units per second.
+struct KnobBinding {
+  protocol::SignalId analog = 0;
+  input::InputKey increase{};
+  input::InputKey decrease{};
+  int rate = 0;
+  std::optional<int> initial;  ///< the byte's value at start-up
+};
+
+/// A rotary switch: each press of next (or prev) moves to the next (previous)
+/// position, wrapping; each position sets its selector signals.
+struct SelectorBinding {
+  std::string name;
+  input::InputKey next{};
+  std::optional<input::InputKey> prev;
+  std::vector<std::vector<protocol::SignalId>> positions;
+  int initial = 0;
+};
+
+using BindingRule =
+    std::variant<ButtonBinding, WeaponBinding, PairBinding, AxisBinding, KnobBinding, SelectorBinding>;
+
+/// An input a binding reads, and where the file names it (for errors).
+struct InputUse {
+  input::InputKey key{};
+  SourcePos pos;
+};
+
+struct Binding {
+  BindingRule rule;
+  SourcePos pos;                ///< the binding's first line
+  SourcePos target_pos;         ///< where its signal/analog/selector is named
+  std::vector<InputUse> inputs; ///< inputs it is triggered by (not `arm`)
+  std::optional<InputUse> arm;  ///< a weapon's arming input
+};
+
+/// A second set of bindings, active while its button is held (hold) or after
+/// it was pressed (toggle; pressed again returns to the base layer). Its
+/// bindings replace the base bindings that use the same inputs or drive the
+/// same analog byte; the other base bindings stay active.
+struct Layer {
+  std::string name;
+  SourcePos pos;
+  InputUse input{};
+  bool toggle = false;
+  std::vector<Binding> bindings;
+};
+
+/// When drive_brake is 1 (it is always 0 while not enabled).
+enum class BrakeMode : std::uint8_t {
+  kEnabled,  ///< released whenever the engine is enabled (the default)
+  kMoving,   ///< released only while drive or pivot is off centre
+};
+
+struct Mapping {
+  std::string file;                  ///< the file it was loaded from
+  std::optional<std::string> robot;  ///< canonical robot type; none for a base file
+  SourcePos robot_pos;
+  int center = kDefaultCenter;
+  std::uint8_t byte12 = kDefaultByte12;
+  std::uint8_t battery = kDefaultBattery;
+  std::optional<InputUse> deadman;
+  BrakeMode brake = BrakeMode::kEnabled;
+  std::vector<Binding> bindings;  ///< the base layer
+  std::vector<Layer> layers;
+};
+
+/// Checks the rules that span bindings (docs/mapping.md): an input bound
+/// twice in a layer, two bindings on one analog byte, a weapon without arm,
+/// targets a binding kind cannot drive, a signal both toggled and momentary
+/// (anywhere in the mapping), a missing deadman or robot. Throws
+/// InputError at the offending FILE:LINE:COL. A base mapping (require_robot
+/// false) may lack robot and deadman.
+void validate(const Mapping& mapping, bool require_robot = true);
+
+/// A binding by position: layer -1 is the base list, else mapping.layers[layer].
+struct BindingRef {
+  int layer = -1;
+  std::size_t index = 0;
+};
+
+const Binding& binding_at(const Mapping& mapping, BindingRef ref);
+
+/// Every binding, base first, then each layer's in order.
+std::vector<BindingRef> all_bindings(const Mapping& mapping);
+
+/// The analog byte a binding drives, if it drives one.
+std::optional<protocol::SignalId> analog_target(const Binding& binding);
+
+/// True when b replaces a (or a b): they share an input or drive the same analog byte.
+bool bindings_conflict(const Binding& a, const Binding& b);
+
+/// The bindings in effect in a layer (-1 = base): the layer's own, then the
+/// base bindings it does not replace.
+std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer);
+
+}  // namespace andros::mapping

@@ -1,0 +1,75 @@
+#pragma once
+/// The safety rules of docs/mapping.md ("What a mapping cannot change"), in
+/// one place. The engine passes every frame through apply_safety() after the
+/// bindings, and every input through a RestRule before them, so no mapping can
+/// bypass them.
+
+#include <bitset>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "andros/input/snapshot.hpp"
+#include "andros/mapping/model.hpp"
+#include "andros/protocol/frame.hpp"
+
+namespace andros::mapping {
+
+struct SafetyContext {
+  bool enabled = false;   ///< connected + deadman held + pressed fresh
+  bool weapons = false;   ///< weapons enabled for the run
+  std::bitset<protocol::kSignalCount> armed;  ///< weapon signals whose arming input is held
+  int center = kDefaultCenter;
+  BrakeMode brake = BrakeMode::kEnabled;
+};
+
+/// Not enabled: motion and weapon bits 0, drive/pivot at centre, selectors,
+/// levels and constants unchanged. Enabled: safety = 1, drive_brake = 1 (or
+/// only while moving), weapons only when enabled for the run and armed.
+/// Always: an opposing pair asked for both ways sends neither.
+protocol::ControlState apply_safety(protocol::ControlState state, const SafetyContext& context);
+
+/// No motion from a change of meaning. When the bridge becomes enabled (or a
+/// new controller session is enabled), or the active layer changes which
+/// bindings read an input, that input is held back until it is seen at rest
+/// by every binding now reading it: a button released, an axis inside its
+/// deadzone (drive, pivot, a level) or below its threshold (a pair, an axis as
+/// a button or arming input). Presses counted up to that frame are dropped; a
+/// press after it (released in between) acts. The deadman and the layer
+/// buttons are not held back: they change meanings, they do not move anything.
+class RestRule {
+ public:
+  explicit RestRule(const Mapping& mapping);
+
+  /// Once per tick, after the enable state and the active layer (-1 = base)
+  /// are known and before any binding reads the input. Drops the presses of
+  /// each input whose meaning changed by moving its `seen` count up to now.
+  void update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen);
+
+  /// True while `key` may not act: its meaning changed and it has not been at rest since.
+  [[nodiscard]] bool held_back(input::InputKey key) const { return held_.contains(key); }
+
+  /// The inputs held back now (EngineStatus::held_back).
+  [[nodiscard]] std::vector<input::InputKey> held_back_inputs() const;
+
+ private:
+  /// What "at rest" is for one binding reading one input.
+  struct Reader {
+    std::pair<int, std::size_t> binding;  ///< layer, index: which binding reads it
+    enum class Rest : std::uint8_t { kReleased, kBelow, kInsideBand, kInsideDeadzone, kNotPositive } rest;
+    bool invert = false;
+    double limit = 0.0;  ///< threshold or deadzone
+  };
+  using Readers = std::map<input::InputKey, std::vector<Reader>>;
+
+  [[nodiscard]] static bool at_rest(const input::InputState& input, input::InputKey key, const std::vector<Reader>& readers);
+
+  std::vector<Readers> readers_;  ///< [layer + 1]: every input the layer's bindings read
+  std::map<input::InputKey, std::uint32_t> held_;  ///< held-back input -> its press count when held back
+  bool enabled_ = false;
+  std::uint32_t connection_ = 0;
+  int layer_ = -1;
+};
+
+}  // namespace andros::mapping

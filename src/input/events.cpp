@@ -1,0 +1,174 @@
+#include "andros/input/events.hpp"
+
+#include <cstdio>
+#include <string_view>
+
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
+
+namespace andros::input {
+namespace {
+
+struct Token {
+  std::string_view text;
+  int column;  // 1-based
+};
+
+std::vector<Token> split(std::string_view line) {
+  std::vector<Token> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    if (i >= line.size()) break;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return tokens;
+}
+
+constexpr std::array<std::pair<std::string_view, int>, 9> kHatValues = {{
+    {"centered", 0}, {"up", 1}, {"right", 2}, {"down", 4}, {"left", 8},
+    {"rightup", 3}, {"rightdown", 6}, {"leftup", 9}, {"leftdown", 12},
+}};
+
+}  // namespace
+
+std::optional<InputEvent> EventReader::next() {
+  using T = InputEvent::Type;
+  while (const auto raw = text_.next_line()) {
+    std::string_view line = *raw;
+    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    const auto tokens = split(line);
+    if (tokens.empty()) continue;
+
+    const auto at = [&](const Token& t) { return SourcePos{text_.name(), text_.line_number(), t.column}; };
+    const auto fail = [&](const Token& t, const std::string& what) -> InputError {
+      return InputError(at(t), what);
+    };
+    if (ended_) throw fail(tokens[0], "event after 'end'");
+
+    InputEvent ev;
+    ev.line = text_.line_number();
+    ev.t_ms = parse_integer(tokens[0].text, 0, INT64_MAX / 2, "time", at(tokens[0]));
+    if (ev.t_ms > kMaxScriptMs) {
+      throw fail(tokens[0], "time " + std::to_string(ev.t_ms) + " ms is past 24 h (" + std::to_string(kMaxScriptMs) +
+                                " ms), the longest an event script may last");
+    }
+    if (ev.t_ms < last_t_) {
+      throw fail(tokens[0], "time " + std::to_string(ev.t_ms) + " ms goes backwards (previous event at " +
+                                std::to_string(last_t_) + " ms)");
+    }
+    if (tokens.size() < 2) throw fail(tokens[0], "missing event after the time");
+    const auto& kind = tokens[1];
+    const auto want_args = [&](std::size_t n, const char* usage) {
+      if (tokens.size() != n + 2) {
+        const auto& where = tokens.size() > n + 2 ? tokens[n + 2] : kind;
+        throw fail(where, std::string("expected '") + usage + "'");
+      }
+    };
+
+    if (kind.text == "connect") {
+      ev.type = T::kConnect;
+      if (tokens.size() > 2) {
+        ev.name = std::string(line.substr(static_cast<std::size_t>(tokens[2].column - 1)));
+        while (!ev.name.empty() && (ev.name.back() == ' ' || ev.name.back() == '\t' || ev.name.back() == '\r')) {
+          ev.name.pop_back();
+        }
+        if (ev.name.size() > kMaxControllerNameBytes) {
+          throw fail(tokens[2], "controller name longer than " + std::to_string(kMaxControllerNameBytes) + " bytes");
+        }
+      }
+    } else if (kind.text == "disconnect") {
+      want_args(0, "disconnect");
+      ev.type = T::kDisconnect;
+    } else if (kind.text == "end") {
+      want_args(0, "end");
+      ev.type = T::kEnd;
+      ended_ = true;
+    } else if (kind.text == "button") {
+      want_args(2, "button NAME 0|1");
+      ev.type = T::kButton;
+      const auto key = parse_button_name(tokens[2].text);
+      if (!key || key->kind == InputKind::kHat) {
+        throw fail(tokens[2], "unknown button " + quote(tokens[2].text));
+      }
+      ev.key = *key;
+      ev.value = static_cast<int>(parse_integer(tokens[3].text, 0, 1, "button value", at(tokens[3])));
+    } else if (kind.text == "axis") {
+      want_args(2, "axis NAME VALUE");
+      ev.type = T::kAxis;
+      const auto key = parse_axis_name(tokens[2].text);
+      if (!key) throw fail(tokens[2], "unknown axis " + quote(tokens[2].text));
+      ev.key = *key;
+      ev.value = static_cast<int>(parse_integer(tokens[3].text, -32768, 32767, "axis value", at(tokens[3])));
+    } else if (kind.text == "hat") {
+      want_args(2, "hat N centered|up|down|left|right|leftup|leftdown|rightup|rightdown");
+      ev.type = T::kHat;
+      const auto hat = parse_integer(tokens[2].text, 0, kMaxJoystickIndex / 4, "hat number", at(tokens[2]));
+      ev.key = InputKey{InputKind::kHat, static_cast<std::uint16_t>(hat * 4)};
+      bool found = false;
+      for (const auto& [name, mask] : kHatValues) {
+        if (name == tokens[3].text) {
+          ev.value = mask;
+          found = true;
+        }
+      }
+      if (!found) throw fail(tokens[3], "unknown hat position " + quote(tokens[3].text));
+    } else {
+      throw fail(kind, "unknown event " + quote(kind.text) +
+                           " (expected connect, disconnect, button, axis, hat or end)");
+    }
+    last_t_ = ev.t_ms;
+    return ev;
+  }
+  return std::nullopt;
+}
+
+std::vector<InputEvent> parse_event_script(const std::string& text, const std::string& file_name) {
+  TextReader in(text, file_name, kEventScriptLimits);
+  EventReader reader(in);
+  std::vector<InputEvent> events;
+  while (auto ev = reader.next()) events.push_back(std::move(*ev));
+  return events;
+}
+
+TextReader checked_event_script(TextReader text) {
+  if (!text.can_rewind()) text = hold_in_memory(std::move(text));
+  EventReader reader(text);
+  while (reader.next()) {
+  }
+  text.rewind();
+  return text;
+}
+
+std::string format_event(const InputEvent& event) {
+  using T = InputEvent::Type;
+  char head[32];
+  std::snprintf(head, sizeof head, "%-7lld ", static_cast<long long>(event.t_ms));
+  std::string out = head;
+  const auto pad = [](std::string word) {
+    word.resize(std::max<std::size_t>(word.size(), 11), ' ');
+    return word + ' ';
+  };
+  switch (event.type) {
+    case T::kConnect:
+      out += event.name.empty() ? "connect" : pad("connect") + event.name.substr(0, kMaxControllerNameBytes);
+      break;
+    case T::kDisconnect: out += "disconnect"; break;
+    case T::kEnd: out += "end"; break;
+    case T::kButton: out += pad("button") + input_name(event.key) + ' ' + std::to_string(event.value); break;
+    case T::kAxis: out += pad("axis") + input_name(event.key) + ' ' + std::to_string(event.value); break;
+    case T::kHat: {
+      std::string_view position = "centered";
+      for (const auto& [name, mask] : kHatValues) {
+        if (mask == event.value) position = name;
+      }
+      out += pad("hat") + std::to_string(event.key.index / 4) + ' ' + std::string(position);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace andros::input

@@ -1,0 +1,79 @@
+#include "controller_selection.hpp"
+
+#include <SDL.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
+#include "andros/input/snapshot.hpp"
+
+namespace andros::input {
+namespace {
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+bool all_of(const std::string& text, int (*pred)(int)) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [pred](unsigned char c) { return pred(c) != 0; });
+}
+
+std::string nonnull(const char* text) { return text != nullptr ? text : ""; }
+
+}  // namespace
+
+ControllerSelection::ControllerSelection(const std::string& text) {
+  if (text.empty()) return;
+  if (all_of(text, &isdigit)) {
+    by_ = By::kIndex;
+    index_ = static_cast<int>(parse_integer(text, 0, kMaxJoystickIndex, "controller index", SourcePos{"--controller"}));
+  } else if (text.size() == 32 && all_of(text, &isxdigit)) {
+    by_ = By::kGuid;
+  } else {
+    by_ = By::kName;
+  }
+  text_ = lower(text);
+}
+
+bool ControllerSelection::matches(int device_index) const {
+  switch (by_) {
+    case By::kFirst: return true;
+    case By::kIndex: return device_index == index_;
+    case By::kGuid: return device_guid(device_index) == text_;
+    case By::kName:
+      // Both names: a mapping may rename a device SDL also knows by its raw name.
+      return lower(device_name(device_index)).find(text_) != std::string::npos ||
+             lower(nonnull(SDL_JoystickNameForIndex(device_index))).find(text_) != std::string::npos;
+  }
+  return false;
+}
+
+std::string ControllerSelection::describe() const {
+  switch (by_) {
+    case By::kFirst: return "the first controller";
+    case By::kIndex: return "controller " + std::to_string(index_);
+    case By::kGuid: return "the controller with GUID " + text_;
+    case By::kName: return "a controller named like '" + text_ + "'";
+  }
+  return {};
+}
+
+std::string device_name(int device_index) {
+  if (SDL_IsGameController(device_index) == SDL_TRUE) {
+    return nonnull(SDL_GameControllerNameForIndex(device_index));
+  }
+  return nonnull(SDL_JoystickNameForIndex(device_index));
+}
+
+std::string device_guid(int device_index) {
+  char text[33] = {};
+  SDL_JoystickGetGUIDString(SDL_JoystickGetDeviceGUID(device_index), text, sizeof text);
+  return lower(text);
+}
+
+}  // namespace andros::input

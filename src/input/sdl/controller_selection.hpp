@@ -1,0 +1,31 @@
+#pragma once
+// Which attached device is "the controller": --controller INDEX|NAME|GUID.
+
+#include <string>
+
+namespace andros::input {
+
+class ControllerSelection {
+ public:
+  /// Empty text: the first device. Throws InputError (at --controller) for an
+  /// index beyond kMaxJoystickIndex.
+  explicit ControllerSelection(const std::string& text);
+
+  /// Whether the device at this SDL device index is the one chosen.
+  [[nodiscard]] bool matches(int device_index) const;
+  [[nodiscard]] std::string describe() const;
+
+ private:
+  enum class By { kFirst, kIndex, kGuid, kName };
+  By by_ = By::kFirst;
+  int index_ = 0;
+  std::string text_;  // lower case, for GUID and name
+};
+
+/// The device's name as SDL's game-controller API names it (or, for a plain
+/// joystick, its joystick name); "" when SDL has none.
+std::string device_name(int device_index);
+/// The device's GUID as 32 lower-case hex digits.
+std::string device_guid(int device_index);
+
+}  // namespace andros::input

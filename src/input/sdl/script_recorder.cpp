@@ -1,0 +1,67 @@
+#include "andros/input/script_recorder.hpp"
+
+#include <cerrno>
+#include <ctime>
+#include <sstream>
+
+#include "andros/base/clock.hpp"
+#include "andros/base/error.hpp"
+#include "andros/input/events.hpp"
+
+namespace andros::input {
+namespace {
+
+void write_line(std::ostream& out, const std::string& line) {
+  out << line << '\n';
+  if (!out) throw RuntimeError("cannot write the event script");
+}
+
+}  // namespace
+
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+                           const std::function<bool(const RecordStatus&)>& keep_going) {
+  std::istringstream header(options.header);
+  for (std::string line; std::getline(header, line);) write_line(out, "# " + line);
+  out.flush();
+
+  const std::int64_t period_ns = std::int64_t{options.period_ms} * kNsPerMs;
+  const std::int64_t start_ns = monotonic_ns();
+  RecordStatus status;
+  std::int64_t tick = 0;
+  while (true) {
+    if (tick * options.period_ms > options.max_ms) {
+      status.at_limit = true;
+      break;
+    }
+    status.t_ms = tick * options.period_ms;
+    const auto& events = input.poll(status.t_ms);
+    for (const auto& event : events) {
+      write_line(out, format_event(event));
+      if (event.type == InputEvent::Type::kConnect) status.connected = true;
+      if (event.type == InputEvent::Type::kDisconnect) status.connected = false;
+    }
+    if (!events.empty()) out.flush();  // a killed recording keeps what it saw
+    status.events += static_cast<std::int64_t>(events.size());
+    status.tick = tick + 1;
+    if (!keep_going(status)) break;
+
+    // The next tick on the grid that is still ahead: after a stall, skip.
+    tick = std::max(tick + 1, (monotonic_ns() - start_ns) / period_ns + 1);
+    bool stop = false;
+    while (!sleep_until_ns(start_ns + tick * period_ns)) {
+      if (!keep_going(status)) {
+        stop = true;
+        break;
+      }
+    }
+    if (stop) break;
+  }
+  InputEvent end;
+  end.t_ms = status.t_ms;
+  end.type = InputEvent::Type::kEnd;
+  write_line(out, format_event(end));
+  out.flush();
+  return status;
+}
+
+}  // namespace andros::input

@@ -1,0 +1,71 @@
+// SDL's lifetime, extra mappings, and the device list.
+#include <SDL.h>
+#include <spdlog/spdlog.h>
+
+#include "andros/base/error.hpp"
+#include "andros/input/sdl_input.hpp"
+#include "controller_selection.hpp"
+
+namespace andros::input {
+namespace {
+
+constexpr Uint32 kSdlSubsystems = SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER;
+
+std::string trim(std::string_view line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  return std::string(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
+}
+
+}  // namespace
+
+SdlSession::SdlSession() {
+  // There is no window: without this SDL drops controller events as
+  // "background" input.
+  SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
+  // SIGINT/SIGTERM belong to the program (neutral frames, then exit), not to
+  // SDL, which would turn them into an SDL_QUIT event nobody reads.
+  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  if (SDL_InitSubSystem(kSdlSubsystems) != 0) {
+    throw RuntimeError(std::string("cannot start SDL's controller support: ") + SDL_GetError());
+  }
+}
+
+SdlSession::~SdlSession() {
+  SDL_QuitSubSystem(kSdlSubsystems);
+  if (SDL_WasInit(SDL_INIT_EVERYTHING) == 0) SDL_Quit();
+}
+
+void load_controller_db(const std::string& path, const StopCheck& stop) {
+  auto in = TextReader::open(path, kControllerDbLimits, stop);
+  // Line by line rather than SDL_GameControllerAddMappingsFromFile, which
+  // skips bad lines silently: a mapping the operator wrote should either load
+  // or be named.
+  const std::string platform = std::string("platform:") + SDL_GetPlatform();
+  int added = 0;
+  while (const auto raw = in.next_line()) {
+    const std::string line = trim(*raw);
+    if (line.empty() || line[0] == '#') continue;
+    const auto at = line.find("platform:");
+    if (at != std::string::npos && line.compare(at, platform.size(), platform) != 0) continue;
+    if (SDL_GameControllerAddMapping(line.c_str()) < 0) {
+      throw InputError(SourcePos{path, in.line_number(), 1}, std::string("bad SDL mapping: ") + SDL_GetError());
+    }
+    ++added;
+  }
+  spdlog::debug("{}: {} controller mapping(s) for {}", path, added, SDL_GetPlatform());
+}
+
+std::vector<ControllerInfo> list_controllers(const SdlInputOptions& options) {
+  const SdlSession session;
+  if (!options.controller_db.empty()) load_controller_db(options.controller_db);
+  SDL_PumpEvents();  // lets drivers that enumerate lazily report what they found
+  std::vector<ControllerInfo> list;
+  const int count = SDL_NumJoysticks();
+  for (int i = 0; i < count; ++i) {
+    list.push_back(ControllerInfo{i, device_name(i), device_guid(i), SDL_IsGameController(i) == SDL_TRUE});
+  }
+  return list;
+}
+
+}  // namespace andros::input

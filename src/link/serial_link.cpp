@@ -1,0 +1,103 @@
+#include "andros/link/serial_link.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <termios.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace andros::link {
+namespace {
+
+speed_t speed_of(int baud) {
+  switch (baud) {
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    default: return B9600;  // the config parser lets no other value through
+  }
+}
+
+}  // namespace
+
+void check_serial_port(const std::string& path, const SourcePos& pos) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return;  // not plugged in yet: the link waits for it
+    throw InputError(pos, "serial port " + quote(path) + ": " + std::strerror(errno));
+  }
+  if (!S_ISCHR(st.st_mode)) {
+    const char* what = S_ISDIR(st.st_mode) ? "a directory" : S_ISREG(st.st_mode) ? "a regular file" : "not a device";
+    throw InputError(pos, "serial port " + quote(path) + " is not a serial device (" + what + ")");
+  }
+  if (::access(path.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
+    throw InputError(pos, "serial port " + quote(path) +
+                              ": permission denied (join the dialout group, or install the udev rules: "
+                              "docs/running.md)");
+  }
+  // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
+  // One that cannot be opened just now (busy, gone) is left to the link, which waits for it.
+  const UniqueFd fd(::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+  if (fd && isatty(fd.get()) == 0) {
+    throw InputError(pos, "serial port " + quote(path) +
+                              " is not a serial device (a character device that is not a terminal)");
+  }
+}
+
+bool configure_raw_8n1(int fd, int baud) {
+  termios tio{};
+  if (tcgetattr(fd, &tio) != 0) return false;
+  cfmakeraw(&tio);
+  tio.c_cflag &= ~static_cast<tcflag_t>(CSIZE | PARENB | CSTOPB | CRTSCTS);
+  tio.c_cflag |= CS8 | CLOCAL | CREAD;
+  tio.c_iflag &= ~static_cast<tcflag_t>(IXON | IXOFF | IXANY);
+  tio.c_cc[VMIN] = 0;
+  tio.c_cc[VTIME] = 0;
+  cfsetispeed(&tio, speed_of(baud));
+  cfsetospeed(&tio, speed_of(baud));
+  return tcsetattr(fd, TCSANOW, &tio) == 0;
+}
+
+SerialLink::SerialLink(std::string path, int baud)
+    : ReconnectingLink(path + " " + std::to_string(baud) + " 8N1", kSerialRetryMs, kSerialRetryMs),
+      path_(std::move(path)),
+      baud_(baud) {}
+
+ReconnectingLink::OpenResult SerialLink::open_step(std::string& why) {
+  UniqueFd fd(::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
+  if (!fd) {
+    why = std::strerror(errno);
+    return OpenResult::kFailed;
+  }
+  // Two writers interleaving frames would corrupt both streams: the port is ours alone.
+  if (flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
+    why = errno == EWOULDBLOCK ? "in use by another program (locked)" : std::strerror(errno);
+    return OpenResult::kFailed;
+  }
+  if (!isatty(fd.get())) {
+    why = "not a serial device (not a tty)";
+    return OpenResult::kFailed;
+  }
+  if (ioctl(fd.get(), TIOCEXCL) != 0 || !configure_raw_8n1(fd.get(), baud_)) {
+    why = std::strerror(errno);
+    return OpenResult::kFailed;
+  }
+  tcflush(fd.get(), TCIOFLUSH);  // nothing stale from before we owned it
+  fd_ = std::move(fd);
+  return OpenResult::kOpen;
+}
+
+int SerialLink::queued_bytes() const {
+  int queued = 0;
+  if (ioctl(fd_.get(), TIOCOUTQ, &queued) != 0) return -1;
+  return queued;
+}
+
+void SerialLink::finish_drain() { tcdrain(fd_.get()); }
+
+}  // namespace andros::link

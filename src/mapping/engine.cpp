@@ -1,0 +1,256 @@
+#include "andros/mapping/engine.hpp"
+
+#include <algorithm>
+
+#include "andros/mapping/axis.hpp"
+#include "overload.hpp"
+
+namespace andros::mapping {
+namespace {
+
+constexpr std::int64_t kMilli = 1000;
+constexpr std::int64_t kLevelMax = 255 * kMilli;
+
+}  // namespace
+
+std::string_view describe(EnableState state) {
+  switch (state) {
+    case EnableState::kEnabled: return "enabled";
+    case EnableState::kNoController: return "no controller";
+    case EnableState::kDeadmanReleased: return "deadman released";
+    case EnableState::kDeadmanNotFresh: return "deadman held since connect or start-up: release and press it again";
+  }
+  return "?";
+}
+
+Engine::Engine(Mapping mapping, EngineOptions options)
+    : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(mapping_) {
+  // A mapping built by hand gets the same checks as a loaded one; without a
+  // deadman it is never enabled, so it only ever sends neutral frames.
+  validate(mapping_, false);
+  const auto note_button = [this](input::InputKey key) {
+    if (key.is_button() && std::find(buttons_.begin(), buttons_.end(), key) == buttons_.end()) buttons_.push_back(key);
+  };
+  if (mapping_.deadman) note_button(mapping_.deadman->key);
+  for (const auto& layer : mapping_.layers) note_button(layer.input.key);
+  std::size_t slots = 0;
+  slot_base_.push_back(0);
+  for (int layer = -1; layer < static_cast<int>(mapping_.layers.size()); ++layer) {
+    effective_.push_back(effective_bindings(mapping_, layer));
+    slots += layer < 0 ? mapping_.bindings.size() : mapping_.layers[static_cast<std::size_t>(layer)].bindings.size();
+    slot_base_.push_back(slots);
+  }
+  all_ = all_bindings(mapping_);
+  selector_.assign(slots, 0);
+  for (const auto ref : all_) {
+    const auto& b = binding_at(mapping_, ref);
+    for (const auto& u : b.inputs) note_button(u.key);
+    if (b.arm) note_button(b.arm->key);
+    if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) selector_[slot(ref)] = s->initial;
+    const auto* knob = std::get_if<KnobBinding>(&b.rule);
+    if (knob != nullptr && knob->initial && level_milli_[knob->analog] == 0) {
+      level_milli_[knob->analog] = *knob->initial * kMilli;
+    }
+  }
+}
+
+const EngineStatus& Engine::status() const { return status_; }
+const Mapping& Engine::mapping() const { return mapping_; }
+
+std::size_t Engine::slot(BindingRef ref) const { return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index; }
+
+void Engine::clear_toggles() { toggled_.reset(); }
+
+void Engine::start_session(const input::InputState& input, bool at_start_up) {
+  connection_ = input.connection();
+  seen_presses_.clear();
+  deadman_released_seen_ = false;
+  deadman_base_ = 0;
+  toggled_layer_ = -1;
+  clear_toggles();
+  if (at_start_up) {
+    // Presses made before start-up are history: they neither act nor enable.
+    for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
+    if (mapping_.deadman) deadman_base_ = input.button(mapping_.deadman->key).presses;
+  }
+}
+
+// An input the rest rule holds back neither holds nor presses (the deadman and
+// layer buttons are never held back).
+bool Engine::held(const input::InputState& input, input::InputKey key, bool invert, double threshold) const {
+  if (rest_.held_back(key)) return false;
+  if (key.is_button()) return input.button(key).down;
+  return shape_axis(normalise_axis(input.axis(key)), AxisShape{invert, 0.0, 0.0}) >= threshold;
+}
+
+std::uint32_t Engine::new_presses(const input::InputState& input, input::InputKey key) const {
+  if (!key.is_button() || rest_.held_back(key)) return 0;
+  const auto it = seen_presses_.find(key);
+  const auto seen = it == seen_presses_.end() ? 0U : it->second;
+  const auto now = input.button(key).presses;
+  return now > seen ? now - seen : 0U;
+}
+
+bool Engine::deadman_held(const input::InputState& input) const {
+  return mapping_.deadman && input.connected() && held(input, mapping_.deadman->key);
+}
+
+EnableState Engine::enable_state(const input::InputState& input) {
+  if (!input.connected() || !mapping_.deadman) return EnableState::kNoController;
+  const auto key = mapping_.deadman->key;
+  const bool down = deadman_held(input);
+  if (!down) {
+    deadman_released_seen_ = true;
+    return EnableState::kDeadmanReleased;
+  }
+  // A button counts presses itself; a trigger must have been seen released.
+  const bool fresh = key.is_button() ? input.button(key).presses > deadman_base_ : deadman_released_seen_;
+  return fresh ? EnableState::kEnabled : EnableState::kDeadmanNotFresh;
+}
+
+void Engine::update_layer(const input::InputState& input, bool enabled) {
+  if (enabled) {
+    for (std::size_t i = 0; i < mapping_.layers.size(); ++i) {
+      const auto& layer = mapping_.layers[i];
+      if (!layer.toggle) continue;
+      // Each press switches this layer on, or back off to the base layer.
+      for (auto n = new_presses(input, layer.input.key); n > 0; --n) {
+        toggled_layer_ = toggled_layer_ == static_cast<int>(i) ? -1 : static_cast<int>(i);
+      }
+    }
+  }
+  layer_ = toggled_layer_;
+  for (std::size_t i = 0; i < mapping_.layers.size(); ++i) {
+    const auto& layer = mapping_.layers[i];
+    if (!layer.toggle && input.connected() && held(input, layer.input.key)) {
+      layer_ = static_cast<int>(i);  // a held layer wins over a toggled one; the first held wins
+      break;
+    }
+  }
+  status_.layer = layer_ < 0 ? "" : mapping_.layers[static_cast<std::size_t>(layer_)].name;
+}
+
+protocol::ControlState Engine::resting_state() const {
+  protocol::ControlState s;
+  s[protocol::signal_id("pivot")] = static_cast<std::uint8_t>(mapping_.center);
+  s[protocol::signal_id("drive")] = static_cast<std::uint8_t>(mapping_.center);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (protocol::kSignals[i].kind == protocol::SignalKind::kLevel) {
+      s.values[i] = static_cast<std::uint8_t>((level_milli_[i] + kMilli / 2) / kMilli);
+    }
+  }
+  s[protocol::signal_id("byte12")] = mapping_.byte12;
+  s[protocol::signal_id("battery")] = mapping_.battery;
+  s[protocol::signal_id("code")] = options_.code;
+  // Selectors keep their position whatever the layer or enable state.
+  for (const auto ref : all_) {
+    if (const auto* sel = std::get_if<SelectorBinding>(&binding_at(mapping_, ref).rule)) {
+      for (const auto id : sel->positions[static_cast<std::size_t>(selector_[slot(ref)])]) s[id] = 1;
+    }
+  }
+  return s;
+}
+
+void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
+                   std::bitset<protocol::kSignalCount>& armed) {
+  const auto& binding = binding_at(mapping_, ref);
+  const auto k = slot(ref);
+  // Down now, or pressed and released since the last tick: a short tap is not lost.
+  const auto active = [&](input::InputKey key) { return held(input, key) || new_presses(input, key) > 0; };
+  std::visit(Overload{
+                 [&](const ButtonBinding& b) {
+                   if (b.toggle) {
+                     if (new_presses(input, b.input) % 2 == 1) toggled_.flip(b.signal);
+                   } else if (b.input.is_button() ? active(b.input) : held(input, b.input, b.invert, b.threshold)) {
+                     out[b.signal] = 1;
+                   }
+                 },
+                 [&](const WeaponBinding& b) {
+                   const bool arm = b.arm && held(input, *b.arm);
+                   if (arm) armed.set(b.signal);
+                   if (arm && active(b.input)) out[b.signal] = 1;
+                 },
+                 [&](const PairBinding& b) {
+                   if (rest_.held_back(b.axis)) return;
+                   const double x = shape_axis(normalise_axis(input.axis(b.axis)), AxisShape{b.invert, 0.0, 0.0});
+                   if (x <= -b.threshold) out[b.signals[0]] = 1;
+                   if (x >= b.threshold) out[b.signals[1]] = 1;
+                 },
+                 [&](const AxisBinding& b) {
+                   if (rest_.held_back(b.axis)) return;  // drive/pivot stay at centre, a level keeps its value
+                   const double z = shape_axis(normalise_axis(input.axis(b.axis)), b.shape);
+                   if (protocol::info(b.analog).kind == protocol::SignalKind::kCentred) {
+                     out[b.analog] = centred_byte(z, mapping_.center);
+                   } else {
+                     out[b.analog] = level_byte(z);
+                     level_milli_[b.analog] = out[b.analog] * kMilli;
+                   }
+                 },
+                 [&](const KnobBinding& b) {
+                   const bool up = held(input, b.increase);
+                   const bool down = held(input, b.decrease);
+                   auto& v = level_milli_[b.analog];
+                   if (up && !down) v += b.rate * dt_ms;
+                   if (down && !up) v -= b.rate * dt_ms;
+                   // A tap between two ticks nudges by one unit.
+                   if (!up && !down) v += (new_presses(input, b.increase) > 0 ? kMilli : 0) -
+                                          (new_presses(input, b.decrease) > 0 ? kMilli : 0);
+                   v = std::clamp<std::int64_t>(v, 0, kLevelMax);
+                   out[b.analog] = static_cast<std::uint8_t>((v + kMilli / 2) / kMilli);
+                 },
+                 [&](const SelectorBinding& b) {
+                   const int n = static_cast<int>(b.positions.size());
+                   const int steps = static_cast<int>(new_presses(input, b.next) % static_cast<std::uint32_t>(n)) -
+                                     (b.prev ? static_cast<int>(new_presses(input, *b.prev) % static_cast<std::uint32_t>(n)) : 0);
+                   auto& pos = selector_[k];
+                   const auto& old_bits = b.positions[static_cast<std::size_t>(pos)];
+                   for (const auto id : old_bits) out[id] = 0;
+                   pos = ((pos + steps) % n + n) % n;
+                   for (const auto id : b.positions[static_cast<std::size_t>(pos)]) out[id] = 1;
+                 },
+             },
+             binding.rule);
+}
+
+protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t now_ms) {
+  if (!started_) {
+    started_ = true;
+    start_session(input, true);
+    last_ms_ = now_ms;
+  } else if (input.connection() != connection_) {
+    start_session(input, false);  // a new controller session: toggles start cleared
+  }
+  if (!input.connected()) toggled_layer_ = -1;  // toggles are cleared below: not enabled
+  status_.enable = enable_state(input);
+  const bool enabled = status_.enable == EnableState::kEnabled;
+  update_layer(input, enabled);
+  rest_.update(input, layer_, enabled, seen_presses_);
+  status_.held_back = rest_.held_back_inputs();
+
+  protocol::ControlState state = resting_state();
+  SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
+  if (enabled) {
+    for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
+      apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
+    }
+    // A toggle stays on in every layer until pressed again or the deadman is released.
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      if (toggled_[i]) state.values[i] = 1;
+    }
+  } else {
+    clear_toggles();  // releasing the deadman stops everything a toggle started
+  }
+  // Presses made while not enabled are consumed here, never replayed later.
+  for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
+  last_ms_ = now_ms;
+  return builder_.build(apply_safety(state, ctx));
+}
+
+protocol::DataBytes Engine::neutral() const {
+  SafetyContext ctx;
+  ctx.center = mapping_.center;
+  ctx.brake = mapping_.brake;
+  return builder_.build(apply_safety(resting_state(), ctx));
+}
+
+}  // namespace andros::mapping

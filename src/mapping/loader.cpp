@@ -1,0 +1,284 @@
+#include "andros/mapping/loader.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "andros/protocol/robots.hpp"
+#include "yaml_reader.hpp"
+
+namespace andros::mapping {
+namespace {
+
+namespace fs = std::filesystem;
+using yaml::Reader;
+
+/// The most files in an `extends` chain (the one loaded and its bases). Each
+/// is read by a nested call, so the bound also bounds the stack.
+constexpr std::size_t kMaxExtendsChain = 16;
+
+InputUse use(const Reader& r, const YAML::Node& node, input::InputKey key) { return InputUse{key, r.pos(node)}; }
+
+void read_axis_extras(const Reader& r, const YAML::Node& n, bool& invert, double* threshold) {
+  if (n["invert"]) invert = r.boolean(n["invert"], "invert");
+  if (threshold != nullptr && n["threshold"]) *threshold = r.number(n["threshold"], 0.0, 1.0, false, "threshold");
+  if (threshold != nullptr && *threshold <= 0.0) r.fail(n["threshold"], "threshold must be above 0");
+}
+
+Binding read_signal_binding(const Reader& r, const YAML::Node& n, Binding b) {
+  const auto target = n["signal"];
+  if (target.IsSequence()) {
+    r.expect_keys(n, {"signal", "axis", "threshold", "invert"}, "an axis-to-pair binding");
+    if (target.size() != 2) r.fail(target, "an opposing pair is a list of two signals");
+    if (!n["axis"]) r.fail(n, "an opposing pair needs 'axis'");
+    PairBinding p;
+    p.signals = {r.signal(target[0]), r.signal(target[1])};
+    p.axis = r.axis(n["axis"]);
+    read_axis_extras(r, n, p.invert, &p.threshold);
+    b.inputs.push_back(use(r, n["axis"], p.axis));
+    b.rule = p;
+    return b;
+  }
+  const protocol::SignalId id = r.signal(target);
+  if (n["arm"] || protocol::info(id).kind == protocol::SignalKind::kWeapon) {
+    r.expect_keys(n, {"signal", "button", "arm"}, "a weapon binding");
+    if (!n["button"]) r.fail(n, "a weapon binding needs 'button' (and 'arm')");
+    WeaponBinding w{id, r.button(n["button"]), std::nullopt};
+    b.inputs.push_back(use(r, n["button"], w.input));
+    if (n["arm"]) {
+      w.arm = r.button_or_trigger(n["arm"], "arm");
+      b.arm = use(r, n["arm"], *w.arm);
+    }
+    b.rule = w;
+    return b;
+  }
+  ButtonBinding m;
+  m.signal = id;
+  if (n["axis"]) {
+    r.expect_keys(n, {"signal", "axis", "threshold", "invert"}, "an axis-as-button binding");
+    m.input = r.axis(n["axis"]);
+    read_axis_extras(r, n, m.invert, &m.threshold);
+    b.inputs.push_back(use(r, n["axis"], m.input));
+  } else {
+    r.expect_keys(n, {"signal", "button", "toggle"}, "a button binding");
+    if (!n["button"]) r.fail(n, "a signal binding needs 'button' or 'axis'");
+    m.input = r.button(n["button"]);
+    b.inputs.push_back(use(r, n["button"], m.input));
+    if (n["toggle"]) m.toggle = r.boolean(n["toggle"], "toggle");
+  }
+  b.rule = m;
+  return b;
+}
+
+Binding read_analog_binding(const Reader& r, const YAML::Node& n, Binding b) {
+  const protocol::SignalId id = r.signal(n["analog"]);
+  if (n["increase"] || n["decrease"]) {
+    r.expect_keys(n, {"analog", "increase", "decrease", "rate", "initial"}, "a knob binding");
+    for (const char* key : {"increase", "decrease", "rate"}) {
+      if (!n[key]) r.fail(n, std::string("a knob binding needs '") + key + "'");
+    }
+    KnobBinding k;
+    k.analog = id;
+    k.increase = r.button(n["increase"]);
+    k.decrease = r.button(n["decrease"]);
+    k.rate = static_cast<int>(r.integer(n["rate"], 1, 25500, "rate (units per second)"));
+    if (n["initial"]) k.initial = static_cast<int>(r.integer(n["initial"], 0, 255, "initial"));
+    b.inputs.push_back(use(r, n["increase"], k.increase));
+    b.inputs.push_back(use(r, n["decrease"], k.decrease));
+    b.rule = k;
+    return b;
+  }
+  r.expect_keys(n, {"analog", "axis", "invert", "deadzone", "expo"}, "an analog binding");
+  if (!n["axis"]) r.fail(n, "an analog binding needs 'axis' (or 'increase' and 'decrease' for a knob)");
+  AxisBinding a;
+  a.analog = id;
+  a.axis = r.axis(n["axis"]);
+  read_axis_extras(r, n, a.shape.invert, nullptr);
+  if (n["deadzone"]) a.shape.deadzone = r.number(n["deadzone"], 0.0, 1.0, true, "deadzone");
+  if (n["expo"]) a.shape.expo = r.number(n["expo"], 0.0, 1.0, false, "expo");
+  b.inputs.push_back(use(r, n["axis"], a.axis));
+  b.rule = a;
+  return b;
+}
+
+Binding read_selector_binding(const Reader& r, const YAML::Node& n, Binding b) {
+  r.expect_keys(n, {"selector", "next", "prev", "positions", "initial"}, "a selector binding");
+  for (const char* key : {"next", "positions"}) {
+    if (!n[key]) r.fail(n, std::string("a selector binding needs '") + key + "'");
+  }
+  SelectorBinding s;
+  s.name = r.text(n["selector"], "selector name");
+  s.next = r.button(n["next"]);
+  b.inputs.push_back(use(r, n["next"], s.next));
+  if (n["prev"]) {
+    s.prev = r.button(n["prev"]);
+    b.inputs.push_back(use(r, n["prev"], *s.prev));
+  }
+  const auto positions = n["positions"];
+  r.expect_list(positions, "positions");
+  if (positions.size() < 2) r.fail(positions, "a selector needs at least two positions");
+  for (const auto& p : positions) {
+    r.expect_list(p, "a position (a list of the signals it sets, [] for none)");
+    std::vector<protocol::SignalId> bits;
+    for (const auto& sig : p) {
+      const protocol::SignalId id = r.signal(sig);
+      if (std::find(bits.begin(), bits.end(), id) != bits.end()) {
+        r.fail(sig, "'" + std::string(protocol::info(id).name) + "' is given twice in this position");
+      }
+      bits.push_back(id);
+    }
+    s.positions.push_back(std::move(bits));
+  }
+  b.target_pos = r.pos(positions);
+  if (n["initial"]) {
+    s.initial = static_cast<int>(r.integer(n["initial"], 0, static_cast<long long>(s.positions.size()) - 1,
+                                           "initial position"));
+  }
+  b.rule = s;
+  return b;
+}
+
+Binding read_binding(const Reader& r, const YAML::Node& n) {
+  r.expect_map(n, "a binding");
+  Binding b;
+  b.pos = r.pos(n);
+  const int kinds = (n["signal"] ? 1 : 0) + (n["analog"] ? 1 : 0) + (n["selector"] ? 1 : 0);
+  if (kinds != 1) r.fail(n, "a binding names exactly one of 'signal', 'analog' or 'selector'");
+  if (n["signal"]) {
+    b.target_pos = r.pos(n["signal"]);
+    return read_signal_binding(r, n, b);
+  }
+  if (n["analog"]) {
+    b.target_pos = r.pos(n["analog"]);
+    return read_analog_binding(r, n, b);
+  }
+  return read_selector_binding(r, n, b);
+}
+
+std::vector<Binding> read_bindings(const Reader& r, const YAML::Node& list) {
+  r.expect_list(list, "bindings");
+  std::vector<Binding> out;
+  for (const auto& n : list) out.push_back(read_binding(r, n));
+  return out;
+}
+
+Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n) {
+  r.expect_keys(n, {"hold", "toggle", "bindings"}, "a layer");
+  Layer layer;
+  layer.name = r.text(name, "layer name");
+  layer.pos = r.pos(name);
+  if ((n["hold"] ? 1 : 0) + (n["toggle"] ? 1 : 0) != 1) {
+    r.fail(n, "layer " + quote(layer.name) + " needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'");
+  }
+  layer.toggle = static_cast<bool>(n["toggle"]);
+  const auto button = layer.toggle ? n["toggle"] : n["hold"];
+  layer.input = use(r, button, r.button(button));
+  if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
+  layer.bindings = read_bindings(r, n["bindings"]);
+  return layer;
+}
+
+// A file's bindings replace the base's bindings they conflict with.
+void merge_bindings(std::vector<Binding>& base, std::vector<Binding> over) {
+  std::erase_if(base, [&](const Binding& old) {
+    return std::any_of(over.begin(), over.end(), [&](const Binding& b) { return bindings_conflict(old, b); });
+  });
+  for (auto& b : over) base.push_back(std::move(b));
+}
+
+/// The files being read, outermost first, and the YAML nodes they may still hold.
+struct Chain {
+  std::vector<fs::path> files;
+  std::size_t node_budget = yaml::kMaxNodes;
+};
+
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from);
+
+void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
+  if (chain.files.size() >= kMaxExtendsChain) {
+    r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.files.size() + 1) +
+                     " of the chain from '" + chain.files.front().filename().string() + "' (at most " +
+                     std::to_string(kMaxExtendsChain) + " files)");
+  }
+  const auto base_path = file.parent_path() / r.text(node, "extends");
+  // The base's values stand unless this file sets them; its robot does not carry over.
+  out = read_file(base_path, chain, r.pos(node));
+  out.robot.reset();
+}
+
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
+  std::error_code ec;
+  const auto canonical = fs::weakly_canonical(file, ec);
+  if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
+                                                       "cannot open mapping file " + quote(file.string()));
+  if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
+    std::string loop;
+    for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
+    throw InputError(from, "'extends' makes a cycle: " + loop + canonical.filename().string());
+  }
+  chain.files.push_back(canonical);
+  const Reader r(file.string());
+  const YAML::Node root = r.load_document(chain.node_budget);
+  r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
+                "a mapping file");
+  Mapping m;
+  if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
+  m.file = file.string();
+  if (root["robot"]) {
+    const auto name = r.text(root["robot"], "robot");
+    m.robot = protocol::canonical_robot(name);
+    if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
+    m.robot_pos = r.pos(root["robot"]);
+  }
+  if (root["center"]) {
+    m.center = static_cast<int>(r.integer(root["center"], 0, 255, "center"));
+  }
+  if (const auto c = root["constants"]) {
+    r.expect_keys(c, {"byte12", "battery"}, "constants");
+    if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
+    if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+  }
+  if (root["deadman"]) {
+    m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
+  }
+  if (const auto b = root["brake"]) {
+    const auto mode = r.text(b, "brake");
+    if (mode == "enabled") m.brake = BrakeMode::kEnabled;
+    else if (mode == "moving") m.brake = BrakeMode::kMoving;
+    else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
+  }
+  if (root["bindings"]) merge_bindings(m.bindings, read_bindings(r, root["bindings"]));
+  if (const auto layers = root["layers"]) {
+    r.expect_map(layers, "layers");
+    std::set<std::string> seen;
+    for (const auto& kv : layers) {
+      auto layer = read_layer(r, kv.first, kv.second);
+      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer " + quote(layer.name) + " given twice");
+      const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
+      if (it == m.layers.end()) {
+        m.layers.push_back(std::move(layer));
+      } else {
+        merge_bindings(it->bindings, std::move(layer.bindings));
+        it->input = layer.input;
+        it->toggle = layer.toggle;
+        it->pos = layer.pos;
+      }
+    }
+  }
+  chain.files.pop_back();
+  return m;
+}
+
+}  // namespace
+
+Mapping load_mapping_file(const fs::path& file) {
+  Chain chain;
+  return read_file(file, chain, SourcePos{});
+}
+
+Mapping load_mapping(const fs::path& file) {
+  auto mapping = load_mapping_file(file);
+  validate(mapping, true);
+  return mapping;
+}
+
+}  // namespace andros::mapping

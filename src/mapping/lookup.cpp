@@ -1,0 +1,54 @@
+#include <cctype>
+#include <cstdlib>
+
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/version.hpp"
+
+namespace andros::mapping {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> mapping_search_path() {
+  std::vector<fs::path> dirs;
+  const char* xdg = std::getenv("XDG_CONFIG_HOME");
+  const char* home = std::getenv("HOME");
+  if (xdg != nullptr && *xdg != '\0') {
+    dirs.emplace_back(fs::path(xdg) / "andros-bridge" / "mappings");
+  } else if (home != nullptr && *home != '\0') {
+    dirs.emplace_back(fs::path(home) / ".config" / "andros-bridge" / "mappings");
+  }
+  std::error_code ec;
+  if (fs::is_directory(kSourceMappingsDir, ec)) dirs.emplace_back(kSourceMappingsDir);
+  dirs.emplace_back(kInstalledMappingsDir);
+  return dirs;
+}
+
+fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>& search_path) {
+  const auto canonical = protocol::canonical_robot(robot);
+  if (!canonical) {
+    throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(robot) + " (expected " + protocol::robot_list() + ")");
+  }
+  std::string file = *canonical;
+  for (auto& c : file) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  file += ".yaml";
+  std::string looked;
+  for (const auto& dir : search_path) {
+    std::error_code ec;
+    if (fs::is_regular_file(dir / file, ec)) return dir / file;
+    looked += (looked.empty() ? "" : ", ") + dir.string();
+  }
+  throw InputError(SourcePos{"--robot"}, "no mapping " + file + " for robot " + *canonical + " (looked in " + looked + ")");
+}
+
+Mapping load_robot_mapping(std::string_view robot) {
+  const auto path = find_robot_mapping(robot, mapping_search_path());
+  auto mapping = load_mapping(path);
+  const auto canonical = protocol::canonical_robot(robot);
+  if (mapping.robot != canonical) {
+    throw InputError(mapping.robot_pos, "this file is for robot " + mapping.robot.value_or("?") + ", not " + *canonical);
+  }
+  return mapping;
+}
+
+}  // namespace andros::mapping

@@ -1,0 +1,269 @@
+#include "andros/mapping/model.hpp"
+#include "overload.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace andros::mapping {
+namespace {
+
+std::string quoted(protocol::SignalId id) { return "'" + std::string(protocol::info(id).name) + "'"; }
+
+// Why a signal cannot be the target of a plain button, pair or analog binding.
+std::string not_bindable(protocol::SignalId id) {
+  switch (protocol::info(id).kind) {
+    case protocol::SignalKind::kInterlock:
+      return quoted(id) + " is set by the safety layer (1 only while enabled); it cannot be bound";
+    case protocol::SignalKind::kConstant:
+      return quoted(id) + " is fixed for the run (byte12 and battery under 'constants:', code with --code)";
+    case protocol::SignalKind::kSelector:
+      return quoted(id) + " is a selector-like switch: set it from a 'selector:' binding's positions";
+    case protocol::SignalKind::kWeapon: return quoted(id) + " is a weapon: it needs 'button' and 'arm'";
+    case protocol::SignalKind::kCentred:
+    case protocol::SignalKind::kLevel: return quoted(id) + " is a whole byte: bind it with 'analog:'";
+    case protocol::SignalKind::kMotion: break;
+  }
+  return {};
+}
+
+void check_motion(protocol::SignalId id, const SourcePos& pos) {
+  if (protocol::info(id).kind != protocol::SignalKind::kMotion) throw InputError(pos, not_bindable(id));
+}
+
+void check_range(bool ok, const SourcePos& at, const std::string& what) {
+  if (!ok) throw InputError(at, what + " is out of range");
+}
+
+void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
+  const auto& at = b.target_pos;
+  const auto check_threshold = [&](double t) { check_range(t > 0.0 && t <= 1.0, b.pos, "threshold"); };
+  std::visit(Overload{
+                 [&](const ButtonBinding& r) {
+                   check_motion(r.signal, at);
+                   check_threshold(r.threshold);
+                 },
+                 [&](const WeaponBinding& r) {
+                   if (protocol::info(r.signal).kind != protocol::SignalKind::kWeapon) {
+                     throw InputError(at, "'arm' is only for weapon signals; " + quoted(r.signal) + " is not one");
+                   }
+                   if (!r.arm) throw InputError(b.pos, "weapon binding for " + quoted(r.signal) + " needs 'arm': a second button held to fire");
+                   if (*r.arm == r.input) throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
+                   if (deadman && *r.arm == deadman->key) {
+                     throw InputError(b.arm->pos, "'arm' must be a second button, not the deadman");
+                   }
+                 },
+                 [&](const PairBinding& r) {
+                   check_motion(r.signals[0], at);
+                   check_motion(r.signals[1], at);
+                   if (r.signals[0] == r.signals[1]) throw InputError(at, "an opposing pair names two different signals");
+                   check_threshold(r.threshold);
+                 },
+                 [&](const AxisBinding& r) {
+                   const auto kind = protocol::info(r.analog).kind;
+                   if (kind != protocol::SignalKind::kCentred && kind != protocol::SignalKind::kLevel) {
+                     throw InputError(at, quoted(r.analog) + " is not an analog byte (drive, pivot, arm_speed, light)");
+                   }
+                   check_range(r.shape.deadzone >= 0.0 && r.shape.deadzone < 1.0, b.pos, "deadzone");
+                   check_range(r.shape.expo >= 0.0 && r.shape.expo <= 1.0, b.pos, "expo");
+                 },
+                 [&](const KnobBinding& r) {
+                   if (protocol::info(r.analog).kind != protocol::SignalKind::kLevel) {
+                     throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
+                                              " must return to centre, so bind it to an axis");
+                   }
+                   check_range(r.rate > 0 && r.rate <= 25500, b.pos, "rate");
+                   check_range(!r.initial || (*r.initial >= 0 && *r.initial <= 255), b.pos, "initial");
+                 },
+                 [&](const SelectorBinding& r) {
+                   check_range(r.positions.size() >= 2, at, "the number of positions");
+                   check_range(r.initial >= 0 && static_cast<std::size_t>(r.initial) < r.positions.size(), b.pos,
+                               "initial position");
+                   for (const auto& position : r.positions) {
+                     for (const auto id : position) {
+                       if (protocol::info(id).kind != protocol::SignalKind::kSelector) {
+                         throw InputError(at, "selector positions set selector-like signals only; " + quoted(id) +
+                                                  " is not one");
+                       }
+                       const auto partner = protocol::partner_of(id);
+                       if (partner && std::find(position.begin(), position.end(), *partner) != position.end()) {
+                         throw InputError(at, "a position sets both " + quoted(id) + " and its opposite");
+                       }
+                     }
+                   }
+                 },
+             },
+             b.rule);
+}
+
+// Within one list of bindings: every input once, every analog byte once.
+void check_list(const std::vector<Binding>& list, const std::vector<InputUse>& reserved) {
+  std::map<input::InputKey, SourcePos> inputs;
+  std::map<protocol::SignalId, SourcePos> analogs;
+  for (const auto& b : list) {
+    for (const auto& u : b.inputs) {
+      for (const auto& r : reserved) {
+        if (r.key == u.key) {
+          throw InputError(u.pos, "'" + input::input_name(u.key) + "' is the deadman or switches a layer (line " +
+                                      std::to_string(r.pos.line) + "); it cannot also be bound");
+        }
+      }
+      const auto [it, fresh] = inputs.emplace(u.key, u.pos);
+      if (!fresh) {
+        throw InputError(u.pos, "'" + input::input_name(u.key) + "' is bound twice in this layer (first at line " +
+                                    std::to_string(it->second.line) + ")");
+      }
+    }
+    if (const auto target = analog_target(b)) {
+      const auto [it, fresh] = analogs.emplace(*target, b.target_pos);
+      if (!fresh) {
+        throw InputError(b.target_pos, quoted(*target) + " is driven by two bindings in this layer (first at line " +
+                                           std::to_string(it->second.line) + ")");
+      }
+    }
+  }
+}
+
+// A weapon's arming input may not also fire something else in the same layer.
+void check_arms(const Mapping& m, int layer) {
+  const auto refs = effective_bindings(m, layer);
+  for (const auto& ref : refs) {
+    const auto& b = binding_at(m, ref);
+    if (!b.arm) continue;
+    for (const auto& other : refs) {
+      for (const auto& u : binding_at(m, other).inputs) {
+        if (u.key == b.arm->key) {
+          throw InputError(b.arm->pos, "arming input '" + input::input_name(u.key) + "' is also bound at line " +
+                                           std::to_string(u.pos.line) + "; pressing it would do both");
+        }
+      }
+    }
+  }
+}
+
+// One signal has one toggle state, flipped by any of its toggle inputs; a
+// momentary binding on the same signal would leave "on" with two meanings.
+void check_toggles(const Mapping& m) {
+  std::map<protocol::SignalId, std::pair<bool, const Binding*>> first;  // signal -> (toggled?, its first binding)
+  for (const auto& ref : all_bindings(m)) {
+    const auto& b = binding_at(m, ref);
+    std::vector<std::pair<protocol::SignalId, bool>> uses;
+    if (const auto* x = std::get_if<ButtonBinding>(&b.rule)) uses.emplace_back(x->signal, x->toggle);
+    if (const auto* x = std::get_if<PairBinding>(&b.rule)) {
+      uses.emplace_back(x->signals[0], false);
+      uses.emplace_back(x->signals[1], false);
+    }
+    for (const auto& [id, toggle] : uses) {
+      const auto [it, fresh] = first.emplace(id, std::pair{toggle, &b});
+      if (fresh || it->second.first == toggle) continue;
+      const auto& other = it->second.second->pos;
+      const std::string where = "line " + std::to_string(other.line) + (other.file == b.pos.file ? "" : " of " + other.file);
+      throw InputError(b.target_pos, quoted(id) + (toggle ? " is momentary" : " is a toggle") + " at " + where +
+                                         "; a signal is either toggled or momentary, not both");
+    }
+  }
+}
+
+}  // namespace
+
+const Binding& binding_at(const Mapping& mapping, BindingRef ref) {
+  return ref.layer < 0 ? mapping.bindings.at(ref.index)
+                       : mapping.layers.at(static_cast<std::size_t>(ref.layer)).bindings.at(ref.index);
+}
+
+std::vector<BindingRef> all_bindings(const Mapping& mapping) {
+  std::vector<BindingRef> refs;
+  for (std::size_t i = 0; i < mapping.bindings.size(); ++i) refs.push_back({-1, i});
+  for (std::size_t l = 0; l < mapping.layers.size(); ++l) {
+    for (std::size_t i = 0; i < mapping.layers[l].bindings.size(); ++i) refs.push_back({static_cast<int>(l), i});
+  }
+  return refs;
+}
+
+std::optional<protocol::SignalId> analog_target(const Binding& binding) {
+  if (const auto* a = std::get_if<AxisBinding>(&binding.rule)) return a->analog;
+  if (const auto* k = std::get_if<KnobBinding>(&binding.rule)) return k->analog;
+  return std::nullopt;
+}
+
+bool bindings_conflict(const Binding& a, const Binding& b) {
+  // An arming input shared by two weapons is no conflict; one that fires something else is.
+  const auto uses = [](const Binding& x, input::InputKey key, bool with_arm) {
+    return std::any_of(x.inputs.begin(), x.inputs.end(), [&](const InputUse& u) { return u.key == key; }) ||
+           (with_arm && x.arm && x.arm->key == key);
+  };
+  for (const auto& u : a.inputs) {
+    if (uses(b, u.key, true)) return true;
+  }
+  if (a.arm && uses(b, a.arm->key, false)) return true;
+  const auto ta = analog_target(a);
+  return ta && ta == analog_target(b);
+}
+
+std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer) {
+  std::vector<BindingRef> refs;
+  const std::vector<Binding>* own = nullptr;
+  if (layer >= 0) {
+    own = &mapping.layers.at(static_cast<std::size_t>(layer)).bindings;
+    for (std::size_t i = 0; i < own->size(); ++i) refs.push_back({layer, i});
+  }
+  for (std::size_t i = 0; i < mapping.bindings.size(); ++i) {
+    const auto& b = mapping.bindings[i];
+    const bool replaced =
+        own != nullptr && std::any_of(own->begin(), own->end(), [&](const Binding& o) { return bindings_conflict(b, o); });
+    if (!replaced) refs.push_back({-1, i});
+  }
+  return refs;
+}
+
+void validate(const Mapping& m, bool require_robot) {
+  if (require_robot && !m.robot) {
+    throw InputError(SourcePos{m.file}, "missing 'robot' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)");
+  }
+  if (require_robot && !m.deadman) throw InputError(SourcePos{m.file}, "missing 'deadman': the button that enables motion");
+  if (m.center < 0 || m.center > 255) throw InputError(SourcePos{m.file}, "center is out of range 0..255");
+  std::vector<InputUse> reserved;
+  if (m.deadman) {
+    const auto k = m.deadman->key;
+    if (k.kind == input::InputKind::kJoyAxis || (k.kind == input::InputKind::kPadAxis && input::input_name(k) != "lefttrigger" &&
+                                          input::input_name(k) != "righttrigger")) {
+      throw InputError(m.deadman->pos, "the deadman is a button or a trigger (lefttrigger, righttrigger)");
+    }
+    reserved.push_back(*m.deadman);
+  }
+  std::set<std::string> names;
+  for (const auto& layer : m.layers) {
+    for (const auto& r : reserved) {
+      if (r.key == layer.input.key) {
+        throw InputError(layer.input.pos, "'" + input::input_name(r.key) + "' already switches a layer or is the deadman");
+      }
+    }
+    if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer " + quote(layer.name) + " given twice");
+    reserved.push_back(layer.input);
+  }
+  std::map<protocol::SignalId, SourcePos> selector_signals;
+  const auto check_bindings = [&](const std::vector<Binding>& list) {
+    for (const auto& b : list) {
+      check_rule(b, m.deadman);
+      if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) {
+        std::set<protocol::SignalId> mine;
+        for (const auto& p : s->positions) mine.insert(p.begin(), p.end());
+        for (const auto id : mine) {
+          const auto [it, fresh] = selector_signals.emplace(id, b.target_pos);
+          if (!fresh) {
+            throw InputError(b.target_pos, quoted(id) + " is already set by the selector at line " +
+                                               std::to_string(it->second.line));
+          }
+        }
+      }
+    }
+    check_list(list, reserved);
+  };
+  check_bindings(m.bindings);
+  for (const auto& layer : m.layers) check_bindings(layer.bindings);
+  check_arms(m, -1);
+  for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i));
+  check_toggles(m);
+}
+
+}  // namespace andros::mapping

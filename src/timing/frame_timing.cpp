@@ -1,0 +1,36 @@
+#include "andros/timing/frame_timing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace andros::timing {
+
+void FrameTiming::add(std::int64_t t_ns) { times_[count_++ % kWindow] = t_ns; }
+
+TimingSummary FrameTiming::summary(std::int64_t now_ns) const {
+  TimingSummary out;
+  out.count = count_;
+  const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(count_, kWindow));
+  // Oldest to newest.
+  const auto at = [&](std::size_t i) { return times_[(count_ - n + i) % kWindow]; };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (now_ns - at(i) < 1'000'000'000) ++out.rate_hz;
+  }
+  if (n < 2) return out;
+  double sum = 0;
+  for (std::size_t i = 1; i < n; ++i) sum += static_cast<double>(at(i) - at(i - 1));
+  const double mean = sum / static_cast<double>(n - 1);
+  double sq = 0;
+  double worst = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double d = static_cast<double>(at(i) - at(i - 1)) - mean;
+    sq += d * d;
+    worst = std::max(worst, std::abs(d));
+  }
+  out.period_ms = mean / 1e6;
+  out.jitter_ms = std::sqrt(sq / static_cast<double>(n - 1)) / 1e6;
+  out.worst_ms = worst / 1e6;
+  return out;
+}
+
+}  // namespace andros::timing

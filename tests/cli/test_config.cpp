@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "andros/cli/config.hpp"
+
+namespace andros::cli {
+namespace {
+
+RunConfig parse(const std::string& text, const std::string& file = "dir/test.conf") {
+  RunConfig c;
+  TextReader in(text, file, kConfigLimits);
+  parse_config(in, c);
+  return c;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Config, DefaultsFollowTheContract) {
+  const RunConfig c;
+  EXPECT_EQ(c.robot, "HD1");
+  EXPECT_EQ(c.port, "sim");
+  EXPECT_EQ(c.baud, 9600);
+  EXPECT_EQ(c.code, 0x01);
+  EXPECT_EQ(c.rate, "25");
+  EXPECT_EQ(rate_millihertz(c), 25'000);
+  EXPECT_FALSE(c.weapons);
+  EXPECT_EQ(c.input, "sdl");
+}
+
+TEST(Config, ReadsTheLegacyFileAsIs) {
+  const auto c = parse(
+      "#This is the configuration file for the packet generator\n"
+      "# Baud rate setting: 9600, 19200, 38400, 57600, 115200\n"
+      "baudrate=19200\n"
+      "# Serial port\n"
+      "serialport=/dev/ttyUSB0\n"
+      "# Robot type: F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS\n"
+      "robot=wolverine\n"
+      "# Control code: 8 bit hex value according to the dip switches in the switchbox\n"
+      "code=3C\n");
+  EXPECT_EQ(c.baud, 19200);
+  EXPECT_EQ(c.port, "/dev/ttyUSB0");
+  EXPECT_EQ(c.robot, "WOLVERINE");
+  EXPECT_EQ(c.code, 0x3C);
+}
+
+TEST(Config, ReadsTheBridgesOwnKeys) {
+  const auto c = parse(" rate = 20 \r\nweapons=enabled\nmapping=custom.yaml\ninput=demo.events\n\n");
+  EXPECT_EQ(c.rate, "20");
+  EXPECT_EQ(c.rate_pos.line, 1);
+  EXPECT_TRUE(c.weapons);
+  EXPECT_EQ(c.mapping, "dir/custom.yaml");  // relative to the file
+  EXPECT_EQ(c.input, "dir/demo.events");
+  EXPECT_EQ(parse("input=sdl\nmapping=/abs/m.yaml\n").input, "sdl");
+  EXPECT_EQ(parse("mapping=/abs/m.yaml\n").mapping, "/abs/m.yaml");
+}
+
+TEST(Config, BadLinesNameFileAndLine) {
+  EXPECT_EQ(error_of("# c\nbaudrate=9601\n"),
+            "dir/test.conf:2:10: error: baud 9601 is not one of 9600, 19200, 38400, 57600, 115200");
+  EXPECT_EQ(error_of("speed=3\n"),
+            "dir/test.conf:1:1: error: unknown key 'speed' (known: baudrate, serialport, robot, code, "
+            "rate, mapping, weapons, input)");
+  EXPECT_NE(error_of("\n\nrobot=R2D2\n").find("dir/test.conf:3:7: error: unknown robot 'R2D2'"),
+            std::string::npos);
+  EXPECT_NE(error_of("code=XYZ\n").find("dir/test.conf:1:6: error: code 'XYZ'"), std::string::npos);
+  EXPECT_NE(error_of("just words\n").find("dir/test.conf:1:1: error: expected key=value"),
+            std::string::npos);
+  EXPECT_NE(error_of("serialport=\n").find("dir/test.conf:1: error: 'serialport' has no value"),
+            std::string::npos);
+  EXPECT_NE(error_of("weapons=maybe\n").find("dir/test.conf:1:9: error: weapons"), std::string::npos);
+  EXPECT_NE(error_of("rate=0\n").find("dir/test.conf:1:6: error: rate '0' is below 1 Hz"), std::string::npos);
+  EXPECT_NE(error_of("rate=fast\n").find("dir/test.conf:1:6: error: rate 'fast' is not a number"),
+            std::string::npos);
+}
+
+TEST(Config, RefusesARateThatCannotFitWhereItWasSet) {
+  auto c = parse("rate=12.5\n");
+  EXPECT_EQ(rate_millihertz(c), 12'500);
+  c = parse("# fast\nrate=30\nbaudrate=19200\n");
+  EXPECT_EQ(rate_millihertz(c), 30'000);
+  c.baud = 9600;  // a --baud flag over the file
+  try {
+    rate_millihertz(c);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "dir/test.conf:2:6: error: rate '30' does not fit the link: 360-bit frames at 9600 baud "
+                 "allow at most 26.666 Hz");
+  }
+}
+
+TEST(Config, DefaultPathsPreferXdg) {
+  setenv("XDG_CONFIG_HOME", "/x", 1);
+  const auto paths = default_config_paths();
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(paths[0], "/x/andros-bridge/andros-bridge.conf");
+  EXPECT_EQ(paths[1], "/etc/andros-bridge/andros-bridge.conf");
+  unsetenv("XDG_CONFIG_HOME");
+}
+
+}  // namespace
+}  // namespace andros::cli

@@ -1,0 +1,85 @@
+// `record`'s engine, in process: a virtual pad in, an event script out.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "andros/input/events.hpp"
+#include "andros/input/script_recorder.hpp"
+#include "support/virtual_device.hpp"
+
+namespace andros::input {
+namespace {
+
+using test::VirtualDevice;
+using T = InputEvent::Type;
+
+TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndEnd) {
+  test::use_dummy_video();
+  const SdlSession session;
+  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
+  pad->button(SDL_CONTROLLER_BUTTON_LEFTSHOULDER, true);  // held at connect
+  SdlInput input(SdlInputOptions{});
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 2;
+  options.header = "test recording\ncontroller: Test Pad";
+  // Between ticks, the "operator": the callback runs on the recorder's thread.
+  // Counted per call: on a busy machine the recorder skips tick numbers.
+  int step = 0;
+  const auto script = [&](const RecordStatus&) {
+    switch (++step) {
+      case 2: pad->button(SDL_CONTROLLER_BUTTON_A, true); break;
+      case 3: pad->axis(SDL_CONTROLLER_AXIS_LEFTY, -32768); break;
+      case 4: pad->button(SDL_CONTROLLER_BUTTON_A, false); break;
+      case 5: pad->unplug(); break;
+      default: break;
+    }
+    return step < 7;
+  };
+  const auto written = record_script(input, out, options, script).events;
+
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("# test recording\n# controller: Test Pad\n", 0), 0U) << text;
+  const auto events = parse_event_script(text, "recorded");
+  ASSERT_EQ(events.size(), static_cast<std::size_t>(written) + 1) << text;
+  std::vector<std::string> lines;
+  for (const auto& e : events) {
+    auto line = format_event(e);
+    lines.push_back(line.substr(line.find_first_not_of("0123456789 ")));
+  }
+  const std::vector<std::string> expected = {
+      "connect     Test Pad",     "button      leftshoulder 1", "button      a 1",
+      "axis        lefty -32768", "button      a 0",            "disconnect",
+      "end"};
+  EXPECT_EQ(lines, expected) << text;
+  EXPECT_EQ(events[0].t_ms, 0);
+  EXPECT_EQ(events[1].t_ms, 0);  // held at connect: the connect's time
+  EXPECT_GT(events[2].t_ms, 0);
+  for (std::size_t i = 1; i < events.size(); ++i) EXPECT_GE(events[i].t_ms, events[i - 1].t_ms);
+  EXPECT_EQ(events.back().type, T::kEnd);
+}
+
+}  // namespace
+// A recording ends by itself at its longest (a day for `record`, so that
+// replay and run take what it wrote; 100 ms here), with its `end` no later.
+TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
+  test::use_dummy_video();
+  const SdlSession session;
+  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
+  SdlInput input(SdlInputOptions{});
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 10;
+  options.max_ms = 100;
+  int calls = 0;
+  const auto ended = record_script(input, out, options, [&](const RecordStatus&) { return ++calls < 10'000; });
+  EXPECT_TRUE(ended.at_limit);
+  EXPECT_LE(ended.t_ms, 100);
+  const auto events = parse_event_script(out.str(), "recorded");
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back().type, T::kEnd);
+  EXPECT_LE(events.back().t_ms, 100);
+  EXPECT_LT(calls, 10'000);
+}
+
+}  // namespace andros::input

@@ -1,0 +1,164 @@
+// --controller and --controller-db: one device chosen, the others ignored.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+
+#include "andros/base/error.hpp"
+#include "andros/input/sdl_input.hpp"
+#include "support/temp_dir.hpp"
+#include "support/virtual_device.hpp"
+
+namespace andros::input {
+namespace {
+
+using test::VirtualDevice;
+
+constexpr InputKey kA{InputKind::kPadButton, SDL_CONTROLLER_BUTTON_A};
+
+class SdlSelectionTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { test::use_dummy_video(); }
+
+  void tick(SdlInput& input) { input.pump(state_, now_ += 40); }
+
+  /// Attaches the two pads and checks that only the one chosen feeds the state.
+  void expect_only_beta_counts(const std::function<std::string(const VirtualDevice& beta)>& choose) {
+    auto alpha = VirtualDevice::pad("Alpha Pad", 10);
+    auto beta = VirtualDevice::pad("Beta Pad", 11);
+    SdlInput input(SdlInputOptions{choose(beta), ""});
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    EXPECT_EQ(state_.name(), "Beta Pad");
+    alpha.button(SDL_CONTROLLER_BUTTON_A, true);
+    tick(input);
+    EXPECT_FALSE(state_.button(kA).down) << "alpha mixed in";
+    beta.button(SDL_CONTROLLER_BUTTON_A, true);
+    tick(input);
+    EXPECT_TRUE(state_.button(kA).down);
+    beta.unplug();
+    tick(input);
+    EXPECT_FALSE(state_.connected()) << "fell back to alpha";
+  }
+
+  SdlSession session_;
+  InputState state_;
+  std::int64_t now_ = 0;
+};
+
+TEST_F(SdlSelectionTest, ByName) {
+  expect_only_beta_counts([](const VirtualDevice&) { return "BETA"; });  // a part, any case
+}
+
+TEST_F(SdlSelectionTest, ByGuid) {
+  expect_only_beta_counts([](const VirtualDevice& beta) { return beta.guid(); });
+}
+
+TEST_F(SdlSelectionTest, ByIndex) {
+  expect_only_beta_counts([](const VirtualDevice& beta) { return std::to_string(beta.device_index()); });
+}
+
+TEST_F(SdlSelectionTest, DefaultIsTheFirstDevice) {
+  if (SDL_NumJoysticks() > 0) GTEST_SKIP() << "a real controller is attached";
+  auto alpha = VirtualDevice::pad("Alpha Pad", 10);
+  auto beta = VirtualDevice::pad("Beta Pad", 11);
+  SdlInput input(SdlInputOptions{});
+  tick(input);
+  EXPECT_EQ(state_.name(), "Alpha Pad");
+}
+
+TEST_F(SdlSelectionTest, NoMatchWaitsAndAMatchingDeviceConnectsLater) {
+  auto alpha = VirtualDevice::pad("Alpha Pad", 10);
+  SdlInput input(SdlInputOptions{"gamma", ""});
+  tick(input);
+  EXPECT_FALSE(state_.connected());
+  auto gamma = VirtualDevice::pad("Gamma Pad", 12);
+  tick(input);
+  EXPECT_TRUE(state_.connected());
+  EXPECT_EQ(state_.name(), "Gamma Pad");
+}
+
+TEST_F(SdlSelectionTest, ListsEveryDeviceWithItsType) {
+  auto pad = VirtualDevice::pad("Alpha Pad", 10);
+  auto stick = VirtualDevice::stick("Test Stick");
+  const auto list = list_controllers(SdlInputOptions{});
+  const auto find = [&](const std::string& name) {
+    return std::find_if(list.begin(), list.end(), [&](const ControllerInfo& c) { return c.name == name; });
+  };
+  ASSERT_NE(find("Alpha Pad"), list.end());
+  ASSERT_NE(find("Test Stick"), list.end());
+  EXPECT_TRUE(find("Alpha Pad")->game_controller);
+  EXPECT_FALSE(find("Test Stick")->game_controller);
+  EXPECT_EQ(find("Alpha Pad")->guid, pad.guid());
+  EXPECT_EQ(find("Test Stick")->index, stick.device_index());
+}
+
+TEST(SdlOptions, AnIndexOutOfRangeIsBadInput) {
+  test::use_dummy_video();
+  EXPECT_THROW(SdlInput(SdlInputOptions{"256", ""}), InputError);
+}
+
+class ControllerDbTest : public SdlSelectionTest {
+ protected:
+  // A directory of this test's own: ctest runs the cases as processes side by
+  // side, and a shared file name let one case read another's database.
+  std::string write(const std::string& text) { return dir_.write("controller_db.txt", text).string(); }
+  testing::TempDir dir_;
+  std::string path_ = (dir_.path() / "controller_db.txt").string();
+};
+
+TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
+  try {
+    SdlInput input(SdlInputOptions{"", "/nonexistent/db.txt"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "/nonexistent/db.txt");
+  }
+}
+
+TEST_F(ControllerDbTest, ABadMappingLineIsBadInputAtItsLine) {
+  write("# a comment\n\nnot a mapping at all\n");
+  try {
+    SdlInput input(SdlInputOptions{"", path_});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().line, 3);
+  }
+}
+
+TEST_F(ControllerDbTest, AMappingTurnsAPlainJoystickIntoAGameController) {
+  auto stick = VirtualDevice::stick("Test Stick");
+  write("# other platforms' lines are skipped\n" + stick.guid() +
+        ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Windows,\n" + stick.guid() +
+        ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Linux,\n");
+  SdlInput input(SdlInputOptions{"", path_});
+  tick(input);
+  EXPECT_EQ(state_.name(), "Mapped Stick");
+  stick.button(4, true);
+  tick(input);
+  EXPECT_TRUE(state_.button(InputKey{InputKind::kPadButton, SDL_CONTROLLER_BUTTON_LEFTSHOULDER}).down);
+}
+
+TEST(SdlEnvironment, SdlGameControllerConfigAddsMappings) {
+  test::use_dummy_video();
+  std::string guid;
+  {
+    const SdlSession probe;  // the virtual stick's GUID, from its name and ids
+    guid = VirtualDevice::stick("Test Stick").guid();
+  }
+  const std::string mapping = guid + ",Env Stick,a:b0,leftshoulder:b4,leftx:a0,lefty:a1,";
+  setenv("SDL_GAMECONTROLLERCONFIG", mapping.c_str(), 1);
+  {
+    const SdlSession session;  // SDL reads the variable when it starts
+    auto stick = VirtualDevice::stick("Test Stick");
+    SdlInput input(SdlInputOptions{});
+    InputState state;
+    input.pump(state, 40);
+    EXPECT_EQ(state.name(), "Env Stick");
+  }
+  unsetenv("SDL_GAMECONTROLLERCONFIG");
+}
+
+}  // namespace
+}  // namespace andros::input

@@ -1,0 +1,84 @@
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "andros/protocol/signals.hpp"
+
+namespace andros::protocol {
+namespace {
+
+TEST(Signals, NamesAreUnique) {
+  std::set<std::string_view> names;
+  for (const auto& s : kSignals) EXPECT_TRUE(names.insert(s.name).second) << s.name;
+}
+
+TEST(Signals, EveryBitOfTheSwitchBytesIsASignalOrFixed) {
+  // Bytes 0-5, 10 and 13 are all switches: each bit is a signal or a fixed bit, once.
+  for (const std::uint8_t byte : {0, 1, 2, 3, 4, 5, 10, 13}) {
+    for (std::uint8_t bit = 0; bit < 8; ++bit) {
+      int owners = is_fixed_bit(byte, bit) ? 1 : 0;
+      for (const auto& s : kSignals) owners += (s.byte == byte && s.bit == bit) ? 1 : 0;
+      EXPECT_EQ(owners, 1) << "byte " << int{byte} << " bit " << int{bit};
+    }
+  }
+}
+
+TEST(Signals, WholeBytesAreTheAnalogAndConstantOnes) {
+  std::set<int> bytes;
+  for (const auto& s : kSignals) {
+    if (!s.is_bit()) bytes.insert(s.byte);
+    EXPECT_EQ(!s.is_bit(), s.kind == SignalKind::kCentred || s.kind == SignalKind::kLevel ||
+                               s.kind == SignalKind::kConstant)
+        << s.name;
+  }
+  EXPECT_EQ(bytes, (std::set<int>{6, 7, 8, 9, 11, 12, 14}));
+}
+
+TEST(Signals, OpposingPairsOfTheContract) {
+  const std::pair<const char*, const char*> pairs[] = {
+      {"front_art_up", "front_art_down"}, {"rear_art_up", "rear_art_down"},
+      {"pt_left", "pt_right"},            {"pt_up", "pt_down"},
+      {"focus_down", "focus_up"},         {"iris_up", "iris_down"},
+      {"zoom_down", "zoom_up"},           {"fiber_unwind", "fiber_takeup"},
+      {"shoulder_cw", "shoulder_ccw"},    {"torso_left", "torso_right"},
+      {"wrist_cw", "wrist_ccw"},          {"gripper_rot_ccw", "gripper_rot_cw"},
+      {"gripper_open", "gripper_close"},  {"elbow_cw", "elbow_ccw"},
+      {"pt_extend_up", "pt_extend_down"}, {"wrist_extend_left", "wrist_extend_right"},
+      {"graphics_down", "graphics_up"},   {"speed_high", "speed_low"},
+  };
+  std::size_t with_partner = 0;
+  for (const auto& s : kSignals) with_partner += s.partner.empty() ? 0 : 1;
+  EXPECT_EQ(with_partner, 2 * std::size(pairs));
+  for (const auto& [a, b] : pairs) {
+    const auto ia = find_signal(a);
+    ASSERT_TRUE(ia) << a;
+    EXPECT_EQ(partner_of(*ia), find_signal(b)) << a;
+  }
+}
+
+TEST(Signals, WeaponsAndSelectorsAreTheContractsLists) {
+  std::set<std::string_view> weapons, selectors;
+  for (const auto& s : kSignals) {
+    if (s.kind == SignalKind::kWeapon) weapons.insert(s.name);
+    if (s.kind == SignalKind::kSelector) selectors.insert(s.name);
+  }
+  EXPECT_EQ(weapons, (std::set<std::string_view>{"weapon_1", "weapon_2", "weapon_3", "weapon_4",
+                                                  "weapon_5", "weapon_6", "shotgun", "laser",
+                                                  "enable_key"}));
+  EXPECT_EQ(selectors, (std::set<std::string_view>{"speed_high", "speed_low", "inset_3", "inset_4",
+                                                    "inset_video_1", "inset_video_2",
+                                                    "main_video_2", "main_video_3",
+                                                    "main_video_4"}));
+}
+
+TEST(Signals, Lookup) {
+  EXPECT_EQ(kSignals[signal_id("safety")].byte, 0);
+  EXPECT_EQ(kSignals[signal_id("safety")].bit, 1);
+  EXPECT_EQ(kSignals[signal_id("battery")].byte, 14);
+  EXPECT_FALSE(find_signal("Safety"));
+  EXPECT_FALSE(find_signal(""));
+}
+
+}  // namespace
+}  // namespace andros::protocol

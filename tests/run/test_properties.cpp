@@ -1,0 +1,231 @@
+// Property test: random event scripts through every shipped mapping. Whatever
+// the operator does, every frame passes validation, no opposing pair is both
+// 1, nothing moves while not enabled, weapons stay 0 without --weapons, and
+// drive and pivot stay at centre after a change of meaning until their stick
+// was seen at rest. `enabled` and the rest rule are checked against
+// independent readings of docs/mapping.md's safety rules.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "andros/input/events.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/run/replay.hpp"
+#include "oracle/centre_watch.hpp"
+
+namespace andros::run {
+namespace {
+
+constexpr int kScripts = 1000;
+
+// A small generator of our own: the same numbers on every standard library.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ULL + 1) {}
+  std::uint32_t below(std::uint32_t n) {
+    state_ ^= state_ << 13;
+    state_ ^= state_ >> 7;
+    state_ ^= state_ << 17;
+    return static_cast<std::uint32_t>(state_ % n);
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+std::vector<input::InputEvent> random_script(Random& rng) {
+  using T = input::InputEvent::Type;
+  const auto deadman = *input::parse_button_name("leftshoulder");
+  std::vector<input::InputEvent> events;
+  std::int64_t t = 0;
+  const auto add = [&](T type, input::InputKey key = {}, int value = 0) {
+    input::InputEvent e;
+    e.t_ms = t;
+    e.type = type;
+    e.key = key;
+    e.value = value;
+    events.push_back(e);
+  };
+  add(T::kConnect);
+  const int n = 20 + static_cast<int>(rng.below(60));
+  for (int i = 0; i < n; ++i) {
+    t += rng.below(4) == 0 ? 0 : rng.below(60);
+    const auto roll = rng.below(100);
+    if (roll < 3) {
+      add(rng.below(2) == 0 ? T::kDisconnect : T::kConnect);
+    } else if (roll < 30) {  // the deadman and the layer buttons, often
+      const std::array<std::string_view, 4> busy = {"leftshoulder", "rightshoulder", "leftstick", "rightstick"};
+      const auto key = *input::parse_button_name(busy[rng.below(busy.size())]);
+      // The deadman is held more often than not, so that sessions last long enough to do something.
+      add(T::kButton, key, key == deadman ? static_cast<int>(rng.below(4) != 0) : static_cast<int>(rng.below(2)));
+    } else if (roll < 38) {  // the weapons' arming trigger (LT), squeezed or at rest
+      add(T::kAxis, *input::parse_axis_name("lefttrigger"), rng.below(2) == 0 ? 0 : 32767);
+    } else if (roll < 65) {
+      add(T::kButton, input::InputKey{input::InputKind::kPadButton, static_cast<std::uint16_t>(rng.below(15))},
+          static_cast<int>(rng.below(2)));
+    } else {
+      // Rest (0) often: an input that changed meaning acts again only once seen at rest.
+      const std::array<int, 9> values = {-32768, -16384, -3000, 0, 0, 0, 3000, 16384, 32767};
+      const int v = rng.below(2) == 0 ? values[rng.below(values.size())] : static_cast<int>(rng.below(65536)) - 32768;
+      add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(rng.below(6))}, v);
+    }
+  }
+  t += 100;
+  add(T::kEnd);
+  return events;
+}
+
+// Contract section 5's `enabled`, read straight off the events: connected,
+// deadman down, and pressed (0 -> 1) after the connect, not at its instant.
+class EnabledOracle {
+ public:
+  explicit EnabledOracle(input::InputKey deadman) : deadman_(deadman) {}
+  void apply(const input::InputEvent& e) {
+    using T = input::InputEvent::Type;
+    if (e.type == T::kConnect) {
+      connected_ = true;
+      connect_t_ = e.t_ms;
+      down_ = fresh_ = false;
+    } else if (e.type == T::kDisconnect) {
+      connected_ = down_ = fresh_ = false;
+    } else if (connected_ && e.type == T::kButton && e.key == deadman_) {
+      if (e.value == 1 && !down_ && e.t_ms != connect_t_) fresh_ = true;
+      down_ = e.value == 1;
+    }
+  }
+  [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_; }
+
+ private:
+  input::InputKey deadman_;
+  bool connected_ = false, down_ = false, fresh_ = false;
+  std::int64_t connect_t_ = -1;
+};
+
+// The rest rule for drive and pivot, read off the mapping and the events: when
+// the binding that drives one changes (a layer), or the bridge becomes enabled
+// (also with a new pad between two frames), it stays at centre until its axis
+// is seen inside that binding's deadzone at a frame.
+class CentreOracle {
+ public:
+  explicit CentreOracle(const mapping::Mapping& mapping) : mapping_(mapping) {}
+
+  void apply(const input::InputEvent& e) {
+    using T = input::InputEvent::Type;
+    if (e.type == T::kConnect || e.type == T::kDisconnect) {
+      connected_ = e.type == T::kConnect;
+      sessions_ += connected_ ? 1 : 0;
+      axes_.clear();
+    } else if (connected_ && e.type == T::kAxis) {
+      axes_[e.key] = e.value;
+    }
+  }
+
+  /// Once per frame: must `analog` be at centre now?
+  bool must_centre(protocol::SignalId analog, const std::string& layer, bool enabled) {
+    const mapping::Binding* now = enabled ? test::centre_driver(mapping_, layer, analog) : nullptr;
+    return watch_[analog].must_centre(now, !enabled_ || sessions_ != seen_sessions_, [this](input::InputKey key) {
+      const auto it = axes_.find(key);
+      return it == axes_.end() ? 0 : it->second;
+    });
+  }
+
+  void end_frame(bool enabled) {
+    enabled_ = enabled;
+    seen_sessions_ = sessions_;
+  }
+
+ private:
+  const mapping::Mapping& mapping_;
+  std::map<input::InputKey, int> axes_;
+  std::map<protocol::SignalId, test::CentreWatch> watch_;
+  bool connected_ = false;
+  bool enabled_ = false;
+  int sessions_ = 0;
+  int seen_sessions_ = 0;
+};
+
+using Coverage = std::array<int, protocol::kSignalCount>;
+
+void check_script(const mapping::Mapping& mapping, const std::vector<input::InputEvent>& script, bool weapons, Coverage& coverage) {
+  std::string text;
+  for (const auto& e : script) text += input::format_event(e) + "\n";
+  TextReader in(text, "random.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  mapping::Engine engine(mapping, mapping::EngineOptions{weapons, 0x5A});
+  EnabledOracle oracle(mapping.deadman->key);
+  CentreOracle centre(mapping);
+  std::size_t next_event = 0;
+  protocol::ControlState previous = protocol::read_signals(engine.neutral());
+  replay(player, engine, timing::FrameClock(timing::kDefaultRateMillihertz), [&](std::int64_t t, const protocol::DataBytes& data) {
+    for (; next_event < script.size() && script[next_event].t_ms <= t; ++next_event) {
+      oracle.apply(script[next_event]);
+      centre.apply(script[next_event]);
+    }
+    const auto s = protocol::read_signals(data);
+    const bool enabled = oracle.enabled();
+    const auto where = [&] { return "t=" + std::to_string(t) + " in\n" + text; };
+    ASSERT_TRUE(protocol::validation_errors(data).empty()) << where();
+    ASSERT_EQ(data[protocol::kCodeByte], 0x5A);
+    ASSERT_EQ(engine.status().enable == mapping::EnableState::kEnabled, enabled) << where();
+    ASSERT_EQ(s[protocol::signal_id("safety")], enabled ? 1 : 0) << where();
+    for (const auto id : {protocol::signal_id("drive"), protocol::signal_id("pivot")}) {
+      if (centre.must_centre(id, engine.status().layer, enabled)) {
+        ASSERT_EQ(s[id], mapping.center) << protocol::info(id).name << " before its stick was seen at rest, " << where();
+      } else if (enabled && s[id] != mapping.center) {
+        ++coverage[id];
+      }
+    }
+    centre.end_frame(enabled);
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      const auto id = static_cast<protocol::SignalId>(i);
+      const auto& sig = protocol::kSignals[i];
+      if (const auto p = protocol::partner_of(id)) {
+        ASSERT_FALSE(s[id] && s[*p]) << sig.name << " with its partner, " << where();
+      }
+      if (sig.kind == protocol::SignalKind::kWeapon && (!weapons || !enabled)) {
+        ASSERT_EQ(s[id], 0) << sig.name << ", " << where();
+      }
+      if (sig.is_bit() && s[id] != 0) ++coverage[id];
+      if (enabled) continue;
+      switch (sig.kind) {
+        case protocol::SignalKind::kMotion:
+        case protocol::SignalKind::kInterlock: ASSERT_EQ(s[id], 0) << sig.name << " while not enabled, " << where(); break;
+        case protocol::SignalKind::kCentred: ASSERT_EQ(s[id], mapping.center) << sig.name << ", " << where(); break;
+        case protocol::SignalKind::kLevel:
+        case protocol::SignalKind::kSelector: ASSERT_EQ(s[id], previous[id]) << sig.name << " changed while not enabled, " << where(); break;
+        default: break;
+      }
+    }
+    previous = s;
+  });
+}
+
+TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
+  std::vector<mapping::Mapping> mappings;
+  for (const auto robot : protocol::kRobotTypes) {
+    mappings.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR})));
+  }
+  Coverage coverage{};
+  Random rng(20261122);
+  for (int i = 0; i < kScripts; ++i) {
+    const auto script = random_script(rng);
+    for (const auto& m : mappings) {
+      check_script(m, script, false, coverage);
+      check_script(m, script, true, coverage);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+  // The scripts do reach what the properties are about: motion and weapons.
+  for (const auto name :
+       {"drive_brake", "drive", "pivot", "front_art_up", "pt_left", "shoulder_cw", "focus_up", "weapon_1", "laser"}) {
+    EXPECT_GT(coverage[*protocol::find_signal(name)], 0) << name << " never sent";
+  }
+}
+
+}  // namespace
+}  // namespace andros::run

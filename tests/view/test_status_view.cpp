@@ -1,0 +1,60 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "andros/timing/frame_timing.hpp"
+#include "andros/view/status_view.hpp"
+
+namespace andros::view {
+namespace {
+
+TEST(StatusView, EveryBitSignalIsInExactlyOneGroup) {
+  std::multiset<protocol::SignalId> seen;
+  for (const auto& g : signal_groups()) seen.insert(g.signals.begin(), g.signals.end());
+  for (protocol::SignalId id = 0; id < protocol::kSignalCount; ++id) {
+    const bool shown = protocol::info(id).is_bit() && protocol::info(id).kind != protocol::SignalKind::kConstant;
+    EXPECT_EQ(seen.count(id), shown ? 1u : 0u) << protocol::info(id).name;
+  }
+}
+
+TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
+  protocol::ControlState s;
+  s[protocol::signal_id("safety")] = 1;
+  s[protocol::signal_id("pt_left")] = 1;
+  s[protocol::signal_id("drive")] = 255;
+  s[protocol::signal_id("pivot")] = 0;
+  s[protocol::signal_id("light")] = 255;
+  const auto text = render_frame_panel(protocol::FrameBuilder(1).build(s), false);
+  EXPECT_NE(text.find(" SAFETY drive_brake"), std::string::npos) << text;
+  EXPECT_NE(text.find(" PT_LEFT pt_right"), std::string::npos) << text;
+  EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [##########|          ]   0"), std::string::npos) << text;
+  EXPECT_NE(text.find("light      [#####################] 255"), std::string::npos) << text;
+  for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+    EXPECT_LE(end - start, 80u) << text.substr(start, end - start);
+  }
+}
+
+TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
+  RunStatus s;
+  s.enabled = true;
+  s.enable_text = "enabled";
+  EXPECT_NE(render_run_view(s, false).find("state       ENABLED\n"), std::string::npos);
+  s.enable_text = "enabled; at rest first: lefty";
+  EXPECT_NE(render_run_view(s, false).find("state       ENABLED; at rest first: lefty\n"), std::string::npos);
+}
+
+TEST(FrameTiming, MeasuresRateAndJitter) {
+  timing::FrameTiming t;
+  const std::int64_t p = 40'000'000;
+  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
+  const auto s = t.summary(49 * p);
+  EXPECT_EQ(s.count, 50u);
+  EXPECT_EQ(s.rate_hz, 25);  // the frames of the last second
+  EXPECT_NEAR(s.period_ms, 40.0, 0.05);
+  EXPECT_NEAR(s.jitter_ms, 1.0, 0.05);
+  EXPECT_NEAR(s.worst_ms, 1.0, 0.05);
+}
+
+}  // namespace
+}  // namespace andros::view
