@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The generated man pages and bash completion (build/man/, scripts/man/):
+# every page renders without a groff warning, andros-bridge(1) names every
+# command and every option the program has, and the completion completes
+# commands, flags, robots, fixed values, ports and files.
+source "$(dirname "$0")/lib.sh"
+MAN=$(dirname "$BIN")/../man
+[[ -d $MAN ]] || { echo "FAIL: no generated pages in $MAN (python3 missing at configure time?)"; exit 1; }
+
+for page in andros-bridge.1 andros-bridge.conf.5 andros-bridge-mapping.5 andros-bridge-events.5; do
+  [[ -s $MAN/$page ]] || { fail "$page was not generated"; continue; }
+  warnings=$(groff -man -Tutf8 -ww -z "$MAN/$page" 2>&1)
+  [[ -z $warnings ]] || fail "$page: groff warns: $warnings"
+done
+
+# Every command and every long option of help-data is in andros-bridge(1).
+text=$(groff -man -Tutf8 -P-c -P-b -P-u "$MAN/andros-bridge.1" 2>/dev/null)
+"$BIN" help-data >"$TMP/help.json" || fail "help-data failed"
+python3 - "$TMP/help.json" >"$TMP/expected" <<'PY'
+import json, sys
+def walk(cmd, path):
+    for o in cmd["options"]:
+        for n in o["names"]:
+            if n != "help": print(" ".join(path) + "\t--" + n)
+    for s in cmd["commands"]:
+        print(" ".join(path + [s["name"]]) + "\t")
+        walk(s, path + [s["name"]])
+walk(json.load(open(sys.argv[1])), ["andros-bridge"])
+PY
+[[ $(wc -l <"$TMP/expected") -gt 30 ]] || fail "help-data lists too little: $(wc -l <"$TMP/expected") lines"
+while IFS=$'\t' read -r path flag; do
+  grep -qF -- "$path" <<<"$text" || fail "andros-bridge(1) has no section for '$path'"
+  [[ -z $flag ]] || grep -qF -- "$flag" <<<"$text" || fail "andros-bridge(1) does not name $flag of '$path'"
+done <"$TMP/expected"
+grep -q "WOLVERINE" <<<"$text" || fail "andros-bridge(1) does not list the robot types"
+conf=$(groff -man -Tutf8 -P-c -P-b -P-u "$MAN/andros-bridge.conf.5" 2>/dev/null)
+for key in baudrate serialport robot code rate mapping weapons input; do
+  grep -q "^ *$key\b" <<<"$conf" || fail "andros-bridge.conf(5) does not describe the key $key"
+done
+
+# complete WORDS...: what the completion offers for the last word.
+complete_words() {
+  bash -c 'source "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _andros_bridge; printf "%s\n" "${COMPREPLY[@]}"' \
+    _ "$MAN/andros-bridge.bash" "$@"
+}
+expect_offers() {  # WANTED WORDS...: WANTED is among the offers
+  local want=$1; shift
+  complete_words "$@" | grep -qxF -- "$want" || fail "completing '$*' does not offer '$want': $(complete_words "$@" | tr '\n' ' ')"
+}
+expect_not_offered() {
+  local unwanted=$1; shift
+  ! complete_words "$@" | grep -qxF -- "$unwanted" || fail "completing '$*' offers '$unwanted'"
+}
+expect_offers run andros-bridge r
+expect_offers replay andros-bridge r
+expect_not_offered help-data andros-bridge h
+expect_offers --robot andros-bridge run --r
+expect_offers HD1 andros-bridge run --robot H
+expect_offers wolverine andros-bridge replay --robot w
+expect_offers sim andros-bridge run --port s
+expect_offers tcp: andros-bridge run --port t
+expect_offers sdl andros-bridge run --input s
+expect_offers encode andros-bridge frame e
+expect_offers --raw andros-bridge frame encode --r
+touch "$TMP/drive.events"
+expect_offers "$TMP/drive.events" andros-bridge replay "$TMP/dr"
+expect_offers --weapons andros-bridge run --robot hd1 --w
+exit $((failures > 0))
