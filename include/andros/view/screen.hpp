@@ -1,0 +1,80 @@
+#pragma once
+/// A screen that fits the terminal: lines made of styled pieces, the pinned
+/// ones always shown (in order, at the top), then blocks by priority while
+/// rows are left; every line cut to the width. Never more lines than the
+/// terminal has, so the screen never scrolls the header away.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace andros::view {
+
+struct TermSize {
+  int cols = 80;
+  int rows = 24;
+};
+
+enum class Style : std::uint8_t {
+  kPlain,
+  kBold,
+  kDim,
+  kReverse,
+  kGood,   ///< green: enabled, link up
+  kWarn,   ///< yellow: connecting, held back
+  kAlert,  ///< red: not enabled, link down
+  kBanner, ///< white on red, bold: WEAPONS ENABLED
+};
+
+struct Piece {
+  std::string text;
+  Style style = Style::kPlain;
+};
+
+/// One line of the screen.
+class Line {
+ public:
+  Line() = default;
+  Line(std::string text, Style style = Style::kPlain) { add(std::move(text), style); }  // NOLINT: implicit by design
+  Line& add(std::string text, Style style = Style::kPlain);
+  [[nodiscard]] const std::vector<Piece>& pieces() const { return pieces_; }
+  /// Characters shown (UTF-8 code points; escape sequences are never in a piece).
+  [[nodiscard]] std::size_t width() const;
+
+ private:
+  std::vector<Piece> pieces_;
+};
+
+class Screen {
+ public:
+  /// Shown whatever the size, top first (cut to the rows if there are more).
+  void pin(Line line) { pinned_.push_back(std::move(line)); }
+  /// Shown while rows are left, higher priority first, at their place in the
+  /// order they were added. A block shows whole or, when it may shrink, its first lines.
+  void block(std::vector<Line> lines, int priority, bool may_shrink = false);
+  /// Exactly min(rows, lines) lines, '\n'-terminated, each cut to cols; with
+  /// colour, ANSI SGR sequences (each line ends with a reset).
+  [[nodiscard]] std::string render(TermSize size, bool colour) const;
+  /// The lines that fit, for tests and off-terminal use.
+  [[nodiscard]] std::vector<Line> fit(TermSize size) const;
+
+ private:
+  struct Block {
+    std::vector<Line> lines;
+    int priority;
+    bool may_shrink;
+  };
+  std::vector<Line> pinned_;
+  std::vector<Block> blocks_;
+};
+
+/// The plain text of a line cut to width (no escapes).
+std::string plain(const Line& line, std::size_t width);
+
+/// Whether to use colour on this terminal: not with NO_COLOR set (any value,
+/// https://no-color.org), not for TERM unset, "dumb" or a terminal type
+/// known to have none (vt100, vt220, ...).
+bool colour_wanted(const char* no_color, const char* term);
+
+}  // namespace andros::view
