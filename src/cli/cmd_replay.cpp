@@ -12,6 +12,7 @@
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
+#include "andros/protocol/frame_output.hpp"
 #include "andros/run/replay.hpp"
 #include "commands.hpp"
 
@@ -56,7 +57,7 @@ void run_replay(const ReplayOptions& opt) {
   if (!opt.robot.empty() && !opt.mapping.empty()) throw InputError("replay: give --robot or --mapping, not both");
   const auto code = parse_code(opt.code, SourcePos{"--code"});
   const timing::FrameClock clock(timing::parse_rate(opt.rate, timing::kReplayBaud, SourcePos{"--rate"}));
-  const auto format = run::parse_replay_format(opt.format, SourcePos{"--format"});
+  const auto format = protocol::parse_replay_format(opt.format, SourcePos{"--format"});
   mapping::Mapping mapping = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot.empty() ? protocol::kDefaultRobot : opt.robot)
                                         : mapping::load_mapping(opt.mapping);
   auto script = input::checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
@@ -65,7 +66,7 @@ void run_replay(const ReplayOptions& opt) {
   input::ScriptPlayer player(script);
   mapping::Engine engine(std::move(mapping), mapping::EngineOptions{opt.weapons, code});
   write_frames(opt, [&](std::ostream& out) {
-    run::replay(player, engine, clock, [&](std::int64_t t, const protocol::DataBytes& data) { run::write_frame(out, format, t, data); });
+    run::replay(player, engine, clock, [&](std::int64_t t, const protocol::DataBytes& data) { protocol::write_frame(out, format, t, data); });
   });
 }
 

@@ -5,8 +5,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <ostream>
-#include <string_view>
 
 #include "andros/input/script_player.hpp"
 #include "andros/mapping/engine.hpp"
@@ -14,20 +12,12 @@
 
 namespace andros::run {
 
-enum class ReplayFormat : std::uint8_t { kHex, kRaw, kJsonl };
-
-/// "hex" | "raw" | "jsonl"; throws InputError at pos otherwise.
-ReplayFormat parse_replay_format(std::string_view text, const SourcePos& pos);
-
 using FrameSink = std::function<void(std::int64_t t_ms, const protocol::DataBytes& data)>;
 
 /// Steps the engine at every frame time from t = 0 through the first frame
 /// time >= the script's end (its `end`, or its last event), each frame
 /// reflecting every event with a time <= its own. Returns the frame count.
-std::int64_t replay(input::ScriptPlayer& player, mapping::Engine& engine, const timing::FrameClock& clock, const FrameSink& sink);
-
-/// One frame in a replay format: `T HEX72\n`, the 36 raw bytes, or a JSON
-/// line {"t","frame","signals"}.
-void write_frame(std::ostream& out, ReplayFormat format, std::int64_t t_ms, const protocol::DataBytes& data);
+std::int64_t replay(input::ScriptPlayer& player, mapping::Engine& engine, const timing::FrameClock& clock,
+                    const FrameSink& sink);
 
 }  // namespace andros::run
