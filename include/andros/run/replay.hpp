@@ -3,6 +3,7 @@
 /// virtual clock. Same script, same mapping, same options: same bytes, on any
 /// machine, at any speed. The CLI's `replay` is a thin wrapper over this.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <ostream>
@@ -15,8 +16,10 @@
 namespace andros::run {
 
 enum class ReplayFormat : std::uint8_t { kHex, kRaw, kJsonl };
+/// The formats' names, in the enum's order.
+inline constexpr std::array<std::string_view, 3> kReplayFormatNames = {"hex", "raw", "jsonl"};
 
-/// "hex" | "raw" | "jsonl"; throws InputError at pos otherwise.
+/// One of kReplayFormatNames; throws InputError at pos otherwise.
 ReplayFormat parse_replay_format(std::string_view text, const SourcePos& pos);
 
 using FrameSink = std::function<void(std::int64_t t_ms, const protocol::DataBytes& data)>;
