@@ -16,7 +16,7 @@ using andros::fuzz::check;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   andros::TextReader in(text, "fuzz.conf", andros::kConfigLimits);
-  andros::cli::RunConfig config;
+  andros::cli::Settings config;
   try {
     andros::cli::parse_config(in, config);
   } catch (const andros::InputError& e) {
@@ -32,7 +32,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     // Merged with the flags' defaults: either a rate the link carries or an
     // error at the line that set it.
-    const auto mhz = andros::cli::rate_millihertz(config);
+    andros::timing::check_rate_fits(config.rate, config.baud);
+    const auto mhz = config.rate.millihertz;
     check(mhz >= 1000 && mhz * andros::timing::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" && e.pos().line >= 1);

@@ -1,16 +1,13 @@
 #include "andros/base/error.hpp"
 
+#include "andros/base/text.hpp"
+
 namespace andros {
 namespace {
 
 bool printable(char c) { return c >= 0x20 && c < 0x7F; }
 
-void append_escaped(std::string& out, unsigned char c) {
-  static constexpr char kHex[] = "0123456789ABCDEF";
-  out += "\\x";
-  out += kHex[c >> 4];
-  out += kHex[c & 0xF];
-}
+void append_escaped(std::string& out, unsigned char c) { out += "\\x" + hex_byte(c); }
 
 std::string escaped(std::string_view text) {
   std::string out;

@@ -18,7 +18,7 @@
 #include "andros/base/shutdown_signals.hpp"
 #include "andros/base/text.hpp"
 #include "andros/base/unique_fd.hpp"
-#include "andros/cli/config.hpp"
+#include "andros/cli/command_line.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/link/vehicle_view.hpp"
 #include "andros/view/status_display.hpp"
@@ -30,8 +30,7 @@ namespace {
 
 struct MonitorOptions {
   std::string source = "-";
-  std::string baud;
-  std::string code;
+  std::unique_ptr<CommandLine> settings;  ///< the settings table's flags
 };
 
 constexpr int kRedrawsPerSecond = 4;
@@ -146,10 +145,9 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
 }
 
 int run_monitor(const MonitorOptions& opt) {
-  const int baud = opt.baud.empty() ? kDefaultBaud : parse_baud(opt.baud, SourcePos{"--baud"});
-  std::optional<std::uint8_t> code;
-  if (!opt.code.empty()) code = parse_code(opt.code, SourcePos{"--code"});
-  link::VehicleView view(code);
+  const Settings settings = resolve_settings(*opt.settings);
+  const int baud = settings.baud;
+  link::VehicleView view(settings.expected_code);
 
   if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, false, view);
   struct stat st{};
@@ -180,8 +178,7 @@ void add_monitor_command(CLI::App& app, int& exit_code) {
       "A capture file is decoded to its end and summarised. Stops on Ctrl-C.");
   cmd->add_option("PORT|FILE", opt->source, "serial port, capture file, or - for standard input")
       ->default_str("-");
-  cmd->add_option("--baud", opt->baud, "baud for a serial port (default 9600)");
-  cmd->add_option("--code", opt->code, "also count frames whose byte 11 differs from this code as invalid");
+  opt->settings = std::make_unique<CommandLine>(*cmd, kMonitor);
   cmd->callback([opt, &exit_code] { exit_code = run_monitor(*opt); });
 }
 

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "andros/base/error.hpp"
+#include "andros/cli/command_line.hpp"
 #include "andros/input/script_recorder.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
@@ -20,8 +21,7 @@ namespace {
 
 struct RecordCommandOptions {
   input::SdlInputOptions sdl;
-  std::string output = "-";
-  int rate_hz = 25;
+  std::unique_ptr<CommandLine> settings;  ///< the settings table's flags
 };
 
 volatile std::sig_atomic_t g_stop_signal = 0;
@@ -61,17 +61,19 @@ std::string utc_now() {
 }
 
 int run_record(const RecordCommandOptions& opt) {
+  const Settings settings = resolve_settings(*opt.settings);
+  const std::string& output = settings.script_output;
   // SDL first (bad selection or mapping file: exit 2 before any file is made).
   input::SdlInput input(opt.sdl);
   std::ofstream file;
-  if (opt.output != "-") {
-    file.open(opt.output, std::ios::out | std::ios::trunc);
-    if (!file) throw InputError(SourcePos{opt.output}, std::string("cannot create: ") + std::strerror(errno));
+  if (output != "-") {
+    file.open(output, std::ios::out | std::ios::trunc);
+    if (!file) throw InputError(SourcePos{output}, std::string("cannot create: ") + std::strerror(errno));
   }
-  std::ostream& out = opt.output == "-" ? std::cout : file;
+  std::ostream& out = output == "-" ? std::cout : file;
 
   input::RecordOptions rec;
-  rec.period_ms = 1000 / opt.rate_hz;
+  rec.period_ms = 1000 / settings.read_rate_hz;
   rec.header = "andros-bridge " + std::string(kVersion) + " record, started " + utc_now() +
                "\ncontroller: " + input.selection() + "\nt_ms    event       arguments";
 
@@ -89,11 +91,11 @@ int run_record(const RecordCommandOptions& opt) {
   };
   const auto ended = input::record_script(input, out, rec, keep_going);
   out.flush();
-  if (!out) throw RuntimeError((opt.output == "-" ? std::string("standard output") : opt.output) + ": write error");
+  if (!out) throw RuntimeError((output == "-" ? std::string("standard output") : output) + ": write error");
   if (progress) std::fputc('\n', stderr);
   if (ended.at_limit) std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
   std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events),
-               opt.output == "-" ? "" : " to ", opt.output == "-" ? "" : opt.output.c_str());
+               output == "-" ? "" : " to ", output == "-" ? "" : output.c_str());
   return kExitOk;
 }
 
@@ -106,15 +108,7 @@ void add_record_command(CLI::App& app, int& exit_code) {
       "Write the live controller's events as an event script (the text replay and\n"
       "'run --input' read) until SIGINT (Ctrl-C) or SIGTERM, then end it with 'T end'.\n"
       "Times are ms from the start of the recording.");
-  cmd->add_option("--output,-o", opt->output, "the script file, or - for standard output")
-      ->type_name("FILE")
-      ->default_str("-");
-  cmd->add_option("--rate", opt->rate_hz,
-                  "how often the controller is read, per second; the bridge's own rate (25)\n"
-                  "makes a replay see each event in the same frame the live bridge did")
-      ->type_name("HZ")
-      ->default_str("25")
-      ->check(CLI::Range(1, 1000));
+  opt->settings = std::make_unique<CommandLine>(*cmd, kRecord);
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_record(*opt); });
 }

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,13 +12,11 @@
 #include "andros/base/error.hpp"
 #include "andros/base/job_control.hpp"
 #include "andros/base/shutdown_signals.hpp"
-#include "andros/base/text.hpp"
-#include "andros/cli/config.hpp"
+#include "andros/cli/command_line.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/link/sim_vehicle.hpp"
 #include "andros/link/tcp_link.hpp"
 #include "andros/mapping/loader.hpp"
-#include "andros/protocol/robots.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
 #include "andros/view/run_status.hpp"
@@ -34,63 +31,11 @@ namespace {
 constexpr int kRedrawsPerSecond = 5;
 
 struct RunOptions {
-  std::string config;
-  std::string robot;
-  std::string mapping;
-  std::string port;
-  std::string baud;
-  std::string code;
-  std::string rate;
-  std::string input;
-  bool weapons = false;
-  input::SdlInputOptions sdl;  ///< --controller, --controller-db
-  CLI::App* cmd = nullptr;
+  std::unique_ptr<CommandLine> settings;  ///< every setting's flag (the settings table)
+  input::SdlInputOptions sdl;             ///< --controller, --controller-db
 };
 
-std::string find_default_config() {
-  for (const auto& path : default_config_paths()) {
-    if (std::filesystem::exists(path)) return path;
-  }
-  return {};
-}
-
-/// Defaults, then the config file, then the flags given.
-RunConfig resolve_config(const RunOptions& opt) {
-  RunConfig config;
-  const std::string file = opt.config.empty() ? find_default_config() : opt.config;
-  if (!file.empty()) {
-    read_config_file(file, config);
-    spdlog::info("config: {}", file);
-  }
-  const auto given = [&](const char* flag) { return opt.cmd->count(flag) > 0; };
-  if (given("--robot")) {
-    const auto robot = protocol::canonical_robot(opt.robot);
-    if (!robot) {
-      throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(opt.robot) + " (one of " + protocol::robot_list() + ")");
-    }
-    config.robot = *robot;
-    config.mapping.clear();  // a robot on the command line beats a mapping from the file
-  }
-  if (given("--mapping")) config.mapping = opt.mapping;
-  if (given("--port")) {
-    config.port = opt.port;
-    config.port_pos = SourcePos{"--port"};
-  }
-  if (given("--baud")) config.baud = parse_baud(opt.baud, SourcePos{"--baud"});
-  if (given("--code")) config.code = parse_code(opt.code, SourcePos{"--code"});
-  if (given("--rate")) {
-    config.rate = opt.rate;
-    config.rate_pos = SourcePos{"--rate"};
-  }
-  if (given("--weapons")) config.weapons = true;
-  if (given("--input")) config.input = opt.input;
-  if (config.port.empty()) {
-    throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
-  }
-  return config;
-}
-
-std::unique_ptr<link::Link> make_link(const RunConfig& config, const link::SimVehicle* sim) {
+std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<link::SerialLink>(sim->port_path(), config.baud);
   if (config.port.starts_with("tcp:")) return std::make_unique<link::TcpLink>(link::parse_tcp_spec(config.port, config.port_pos));
   link::check_serial_port(config.port, config.port_pos);
@@ -137,8 +82,8 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
 }
 
 int run_bridge(const RunOptions& opt) {
-  const RunConfig config = resolve_config(opt);
-  const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
+  const Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
+  const std::int64_t rate_mhz = config.rate.millihertz;
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
   // write error, never a signal that ends the run between two frames. (The
@@ -168,7 +113,7 @@ int run_bridge(const RunOptions& opt) {
   initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
-  initial.input = config.input == "sdl" ? "controller" : config.input;
+  initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial, *link, *frames, sim.get());
   std::optional<view::StatusDisplay> display;
@@ -214,18 +159,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
       "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
       "to a built-in simulated vehicle (sim).");
-  opt->cmd = cmd;
-  cmd->add_option("--config", opt->config,
-                  "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"
-                  "then /etc/andros-bridge/andros-bridge.conf, if present)");
-  cmd->add_option("--robot", opt->robot, "robot type: " + protocol::robot_list() + " (default HD1)");
-  cmd->add_option("--mapping", opt->mapping, "a mapping file instead of the robot's shipped one");
-  cmd->add_option("--port", opt->port, "PATH (serial device), sim (default) or tcp:HOST:PORT");
-  cmd->add_option("--baud", opt->baud, "9600 (default), 19200, 38400, 57600 or 115200");
-  cmd->add_option("--code", opt->code, "dip-switch code for byte 11, in hex (default 01)");
-  cmd->add_option("--rate", opt->rate, "frames per second, e.g. 25 or 12.5 (default 25; rate x 360 bits must fit the baud)");
-  cmd->add_flag("--weapons", opt->weapons, "enable weapon signals for this run (still need deadman and arming)");
-  cmd->add_option("--input", opt->input, "sdl (the controller, default) or an event script FILE");
+  opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/timing/rate.hpp"
 #include "andros/version.hpp"
 #include "andros/view/log_sink.hpp"
 #include "commands.hpp"
@@ -91,7 +92,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
       "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
-      "command frames to the vehicle's serial link at 25 Hz, with the safety rules applied.",
+      "command frames to the vehicle's serial link at " + andros::timing::rate_text(andros::timing::kDefaultRateMillihertz) +
+          " Hz, with the safety rules applied.",
       "andros-bridge"};
   app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
   app.require_subcommand(1);

@@ -1,12 +1,13 @@
 #include "run_input.hpp"
 
+#include "andros/cli/settings.hpp"
 #include "andros/input/script_input.hpp"
 
 namespace andros::cli {
 
 std::unique_ptr<input::InputSource> make_input_source(const std::string& input, const input::SdlInputOptions& sdl,
                                                const StopCheck& stop) {
-  if (input != "sdl") return std::make_unique<input::ScriptInput>(input, stop);
+  if (input != kSdlInput) return std::make_unique<input::ScriptInput>(input, stop);
   return input::make_sdl_input_source(sdl, stop);
 }
 

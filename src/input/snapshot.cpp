@@ -1,18 +1,14 @@
 #include "andros/input/snapshot.hpp"
 
-#include <charconv>
+#include "andros/base/text.hpp"
 
 namespace andros::input {
 namespace {
 
 std::optional<int> parse_index(std::string_view text) {
-  int value = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || value < 0 || value > kMaxJoystickIndex) {
-    return std::nullopt;
-  }
-  return value;
+  const auto value = to_integer(text);
+  if (!value || *value < 0 || *value > kMaxJoystickIndex) return std::nullopt;
+  return static_cast<int>(*value);
 }
 
 template <std::size_t N>

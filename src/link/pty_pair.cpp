@@ -8,6 +8,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/link/serial_link.hpp"
+#include "andros/protocol/frame.hpp"
 
 namespace andros::link {
 
@@ -21,7 +22,7 @@ PtyPair open_pty_pair() {
   PtyPair pair{UniqueFd(master), UniqueFd(slave), name};
   fcntl(master, F_SETFD, FD_CLOEXEC);
   fcntl(slave, F_SETFD, FD_CLOEXEC);
-  configure_raw_8n1(master, 9600);
+  configure_raw_8n1(master, protocol::kSwitchboxBaud);
   return pair;
 }
 

@@ -1,4 +1,5 @@
 #include "andros/base/clock.hpp"
+#include "andros/base/text.hpp"
 #include "andros/link/tcp_link.hpp"
 
 #include <fcntl.h>
@@ -36,10 +37,11 @@ TcpAddress parse_tcp_spec(std::string_view spec, const SourcePos& pos) {
     out.host = std::string(rest.substr(0, colon));
     out.port = std::string(rest.substr(colon + 1));
   }
-  // Digits only, compared as text first: 99999999999999999999 is out of range, not an overflow.
+  // Digits only (no sign), at most 5 of them.
   const bool digits = !out.port.empty() && out.port.size() <= 5 &&
                       out.port.find_first_not_of("0123456789") == std::string::npos;
-  if (out.host.empty() || !digits || std::stoi(out.port) < 1 || std::stoi(out.port) > 65535) {
+  const auto port = to_integer(out.port);
+  if (out.host.empty() || !digits || !port || *port < 1 || *port > 65535) {
     throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT (PORT 1..65535)");
   }
   out.pos = pos;

@@ -1,6 +1,6 @@
-#include <cctype>
 #include <cstdlib>
 
+#include "andros/base/text.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
 #include "andros/version.hpp"
@@ -29,9 +29,7 @@ fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>&
   if (!canonical) {
     throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(robot) + " (expected " + protocol::robot_list() + ")");
   }
-  std::string file = *canonical;
-  for (auto& c : file) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  file += ".yaml";
+  const std::string file = to_lower(*canonical) + ".yaml";
   std::string looked;
   for (const auto& dir : search_path) {
     std::error_code ec;

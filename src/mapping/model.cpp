@@ -1,4 +1,6 @@
 #include "andros/mapping/model.hpp"
+
+#include "andros/protocol/robots.hpp"
 #include "overload.hpp"
 
 #include <algorithm>
@@ -218,7 +220,7 @@ std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer) {
 
 void validate(const Mapping& m, bool require_robot) {
   if (require_robot && !m.robot) {
-    throw InputError(SourcePos{m.file}, "missing 'robot' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)");
+    throw InputError(SourcePos{m.file}, "missing 'robot' (one of " + protocol::robot_list() + ")");
   }
   if (require_robot && !m.deadman) throw InputError(SourcePos{m.file}, "missing 'deadman': the button that enables motion");
   if (m.center < 0 || m.center > 255) throw InputError(SourcePos{m.file}, "center is out of range 0..255");

@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include "andros/base/text.hpp"
 #include "andros/base/text_file.hpp"
 
 namespace andros::mapping::yaml {
@@ -174,15 +175,13 @@ long long Reader::integer(const YAML::Node& node, long long min, long long max, 
   const auto s = text(node, what);
   std::string_view digits = s;
   int base = 10;
-  if (digits.size() > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+  if (digits.size() > 2 && digits[0] == '0' && to_lower(digits[1]) == 'x') {
     digits.remove_prefix(2);
     base = 16;
   }
-  long long value = 0;
-  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, base);
-  if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size()) {
-    fail(node, std::string(what) + " " + quote(s) + " is not a whole number");
-  }
+  const auto parsed = to_integer(digits, base);
+  if (!parsed) fail(node, std::string(what) + " " + quote(s) + " is not a whole number");
+  const long long value = *parsed;
   if (value < min || value > max) {
     fail(node, std::string(what) + " " + s + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
   }
@@ -249,12 +248,14 @@ protocol::SignalId Reader::signal(const YAML::Node& node) const {
     std::string_view rest = std::string_view(name).substr(4);
     const auto dot = rest.find('.');
     const auto byte_text = rest.substr(0, dot);
-    auto [p, ec] = std::from_chars(byte_text.data(), byte_text.data() + byte_text.size(), byte);
-    bool ok = !byte_text.empty() && ec == std::errc() && p == byte_text.data() + byte_text.size() && byte < protocol::kDataBytes;
+    const auto byte_value = to_integer(byte_text);
+    bool ok = byte_value && !byte_text.starts_with('-') && *byte_value < static_cast<long long>(protocol::kDataBytes);
+    if (ok) byte = static_cast<unsigned>(*byte_value);
     if (ok && dot != std::string_view::npos) {
       const auto bit_text = rest.substr(dot + 1);
-      auto [q, ec2] = std::from_chars(bit_text.data(), bit_text.data() + bit_text.size(), bit);
-      ok = bit_text.size() == 1 && ec2 == std::errc() && bit >= 0 && bit <= 7;
+      const auto bit_value = to_integer(bit_text);
+      ok = bit_text.size() == 1 && bit_value && *bit_value >= 0 && *bit_value <= 7;
+      if (ok) bit = static_cast<int>(*bit_value);
     }
     if (ok) {
       if (byte == protocol::kTrailerByte) fail(node, "byte 15 is fixed at 0x02 by the protocol; it cannot be a target");

@@ -2,17 +2,21 @@
 
 #include <cstdio>
 
+#include "andros/base/text.hpp"
+
 namespace andros::protocol {
 namespace {
 
 constexpr std::size_t kDigits = 2 * kDataBytes;
 constexpr std::size_t kChecksumAt = 2 + kDigits;
 
-bool is_hex_digit(std::uint8_t b) { return (b >= '0' && b <= '9') || (b >= 'A' && b <= 'F'); }
-
-std::uint8_t nibble(std::uint8_t b) {
-  return static_cast<std::uint8_t>(b <= '9' ? b - '0' : b - 'A' + 10);
+/// The switchbox sends upper-case digits only.
+bool is_hex_digit(std::uint8_t b) {
+  const auto c = static_cast<char>(b);
+  return hex_value(c) >= 0 && to_upper(c) == c;
 }
+
+std::uint8_t nibble(std::uint8_t b) { return static_cast<std::uint8_t>(hex_value(static_cast<char>(b))); }
 
 std::string hex16(std::uint16_t v) {
   char text[8];

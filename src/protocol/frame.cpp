@@ -3,23 +3,9 @@
 #include <cstdio>
 
 #include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 
 namespace andros::protocol {
-namespace {
-
-constexpr char kHexDigits[] = "0123456789ABCDEF";
-
-int hex_value(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-std::string hex_byte(std::uint8_t v) { return {kHexDigits[v >> 4], kHexDigits[v & 0x0F]}; }
-
-}  // namespace
-
 std::uint16_t checksum(std::span<const std::uint8_t> ascii_digits) {
   std::uint16_t sum = 0;
   for (const auto b : ascii_digits) sum = static_cast<std::uint16_t>(sum + b);
@@ -31,8 +17,8 @@ Frame encode(const DataBytes& data) {
   frame[0] = kStartByte;
   frame[1] = kStartByte;
   for (std::size_t i = 0; i < data.size(); ++i) {
-    frame[2 + 2 * i] = static_cast<std::uint8_t>(kHexDigits[data[i] >> 4]);
-    frame[3 + 2 * i] = static_cast<std::uint8_t>(kHexDigits[data[i] & 0x0F]);
+    frame[2 + 2 * i] = static_cast<std::uint8_t>(hex_digit(data[i] >> 4U));
+    frame[3 + 2 * i] = static_cast<std::uint8_t>(hex_digit(data[i]));
   }
   const auto sum = checksum(std::span(frame).subspan(2, 2 * kDataBytes));
   frame[34] = static_cast<std::uint8_t>(sum & 0xFF);

@@ -5,10 +5,12 @@
 namespace andros::protocol {
 
 ReplayFormat parse_replay_format(std::string_view text, const SourcePos& pos) {
-  if (text == "hex") return ReplayFormat::kHex;
-  if (text == "raw") return ReplayFormat::kRaw;
-  if (text == "jsonl") return ReplayFormat::kJsonl;
-  throw InputError(pos, "format " + quote(text) + " is not one of hex, raw, jsonl");
+  std::string names;
+  for (std::size_t i = 0; i < kReplayFormatNames.size(); ++i) {
+    if (text == kReplayFormatNames[i]) return static_cast<ReplayFormat>(i);
+    names += (i == 0 ? "" : ", ") + std::string(kReplayFormatNames[i]);
+  }
+  throw InputError(pos, "format " + quote(text) + " is not one of " + names);
 }
 
 void write_frame(std::ostream& out, ReplayFormat format, std::int64_t t_ms, const DataBytes& data) {

@@ -1,12 +1,11 @@
 #include "andros/protocol/robots.hpp"
 
-#include <cctype>
+#include "andros/base/text.hpp"
 
 namespace andros::protocol {
 
 std::optional<std::string> canonical_robot(std::string_view name) {
-  std::string upper(name);
-  for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string upper = to_upper(name);
   for (const auto robot : kRobotTypes) {
     if (robot == upper) return upper;
   }

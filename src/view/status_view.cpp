@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "andros/base/text.hpp"
+
 namespace andros::view {
 namespace {
 
@@ -16,12 +18,6 @@ constexpr int kGaugeHalf = 10;
 std::vector<protocol::SignalId> ids(std::initializer_list<std::string_view> names) {
   std::vector<protocol::SignalId> out;
   for (const auto n : names) out.push_back(*protocol::find_signal(n));
-  return out;
-}
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (auto& c : out) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
   return out;
 }
 
@@ -92,7 +88,7 @@ std::string render_frame_panel(const protocol::DataBytes& data, bool ansi) {
         line += name;
         line += kReset;
       } else {
-        line += on ? upper(name) : std::string(name);
+        line += on ? to_upper(name) : std::string(name);
       }
       visible += name.size() + 1;
     }

@@ -7,8 +7,8 @@
 namespace andros::cli {
 namespace {
 
-RunConfig parse(const std::string& text, const std::string& file = "dir/test.conf") {
-  RunConfig c;
+Settings parse(const std::string& text, const std::string& file = "dir/test.conf") {
+  Settings c;
   TextReader in(text, file, kConfigLimits);
   parse_config(in, c);
   return c;
@@ -24,13 +24,12 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(Config, DefaultsFollowTheContract) {
-  const RunConfig c;
+  const Settings c;
   EXPECT_EQ(c.robot, "HD1");
   EXPECT_EQ(c.port, "sim");
   EXPECT_EQ(c.baud, 9600);
   EXPECT_EQ(c.code, 0x01);
-  EXPECT_EQ(c.rate, "25");
-  EXPECT_EQ(rate_millihertz(c), 25'000);
+  EXPECT_EQ(c.rate.millihertz, 25'000);
   EXPECT_FALSE(c.weapons);
   EXPECT_EQ(c.input, "sdl");
 }
@@ -54,8 +53,9 @@ TEST(Config, ReadsTheLegacyFileAsIs) {
 
 TEST(Config, ReadsTheBridgesOwnKeys) {
   const auto c = parse(" rate = 20 \r\nweapons=enabled\nmapping=custom.yaml\ninput=demo.events\n\n");
-  EXPECT_EQ(c.rate, "20");
-  EXPECT_EQ(c.rate_pos.line, 1);
+  EXPECT_EQ(c.rate.millihertz, 20'000);
+  EXPECT_EQ(c.rate.text, "20");
+  EXPECT_EQ(c.rate.pos.line, 1);
   EXPECT_TRUE(c.weapons);
   EXPECT_EQ(c.mapping, "dir/custom.yaml");  // relative to the file
   EXPECT_EQ(c.input, "dir/demo.events");
@@ -84,12 +84,13 @@ TEST(Config, BadLinesNameFileAndLine) {
 
 TEST(Config, RefusesARateThatCannotFitWhereItWasSet) {
   auto c = parse("rate=12.5\n");
-  EXPECT_EQ(rate_millihertz(c), 12'500);
+  EXPECT_EQ(c.rate.millihertz, 12'500);
   c = parse("# fast\nrate=30\nbaudrate=19200\n");
-  EXPECT_EQ(rate_millihertz(c), 30'000);
+  EXPECT_NO_THROW(timing::check_rate_fits(c.rate, c.baud));
+  EXPECT_EQ(c.rate.millihertz, 30'000);
   c.baud = 9600;  // a --baud flag over the file
   try {
-    rate_millihertz(c);
+    timing::check_rate_fits(c.rate, c.baud);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(),

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "andros/base/text.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
 #include "andros/run/replay.hpp"
@@ -44,8 +45,7 @@ TEST(ShippedMappings, EveryFileLoadsAndValidates) {
 
 TEST(ShippedMappings, EveryRobotTypeIsFoundByName) {
   for (const auto robot : protocol::kRobotTypes) {
-    std::string lower(robot);
-    for (auto& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lower = to_lower(robot);
     const auto path = find_robot_mapping(lower, {kShipped});
     EXPECT_EQ(path.filename(), lower + ".yaml");
     const auto m = load_mapping(path);

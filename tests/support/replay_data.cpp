@@ -1,5 +1,7 @@
 #include "support/replay_data.hpp"
 
+#include "andros/base/text.hpp"
+
 #include "andros/run/replay.hpp"
 
 #include <gtest/gtest.h>
@@ -43,7 +45,7 @@ std::vector<ExpectedFrame> read_expected(const std::string& path, std::uint8_t c
         const auto eq = assignment.find('=');
         const auto id = protocol::find_signal(assignment.substr(0, eq));
         if (eq == std::string::npos || !id) throw std::runtime_error(path + ":" + std::to_string(line_no) + ": bad " + assignment);
-        f.state[*id] = static_cast<std::uint8_t>(std::stoi(assignment.substr(eq + 1)));
+        f.state[*id] = static_cast<std::uint8_t>(parse_integer(assignment.substr(eq + 1), 0, 255, "value", SourcePos{path, line_no}));
       }
     }
     frames.push_back(f);

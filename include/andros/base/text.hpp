@@ -1,13 +1,37 @@
 #pragma once
-/// Small value parsers shared by the command line, the config file, the
-/// event scripts and the mappings, so that every surface accepts the same text.
+/// Small text helpers and value parsers shared by the command line, the config
+/// file, the event scripts, the mappings and the protocol, so that every
+/// surface accepts (and shows) the same text.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "andros/base/error.hpp"
 
 namespace andros {
+
+/// text without leading and trailing blanks (space, tab, carriage return).
+std::string_view trim(std::string_view text);
+
+/// ASCII case conversion; other bytes are left as they are.
+char to_lower(char c);
+char to_upper(char c);
+std::string to_lower(std::string_view text);
+std::string to_upper(std::string_view text);
+
+/// The upper-case hex digit of a value 0..15.
+char hex_digit(unsigned value);
+/// The value of a hex digit of either case, or -1 for any other byte.
+int hex_value(char c);
+/// A byte as two upper-case hex digits ("0A").
+std::string hex_byte(std::uint8_t value);
+
+/// The whole of text as a number in base (10 or 16), as std::from_chars reads
+/// it (an optional '-', then digits); nullopt if anything else is there or it
+/// does not fit.
+std::optional<long long> to_integer(std::string_view text, int base = 10);
 
 /// The dip-switch code: one or two hex digits, an optional 0x prefix ("01",
 /// "3C", "0x3c"). Throws InputError at pos.

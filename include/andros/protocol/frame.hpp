@@ -17,6 +17,9 @@ using DataBytes = std::array<std::uint8_t, kDataBytes>;
 
 inline constexpr std::size_t kFrameSize = 36;
 inline constexpr std::uint8_t kStartByte = 0xF1;
+/// The switchbox's own line speed (8N1): the default link, and the one replay
+/// assumes.
+inline constexpr int kSwitchboxBaud = 9600;
 using Frame = std::array<std::uint8_t, kFrameSize>;
 
 /// The 16-bit sum of the ASCII hex digits of the data field.

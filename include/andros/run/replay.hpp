@@ -3,6 +3,7 @@
 /// virtual clock. Same script, same mapping, same options: same bytes, on any
 /// machine, at any speed. The CLI's `replay` is a thin wrapper over this.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 

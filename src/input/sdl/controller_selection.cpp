@@ -12,12 +12,6 @@
 namespace andros::input {
 namespace {
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 bool all_of(const std::string& text, int (*pred)(int)) {
   return !text.empty() &&
          std::all_of(text.begin(), text.end(), [pred](unsigned char c) { return pred(c) != 0; });
@@ -37,7 +31,7 @@ ControllerSelection::ControllerSelection(const std::string& text) {
   } else {
     by_ = By::kName;
   }
-  text_ = lower(text);
+  text_ = to_lower(text);
 }
 
 bool ControllerSelection::matches(int device_index) const {
@@ -47,8 +41,8 @@ bool ControllerSelection::matches(int device_index) const {
     case By::kGuid: return device_guid(device_index) == text_;
     case By::kName:
       // Both names: a mapping may rename a device SDL also knows by its raw name.
-      return lower(device_name(device_index)).find(text_) != std::string::npos ||
-             lower(nonnull(SDL_JoystickNameForIndex(device_index))).find(text_) != std::string::npos;
+      return to_lower(device_name(device_index)).find(text_) != std::string::npos ||
+             to_lower(nonnull(SDL_JoystickNameForIndex(device_index))).find(text_) != std::string::npos;
   }
   return false;
 }
@@ -73,7 +67,7 @@ std::string device_name(int device_index) {
 std::string device_guid(int device_index) {
   char text[33] = {};
   SDL_JoystickGetGUIDString(SDL_JoystickGetDeviceGUID(device_index), text, sizeof text);
-  return lower(text);
+  return to_lower(text);
 }
 
 }  // namespace andros::input

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 #include "andros/input/sdl_input.hpp"
 #include "controller_selection.hpp"
 
@@ -10,12 +11,6 @@ namespace andros::input {
 namespace {
 
 constexpr Uint32 kSdlSubsystems = SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER;
-
-std::string trim(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return std::string(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
-}
 
 }  // namespace
 
@@ -44,7 +39,7 @@ void load_controller_db(const std::string& path, const StopCheck& stop) {
   const std::string platform = std::string("platform:") + SDL_GetPlatform();
   int added = 0;
   while (const auto raw = in.next_line()) {
-    const std::string line = trim(*raw);
+    const std::string line(trim(*raw));
     if (line.empty() || line[0] == '#') continue;
     const auto at = line.find("platform:");
     if (at != std::string::npos && line.compare(at, platform.size(), platform) != 0) continue;

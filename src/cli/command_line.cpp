@@ -1,0 +1,76 @@
+#include "andros/cli/command_line.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+
+#include "andros/cli/config.hpp"
+
+namespace andros::cli {
+namespace {
+
+std::string find_default_config() {
+  for (const auto& path : default_config_paths()) {
+    if (std::filesystem::exists(path)) return path;
+  }
+  return {};
+}
+
+}  // namespace
+
+CommandLine::CommandLine(CLI::App& cmd, Command command) : command_(command) {
+  for (const auto& row : settings_table()) {
+    if ((row.commands & command) != 0) entries_.push_back(Entry{&row, nullptr, {}});
+  }
+  for (auto& entry : entries_) {
+    const auto& row = *entry.row;
+    const std::string names(row.flag);
+    if (row.value_name.empty()) {
+      entry.option = cmd.add_flag(names)->description(help_text(row));
+    } else {
+      entry.option = cmd.add_option(names, entry.text, help_text(row))
+                         ->type_name(std::string(row.value_name))
+                         ->default_str(default_text(row));
+    }
+  }
+}
+
+std::optional<std::string> CommandLine::given(std::string_view flag) const {
+  for (const auto& entry : entries_) {
+    if (flag_name(*entry.row) != flag || entry.option->count() == 0) continue;
+    return entry.row->value_name.empty() ? std::string("enabled") : entry.text;
+  }
+  return std::nullopt;
+}
+
+void apply_flags(const CommandLine& flags, Settings& settings) {
+  for (const auto& row : settings_table()) {
+    if ((row.commands & flags.command()) == 0) continue;
+    const auto flag = flag_name(row);
+    if (const auto text = flags.given(flag)) row.parse(*text, SourcePos{std::string(flag)}, settings);
+  }
+  // A robot on the command line beats a mapping from the file.
+  if (flags.given("--robot") && !flags.given("--mapping")) settings.mapping.clear();
+}
+
+Settings resolve_settings(const CommandLine& flags) {
+  Settings settings;
+  if (find_flag("--config", flags.command()) != nullptr) {
+    const auto given = flags.given("--config");
+    const std::string file = given ? *given : find_default_config();
+    if (!file.empty()) {
+      read_config_file(file, settings);
+      spdlog::info("config: {}", file);
+    }
+  }
+  apply_flags(flags, settings);
+  if (settings.port.empty()) {
+    throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
+  }
+  // Frames at the rate must fit the baud (replay's is the switchbox's).
+  if ((find_key("rate")->commands & flags.command()) != 0) timing::check_rate_fits(settings.rate, settings.baud);
+  return settings;
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,159 @@
+#include "andros/cli/settings.hpp"
+
+#include <array>
+
+#include "andros/base/text.hpp"
+
+namespace andros::cli {
+namespace {
+
+template <typename List>
+std::string joined(const List& items) {
+  std::string out;
+  for (const auto& item : items) {
+    if (!out.empty()) out += ", ";
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(item)>>) {
+      out += std::to_string(item);
+    } else {
+      out += item;
+    }
+  }
+  return out;
+}
+
+std::string code_text(std::uint8_t code) { return hex_byte(code); }
+
+std::string rate_detail() {
+  return "at most " + timing::rate_text(timing::max_rate_millihertz(protocol::kSwitchboxBaud)) + " Hz at " +
+         std::to_string(protocol::kSwitchboxBaud) + " baud";
+}
+
+// The rows, in the legacy file's key order (its four keys, then the bridge's),
+// then the settings that only a flag sets.
+const std::array<Setting, 14> kTable = {{
+    {"", "--config", "FILE", kRun,
+     "the config file (key=value, docs/running.md); default: "
+     "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf, then /etc/andros-bridge/andros-bridge.conf, if present",
+     nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.config = std::string(t); },
+     [](const Settings& s) { return s.config; }, false},
+    {"baudrate", "--baud", "N", kRun | kMonitor, "the serial line's baud: {}", baud_list,
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.baud = parse_baud(t, p); },
+     [](const Settings& s) { return std::to_string(s.baud); }, false},
+    {"serialport", "--port", "PATH|sim|tcp:HOST:PORT", kRun,
+     "where frames go: a serial device, the built-in simulated vehicle (sim) or a TCP serial server", nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) {
+       s.port = std::string(t);
+       s.port_pos = p;
+     },
+     [](const Settings& s) { return s.port; }, false},
+    {"robot", "--robot", "NAME", kRun | kReplay, "the robot type (any case), whose shipped mapping is used: {}",
+     protocol::robot_list,
+     [](std::string_view t, const SourcePos& p, Settings& s) {
+       const auto robot = protocol::canonical_robot(t);
+       if (!robot) throw InputError(p, "unknown robot " + quote(t) + " (one of " + protocol::robot_list() + ")");
+       s.robot = *robot;
+     },
+     [](const Settings& s) { return s.robot; }, false},
+    {"code", "--code", "HEX", kRun | kReplay, "the switchbox's dip-switch code for byte 11, in hex", nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.code = parse_code(t, p); },
+     [](const Settings& s) { return code_text(s.code); }, false},
+    {"rate", "--rate", "HZ", kRun | kReplay,
+     "frames per second, such as 25 or 12.5 (at least 1, at most 3 decimals); rate x 360 bits must fit the "
+     "baud ({})",
+     rate_detail, [](std::string_view t, const SourcePos& p, Settings& s) { s.rate = timing::parse_rate(t, p); },
+     [](const Settings& s) { return timing::rate_text(s.rate.millihertz); }, false},
+    {"mapping", "--mapping", "FILE", kRun | kReplay, "a mapping file instead of the robot's shipped one", nullptr,
+     [](std::string_view t, const SourcePos&, Settings& s) { s.mapping = std::string(t); },
+     [](const Settings& s) { return s.mapping; }, true},
+    {"weapons", "--weapons", "", kRun | kReplay,
+     "enable weapon signals (they still need the deadman and the arming input)", nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.weapons = parse_weapons(t, p); },
+     [](const Settings& s) { return std::string(s.weapons ? "enabled" : "disabled"); }, false},
+    {"input", "--input", "sdl|FILE", kRun,
+     "sdl: the live controller; FILE: an event script (docs/event-scripts.md) played in real time", nullptr,
+     [](std::string_view t, const SourcePos&, Settings& s) { s.input = std::string(t); },
+     [](const Settings& s) { return s.input; }, true},
+    {"", "--code", "HEX", kMonitor, "also count frames whose byte 11 differs from this code as invalid", nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.expected_code = parse_code(t, p); },
+     [](const Settings& s) { return s.expected_code ? code_text(*s.expected_code) : std::string(); }, false},
+    {"", "--rate", "HZ", kRecord,
+     "how often the controller is read, per second (1..1000); the bridge's own rate makes a replay see each "
+     "event in the same frame the live bridge did",
+     nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) {
+       s.read_rate_hz = static_cast<int>(parse_integer(t, 1, 1000, "rate", p));
+     },
+     [](const Settings& s) { return std::to_string(s.read_rate_hz); }, false},
+    {"", "--format", "FORMAT", kReplay, "{}: T HEX72 per line, 36 raw bytes per frame, or a JSON line per frame",
+     [] { return joined(protocol::kReplayFormatNames); },
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.format = protocol::parse_replay_format(t, p); },
+     [](const Settings& s) { return std::string(protocol::kReplayFormatNames[static_cast<std::size_t>(s.format)]); },
+     false},
+    {"", "--output", "FILE", kReplay,
+     "write to FILE instead of standard output (created only once every input is checked; removed again if the "
+     "replay fails)",
+     nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.output = std::string(t); },
+     [](const Settings& s) { return s.output; }, false},
+    {"", "--output,-o", "FILE", kRecord, "the script file, or - for standard output", nullptr,
+     [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
+     [](const Settings& s) { return s.script_output; }, false},
+}};
+
+}  // namespace
+
+std::span<const Setting> settings_table() { return kTable; }
+
+const Setting* find_key(std::string_view key) {
+  const auto lower = to_lower(key);
+  for (const auto& row : kTable) {
+    if (!row.key.empty() && row.key == lower) return &row;
+  }
+  return nullptr;
+}
+
+std::string_view flag_name(const Setting& row) { return row.flag.substr(0, row.flag.find(',')); }
+
+const Setting* find_flag(std::string_view flag, Command command) {
+  for (const auto& row : kTable) {
+    if ((row.commands & command) != 0 && flag_name(row) == flag) return &row;
+  }
+  return nullptr;
+}
+
+std::string help_text(const Setting& row) {
+  std::string text(row.help);
+  if (const auto at = text.find("{}"); at != std::string::npos) text.replace(at, 2, row.detail());
+  // Wrapped by hand: this CLI11 prints a description as one line.
+  constexpr std::size_t kWidth = 80;
+  std::size_t line_start = 0;
+  for (std::size_t space = text.find(' '); space != std::string::npos; space = text.find(' ', space + 1)) {
+    const auto next = text.find(' ', space + 1);
+    const auto word_end = next == std::string::npos ? text.size() : next;
+    if (word_end - line_start > kWidth) {
+      text[space] = '\n';
+      line_start = space + 1;
+    }
+  }
+  return text;
+}
+
+std::string default_text(const Setting& row) { return row.value_name.empty() ? std::string() : row.show(Settings{}); }
+
+std::string baud_list() { return joined(kBauds); }
+
+int parse_baud(std::string_view text, const SourcePos& pos) {
+  const auto value = parse_integer(text, 1, 10'000'000, "baud", pos);
+  for (const int b : kBauds) {
+    if (b == value) return b;
+  }
+  throw InputError(pos, "baud " + std::string(text) + " is not one of " + baud_list());
+}
+
+bool parse_weapons(std::string_view text, const SourcePos& pos) {
+  const auto v = to_lower(text);
+  if (v == "enabled" || v == "true" || v == "yes" || v == "on" || v == "1") return true;
+  if (v == "disabled" || v == "false" || v == "no" || v == "off" || v == "0") return false;
+  throw InputError(pos, "weapons " + quote(text) + " must be enabled or disabled");
+}
+
+}  // namespace andros::cli
