@@ -170,9 +170,14 @@ int run_bridge(const RunOptions& opt) {
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == "sdl" ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
-  view::RunStatusBoard board(initial, *link, *frames, sim.get());
+  view::RunStatusBoard board(initial);  // fed by the loop's reports only
+  const auto compose = [&board, &sim] {
+    view::RunStatus status = board.snapshot();
+    if (sim) status.vehicle = sim->snapshot();
+    return view::render_run_view(status, true);
+  };
   std::optional<view::StatusDisplay> display;
-  if (view::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
+  if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();

@@ -1,6 +1,7 @@
 #pragma once
 /// The operator's screens, as text: what `run` shows on a terminal and what
-/// `monitor` shows from the vehicle's side. Pure formatting, no I/O.
+/// `monitor` shows from the vehicle's side. Pure formatting, no I/O: each
+/// screen is a function of a value it is handed (docs/architecture.md).
 
 #include <cstdint>
 #include <optional>
@@ -8,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "andros/link/link.hpp"
-#include "andros/link/vehicle_view.hpp"
+#include "andros/link/link_status.hpp"
+#include "andros/link/vehicle_snapshot.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/timing/frame_timing.hpp"
 
