@@ -149,6 +149,7 @@ int run_bridge(const RunOptions& opt) {
   JobControlSignals job;
   mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                                     : mapping::load_mapping(config.mapping);
+  const int center = mapping.center;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;
@@ -167,6 +168,7 @@ int run_bridge(const RunOptions& opt) {
   view::RunStatus initial;
   initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
+  initial.center = center;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == "sdl" ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();

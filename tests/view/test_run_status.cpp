@@ -35,11 +35,13 @@ TEST(EnableText, NamesWhyNotOrTheInputsHeldBack) {
 TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   RunStatus initial;
   initial.robot = "HD1";
+  initial.center = 100;
   initial.link_name = "test link";
   RunStatusBoard board(initial);
   board.observe(tick(40));
   auto s = board.snapshot();
   EXPECT_EQ(s.robot, "HD1");  // set-up values kept
+  EXPECT_EQ(s.center, 100);
   EXPECT_EQ(s.link_name, "test link");
   EXPECT_EQ(s.t_ms, 40);
   EXPECT_TRUE(s.connected);
