@@ -35,10 +35,8 @@ protocol::DataBytes neutral_frame() {
 
 class FixedFrames final : public run::FrameSource {
  public:
-  protocol::DataBytes step(const input::InputState&, std::int64_t) override { return neutral_frame(); }
+  run::Step step(const input::InputState&, std::int64_t) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
-  std::string enable_text() const override { return "no controller"; }
-  bool enabled() const override { return false; }
   void restart() override {}
 };
 

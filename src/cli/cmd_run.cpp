@@ -94,6 +94,7 @@ int run_bridge(const RunOptions& opt) {
   JobControlSignals job;
   mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                                     : mapping::load_mapping(config.mapping);
+  const int center = mapping.center;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;
@@ -112,12 +113,18 @@ int run_bridge(const RunOptions& opt) {
   view::RunStatus initial;
   initial.robot = config.mapping.empty() ? config.robot : config.mapping;
   initial.code = config.code;
+  initial.center = center;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
-  view::RunStatusBoard board(initial, *link, *frames, sim.get());
+  view::RunStatusBoard board(initial);  // fed by the loop's reports only
+  const auto compose = [&board, &sim] {
+    view::RunStatus status = board.snapshot();
+    if (sim) status.vehicle = sim->snapshot();
+    return view::render_run_view(status, true);
+  };
   std::optional<view::StatusDisplay> display;
-  if (view::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
+  if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();

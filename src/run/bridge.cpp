@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <exception>
+#include <utility>
 
 namespace andros::run {
 
@@ -35,10 +36,11 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
       const std::int64_t t_ms = schedule_.tick_ms(tick);
       // The input is read right after the tick's time: never older than the frame.
       input_.pump(state_, t_ms);
-      protocol::DataBytes data = frames_.step(state_, t_ms);
-      if (!link_.motion_allowed()) data = frames_.neutral();
-      const link::SendResult result = link_.send(protocol::encode(data), monotonic_ns());
-      observe(TickReport{tick, t_ms, skipped, &data, result, false, &state_});
+      Step step = frames_.step(state_, t_ms);
+      engine_status_ = std::move(step.status);
+      if (!link_.motion_allowed()) step.data = frames_.neutral();
+      const link::SendResult result = link_.send(protocol::encode(step.data), monotonic_ns());
+      observe(report(tick, t_ms, skipped, step.data, result, false));
       const std::int64_t next = schedule_.next_tick(tick, monotonic_ns() - start_ns);
       skipped = next - tick - 1;
       tick = next;
@@ -65,11 +67,17 @@ void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& 
     sleep_until_ns_uninterrupted(start_ns + schedule_.tick_ns(tick));
     const link::SendResult result = link_.send(frame, monotonic_ns());
     if (result == link::SendResult::kSent) ++sent;
-    observe(TickReport{tick, schedule_.tick_ms(tick), 0, &neutral, result, true, &state_});
+    observe(report(tick, schedule_.tick_ms(tick), 0, neutral, result, true));
   }
   shutdown_report_.neutral_sent = sent;
   shutdown_report_.neutral_wanted = options_.shutdown_frames;
   shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
+}
+
+TickReport Bridge::report(std::int64_t tick, std::int64_t t_ms, std::int64_t skipped,
+                          const protocol::DataBytes& data, link::SendResult result, bool shutting_down) const {
+  return TickReport{tick, t_ms, skipped, data, result, shutting_down,
+                    state_.connected(), state_.name(), engine_status_, link_.status()};
 }
 
 }  // namespace andros::run

@@ -9,20 +9,11 @@ class EngineFrames final : public FrameSource {
  public:
   explicit EngineFrames(mapping::Engine engine) : engine_(std::move(engine)) {}
 
-  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms) override { return engine_.step(input, now_ms); }
-  [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
-  /// While enabled, the inputs the rest rule still holds back ("enabled; at rest
-  /// first: lefty"), so that a stick pushed through the deadman press explains itself.
-  [[nodiscard]] std::string enable_text() const override {
-    const auto& status = engine_.status();
-    std::string text(describe(status.enable));
-    if (status.enable != mapping::EnableState::kEnabled || status.held_back.empty()) return text;
-    text += "; at rest first:";
-    for (const auto key : status.held_back) text += " " + input::input_name(key);
-    return text;
+  Step step(const input::InputState& input, std::int64_t now_ms) override {
+    auto data = engine_.step(input, now_ms);
+    return Step{data, engine_.status()};
   }
-  [[nodiscard]] bool enabled() const override { return engine_.status().enable == mapping::EnableState::kEnabled; }
-  [[nodiscard]] std::string layer() const override { return engine_.status().layer; }
+  [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
   void restart() override { engine_.restart(); }
 
  private:

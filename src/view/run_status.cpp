@@ -18,17 +18,17 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     if (r.result == link::SendResult::kSent) timing_.add(now);
     next = status_;
     next.t_ms = r.t_ms;
-    next.sent = *r.data;
+    next.sent = r.data;
     next.shutting_down = r.shutting_down;
-    next.connected = r.input->connected();
-    if (next.connected) next.controller = r.input->name().empty() ? "controller" : r.input->name();
-    next.enabled = frames_.enabled() && !r.shutting_down;
-    next.enable_text = frames_.enable_text();
-    next.layer = frames_.layer();
-    next.link_state = link_.state();
-    next.motion_allowed = link_.motion_allowed();
-    next.link_detail = next.motion_allowed ? link_.detail() : kNeutralOnly;
-    next.link = link_.counters();
+    next.connected = r.connected;
+    if (next.connected) next.controller = r.controller.empty() ? "controller" : r.controller;
+    next.enabled = r.engine.enable == mapping::EnableState::kEnabled && !r.shutting_down;
+    next.enable_text = enable_text(r.engine);
+    next.layer = r.engine.layer;
+    next.link_state = r.link.state;
+    next.motion_allowed = r.link.motion_allowed;
+    next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
+    next.link = r.link.counters;
     next.sent_timing = timing_.summary(now);
     std::swap(status_, next);  // next now holds the previous status
   }
@@ -59,15 +59,17 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
 }
 
-std::string RunStatusBoard::compose() const {
-  RunStatus s = snapshot();
-  if (vehicle_ != nullptr) s.vehicle = vehicle_->snapshot();
-  return render_run_view(s, true);
-}
-
 RunStatus RunStatusBoard::snapshot() const {
   const std::lock_guard lock(mutex_);
   return status_;
+}
+
+std::string enable_text(const mapping::EngineStatus& status) {
+  std::string text(describe(status.enable));
+  if (status.enable != mapping::EnableState::kEnabled || status.held_back.empty()) return text;
+  text += "; at rest first:";
+  for (const auto key : status.held_back) text += " " + input::input_name(key);
+  return text;
 }
 
 }  // namespace andros::view

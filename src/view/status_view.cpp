@@ -27,12 +27,14 @@ std::string fmt(const char* format, auto... args) {
   return buf;
 }
 
-/// A bar 2*kGaugeHalf+1 wide; centred ones grow from the middle.
-std::string gauge(std::string_view name, std::uint8_t value, bool centred) {
+/// A bar 2*kGaugeHalf+1 wide; a centred one grows from the middle, which
+/// stands for center, towards 0 or 255; a level (no center) from the left.
+std::string gauge(std::string_view name, std::uint8_t value, std::optional<int> center) {
   std::string bar(2 * kGaugeHalf + 1, ' ');
-  if (centred) {
+  if (center) {
     bar[kGaugeHalf] = '|';
-    const double x = value >= 128 ? (value - 128) / 127.0 : (value - 128) / 128.0;
+    const int span = value >= *center ? 255 - *center : *center;
+    const double x = span == 0 ? 0.0 : (value - *center) / static_cast<double>(span);
     const int n = static_cast<int>(std::lround(x * kGaugeHalf));
     for (int i = 1; i <= std::abs(n); ++i) bar[static_cast<std::size_t>(kGaugeHalf + (n > 0 ? i : -i))] = '#';
   } else {
@@ -68,7 +70,7 @@ const std::vector<SignalGroup>& signal_groups() {
   return groups;
 }
 
-std::string render_frame_panel(const protocol::DataBytes& data, bool ansi) {
+std::string render_frame_panel(const protocol::DataBytes& data, int center, bool ansi) {
   const auto state = protocol::read_signals(data);
   std::string out;
   for (const auto& group : signal_groups()) {
@@ -94,10 +96,10 @@ std::string render_frame_panel(const protocol::DataBytes& data, bool ansi) {
     }
     out += line + "\n";
   }
-  out += gauge("drive", data[protocol::info(*protocol::find_signal("drive")).byte], true);
-  out += gauge("pivot", data[protocol::info(*protocol::find_signal("pivot")).byte], true);
-  out += gauge("arm_speed", data[protocol::info(*protocol::find_signal("arm_speed")).byte], false);
-  out += gauge("light", data[protocol::info(*protocol::find_signal("light")).byte], false);
+  out += gauge("drive", data[protocol::info(*protocol::find_signal("drive")).byte], center);
+  out += gauge("pivot", data[protocol::info(*protocol::find_signal("pivot")).byte], center);
+  out += gauge("arm_speed", data[protocol::info(*protocol::find_signal("arm_speed")).byte], std::nullopt);
+  out += gauge("light", data[protocol::info(*protocol::find_signal("light")).byte], std::nullopt);
   out += fmt("  frame     %s\n", protocol::to_hex(data).c_str());
   return out;
 }
@@ -133,7 +135,7 @@ std::string render_run_view(const RunStatus& s, bool ansi) {
                v.last ? "" : " (nothing decoded yet)");
   }
   out += s.vehicle && s.vehicle->last ? "as the vehicle decodes it:\n" : "as sent:\n";
-  out += render_frame_panel(s.vehicle && s.vehicle->last ? *s.vehicle->last : s.sent, ansi);
+  out += render_frame_panel(s.vehicle && s.vehicle->last ? *s.vehicle->last : s.sent, s.center, ansi);
   return out;
 }
 
@@ -155,7 +157,7 @@ std::string render_monitor_view(std::string_view source, const link::VehicleSnap
   std::string errors;
   for (const auto& e : v.last_errors) errors += (errors.empty() ? "" : "; ") + e;
   out += "last frame  " + std::string(v.last_valid ? "valid" : "INVALID: " + errors) + "\n";
-  out += render_frame_panel(*v.last, ansi);
+  out += render_frame_panel(*v.last, mapping::kDefaultCenter, ansi);
   return out;
 }
 

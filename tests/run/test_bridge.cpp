@@ -20,13 +20,15 @@ namespace {
 /// A stand-in for the mapping engine: drive 200 while button a is held.
 class PressToDrive final : public FrameSource {
  public:
-  protocol::DataBytes step(const input::InputState& input, std::int64_t) override {
-    enabled_ = input.connected() && input.button(*input::parse_button_name("a")).down;
+  Step step(const input::InputState& input, std::int64_t) override {
+    const bool enabled = input.connected() && input.button(*input::parse_button_name("a")).down;
     protocol::ControlState s;
-    s[protocol::signal_id("drive")] = enabled_ ? 200 : 128;
+    s[protocol::signal_id("drive")] = enabled ? 200 : 128;
     s[protocol::signal_id("pivot")] = 128;
-    s[protocol::signal_id("safety")] = enabled_ ? 1 : 0;
-    return protocol::FrameBuilder(0x3C).build(s);
+    s[protocol::signal_id("safety")] = enabled ? 1 : 0;
+    mapping::EngineStatus status;
+    status.enable = enabled ? mapping::EnableState::kEnabled : mapping::EnableState::kDeadmanReleased;
+    return Step{protocol::FrameBuilder(0x3C).build(s), status};
   }
   protocol::DataBytes neutral() const override {
     protocol::ControlState s;
@@ -34,13 +36,8 @@ class PressToDrive final : public FrameSource {
     s[protocol::signal_id("pivot")] = 128;
     return protocol::FrameBuilder(0x3C).build(s);
   }
-  std::string enable_text() const override { return enabled_ ? "enabled" : "a released"; }
-  bool enabled() const override { return enabled_; }
   void restart() override { ++restarts; }
   int restarts = 0;
-
- private:
-  bool enabled_ = false;
 };
 
 /// An input that never ends.
@@ -66,13 +63,24 @@ std::string write_script(const std::string& text) {
   return path;
 }
 
-TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
-  auto pty = link::open_pty_pair();
-  const auto script = write_script("0 connect pad\n40 button a 1\n120 button a 0\n160 end\n");
-  input::ScriptInput input(script);
+/// A bridge at 25 Hz playing an event script to a pty.
+struct ScriptOnPty {
+  explicit ScriptOnPty(const std::string& text) : script(write_script(text)), input(script) {}
+  ~ScriptOnPty() { std::filesystem::remove(script); }
+  ScriptOnPty(const ScriptOnPty&) = delete;
+  ScriptOnPty& operator=(const ScriptOnPty&) = delete;
+
+  link::PtyPair pty = link::open_pty_pair();
+  std::string script;
+  input::ScriptInput input;
   PressToDrive frames;
-  link::SerialLink link(pty.path, 9600);
-  Bridge bridge(input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  link::SerialLink link{pty.path, 9600};
+  Bridge bridge{input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
+};
+
+TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
+  ScriptOnPty on("0 connect pad\n40 button a 1\n120 button a 0\n160 end\n");
+  auto& [pty, script, input, frames, link, bridge] = on;
   std::vector<std::int64_t> times;
   int shutdown_ticks = 0;
   bridge.run([] { return false; },
@@ -93,7 +101,28 @@ TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
     EXPECT_EQ(got[i].data[11], 0x3C);
   }
   EXPECT_EQ(link.state(), link::LinkState::kConnecting);  // closed
-  std::filesystem::remove(script);
+}
+
+TEST(Bridge, EachReportCarriesTheStepsStatusAndTheLinksState) {
+  ScriptOnPty on("0 connect pad\n40 button a 1\n120 end\n");
+  std::vector<TickReport> ticks;
+  on.bridge.run([] { return false; }, [&](const TickReport& r) { ticks.push_back(r); });
+  ASSERT_EQ(ticks.size(), 4u + 3u);
+  for (std::size_t i = 0; i < ticks.size(); ++i) {
+    const auto& r = ticks[i];
+    EXPECT_TRUE(r.connected) << "tick " << i;
+    EXPECT_EQ(r.controller, "pad");
+    // Shutting down, the status is the last step's.
+    const auto enable = i == 0 ? mapping::EnableState::kDeadmanReleased : mapping::EnableState::kEnabled;
+    EXPECT_EQ(r.engine.enable, enable) << "tick " << i;
+    EXPECT_EQ(r.data[7], i == 0 || r.shutting_down ? 128 : 200) << "tick " << i;
+    // Taken after this tick's send.
+    const auto& c = r.link.counters;
+    EXPECT_EQ(c.sent + c.busy + c.down, i + 1) << "tick " << i;
+    if (r.result == link::SendResult::kSent) {
+      EXPECT_EQ(r.link.state, link::LinkState::kUp);
+    }
+  }
 }
 
 TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
@@ -174,7 +203,7 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
 /// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
 class StallOnce final : public FrameSource {
  public:
-  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms) override {
+  Step step(const input::InputState& input, std::int64_t now_ms) override {
     if (now_ms == 80) {
       const timespec stall{0, 130'000'000};
       nanosleep(&stall, nullptr);
@@ -182,8 +211,6 @@ class StallOnce final : public FrameSource {
     return inner_.step(input, now_ms);
   }
   protocol::DataBytes neutral() const override { return inner_.neutral(); }
-  std::string enable_text() const override { return inner_.enable_text(); }
-  bool enabled() const override { return inner_.enabled(); }
   void restart() override {}
 
  private:

@@ -24,7 +24,7 @@ TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
   s[protocol::signal_id("drive")] = 255;
   s[protocol::signal_id("pivot")] = 0;
   s[protocol::signal_id("light")] = 255;
-  const auto text = render_frame_panel(protocol::FrameBuilder(1).build(s), false);
+  const auto text = render_frame_panel(protocol::FrameBuilder(1).build(s), mapping::kDefaultCenter, false);
   EXPECT_NE(text.find(" SAFETY drive_brake"), std::string::npos) << text;
   EXPECT_NE(text.find(" PT_LEFT pt_right"), std::string::npos) << text;
   EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
@@ -33,6 +33,31 @@ TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
   for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
     EXPECT_LE(end - start, 80u) << text.substr(start, end - start);
   }
+}
+
+/// A frame with drive and pivot at these bytes.
+protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot) {
+  protocol::ControlState s;
+  s[protocol::signal_id("drive")] = drive;
+  s[protocol::signal_id("pivot")] = pivot;
+  return protocol::FrameBuilder(1).build(s);
+}
+
+TEST(StatusView, CentredGaugesGrowFromTheCentreTheyAreHanded) {
+  // center: 100 (no shipped mapping sets one): 100 is at rest, 50 half way down, 255 and 0 the ends.
+  auto text = render_frame_panel(drive_pivot(100, 50), 100, false);
+  EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [     #####|          ]  50"), std::string::npos) << text;
+  text = render_frame_panel(drive_pivot(255, 0), 100, false);
+  EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [##########|          ]   0"), std::string::npos) << text;
+  // The run screen draws around the centre in its status.
+  RunStatus s;
+  s.center = 100;
+  s.sent = drive_pivot(100, 100);
+  text = render_run_view(s, false);
+  EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [          |          ] 100"), std::string::npos) << text;
 }
 
 TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {

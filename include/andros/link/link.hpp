@@ -8,27 +8,10 @@
 #include <memory>
 #include <string>
 
+#include "andros/link/link_status.hpp"
 #include "andros/protocol/frame.hpp"
 
 namespace andros::link {
-
-enum class LinkState : std::uint8_t {
-  kConnecting,  ///< not open yet, or reopening after a loss
-  kUp,          ///< frames are being written
-};
-
-enum class SendResult : std::uint8_t {
-  kSent,  ///< the whole frame was handed to the driver
-  kBusy,  ///< the driver (or a TCP server, as its window shows) still held bytes: this tick skipped, so that no stale frame queues
-  kDown,  ///< no connection this tick
-};
-
-struct LinkCounters {
-  std::uint64_t sent = 0;
-  std::uint64_t busy = 0;   ///< ticks skipped because the output queue (or the server) was not empty
-  std::uint64_t down = 0;   ///< ticks with no connection
-  std::uint64_t losses = 0; ///< times an open link was lost
-};
 
 class Link {
  public:
@@ -55,8 +38,9 @@ class Link {
   /// that stalled and has not been seen reading since): the run loop then
   /// sends only neutral frames, so that nothing held there can move the vehicle.
   [[nodiscard]] virtual bool motion_allowed() const { return true; }
-};
 
-std::string_view to_string(LinkState state);
+  /// Its state, detail, counters and motion_allowed() as one value, for the run loop's report.
+  [[nodiscard]] LinkStatus status() const { return {state(), motion_allowed(), detail(), counters()}; }
+};
 
 }  // namespace andros::link

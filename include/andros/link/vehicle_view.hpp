@@ -8,18 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "andros/link/vehicle_snapshot.hpp"
 #include "andros/protocol/decoder.hpp"
 #include "andros/timing/frame_timing.hpp"
 
 namespace andros::link {
-
-struct VehicleSnapshot {
-  std::optional<protocol::DataBytes> last;     ///< the last frame decoded, valid or not
-  bool last_valid = false;
-  std::vector<std::string> last_errors;
-  protocol::DecoderStats stats;
-  timing::TimingSummary timing;
-};
 
 class VehicleView {
  public:

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "andros/input/snapshot.hpp"
+#include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/mapping/safety.hpp"
 #include "andros/protocol/frame.hpp"
@@ -21,22 +22,6 @@ namespace andros::mapping {
 struct EngineOptions {
   bool weapons = false;       ///< --weapons / weapons=enabled
   std::uint8_t code = 0x01;   ///< byte 11, the dip-switch code
-};
-
-/// Why the engine is (not) enabled, for the operator's status view and logs.
-enum class EnableState : std::uint8_t {
-  kEnabled,
-  kNoController,     ///< no controller connected
-  kDeadmanReleased,  ///< the deadman is not held
-  kDeadmanNotFresh,  ///< held since connect or start-up: release and press again
-};
-
-std::string_view describe(EnableState state);
-
-struct EngineStatus {
-  EnableState enable = EnableState::kNoController;
-  std::string layer;  ///< the active layer's name ("" for the base layer)
-  std::vector<input::InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
 };
 
 class Engine {

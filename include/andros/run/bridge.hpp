@@ -11,10 +11,17 @@
 #include "andros/input/input_source.hpp"
 #include "andros/input/snapshot.hpp"
 #include "andros/link/link.hpp"
+#include "andros/mapping/engine_status.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/timing/tick_schedule.hpp"
 
 namespace andros::run {
+
+/// One step's result, by value: the frame and the engine's state after it.
+struct Step {
+  protocol::DataBytes data{};
+  mapping::EngineStatus status;
+};
 
 /// What computes the frames: the mapping engine in `run`, a fixed frame in
 /// the benchmarks and tests.
@@ -22,28 +29,28 @@ class FrameSource {
  public:
   virtual ~FrameSource() = default;
   /// The frame for the tick at now_ms (ms since start) from this input.
-  virtual protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms) = 0;
+  virtual Step step(const input::InputState& input, std::int64_t now_ms) = 0;
   /// The frame sent at shutdown.
   [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
-  /// "enabled", or why not ("deadman released"), for the operator.
-  [[nodiscard]] virtual std::string enable_text() const = 0;
-  [[nodiscard]] virtual bool enabled() const = 0;
-  /// The mapping layer in use ("" for the base layer).
-  [[nodiscard]] virtual std::string layer() const { return {}; }
   /// After a pause: the next step is a start-up again (presses made before it
   /// are history; the deadman needs a fresh press).
   virtual void restart() = 0;
 };
 
-/// What one tick did, for the status view and the log.
+/// What one tick did, for the status view and the log. Values only, copied by
+/// the loop: whoever reads a report never reaches back into the loop, the
+/// engine or the link (docs/architecture.md).
 struct TickReport {
   std::int64_t tick = 0;     ///< index on the clock
   std::int64_t t_ms = 0;     ///< the tick's time, ms since start
   std::int64_t skipped = 0;  ///< ticks skipped before this one after a stall
-  const protocol::DataBytes* data = nullptr;
+  protocol::DataBytes data{};  ///< the frame offered to the link (result: whether it took it)
   link::SendResult result = link::SendResult::kDown;
   bool shutting_down = false;
-  const input::InputState* input = nullptr;
+  bool connected = false;    ///< a controller is connected
+  std::string controller;    ///< its name (may be empty)
+  mapping::EngineStatus engine;  ///< after this tick's step (shutting down: the last step's)
+  link::LinkStatus link;     ///< after this tick's send
 };
 
 struct BridgeOptions {
@@ -99,6 +106,10 @@ class Bridge {
 
  private:
   void shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe);
+  /// The values a tick's report carries, copied now.
+  [[nodiscard]] TickReport report(std::int64_t tick, std::int64_t t_ms, std::int64_t skipped,
+                                  const protocol::DataBytes& data, link::SendResult result,
+                                  bool shutting_down) const;
 
   input::InputSource& input_;
   FrameSource& frames_;
@@ -106,6 +117,7 @@ class Bridge {
   BridgeOptions options_;
   timing::TickSchedule schedule_;
   input::InputState state_;
+  mapping::EngineStatus engine_status_;  ///< the last step's
   ShutdownReport shutdown_report_;
 };
 

@@ -1,11 +1,11 @@
 #pragma once
-// What `run` tells the operator: the board the run loop updates every tick,
-// read by the terminal view's thread; off a terminal, one log line per change.
+// What `run` tells the operator: the board that the run loop's reports feed,
+// every tick, and that the terminal view's thread reads a copy of; off a
+// terminal, one log line per change.
 
 #include <mutex>
 #include <string>
 
-#include "andros/link/sim_vehicle.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/timing/frame_timing.hpp"
 #include "andros/view/status_view.hpp"
@@ -14,15 +14,14 @@ namespace andros::view {
 
 class RunStatusBoard {
  public:
-  RunStatusBoard(RunStatus initial, const link::Link& link, const run::FrameSource& frames,
-                 const link::SimVehicle* vehicle)
-      : status_(std::move(initial)), link_(link), frames_(frames), vehicle_(vehicle) {}
+  /// initial: what set-up knows (robot, code, rate, input, link name, centre).
+  explicit RunStatusBoard(RunStatus initial) : status_(std::move(initial)) {}
 
-  /// Called by the run loop after every tick (cheap: no formatting).
+  /// Called by the run loop after every tick (cheap: no formatting). The
+  /// report is all the board learns: it holds no link and no engine.
   void observe(const run::TickReport& report);
-  /// The screen, for the display thread.
-  [[nodiscard]] std::string compose() const;
-  /// The last status (after the run, for the closing line).
+  /// The last status, copied under the lock: for the display thread, and
+  /// after the run for the closing line.
   [[nodiscard]] RunStatus snapshot() const;
 
  private:
@@ -31,10 +30,12 @@ class RunStatusBoard {
   mutable std::mutex mutex_;
   RunStatus status_;
   timing::FrameTiming timing_;
-  const link::Link& link_;
-  const run::FrameSource& frames_;
-  const link::SimVehicle* vehicle_;
   bool first_tick_ = true;
 };
+
+/// "enabled", or why not ("deadman released"); while enabled, the inputs the
+/// rest rule still holds back ("enabled; at rest first: lefty"), so that a
+/// stick pushed through the deadman press explains itself.
+std::string enable_text(const mapping::EngineStatus& status);
 
 }  // namespace andros::view

@@ -1,6 +1,7 @@
 #pragma once
 /// The operator's screens, as text: what `run` shows on a terminal and what
-/// `monitor` shows from the vehicle's side. Pure formatting, no I/O.
+/// `monitor` shows from the vehicle's side. Pure formatting, no I/O: each
+/// screen is a function of a value it is handed (docs/architecture.md).
 
 #include <cstdint>
 #include <optional>
@@ -8,8 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "andros/link/link.hpp"
-#include "andros/link/vehicle_view.hpp"
+#include "andros/link/link_status.hpp"
+#include "andros/link/vehicle_snapshot.hpp"
+#include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/timing/frame_timing.hpp"
 
@@ -22,15 +24,17 @@ struct SignalGroup {
 };
 const std::vector<SignalGroup>& signal_groups();
 
-/// Switch groups and gauges (drive, pivot, arm speed, light) for one frame.
+/// Switch groups and gauges (drive, pivot, arm speed, light) for one frame;
+/// the drive and pivot gauges grow from center (the mapping's rest value).
 /// With ansi, active switches are shown in reverse video and idle ones dim;
 /// without, active ones are upper case.
-std::string render_frame_panel(const protocol::DataBytes& data, bool ansi);
+std::string render_frame_panel(const protocol::DataBytes& data, int center, bool ansi);
 
 /// What `run` knows at one moment.
 struct RunStatus {
   std::string robot;
   std::uint8_t code = 0;
+  int center = mapping::kDefaultCenter;  ///< the mapping's rest value of drive and pivot
   double rate_hz = 0;            ///< the configured rate
   std::int64_t t_ms = 0;
   std::string input;             ///< "sdl" or the script's path
@@ -52,7 +56,8 @@ struct RunStatus {
 
 std::string render_run_view(const RunStatus& status, bool ansi);
 
-/// `monitor`'s view of a port or capture.
+/// `monitor`'s view of a port or capture. A frame does not say which mapping
+/// made it: drive and pivot are drawn around the default centre.
 std::string render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live,
                                 bool ansi);
 

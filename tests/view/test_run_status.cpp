@@ -1,0 +1,77 @@
+#include <gtest/gtest.h>
+
+#include "andros/view/run_status.hpp"
+
+namespace andros::view {
+namespace {
+
+run::TickReport tick(std::int64_t t_ms) {
+  run::TickReport r;
+  r.t_ms = t_ms;
+  r.result = link::SendResult::kSent;
+  r.connected = true;
+  r.controller = "pad";
+  r.engine.enable = mapping::EnableState::kEnabled;
+  r.engine.layer = "arm";
+  r.link.state = link::LinkState::kUp;
+  r.link.counters.sent = 7;
+  r.data[3] = 0x5A;
+  return r;
+}
+
+TEST(EnableText, NamesWhyNotOrTheInputsHeldBack) {
+  mapping::EngineStatus s;
+  s.enable = mapping::EnableState::kDeadmanReleased;
+  s.held_back = {*input::parse_axis_name("lefty")};
+  EXPECT_EQ(enable_text(s), "deadman released");  // held-back inputs matter only while enabled
+  s.enable = mapping::EnableState::kEnabled;
+  EXPECT_EQ(enable_text(s), "enabled; at rest first: lefty");
+  s.held_back.push_back(*input::parse_button_name("a"));
+  EXPECT_EQ(enable_text(s), "enabled; at rest first: lefty a");
+  s.held_back.clear();
+  EXPECT_EQ(enable_text(s), "enabled");
+}
+
+TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
+  RunStatus initial;
+  initial.robot = "HD1";
+  initial.center = 100;
+  initial.link_name = "test link";
+  RunStatusBoard board(initial);
+  board.observe(tick(40));
+  auto s = board.snapshot();
+  EXPECT_EQ(s.robot, "HD1");  // set-up values kept
+  EXPECT_EQ(s.center, 100);
+  EXPECT_EQ(s.link_name, "test link");
+  EXPECT_EQ(s.t_ms, 40);
+  EXPECT_TRUE(s.connected);
+  EXPECT_EQ(s.controller, "pad");
+  EXPECT_TRUE(s.enabled);
+  EXPECT_EQ(s.enable_text, "enabled");
+  EXPECT_EQ(s.layer, "arm");
+  EXPECT_EQ(s.link_state, link::LinkState::kUp);
+  EXPECT_TRUE(s.motion_allowed);
+  EXPECT_EQ(s.link.sent, 7u);
+  EXPECT_EQ(s.sent[3], 0x5A);
+
+  auto r = tick(80);
+  r.controller.clear();  // a controller without a name
+  r.link.motion_allowed = false;
+  r.link.detail = "the link's own detail";
+  board.observe(r);
+  s = board.snapshot();
+  EXPECT_EQ(s.controller, "controller");
+  EXPECT_FALSE(s.motion_allowed);
+  EXPECT_EQ(s.link_detail.rfind("neutral frames only", 0), 0u) << s.link_detail;
+
+  r = tick(120);
+  r.shutting_down = true;  // the last step said enabled; shutting down is never enabled
+  board.observe(r);
+  s = board.snapshot();
+  EXPECT_TRUE(s.shutting_down);
+  EXPECT_FALSE(s.enabled);
+  EXPECT_EQ(s.enable_text, "enabled");
+}
+
+}  // namespace
+}  // namespace andros::view
