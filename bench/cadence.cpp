@@ -5,7 +5,6 @@
 //   andros_bench_cadence [SECONDS]   (default 30)
 #include <fcntl.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "andros/base/clock.hpp"
+#include "andros/base/stop.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "bench_util.hpp"
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   const protocol::Frame frame = protocol::encode(neutral_frame());
 
   const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * 1'000'000'000;
-  std::atomic<bool> stop{false};
+  StopRequest stop;
   std::vector<bench::Arrival> bridge_got;
   std::vector<bench::Arrival> plain_got;
   // When each loop's write() returned: the clock itself, before the pty's
@@ -120,20 +120,21 @@ int main(int argc, char** argv) {
     // Half a period out of phase with the bridge, so that the two loops (and
     // their readers) never wake at the same instant and queue for a core.
     const std::int64_t t0 = monotonic_ns() + 500'000'000 / kRate;
-    for (std::int64_t k = 0; !stop; ++k) {
-      andros::sleep_until_ns_uninterrupted(t0 + k * 1'000'000'000 / kRate);
+    const TickGrid grid(kNsPerSecond, kRate);
+    for (std::int64_t k = 0; !stop.requested(); ++k) {
+      andros::sleep_until_ns_uninterrupted(t0 + grid.tick_ns(k));
       [[maybe_unused]] const auto n = write(plain_fd.get(), frame.data(), frame.size());
       if (monotonic_ns() < stop_ns) plain_wrote.push_back({monotonic_ns(), {}});
     }
   });
   std::thread bridge_loop([&] {
-    bridge.run([&] { return stop.load(); }, [&](const run::TickReport& r) {
+    bridge.run([&] { return stop.requested(); }, [&](const run::TickReport& r) {
       if (!r.shutting_down && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
     });
   });
   bridge_reader.join();
   plain_reader.join();
-  stop = true;
+  stop.raise();
   plain_loop.join();
   bridge_loop.join();
 

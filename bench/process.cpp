@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,8 +91,7 @@ void first_neutral_after_stop(const std::string& bin) {
   for (int i = 0; i < 10; ++i) {
     bench::BridgeProcess run(bin, std::string(kDrive) + "60000 end\n");
     bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 15 + i);  // driving by now
-    const timespec pause{0, static_cast<long>(i) * 4'000'000};  // 0..36 ms into the period
-    nanosleep(&pause, nullptr);
+    sleep_until_ns_uninterrupted(monotonic_ns() + i * 4 * kNsPerMs);  // 0..36 ms into the period
     const auto t_term = monotonic_ns();
     kill(run.pid, SIGTERM);
     const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);

@@ -1,10 +1,9 @@
 #pragma once
-// What the SDL benchmarks share: a monotonic clock, absolute sleeps, a
-// virtual pad, percentiles.
+// What the SDL benchmarks share: a virtual pad, percentiles. The clock and
+// absolute sleeps are base's (andros/base/clock.hpp).
 
 #include <SDL.h>
 #include <spdlog/spdlog.h>
-#include <time.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -16,12 +15,6 @@
 #include "andros/input/sdl_input.hpp"
 
 namespace andros::bench {
-
-inline std::int64_t now_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
 
 /// A virtual game controller, opened so that the benchmark can move it.
 inline SDL_Joystick* attach_virtual_pad() {

@@ -12,7 +12,7 @@
 
 namespace {
 
-using andros::bench::now_ns;
+using andros::monotonic_ns;
 
 struct Phase {
   double wall_s = 0;
@@ -29,15 +29,15 @@ double cpu_seconds() {
 
 template <typename Work>
 Phase run_phase(double seconds, Work&& work) {
-  constexpr std::int64_t kPeriodNs = 40'000'000;
+  constexpr auto kGrid = andros::TickGrid::every(40 * andros::kNsPerMs);
   const long ticks = static_cast<long>(seconds * 25);
   const double cpu0 = cpu_seconds();
-  const std::int64_t start = now_ns();
+  const std::int64_t start = monotonic_ns();
   for (long k = 1; k <= ticks; ++k) {
-    andros::sleep_until_ns_uninterrupted(start + k * kPeriodNs);
+    andros::sleep_until_ns_uninterrupted(start + kGrid.tick_ns(k));
     work(k * 40);
   }
-  return Phase{static_cast<double>(now_ns() - start) / 1e9, cpu_seconds() - cpu0, ticks};
+  return Phase{static_cast<double>(monotonic_ns() - start) / 1e9, cpu_seconds() - cpu0, ticks};
 }
 
 void print(const char* name, const Phase& p) {

@@ -23,10 +23,11 @@
 
 namespace {
 
-using andros::bench::now_ns;
+using andros::monotonic_ns;
 using andros::bench::quantile;
 
 constexpr std::int64_t kPeriodNs = 40'000'000;
+constexpr auto kGrid = andros::TickGrid::every(kPeriodNs);
 const andros::input::InputKey kLeftY{andros::input::InputKind::kPadAxis, SDL_CONTROLLER_AXIS_LEFTY};
 
 void row(const char* name, const std::vector<double>& ms) {
@@ -37,11 +38,11 @@ void row(const char* name, const std::vector<double>& ms) {
 /// The vehicle's side: waits (bounded) until a whole frame is readable on the
 /// master, notes when, and consumes it. 0 when it never came.
 std::int64_t wait_for_frame(int master) {
-  const std::int64_t give_up = now_ns() + 1'000'000'000;
+  const std::int64_t give_up = monotonic_ns() + 1'000'000'000;
   int queued = 0;
-  while (now_ns() < give_up) {
+  while (monotonic_ns() < give_up) {
     if (ioctl(master, FIONREAD, &queued) == 0 && queued >= static_cast<int>(andros::protocol::kFrameSize)) {
-      const std::int64_t at = now_ns();
+      const std::int64_t at = monotonic_ns();
       std::uint8_t buf[andros::protocol::kFrameSize];
       if (read(master, buf, sizeof buf) != static_cast<ssize_t>(sizeof buf)) return 0;
       return at;
@@ -77,17 +78,17 @@ int main(int argc, char** argv) {
   std::vector<std::int64_t> tick_at(static_cast<std::size_t>(ticks) + 1, 0);
   std::vector<std::int64_t> frame_done(static_cast<std::size_t>(ticks) + 1, 0);
   long missed = 0;
-  const std::int64_t start = now_ns() + kPeriodNs;
+  const std::int64_t start = monotonic_ns() + kPeriodNs;
   for (long k = 0; k <= ticks; ++k) {
-    const std::int64_t tick = start + k * kPeriodNs;
+    const std::int64_t tick = start + kGrid.tick_ns(k);
     const auto value = static_cast<Sint16>(k % 2 == 0 ? 20000 + k : -20000 - k);
     andros::sleep_until_ns_uninterrupted(tick - offset(rng));
-    const std::int64_t set = now_ns();
+    const std::int64_t set = monotonic_ns();
     SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY, value);
     andros::sleep_until_ns_uninterrupted(tick);
-    tick_at[static_cast<std::size_t>(k)] = now_ns();
+    tick_at[static_cast<std::size_t>(k)] = monotonic_ns();
     input.pump(state, k * 40);
-    const std::int64_t seen = now_ns();
+    const std::int64_t seen = monotonic_ns();
     andros::protocol::ControlState control;
     control[andros::protocol::signal_id("drive")] = static_cast<std::uint8_t>(128 + state.axis(kLeftY) / 256);
     const auto frame = andros::protocol::encode(builder.build(control));
@@ -121,8 +122,8 @@ int main(int argc, char** argv) {
     const auto done = frame_done[static_cast<std::size_t>(k)];
     if (done == 0) continue;
     tick_to_bytes.push_back(static_cast<double>(done - tick_at[static_cast<std::size_t>(k)]) / 1e6);
-    deadline_to_bytes.push_back(static_cast<double>(done - (start + k * kPeriodNs)) / 1e6);
-    wake_lateness.push_back(static_cast<double>(tick_at[static_cast<std::size_t>(k)] - (start + k * kPeriodNs)) / 1e6);
+    deadline_to_bytes.push_back(static_cast<double>(done - (start + kGrid.tick_ns(k))) / 1e6);
+    wake_lateness.push_back(static_cast<double>(tick_at[static_cast<std::size_t>(k)] - (start + kGrid.tick_ns(k))) / 1e6);
   }
 
   std::printf("| %-34s | %8s | %8s | %8s | %5s |\n", "latency (ms)", "median", "p99", "max", "n");

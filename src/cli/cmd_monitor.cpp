@@ -15,7 +15,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
-#include "andros/base/shutdown_signals.hpp"
+#include "andros/base/stop.hpp"
 #include "andros/base/text.hpp"
 #include "andros/base/unique_fd.hpp"
 #include "andros/cli/command_line.hpp"
@@ -79,7 +79,7 @@ int monitor_file(const std::string& path, link::VehicleView& view) {
 /// Decodes fd live until a signal or its end. is_port: fd is a serial port,
 /// whose end means it was unplugged (exit 1); a pipe's end is just the end.
 int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleView& view) {
-  ShutdownSignals signals;  // before the display's thread starts
+  StopRequest stop(kStopSignals);  // before the display's thread starts
   std::mutex mutex;
   const bool interactive = view::is_interactive(STDOUT_FILENO);
   std::optional<view::StatusDisplay> display;
@@ -98,11 +98,10 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   std::uint8_t buf[4096];
   bool ended = false;
   bool failed = false;
-  while (!signals.requested() && !ended) {
-    pollfd p{fd, POLLIN, 0};
-    const int ready = poll(&p, 1, 1000 / kRedrawsPerSecond);
+  while (!stop.requested() && !ended) {
+    const bool ready = stop.wait_readable(fd, monotonic_ns() + kNsPerSecond / kRedrawsPerSecond);
     const auto now = monotonic_ns();
-    if (ready > 0) {
+    if (ready) {
       const long n = ::read(fd, buf, sizeof buf);
       if (n > 0) {
         const std::lock_guard lock(mutex);

@@ -1,7 +1,6 @@
 // `andros-bridge record`: the live controller's events as an event script.
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -10,6 +9,8 @@
 #include <memory>
 
 #include "andros/base/error.hpp"
+#include "andros/base/stop.hpp"
+#include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/input/script_recorder.hpp"
 #include "andros/version.hpp"
@@ -24,33 +25,6 @@ struct RecordCommandOptions {
   std::unique_ptr<CommandLine> settings;  ///< the settings table's flags
 };
 
-volatile std::sig_atomic_t g_stop_signal = 0;
-
-extern "C" void on_stop_signal(int signal) { g_stop_signal = signal; }
-
-/// SIGINT and SIGTERM end the recording while this lives. No SA_RESTART, so
-/// that they interrupt the recorder's sleep.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopOnSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
-
 std::string utc_now() {
   const std::time_t now = std::time(nullptr);
   std::tm tm{};
@@ -60,11 +34,8 @@ std::string utc_now() {
   return text;
 }
 
-int run_record(const RecordCommandOptions& opt) {
-  const Settings settings = resolve_settings(*opt.settings);
+int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) {
   const std::string& output = settings.script_output;
-  // SDL first (bad selection or mapping file: exit 2 before any file is made).
-  input::SdlInput input(opt.sdl);
   std::ofstream file;
   if (output != "-") {
     file.open(output, std::ios::out | std::ios::trunc);
@@ -77,26 +48,44 @@ int run_record(const RecordCommandOptions& opt) {
   rec.header = "andros-bridge " + std::string(kVersion) + " record, started " + utc_now() +
                "\ncontroller: " + input.selection() + "\nt_ms    event       arguments";
 
-  const StopOnSignals stop_on_signals;
   const bool progress = isatty(STDERR_FILENO) == 1;
   std::int64_t last_progress_ms = -1000;
-  const auto keep_going = [&](const input::RecordStatus& s) {
-    if (progress && (s.t_ms - last_progress_ms >= 500 || g_stop_signal != 0)) {
-      last_progress_ms = s.t_ms;
-      std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s (Ctrl-C ends)\033[K",
-                   static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
-                   s.connected ? "connected" : "not connected");
-    }
-    return g_stop_signal == 0 && out.good();  // a full disk ends it: nothing more would be kept
+  const auto show_progress = [&](const input::RecordStatus& s) {
+    last_progress_ms = s.t_ms;
+    std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s (Ctrl-C ends)\033[K",
+                 static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
+                 s.connected ? "connected" : "not connected");
   };
-  const auto ended = input::record_script(input, out, rec, keep_going);
+  const auto keep_going = [&](const input::RecordStatus& s) {
+    if (progress && s.t_ms - last_progress_ms >= 500) show_progress(s);
+    return out.good();  // a full disk ends it: nothing more would be kept
+  };
+  const auto ended = input::record_script(input, out, rec, stop, keep_going);
   out.flush();
   if (!out) throw RuntimeError((output == "-" ? std::string("standard output") : output) + ": write error");
-  if (progress) std::fputc('\n', stderr);
+  if (progress) {
+    show_progress(ended);
+    std::fputc('\n', stderr);
+  }
   if (ended.at_limit) std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
   std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events),
                output == "-" ? "" : " to ", output == "-" ? "" : output.c_str());
   return kExitOk;
+}
+
+int run_record(const RecordCommandOptions& opt) {
+  const Settings settings = resolve_settings(*opt.settings);
+  // Blocked before SDL starts its threads, so that every thread inherits the mask.
+  StopRequest stop(kRecordStopSignals);
+  try {
+    // SDL first (bad selection or mapping file: exit 2 before any file is made).
+    input::SdlInput input(opt.sdl, [&stop] { return stop.requested(); });
+    return record(settings, input, stop);
+  } catch (const ReadStopped&) {
+    std::fprintf(stderr, "stopped (SIG%s) while reading the controller database, before recording\n",
+                 sigabbrev_np(stop.signal_number()));
+    return kExitOk;
+  }
 }
 
 }  // namespace

@@ -11,7 +11,8 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/job_control.hpp"
-#include "andros/base/shutdown_signals.hpp"
+#include "andros/base/stop.hpp"
+#include "andros/base/text.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/link/sim_vehicle.hpp"
@@ -42,8 +43,8 @@ std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVeh
   return std::make_unique<link::SerialLink>(config.port, config.baud);
 }
 
-run::Request poll_requests(ShutdownSignals& signals, JobControlSignals& job) {
-  if (signals.requested()) return run::Request::kStop;
+run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
+  if (stop.requested()) return run::Request::kStop;
   switch (job.poll()) {
     case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;
     case JobControlSignals::Event::kContinued:
@@ -90,7 +91,7 @@ int run_bridge(const RunOptions& opt) {
   // data commands keep the default: `frame decode | head` just ends.)
   std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
-  ShutdownSignals signals;
+  StopRequest stop(kStopSignals);
   JobControlSignals job;
   mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                                     : mapping::load_mapping(config.mapping);
@@ -99,11 +100,11 @@ int run_bridge(const RunOptions& opt) {
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;
   try {
-    input = make_input_source(config.input, opt.sdl, [&signals] { return signals.requested(); });
+    input = make_input_source(config.input, opt.sdl, [&stop] { return stop.requested(); });
   } catch (const ReadStopped&) {
     // Nothing has been sent: there is no frame to neutralise, and the stop was asked for.
     spdlog::info("stopped (SIG{}) while reading the input, before the first frame",
-                 sigabbrev_np(signals.signal_number()));
+                 sigabbrev_np(stop.signal_number()));
     return kExitOk;
   }
   std::unique_ptr<link::SimVehicle> sim;
@@ -132,14 +133,14 @@ int run_bridge(const RunOptions& opt) {
                config.weapons ? ", WEAPONS ENABLED" : "");
   run::Bridge bridge(*input, *frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   const run::RunControl control{
-      [&] { return poll_requests(signals, job); },
+      [&] { return poll_requests(stop, job); },
       [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
   bridge.run(control, [&board](const run::TickReport& r) { board.observe(r); });
   display.reset();
 
   const auto end = board.snapshot();
   std::string why = "end of the input";
-  if (signals.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(signals.signal_number());
+  if (stop.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(stop.signal_number());
   spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why,
                end.link.sent, end.link.busy, end.link.down);
   if (sim) {

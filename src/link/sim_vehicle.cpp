@@ -1,14 +1,9 @@
-#include "andros/base/clock.hpp"
 #include "andros/link/sim_vehicle.hpp"
 
 #include <poll.h>
-#include <sys/eventfd.h>
 #include <termios.h>
 
-#include <cerrno>
-#include <cstring>
-
-#include "andros/base/error.hpp"
+#include "andros/base/clock.hpp"
 #include "andros/link/link.hpp"
 #include "andros/link/pty_pair.hpp"
 
@@ -26,16 +21,13 @@ SimVehicle::SimVehicle(std::uint8_t expected_code) : view_(expected_code) {
     tcsetattr(master_.get(), TCSANOW, &tio);
   }
   path_ = std::move(pty.path);
-  wake_.reset(eventfd(0, EFD_CLOEXEC));
-  if (!wake_) throw RuntimeError(std::string("sim: eventfd: ") + std::strerror(errno));
 }
 
 SimVehicle::~SimVehicle() { stop(); }
 
 void SimVehicle::stop() {
   if (!thread_.joinable()) return;
-  const std::uint64_t one = 1;
-  [[maybe_unused]] const auto n = write(wake_.get(), &one, sizeof one);
+  stop_.raise();
   thread_.join();
 }
 
@@ -57,15 +49,7 @@ bool SimVehicle::read_ready() {
 }
 
 void SimVehicle::run() {
-  pollfd fds[2] = {{master_.get(), POLLIN, 0}, {wake_.get(), POLLIN, 0}};
-  while (true) {
-    if (poll(fds, 2, -1) < 0) {
-      if (errno == EINTR) continue;
-      return;
-    }
-    if (fds[1].revents != 0) break;
-    if ((fds[0].revents & POLLIN) != 0) read_ready();
-  }
+  while (stop_.wait_readable(master_.get(), kNoDeadline)) read_ready();
   // Stopping: the bridge has drained its side; take in the last frames.
   pollfd last{master_.get(), POLLIN, 0};
   while (poll(&last, 1, 0) == 1 && (last.revents & POLLIN) != 0 && read_ready()) {

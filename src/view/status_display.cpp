@@ -6,10 +6,10 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdlib>
 #include <cstring>
 
+#include "andros/base/clock.hpp"
 #include "andros/base/write_fully.hpp"
 
 namespace andros::view {
@@ -47,18 +47,14 @@ void StatusDisplay::start() {
   auto& sinks = spdlog::default_logger()->sinks();
   saved_sinks_ = sinks;
   sinks.assign({log_});
-  stopping_ = false;
+  stop_.emplace();
   if (foreground()) write_out("\x1b[2J\x1b[?25l", period_ms_);  // clear, and hide the cursor while redrawing
   thread_ = std::thread([this] { run(); });
 }
 
 void StatusDisplay::stop() {
   if (!thread_.joinable()) return;
-  {
-    const std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_all();
+  stop_->raise();
   thread_.join();
   draw(true);
   spdlog::default_logger()->sinks() = saved_sinks_;
@@ -80,12 +76,9 @@ bool StatusDisplay::write_out(const std::string& text, int timeout_ms) {
 }
 
 void StatusDisplay::run() {
-  std::unique_lock lock(mutex_);
-  while (!stopping_) {
-    lock.unlock();
+  while (!stop_->requested()) {
     draw(false);
-    lock.lock();
-    wake_.wait_for(lock, std::chrono::milliseconds(period_ms_), [this] { return stopping_; });
+    stop_->sleep_until(monotonic_ns() + period_ms_ * kNsPerMs);
   }
 }
 

@@ -1,13 +1,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 
 #include "andros/base/error.hpp"
-#include "andros/base/shutdown_signals.hpp"
 #include "andros/input/script_input.hpp"
 #include "andros/link/pty_pair.hpp"
 #include "andros/link/serial_link.hpp"
@@ -253,15 +251,6 @@ TEST(Bridge, ReportsWhetherTheNeutralFramesReachedTheLink) {
   EXPECT_FALSE(lost.shutdown_report().ok());
   EXPECT_EQ(lost.shutdown_report().neutral_sent, 0);
   EXPECT_EQ(lost.shutdown_report().neutral_wanted, 3);
-}
-
-TEST(ShutdownSignals, ASignalBecomesARequest) {
-  ShutdownSignals signals;
-  EXPECT_FALSE(signals.requested());
-  raise(SIGTERM);  // blocked: pending, not fatal
-  EXPECT_TRUE(signals.requested());
-  EXPECT_EQ(signals.signal_number(), SIGTERM);
-  EXPECT_TRUE(signals.requested());  // stays requested
 }
 
 TEST(ScriptInput, ABadLineStopsBeforeTheFirstFrame) {

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "andros/base/stop.hpp"
 #include "andros/input/events.hpp"
 #include "andros/input/sdl_input.hpp"
 
@@ -32,12 +33,13 @@ struct RecordStatus {
   bool at_limit = false;  ///< ended at RecordOptions::max_ms, not by keep_going
 };
 
-/// Reads input every period on absolute time (missed ticks are skipped, not
-/// burst) and writes each event as a script line, t_ms from the start, until
-/// keep_going returns false; then writes `T end`. keep_going runs after every
-/// tick and whenever a signal interrupts the wait. Throws RuntimeError when
-/// out fails. Ends by itself at options.max_ms. Returns where it ended.
-RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+/// Reads input every period on absolute time (a TickGrid: missed ticks are
+/// skipped, not burst) and writes each event as a script line, t_ms from the
+/// start, until a stop request (which also ends the wait between two ticks)
+/// or keep_going returning false; then writes `T end`. keep_going runs after
+/// every tick. Throws RuntimeError when out fails. Ends by itself at
+/// options.max_ms. Returns where it ended.
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, StopRequest& stop,
                            const std::function<bool(const RecordStatus&)>& keep_going);
 
 }  // namespace andros::input

@@ -7,13 +7,15 @@
 /// process is in the terminal's foreground. While it runs, log lines are kept
 /// and shown under the screen instead of scrolling through it.
 
-#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "andros/base/stop.hpp"
 
 namespace spdlog::sinks {
 class sink;
@@ -52,9 +54,7 @@ class StatusDisplay {
   bool broken_ = false;  ///< a write failed (terminal gone): nothing more is drawn
   std::shared_ptr<spdlog::sinks::ringbuffer_sink<std::mutex>> log_;
   std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_sinks_;  ///< the log's sinks before start()
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stopping_ = false;
+  std::optional<StopRequest> stop_;  ///< a new one for each start()
   std::thread thread_;
 };
 

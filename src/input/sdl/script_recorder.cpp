@@ -1,7 +1,5 @@
 #include "andros/input/script_recorder.hpp"
 
-#include <cerrno>
-#include <ctime>
 #include <sstream>
 
 #include "andros/base/clock.hpp"
@@ -18,13 +16,13 @@ void write_line(std::ostream& out, const std::string& line) {
 
 }  // namespace
 
-RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options,
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, StopRequest& stop,
                            const std::function<bool(const RecordStatus&)>& keep_going) {
   std::istringstream header(options.header);
   for (std::string line; std::getline(header, line);) write_line(out, "# " + line);
   out.flush();
 
-  const std::int64_t period_ns = std::int64_t{options.period_ms} * kNsPerMs;
+  const auto grid = TickGrid::every(std::int64_t{options.period_ms} * kNsPerMs);
   const std::int64_t start_ns = monotonic_ns();
   RecordStatus status;
   std::int64_t tick = 0;
@@ -43,18 +41,9 @@ RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptio
     if (!events.empty()) out.flush();  // a killed recording keeps what it saw
     status.events += static_cast<std::int64_t>(events.size());
     status.tick = tick + 1;
-    if (!keep_going(status)) break;
-
-    // The next tick on the grid that is still ahead: after a stall, skip.
-    tick = std::max(tick + 1, (monotonic_ns() - start_ns) / period_ns + 1);
-    bool stop = false;
-    while (!sleep_until_ns(start_ns + tick * period_ns)) {
-      if (!keep_going(status)) {
-        stop = true;
-        break;
-      }
-    }
-    if (stop) break;
+    if (!keep_going(status) || stop.requested()) break;
+    tick = grid.next_tick(tick, monotonic_ns() - start_ns);
+    if (!stop.sleep_until(start_ns + grid.tick_ns(tick))) break;
   }
   InputEvent end;
   end.t_ms = status.t_ms;

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <thread>
 
+#include "andros/base/clock.hpp"
+#include "andros/base/stop.hpp"
 #include "andros/input/events.hpp"
 #include "andros/input/script_recorder.hpp"
 #include "support/virtual_device.hpp"
@@ -36,7 +39,8 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
     }
     return step < 7;
   };
-  const auto written = record_script(input, out, options, script).events;
+  StopRequest stop;
+  const auto written = record_script(input, out, options, stop, script).events;
 
   const std::string text = out.str();
   EXPECT_EQ(text.rfind("# test recording\n# controller: Test Pad\n", 0), 0U) << text;
@@ -60,19 +64,27 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
 }
 
 }  // namespace
+/// SDL headless, a virtual pad attached, and the input the recorder reads.
+struct PadRig {
+  struct DummyVideo {
+    DummyVideo() { test::use_dummy_video(); }
+  } video;
+  SdlSession session;
+  std::unique_ptr<VirtualDevice> pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
+  SdlInput input{SdlInputOptions{}};
+};
+
 // A recording ends by itself at its longest (a day for `record`, so that
 // replay and run take what it wrote; 100 ms here), with its `end` no later.
 TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
-  test::use_dummy_video();
-  const SdlSession session;
-  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
-  SdlInput input(SdlInputOptions{});
+  PadRig rig;
   std::ostringstream out;
   RecordOptions options;
   options.period_ms = 10;
   options.max_ms = 100;
   int calls = 0;
-  const auto ended = record_script(input, out, options, [&](const RecordStatus&) { return ++calls < 10'000; });
+  StopRequest stop;
+  const auto ended = record_script(rig.input, out, options, stop, [&](const RecordStatus&) { return ++calls < 10'000; });
   EXPECT_TRUE(ended.at_limit);
   EXPECT_LE(ended.t_ms, 100);
   const auto events = parse_event_script(out.str(), "recorded");
@@ -80,6 +92,31 @@ TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
   EXPECT_EQ(events.back().type, T::kEnd);
   EXPECT_LE(events.back().t_ms, 100);
   EXPECT_LT(calls, 10'000);
+}
+
+// A stop request (SIGINT or SIGTERM in `record`) ends the wait between two
+// ticks at once, and the script still gets its `end`.
+TEST(ScriptRecorder, AStopRequestEndsTheWaitAndTheScript) {
+  PadRig rig;
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 60'000;  // a wake-up missed would wait a minute
+  StopRequest stop;
+  const std::int64_t start = monotonic_ns();
+  std::thread stopper([&] {
+    sleep_until_ns_uninterrupted(start + 50 * kNsPerMs);
+    stop.raise();
+  });
+  const auto ended = record_script(rig.input, out, options, stop, [](const RecordStatus&) { return true; });
+  stopper.join();
+  EXPECT_LT(monotonic_ns() - start, 30 * kNsPerSecond);
+  EXPECT_FALSE(ended.at_limit);
+  EXPECT_EQ(ended.tick, 1);
+  const auto events = parse_event_script(out.str(), "recorded");
+  ASSERT_EQ(events.size(), 2U) << out.str();
+  EXPECT_EQ(events[0].type, T::kConnect);
+  EXPECT_EQ(events.back().type, T::kEnd);
+  EXPECT_EQ(events.back().t_ms, 0);
 }
 
 }  // namespace andros::input

@@ -1,0 +1,62 @@
+#pragma once
+/// The one stop mechanism every loop uses: a request that code raises or a
+/// stop signal makes, that a loop checks once per turn, and that wakes a loop
+/// waiting on it (sleep_until, wait_readable). The signals stay blocked and
+/// are taken synchronously (BlockedSignals, a signalfd to wake on): no
+/// handler ever runs, on any thread.
+
+#include <atomic>
+#include <csignal>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+
+#include "andros/base/blocked_signals.hpp"
+#include "andros/base/unique_fd.hpp"
+
+namespace andros {
+
+/// The signals that stop `run` and `monitor` (docs/running.md).
+inline constexpr std::initializer_list<int> kStopSignals = {SIGINT, SIGTERM, SIGHUP};
+/// The signals that end a `record` (docs/controllers.md); SIGHUP keeps its default there.
+inline constexpr std::initializer_list<int> kRecordStopSignals = {SIGINT, SIGTERM};
+
+/// For wait_readable: no time limit.
+inline constexpr std::int64_t kNoDeadline = INT64_MAX;
+
+class StopRequest {
+ public:
+  /// A request only code raises (a thread's owner stopping it).
+  StopRequest();
+  /// Also made by any of `signals`, which it blocks in the calling thread and
+  /// so in every thread started later: construct before any thread starts.
+  explicit StopRequest(std::initializer_list<int> signals);
+  ~StopRequest();
+  StopRequest(const StopRequest&) = delete;
+  StopRequest& operator=(const StopRequest&) = delete;
+
+  /// Asks whoever checks this to stop, and wakes them. Any thread.
+  void raise();
+  /// True once raised or a signal of the set arrived; stays true. Never blocks.
+  bool requested();
+  /// The signal that asked (0: none, or raised by code).
+  [[nodiscard]] int signal_number() const { return signal_.load(); }
+
+  /// Sleeps until the monotonic clock reads abs_ns; false when a stop request
+  /// cut the sleep short (or came before it).
+  bool sleep_until(std::int64_t abs_ns);
+  /// Waits until fd has something to read (or an error or hang-up to report)
+  /// or abs_ns (kNoDeadline: none); false at abs_ns or on a stop request.
+  bool wait_readable(int fd, std::int64_t abs_ns);
+
+ private:
+  bool wait(int fd, std::int64_t abs_ns);
+
+  std::optional<BlockedSignals> signals_;
+  UniqueFd signal_fd_;  ///< readable while a signal of the set is pending
+  UniqueFd wake_;       ///< eventfd, readable once raised
+  std::atomic<bool> raised_{false};
+  std::atomic<int> signal_{0};
+};
+
+}  // namespace andros

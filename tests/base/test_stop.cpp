@@ -1,0 +1,106 @@
+// StopRequest: the one stop every loop checks, raised by code or by a stop
+// signal, waking a loop that sleeps or waits on it. Bounds are generous: a
+// woken wait ends in ms, a missed wake-up would take the full minute.
+#include "andros/base/stop.hpp"
+
+#include <gtest/gtest.h>
+#include <pthread.h>
+#include <unistd.h>
+
+#include <thread>
+
+#include "andros/base/clock.hpp"
+#include "andros/base/unique_fd.hpp"
+
+namespace andros {
+namespace {
+
+constexpr std::int64_t kLong = 60 * kNsPerSecond;
+constexpr std::int64_t kWoken = 30 * kNsPerSecond;
+
+TEST(StopRequest, RaisedItStaysRequested) {
+  StopRequest stop;
+  EXPECT_FALSE(stop.requested());
+  stop.raise();
+  EXPECT_TRUE(stop.requested());
+  EXPECT_TRUE(stop.requested());
+  EXPECT_EQ(stop.signal_number(), 0);  // code, not a signal
+}
+
+TEST(StopRequest, SleepsToItsTimeWhenNothingAsks) {
+  StopRequest stop;
+  const std::int64_t until = monotonic_ns() + 20 * kNsPerMs;
+  EXPECT_TRUE(stop.sleep_until(until));
+  EXPECT_GE(monotonic_ns(), until);
+  EXPECT_TRUE(stop.sleep_until(0));  // a time already past: at once
+}
+
+TEST(StopRequest, ARaiseFromAnotherThreadWakesASleeper) {
+  StopRequest stop;
+  const std::int64_t start = monotonic_ns();
+  std::thread raiser([&] {
+    sleep_until_ns_uninterrupted(monotonic_ns() + 20 * kNsPerMs);
+    stop.raise();
+  });
+  EXPECT_FALSE(stop.sleep_until(start + kLong));
+  raiser.join();
+  EXPECT_LT(monotonic_ns() - start, kWoken);
+  EXPECT_FALSE(stop.sleep_until(start + kLong));  // and every sleep after it ends at once
+}
+
+TEST(StopRequest, ARaiseEndsAWaitForInput) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const UniqueFd read_end(fds[0]);
+  const UniqueFd write_end(fds[1]);
+  StopRequest stop;
+  EXPECT_FALSE(stop.wait_readable(read_end.get(), monotonic_ns() + 10 * kNsPerMs));  // nothing yet: its time
+  ASSERT_EQ(write(write_end.get(), "x", 1), 1);
+  EXPECT_TRUE(stop.wait_readable(read_end.get(), kNoDeadline));
+
+  char c = 0;
+  ASSERT_EQ(read(read_end.get(), &c, 1), 1);
+  const std::int64_t start = monotonic_ns();
+  std::thread raiser([&] {
+    sleep_until_ns_uninterrupted(monotonic_ns() + 20 * kNsPerMs);
+    stop.raise();
+  });
+  EXPECT_FALSE(stop.wait_readable(read_end.get(), kNoDeadline));
+  raiser.join();
+  EXPECT_LT(monotonic_ns() - start, kWoken);
+}
+
+TEST(StopRequest, ABlockedSignalBecomesARequest) {
+  StopRequest stop(kStopSignals);
+  EXPECT_FALSE(stop.requested());
+  raise(SIGTERM);  // blocked: pending, not fatal
+  EXPECT_TRUE(stop.requested());
+  EXPECT_EQ(stop.signal_number(), SIGTERM);
+  EXPECT_TRUE(stop.requested());  // stays requested
+}
+
+TEST(StopRequest, ASignalWakesASleeper) {
+  StopRequest stop(kStopSignals);
+  const pthread_t sleeper = pthread_self();
+  const std::int64_t start = monotonic_ns();
+  // Sent to the sleeping thread itself: no other thread of the test binary can take it.
+  std::thread sender([&] {
+    sleep_until_ns_uninterrupted(monotonic_ns() + 20 * kNsPerMs);
+    pthread_kill(sleeper, SIGINT);
+  });
+  EXPECT_FALSE(stop.sleep_until(start + kLong));
+  sender.join();
+  EXPECT_LT(monotonic_ns() - start, kWoken);
+  EXPECT_EQ(stop.signal_number(), SIGINT);
+}
+
+TEST(StopRequest, OnlyItsOwnSignalsAsk) {
+  StopRequest stop(kRecordStopSignals);
+  StopRequest code_only;
+  raise(SIGINT);
+  EXPECT_TRUE(stop.requested());
+  EXPECT_FALSE(code_only.requested());
+}
+
+}  // namespace
+}  // namespace andros
