@@ -57,8 +57,8 @@ void run_replay(const ReplayOptions& opt) {
   const auto code = parse_code(opt.code, SourcePos{"--code"});
   const timing::FrameClock clock(timing::parse_rate(opt.rate, timing::kReplayBaud, SourcePos{"--rate"}));
   const auto format = run::parse_replay_format(opt.format, SourcePos{"--format"});
-  mapping::Mapping mapping = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot.empty() ? protocol::kDefaultRobot : opt.robot)
-                                        : mapping::load_mapping(opt.mapping);
+  auto mapping = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot.empty() ? protocol::kDefaultRobot : opt.robot)
+                                     : mapping::load_mapping(opt.mapping);
   auto script = input::checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
                                                        : TextReader::open(opt.events, kEventScriptLimits));
 

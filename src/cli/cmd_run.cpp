@@ -147,8 +147,8 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   ShutdownSignals signals;
   JobControlSignals job;
-  mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
-                                                    : mapping::load_mapping(config.mapping);
+  auto mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
+                                        : mapping::load_mapping(config.mapping);
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;

@@ -252,7 +252,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     std::set<std::string> seen;
     for (const auto& kv : layers) {
       auto layer = read_layer(r, kv.first, kv.second);
-      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer " + quote(layer.name) + " given twice");
+      check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
       const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
       if (it == m.layers.end()) {
         m.layers.push_back(std::move(layer));
@@ -275,10 +275,6 @@ Mapping load_mapping_file(const fs::path& file) {
   return read_file(file, chain, SourcePos{});
 }
 
-Mapping load_mapping(const fs::path& file) {
-  auto mapping = load_mapping_file(file);
-  validate(mapping, true);
-  return mapping;
-}
+ValidMapping load_mapping(const fs::path& file) { return validate(load_mapping_file(file), true); }
 
 }  // namespace andros::mapping

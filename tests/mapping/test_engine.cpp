@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <type_traits>
+
 #include "andros/input/events.hpp"
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
@@ -10,7 +12,7 @@ namespace {
 
 using T = input::InputEvent::Type;
 
-Mapping hd1() { return load_mapping(std::string(ANDROS_MAPPINGS_DIR) + "/hd1.yaml"); }
+ValidMapping hd1() { return load_mapping(std::string(ANDROS_MAPPINGS_DIR) + "/hd1.yaml"); }
 
 void apply_script(input::InputState& s, const std::string& text) {
   for (const auto& e : input::parse_event_script(text, "t.events")) s.apply(e);
@@ -54,11 +56,11 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
 }
 
 TEST(Engine, PivotContractValue) {
-  Mapping m = hd1();
+  Mapping m = *hd1();
   for (auto& b : m.bindings) {
     if (auto* a = std::get_if<AxisBinding>(&b.rule); a && a->analog == protocol::signal_id("pivot")) a->shape = {false, 0.1, 0.5};
   }
-  Engine engine(std::move(m), EngineOptions{});
+  Engine engine(validate(std::move(m)), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);  // start-up: presses before the first tick would not count
   apply_script(in, "0 connect\n10 button leftshoulder 1\n");
@@ -69,7 +71,7 @@ TEST(Engine, PivotContractValue) {
 }
 
 
-Mapping from_yaml(const std::string& text) {
+ValidMapping from_yaml(const std::string& text) {
   testing::TempDir dir;
   return load_mapping(dir.write("m.yaml", text));
 }
@@ -291,21 +293,24 @@ TEST(Engine, OneToggleStatePerSignal) {
   EXPECT_EQ(protocol::read_signals(engine.step(in, 240))[protocol::signal_id("tool_on")], 0);
 }
 
+// An Engine runs only a ValidMapping, and validate() is the one way to make one.
+static_assert(!std::is_constructible_v<Engine, Mapping, EngineOptions>);
+
 TEST(Engine, RefusesAnInvalidMappingBuiltByHand) {
   Mapping m;
   SelectorBinding s;
   s.positions = {{}, {protocol::signal_id("main_video_2")}};
   s.initial = 2;  // no such position
   m.bindings.push_back(Binding{s, {}, {}, {}, {}});
-  EXPECT_THROW(Engine(m, EngineOptions{}), InputError);
+  EXPECT_THROW(validate(m, false), InputError);
   m.bindings[0].rule = ButtonBinding{protocol::signal_id("safety"), {}, false, false, 0.5};
-  EXPECT_THROW(Engine(m, EngineOptions{}), InputError);
+  EXPECT_THROW(validate(m, false), InputError);
 }
 
 TEST(Engine, WithoutADeadmanOnlyNeutralFrames) {
   Mapping m;
   m.bindings.push_back(Binding{ButtonBinding{protocol::signal_id("tool_on"), *input::parse_button_name("a")}, {}, {}, {}, {}});
-  Engine engine(m, EngineOptions{});
+  Engine engine(validate(m, false), EngineOptions{});
   input::InputState in;
   apply_script(in, "0 connect\n10 button a 1\n");
   EXPECT_EQ(engine.step(in, 40), engine.neutral());
