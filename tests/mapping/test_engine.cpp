@@ -11,10 +11,7 @@
 namespace andros::mapping {
 namespace {
 
-using testing::apply_script;
-using testing::hd1_mapping;
-using testing::mapping_from_yaml;
-using testing::start_enabled;
+using namespace testing;  // engine_steps.hpp
 
 TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   Engine engine(hd1_mapping(), EngineOptions{});

@@ -8,10 +8,7 @@
 namespace andros::mapping {
 namespace {
 
-using testing::apply_script;
-using testing::hd1_mapping;
-using testing::mapping_from_yaml;
-using testing::start_enabled;
+using namespace testing;  // engine_steps.hpp
 
 const std::string kLayered =
     "robot: HD1\ndeadman: leftshoulder\nbindings:\n"
