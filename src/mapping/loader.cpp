@@ -80,7 +80,7 @@ Binding read_analog_binding(const Reader& r, const YAML::Node& n, Binding b) {
     k.analog = id;
     k.increase = r.button(n["increase"]);
     k.decrease = r.button(n["decrease"]);
-    k.rate = static_cast<int>(r.integer(n["rate"], 1, 25500, "rate (units per second)"));
+    k.rate = static_cast<int>(r.integer(n["rate"], 1, kMaxKnobRate, "rate (units per second)"));
     if (n["initial"]) k.initial = static_cast<int>(r.integer(n["initial"], 0, 255, "initial"));
     b.inputs.push_back(use(r, n["increase"], k.increase));
     b.inputs.push_back(use(r, n["decrease"], k.decrease));

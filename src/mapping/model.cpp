@@ -72,7 +72,7 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
                      throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
                                               " must return to centre, so bind it to an axis");
                    }
-                   check_range(r.rate > 0 && r.rate <= 25500, b.pos, "rate");
+                   check_range(r.rate > 0 && r.rate <= kMaxKnobRate, b.pos, "rate");
                    check_range(!r.initial || (*r.initial >= 0 && *r.initial <= 255), b.pos, "initial");
                  },
                  [&](const SelectorBinding& r) {

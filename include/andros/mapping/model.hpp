@@ -23,6 +23,7 @@ inline constexpr int kDefaultCenter = 128;
 inline constexpr std::uint8_t kDefaultByte12 = 0x00;
 inline constexpr std::uint8_t kDefaultBattery = 0xCC;
 inline constexpr double kDefaultThreshold = 0.5;
+inline constexpr int kMaxKnobRate = 25500;  ///< units per second: 0 to 255 in 10 ms
 
 /// How a stick or trigger value becomes a number in [-1, 1] (docs/mapping.md).
 struct AxisShape {
