@@ -24,9 +24,9 @@ namespace {
 using namespace andros;
 
 
-const std::vector<mapping::Mapping>& shipped() {
+const std::vector<mapping::ValidMapping>& shipped() {
   static const auto mappings = [] {
-    std::vector<mapping::Mapping> out;
+    std::vector<mapping::ValidMapping> out;
     for (const auto robot : protocol::kRobotTypes) {
       out.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
     }
@@ -78,10 +78,11 @@ using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 2) return 0;
-  const auto& mapping = shipped()[data[0] % shipped().size()];
+  const auto& valid = shipped()[data[0] % shipped().size()];
+  const mapping::Mapping& mapping = *valid;
   const bool weapons = (data[1] & 1) != 0;
   const std::uint8_t code = data[1];
-  mapping::Engine engine(mapping, mapping::EngineOptions{weapons, code});
+  mapping::Engine engine(valid, mapping::EngineOptions{weapons, code});
   const input::InputKey deadman = mapping.deadman->key;
 
   input::InputState input;

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -56,16 +57,15 @@ using andros::fuzz::check;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto file = write_files(std::string_view(reinterpret_cast<const char*>(data), size));
-  andros::mapping::Mapping mapping;
+  std::optional<andros::mapping::ValidMapping> mapping;
   try {
-    mapping = andros::mapping::load_mapping_file(file);
-    andros::mapping::validate(mapping, false);
+    mapping = andros::mapping::validate(andros::mapping::load_mapping_file(file), false);
   } catch (const andros::InputError& e) {
     check(!e.pos().file.empty());
     return 0;
   }
-  if (!mapping.robot) return 0;
-  andros::mapping::Engine engine(mapping, andros::mapping::EngineOptions{});
+  if (!(*mapping)->robot) return 0;
+  andros::mapping::Engine engine(std::move(*mapping), andros::mapping::EngineOptions{});
   andros::input::InputState input;
   andros::input::InputEvent connect;
   connect.type = andros::input::InputEvent::Type::kConnect;

@@ -93,9 +93,9 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   StopRequest stop(kStopSignals);
   JobControlSignals job;
-  mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
-                                                    : mapping::load_mapping(config.mapping);
-  const int center = mapping.center;
+  auto mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
+                                        : mapping::load_mapping(config.mapping);
+  const int center = mapping->center;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;

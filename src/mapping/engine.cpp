@@ -23,27 +23,24 @@ std::string_view describe(EnableState state) {
   return "?";
 }
 
-Engine::Engine(Mapping mapping, EngineOptions options)
-    : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(mapping_) {
-  // A mapping built by hand gets the same checks as a loaded one; without a
-  // deadman it is never enabled, so it only ever sends neutral frames.
-  validate(mapping_, false);
+Engine::Engine(ValidMapping mapping, EngineOptions options)
+    : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(*mapping_) {
   const auto note_button = [this](input::InputKey key) {
     if (key.is_button() && std::find(buttons_.begin(), buttons_.end(), key) == buttons_.end()) buttons_.push_back(key);
   };
-  if (mapping_.deadman) note_button(mapping_.deadman->key);
-  for (const auto& layer : mapping_.layers) note_button(layer.input.key);
+  if (mapping_->deadman) note_button(mapping_->deadman->key);
+  for (const auto& layer : mapping_->layers) note_button(layer.input.key);
   std::size_t slots = 0;
   slot_base_.push_back(0);
-  for (int layer = -1; layer < static_cast<int>(mapping_.layers.size()); ++layer) {
-    effective_.push_back(effective_bindings(mapping_, layer));
-    slots += layer < 0 ? mapping_.bindings.size() : mapping_.layers[static_cast<std::size_t>(layer)].bindings.size();
+  for (int layer = -1; layer < static_cast<int>(mapping_->layers.size()); ++layer) {
+    effective_.push_back(effective_bindings(*mapping_, layer));
+    slots += layer < 0 ? mapping_->bindings.size() : mapping_->layers[static_cast<std::size_t>(layer)].bindings.size();
     slot_base_.push_back(slots);
   }
-  all_ = all_bindings(mapping_);
+  all_ = all_bindings(*mapping_);
   selector_.assign(slots, 0);
   for (const auto ref : all_) {
-    const auto& b = binding_at(mapping_, ref);
+    const auto& b = binding_at(*mapping_, ref);
     for (const auto& u : b.inputs) note_button(u.key);
     if (b.arm) note_button(b.arm->key);
     if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) selector_[slot(ref)] = s->initial;
@@ -55,7 +52,7 @@ Engine::Engine(Mapping mapping, EngineOptions options)
 }
 
 const EngineStatus& Engine::status() const { return status_; }
-const Mapping& Engine::mapping() const { return mapping_; }
+const Mapping& Engine::mapping() const { return *mapping_; }
 
 std::size_t Engine::slot(BindingRef ref) const { return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index; }
 
@@ -71,7 +68,7 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
   if (at_start_up) {
     // Presses made before start-up are history: they neither act nor enable.
     for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
-    if (mapping_.deadman) deadman_base_ = input.button(mapping_.deadman->key).presses;
+    if (mapping_->deadman) deadman_base_ = input.button(mapping_->deadman->key).presses;
   }
 }
 
@@ -92,12 +89,12 @@ std::uint32_t Engine::new_presses(const input::InputState& input, input::InputKe
 }
 
 bool Engine::deadman_held(const input::InputState& input) const {
-  return mapping_.deadman && input.connected() && held(input, mapping_.deadman->key);
+  return mapping_->deadman && input.connected() && held(input, mapping_->deadman->key);
 }
 
 EnableState Engine::enable_state(const input::InputState& input) {
-  if (!input.connected() || !mapping_.deadman) return EnableState::kNoController;
-  const auto key = mapping_.deadman->key;
+  if (!input.connected() || !mapping_->deadman) return EnableState::kNoController;
+  const auto key = mapping_->deadman->key;
   const bool down = deadman_held(input);
   if (!down) {
     deadman_released_seen_ = true;
@@ -110,8 +107,8 @@ EnableState Engine::enable_state(const input::InputState& input) {
 
 void Engine::update_layer(const input::InputState& input, bool enabled) {
   if (enabled) {
-    for (std::size_t i = 0; i < mapping_.layers.size(); ++i) {
-      const auto& layer = mapping_.layers[i];
+    for (std::size_t i = 0; i < mapping_->layers.size(); ++i) {
+      const auto& layer = mapping_->layers[i];
       if (!layer.toggle) continue;
       // Each press switches this layer on, or back off to the base layer.
       for (auto n = new_presses(input, layer.input.key); n > 0; --n) {
@@ -120,31 +117,31 @@ void Engine::update_layer(const input::InputState& input, bool enabled) {
     }
   }
   layer_ = toggled_layer_;
-  for (std::size_t i = 0; i < mapping_.layers.size(); ++i) {
-    const auto& layer = mapping_.layers[i];
+  for (std::size_t i = 0; i < mapping_->layers.size(); ++i) {
+    const auto& layer = mapping_->layers[i];
     if (!layer.toggle && input.connected() && held(input, layer.input.key)) {
       layer_ = static_cast<int>(i);  // a held layer wins over a toggled one; the first held wins
       break;
     }
   }
-  status_.layer = layer_ < 0 ? "" : mapping_.layers[static_cast<std::size_t>(layer_)].name;
+  status_.layer = layer_ < 0 ? "" : mapping_->layers[static_cast<std::size_t>(layer_)].name;
 }
 
 protocol::ControlState Engine::resting_state() const {
   protocol::ControlState s;
-  s[protocol::signal_id("pivot")] = static_cast<std::uint8_t>(mapping_.center);
-  s[protocol::signal_id("drive")] = static_cast<std::uint8_t>(mapping_.center);
+  s[protocol::signal_id("pivot")] = static_cast<std::uint8_t>(mapping_->center);
+  s[protocol::signal_id("drive")] = static_cast<std::uint8_t>(mapping_->center);
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     if (protocol::kSignals[i].kind == protocol::SignalKind::kLevel) {
       s.values[i] = static_cast<std::uint8_t>((level_milli_[i] + kMilli / 2) / kMilli);
     }
   }
-  s[protocol::signal_id("byte12")] = mapping_.byte12;
-  s[protocol::signal_id("battery")] = mapping_.battery;
+  s[protocol::signal_id("byte12")] = mapping_->byte12;
+  s[protocol::signal_id("battery")] = mapping_->battery;
   s[protocol::signal_id("code")] = options_.code;
   // Selectors keep their position whatever the layer or enable state.
   for (const auto ref : all_) {
-    if (const auto* sel = std::get_if<SelectorBinding>(&binding_at(mapping_, ref).rule)) {
+    if (const auto* sel = std::get_if<SelectorBinding>(&binding_at(*mapping_, ref).rule)) {
       for (const auto id : sel->positions[static_cast<std::size_t>(selector_[slot(ref)])]) s[id] = 1;
     }
   }
@@ -153,7 +150,7 @@ protocol::ControlState Engine::resting_state() const {
 
 void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
                    std::bitset<protocol::kSignalCount>& armed) {
-  const auto& binding = binding_at(mapping_, ref);
+  const auto& binding = binding_at(*mapping_, ref);
   const auto k = slot(ref);
   // Down now, or pressed and released since the last tick: a short tap is not lost.
   const auto active = [&](input::InputKey key) { return held(input, key) || new_presses(input, key) > 0; };
@@ -180,7 +177,7 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    if (rest_.held_back(b.axis)) return;  // drive/pivot stay at centre, a level keeps its value
                    const double z = shape_axis(normalise_axis(input.axis(b.axis)), b.shape);
                    if (protocol::info(b.analog).kind == protocol::SignalKind::kCentred) {
-                     out[b.analog] = centred_byte(z, mapping_.center);
+                     out[b.analog] = centred_byte(z, mapping_->center);
                    } else {
                      out[b.analog] = level_byte(z);
                      level_milli_[b.analog] = out[b.analog] * kMilli;
@@ -228,7 +225,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   status_.held_back = rest_.held_back_inputs();
 
   protocol::ControlState state = resting_state();
-  SafetyContext ctx{enabled, options_.weapons, {}, mapping_.center, mapping_.brake};
+  SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake};
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
@@ -248,8 +245,8 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
 
 protocol::DataBytes Engine::neutral() const {
   SafetyContext ctx;
-  ctx.center = mapping_.center;
-  ctx.brake = mapping_.brake;
+  ctx.center = mapping_->center;
+  ctx.brake = mapping_->brake;
   return builder_.build(apply_safety(resting_state(), ctx));
 }
 

@@ -80,7 +80,7 @@ Binding read_analog_binding(const Reader& r, const YAML::Node& n, Binding b) {
     k.analog = id;
     k.increase = r.button(n["increase"]);
     k.decrease = r.button(n["decrease"]);
-    k.rate = static_cast<int>(r.integer(n["rate"], 1, 25500, "rate (units per second)"));
+    k.rate = static_cast<int>(r.integer(n["rate"], 1, kMaxKnobRate, "rate (units per second)"));
     if (n["initial"]) k.initial = static_cast<int>(r.integer(n["initial"], 0, 255, "initial"));
     b.inputs.push_back(use(r, n["increase"], k.increase));
     b.inputs.push_back(use(r, n["decrease"], k.decrease));
@@ -252,7 +252,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     std::set<std::string> seen;
     for (const auto& kv : layers) {
       auto layer = read_layer(r, kv.first, kv.second);
-      if (!seen.insert(layer.name).second) r.fail(kv.first, "layer " + quote(layer.name) + " given twice");
+      check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
       const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
       if (it == m.layers.end()) {
         m.layers.push_back(std::move(layer));
@@ -275,10 +275,6 @@ Mapping load_mapping_file(const fs::path& file) {
   return read_file(file, chain, SourcePos{});
 }
 
-Mapping load_mapping(const fs::path& file) {
-  auto mapping = load_mapping_file(file);
-  validate(mapping, true);
-  return mapping;
-}
+ValidMapping load_mapping(const fs::path& file) { return validate(load_mapping_file(file), true); }
 
 }  // namespace andros::mapping

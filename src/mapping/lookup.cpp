@@ -39,12 +39,12 @@ fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>&
   throw InputError(SourcePos{"--robot"}, "no mapping " + file + " for robot " + *canonical + " (looked in " + looked + ")");
 }
 
-Mapping load_robot_mapping(std::string_view robot) {
+ValidMapping load_robot_mapping(std::string_view robot) {
   const auto path = find_robot_mapping(robot, mapping_search_path());
   auto mapping = load_mapping(path);
   const auto canonical = protocol::canonical_robot(robot);
-  if (mapping.robot != canonical) {
-    throw InputError(mapping.robot_pos, "this file is for robot " + mapping.robot.value_or("?") + ", not " + *canonical);
+  if (mapping->robot != canonical) {
+    throw InputError(mapping->robot_pos, "this file is for robot " + mapping->robot.value_or("?") + ", not " + *canonical);
   }
   return mapping;
 }

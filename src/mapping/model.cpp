@@ -74,7 +74,7 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
                      throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
                                               " must return to centre, so bind it to an axis");
                    }
-                   check_range(r.rate > 0 && r.rate <= 25500, b.pos, "rate");
+                   check_range(r.rate > 0 && r.rate <= kMaxKnobRate, b.pos, "rate");
                    check_range(!r.initial || (*r.initial >= 0 && *r.initial <= 255), b.pos, "initial");
                  },
                  [&](const SelectorBinding& r) {
@@ -218,7 +218,11 @@ std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer) {
   return refs;
 }
 
-void validate(const Mapping& m, bool require_robot) {
+void check_layer_name(std::set<std::string>& names, const Layer& layer) {
+  if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer " + quote(layer.name) + " given twice");
+}
+
+ValidMapping validate(Mapping m, bool require_robot) {
   if (require_robot && !m.robot) {
     throw InputError(SourcePos{m.file}, "missing 'robot' (one of " + protocol::robot_list() + ")");
   }
@@ -240,7 +244,7 @@ void validate(const Mapping& m, bool require_robot) {
         throw InputError(layer.input.pos, "'" + input::input_name(r.key) + "' already switches a layer or is the deadman");
       }
     }
-    if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer " + quote(layer.name) + " given twice");
+    check_layer_name(names, layer);
     reserved.push_back(layer.input);
   }
   std::map<protocol::SignalId, SourcePos> selector_signals;
@@ -266,6 +270,7 @@ void validate(const Mapping& m, bool require_robot) {
   check_arms(m, -1);
   for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i));
   check_toggles(m);
+  return ValidMapping(std::move(m));
 }
 
 }  // namespace andros::mapping

@@ -23,7 +23,6 @@ class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
 
-  [[nodiscard]] const std::string& file() const { return file_; }
   /// The file's one YAML document (a null node for an empty file), its nodes
   /// taken from budget. A second document, or more nodes than budget holds,
   /// is an InputError.

@@ -8,7 +8,7 @@
 namespace andros {
 namespace {
 
-using testing::input_error_of;
+using testing::input_error_text;
 
 TEST(Text, TrimTakesBlanksFromBothEnds) {
   EXPECT_EQ(trim(" \tkey = value\r"), "key = value");
@@ -58,7 +58,7 @@ TEST(Text, ParseCodeTakesOneOrTwoHexDigits) {
   EXPECT_EQ(parse_code("0x3c", SourcePos{}), 0x3C);
   EXPECT_EQ(parse_code("F", SourcePos{}), 0x0F);
   for (const char* bad : {"", "1FF", "-1", "-0", "0x", "0x100", "G1", "+1"}) {
-    EXPECT_EQ(input_error_of([&] { parse_code(bad, SourcePos{"--code"}); }),
+    EXPECT_EQ(input_error_text([&] { parse_code(bad, SourcePos{"--code"}); }),
               "--code: error: code '" + std::string(bad) + "' is not a byte in hex (one or two hex digits, e.g. 01 or 3C)")
         << bad;
   }
@@ -67,11 +67,11 @@ TEST(Text, ParseCodeTakesOneOrTwoHexDigits) {
 TEST(Text, ParseIntegerNamesWhatAndWhere) {
   const SourcePos at{"a.events", 3, 14};
   EXPECT_EQ(parse_integer("-5", -10, 10, "axis value", at), -5);
-  EXPECT_EQ(input_error_of([&] { parse_integer("40000", -32768, 32767, "axis value", at); }),
+  EXPECT_EQ(input_error_text([&] { parse_integer("40000", -32768, 32767, "axis value", at); }),
             "a.events:3:14: error: axis value 40000 is out of range -32768..32767");
-  EXPECT_EQ(input_error_of([&] { parse_integer("4x", 0, 9, "time", at); }),
+  EXPECT_EQ(input_error_text([&] { parse_integer("4x", 0, 9, "time", at); }),
             "a.events:3:14: error: time '4x' is not a whole number");
-  EXPECT_EQ(input_error_of([&] { parse_integer("99999999999999999999", 0, 9, "time", at); }),
+  EXPECT_EQ(input_error_text([&] { parse_integer("99999999999999999999", 0, 9, "time", at); }),
             "a.events:3:14: error: time '99999999999999999999' is not a whole number");
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "andros/base/error.hpp"
+#include "support/input_error.hpp"
 #include "support/temp_dir.hpp"
 
 namespace andros {
@@ -25,12 +26,7 @@ std::vector<std::string> lines_of(TextReader& text) {
 }
 
 std::string error_of(TextReader text) {
-  try {
-    lines_of(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::input_error_text([&] { lines_of(text); });
 }
 
 TEST(TextReader, SplitsLinesWithOrWithoutAFinalNewline) {

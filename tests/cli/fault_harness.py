@@ -5,128 +5,22 @@ stuck, SIGTERM's timing, Ctrl-Z and SIGCONT, a paused terminal.
   fault_harness.py BIN DATA_DIR SCENARIO CAPTURE
 
 Each scenario runs `andros-bridge run --port PTY ...` (or `monitor`), plays
-its part, writes what arrived on the port to CAPTURE (for check_frames.py) and
-exits 0, or prints what went wrong and exits 1. Every wait is bounded; times
+its part (with the helpers of fault_lib.py), writes what arrived on the port
+to CAPTURE (for check_frames.py) and exits 0, or prints what went wrong and
+exits 1. Every wait is bounded; times
 are only compared against generous bounds (a period or more of margin).
 """
-import os, pty, select, signal, subprocess, sys, tempfile, threading, time, tty
+import os, signal, subprocess, sys, tempfile, time
 
-
-class Port:
-    """A pty standing in for the switchbox; records each whole frame with its arrival time."""
-
-    def __init__(self):
-        self.master, self.slave = pty.openpty()
-        tty.setraw(self.master)
-        tty.setraw(self.slave)
-        # A symlink, as udev makes: a bridge still retrying this path after the
-        # test cannot write into a later test's pty that reuses the number.
-        self.dir = tempfile.mkdtemp(prefix="andros-fault-")
-        self.path = os.path.join(self.dir, "andros-switchbox")
-        os.symlink(os.ttyname(self.slave), self.path)
-        self.data = bytearray()
-        self.frames = []  # (arrival, drive byte, safety bit)
-        self.lock = threading.Lock()
-        self.done = False
-        self.thread = threading.Thread(target=self._read, daemon=True)
-        self.thread.start()
-
-    def _read(self):
-        pending = bytearray()
-        while not self.done:
-            if not select.select([self.master], [], [], 0.05)[0]:
-                continue
-            try:
-                chunk = os.read(self.master, 4096)
-            except OSError:
-                return
-            now = time.monotonic()
-            with self.lock:
-                self.data += chunk
-                pending += chunk
-                while True:
-                    i = pending.find(b"\xf1\xf1")
-                    if i < 0 or len(pending) < i + 36:
-                        break
-                    digits = pending[i + 2:i + 34]
-                    try:
-                        drive = int(digits[14:16], 16)
-                        safety = (int(digits[0:2], 16) >> 1) & 1
-                    except ValueError:
-                        drive, safety = -1, -1
-                    self.frames.append((now, drive, safety))
-                    del pending[:i + 36]
-
-    def snapshot(self):
-        with self.lock:
-            return list(self.frames)
-
-    def wait(self, what, timeout):
-        """Waits until what(frames) is true; False after timeout seconds."""
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            if what(self.snapshot()):
-                return True
-            time.sleep(0.01)
-        return False
-
-    def close(self, capture):
-        time.sleep(0.3)  # the last frames in flight
-        self.done = True
-        self.thread.join()
-        with open(capture, "wb") as f:
-            f.write(self.data)
-        os.close(self.master)
-        os.close(self.slave)
-        os.unlink(self.path)
-        os.rmdir(self.dir)
-
-
-def driving(frames):
-    return sum(1 for _, d, _ in frames if d != 128)
-
-
-def wait_exit(proc, timeout):
-    try:
-        return proc.wait(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.wait()
-        return None
-
-
-STARTED = []  # every process started, killed if a scenario gives up on it
-
-
-def start(argv, **kwargs):
-    proc = subprocess.Popen(argv, **kwargs)
-    STARTED.append(proc)
-    return proc
-
-
-def fail(why):
-    print(why)
-    sys.exit(1)
-
-
-def full_pipe():
-    """A pipe whose reader never reads, already full: every blocking write to it blocks."""
-    r, w = os.pipe()
-    os.set_blocking(w, False)
-    try:
-        while True:
-            os.write(w, b"x" * 4096)
-    except BlockingIOError:
-        pass
-    os.set_blocking(w, True)
-    return r, w
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from fault_lib import (STARTED, Port, driving, fail, full_pipe, long_drive, read_some, start, terminal,
+                       wait_exit, wait_stopped)
 
 
 def closed_log(bin_, data, port):
     """stdout and stderr into a pipe whose reader reads one byte and goes (`2>&1 | head -c 1`)."""
     r, w = os.pipe()
-    proc = start([bin_, "run", "--port", port.path, "--input", f"{data}/live/long_drive.events"],
-                            stdout=w, stderr=w, stdin=subprocess.DEVNULL)
+    proc = start(long_drive(bin_, data, port), stdout=w, stderr=w, stdin=subprocess.DEVNULL)
     os.close(w)
     os.read(r, 1)
     os.close(r)
@@ -144,8 +38,7 @@ def closed_log(bin_, data, port):
 def stuck_log(bin_, data, port):
     """stdout and stderr into a full pipe nobody reads (a stuck `| tee`, a paused reader)."""
     r, w = full_pipe()
-    proc = start([bin_, "run", "--port", port.path, "--input", f"{data}/live/long_drive.events"],
-                            stdout=w, stderr=w, stdin=subprocess.DEVNULL)
+    proc = start(long_drive(bin_, data, port), stdout=w, stderr=w, stdin=subprocess.DEVNULL)
     os.close(w)
     ok = port.wait(lambda f: driving(f) >= 10, 10)
     proc.send_signal(signal.SIGTERM)
@@ -159,9 +52,8 @@ def stuck_log(bin_, data, port):
 
 def stop_tick(bin_, data, port):
     """At 2 Hz, SIGTERM just after a driving frame: the next tick (500 ms on) is the first neutral one."""
-    proc = start([bin_, "run", "--rate", "2", "--port", port.path, "--input",
-                             f"{data}/live/long_drive.events"], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
+    proc = start(long_drive(bin_, data, port, "--rate", "2"), stdout=subprocess.DEVNULL,
+                 stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
     if not port.wait(lambda f: driving(f) >= 2, 10):
         fail("no driving frames")
     proc.send_signal(signal.SIGTERM)
@@ -179,11 +71,6 @@ def stop_tick(bin_, data, port):
         fail("the first neutral frame did not leave on the tick after the signal")
 
 
-def proc_state(pid):
-    with open(f"/proc/{pid}/stat") as f:
-        return f.read().rsplit(")", 1)[1].split()[0]
-
-
 def job_control(bin_, data, port):
     """Ctrl-Z mid-drive: neutral frames, then stopped; SIGCONT: neutral while the deadman is
     still held from before; the script's fresh press (at 4.1 s) drives again."""
@@ -195,17 +82,12 @@ def job_control(bin_, data, port):
                 "4000 button leftshoulder 0\n4000 axis lefty 0\n4100 button leftshoulder 1\n"
                 "4200 axis lefty -32768\n6000 end\n")
     proc = start([bin_, "run", "--port", port.path, "--input", script],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
+                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
     if not port.wait(lambda f: driving(f) >= 5, 10):
         fail("no driving frames")
     t0 = port.snapshot()[0][0]  # tick 0: the script's time 0
     proc.send_signal(signal.SIGTSTP)
-    stopped = False
-    for _ in range(500):
-        if proc_state(proc.pid) == "T":
-            stopped = True
-            break
-        time.sleep(0.01)
+    stopped = wait_stopped(proc)
     before = port.snapshot()
     if not stopped:
         fail("not stopped after SIGTSTP")
@@ -236,16 +118,12 @@ def job_control(bin_, data, port):
 def background_stop(bin_, data, port):
     """SIGTTOU (as a terminal sends a background job that writes to it) is a stop request like
     Ctrl-Z: neutral frames first, then stopped; continued, it runs on and stops as usual."""
-    proc = start([bin_, "run", "--port", port.path, "--input", f"{data}/live/long_drive.events"],
-                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
+    proc = start(long_drive(bin_, data, port), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                 stdin=subprocess.DEVNULL)
     if not port.wait(lambda f: driving(f) >= 5, 10):
         fail("no driving frames")
     proc.send_signal(signal.SIGTTOU)
-    for _ in range(500):
-        if proc_state(proc.pid) == "T":
-            break
-        time.sleep(0.01)
-    else:
+    if not wait_stopped(proc):
         fail("not stopped after SIGTTOU")
     before = port.snapshot()
     if [d for _, d, _ in before[-3:]] != [128, 128, 128]:
@@ -259,31 +137,10 @@ def background_stop(bin_, data, port):
         fail(f"exit {code}")
 
 
-def terminal(argv, env_extra=None):
-    """Runs argv with stdout on a pty (the display on), stderr to /dev/null; returns (proc, master)."""
-    m, s = pty.openpty()
-    env = dict(os.environ, TERM="xterm", **(env_extra or {}))
-    proc = start(argv, stdout=s, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, env=env)
-    os.close(s)
-    return proc, m
-
-
-def read_some(m, seconds):
-    end = time.monotonic() + seconds
-    out = b""
-    while time.monotonic() < end:
-        if select.select([m], [], [], 0.05)[0]:
-            try:
-                out += os.read(m, 65536)
-            except OSError:
-                break
-    return out
-
-
 def paused_terminal(bin_, data, port):
     """The status view on a terminal paused with Ctrl-S: frames go on, and SIGTERM still
     ends the run through its neutral frames within a bounded time."""
-    proc, m = terminal([bin_, "run", "--port", port.path, "--input", f"{data}/live/long_drive.events"])
+    proc, m = terminal(long_drive(bin_, data, port))
     if not read_some(m, 1.0):
         fail("no status view on the terminal")
     os.write(m, b"\x13")  # Ctrl-S: the terminal stops taking output (IXON)

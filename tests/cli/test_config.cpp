@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "andros/cli/config.hpp"
+#include "support/input_error.hpp"
 
 namespace andros::cli {
 namespace {
@@ -15,12 +16,7 @@ Settings parse(const std::string& text, const std::string& file = "dir/test.conf
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::input_error_text([&] { parse(text); });
 }
 
 TEST(Config, DefaultsFollowTheContract) {

@@ -31,7 +31,7 @@ Settings from_file(const std::string& text) {
   return s;
 }
 
-using testing::input_error_of;
+using testing::input_error_text;
 
 /// A value for every row other than its default, as a user would write it.
 std::string sample(const Setting& row) {
@@ -101,9 +101,9 @@ TEST(Settings, TheRateIsCheckedAgainstTheFinalBaudWhereItWasSet) {
   const testing::TempDir dir;
   const auto conf = dir.write("fast.conf", "rate=30\nbaudrate=19200\n").string();
   EXPECT_EQ(from_flags(kRun, "--config " + conf).rate.millihertz, 30'000);
-  EXPECT_EQ(input_error_of([&] { from_flags(kRun, "--config " + conf + " --baud 9600"); }),
+  EXPECT_EQ(input_error_text([&] { from_flags(kRun, "--config " + conf + " --baud 9600"); }),
             conf + ":1:6: error: rate '30' does not fit the link: 360-bit frames at 9600 baud allow at most 26.666 Hz");
-  EXPECT_EQ(input_error_of([&] { from_flags(kReplay, "--rate 30"); }),
+  EXPECT_EQ(input_error_text([&] { from_flags(kReplay, "--rate 30"); }),
             "--rate: error: rate '30' does not fit the link: 360-bit frames at 9600 baud allow at most 26.666 Hz");
 }
 
@@ -118,12 +118,12 @@ TEST(Settings, OnlyRunReadsAConfigFile) {
 }
 
 TEST(Settings, BadFlagValuesNameTheFlag) {
-  EXPECT_EQ(input_error_of([] { from_flags(kMonitor, "--baud 1234"); }),
+  EXPECT_EQ(input_error_text([] { from_flags(kMonitor, "--baud 1234"); }),
             "--baud: error: baud 1234 is not one of 9600, 19200, 38400, 57600, 115200");
-  EXPECT_EQ(input_error_of([] { from_flags(kReplay, "--robot hd9"); }),
+  EXPECT_EQ(input_error_text([] { from_flags(kReplay, "--robot hd9"); }),
             "--robot: error: unknown robot 'hd9' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)");
-  EXPECT_EQ(input_error_of([] { from_flags(kRecord, "--rate 0"); }), "--rate: error: rate 0 is out of range 1..1000");
-  EXPECT_EQ(input_error_of([] { from_flags(kReplay, "--format csv"); }),
+  EXPECT_EQ(input_error_text([] { from_flags(kRecord, "--rate 0"); }), "--rate: error: rate 0 is out of range 1..1000");
+  EXPECT_EQ(input_error_text([] { from_flags(kReplay, "--format csv"); }),
             "--format: error: format 'csv' is not one of hex, raw, jsonl");
 }
 

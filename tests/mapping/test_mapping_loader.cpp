@@ -97,6 +97,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"layer with no switch", "robot: HD1\ndeadman: a\nlayers:\n  arm:\n    bindings: []\n", 5, 5, "needs exactly one of 'hold: BUTTON' or 'toggle: BUTTON'"},
         BadMapping{"layer switch is the deadman", "robot: HD1\ndeadman: a\nlayers:\n  arm:\n    hold: a\n    bindings: []\n", 5, 11, "already switches a layer or is the deadman"},
         BadMapping{"key given twice", "robot: HD1\ndeadman: a\nrobot: F6A\n", 3, 1, "key 'robot' given twice"},
+        BadMapping{"layer given twice in one file", "robot: HD1\ndeadman: a\nlayers:\n  arm:\n    hold: b\n    bindings: []\n  arm:\n    hold: x\n    bindings: []\n", 7, 3, "layer 'arm' given twice"},
         BadMapping{"YAML syntax", kHead + "  - signal: tool_on\n    button: [a\n", 6, 1, "YAML syntax"},
         BadMapping{"missing robot", "deadman: a\n", 0, 0, "missing 'robot'"},
         BadMapping{"missing deadman", "robot: HD1\n", 0, 0, "missing 'deadman'"},
@@ -129,7 +130,7 @@ fs::path write_chain(const MappingDir& dir, int n) {
 
 TEST(MappingLoader, ExtendsChainOfSixteenFilesLoads) {
   MappingDir dir;
-  EXPECT_EQ(load_mapping(write_chain(dir, 16)).robot, "HD1");
+  EXPECT_EQ(load_mapping(write_chain(dir, 16))->robot, "HD1");
 }
 
 TEST(MappingLoader, ExtendsChainLongerThanSixteenFilesIsRefusedAtTheExtendsTooFar) {
@@ -206,7 +207,7 @@ TEST(MappingLoader, ExtendsOverridesByInputAndKeepsTheRest) {
                               "  - analog: drive\n    axis: righty\n"          // replaces the drive binding
                               "layers:\n  arm:\n    hold: rightshoulder\n    bindings:\n"
                               "      - signal: gripper_close\n        button: b\n");
-  const auto m = load_mapping(file);
+  const auto m = *load_mapping(file);
   EXPECT_EQ(m.robot, "RONS");
   EXPECT_EQ(m.center, 120);
   EXPECT_EQ(m.battery, 0x10);
@@ -221,7 +222,7 @@ TEST(MappingLoader, ExtendsOverridesByInputAndKeepsTheRest) {
 
 TEST(MappingLoader, DefaultsAndEveryBindingKind) {
   MappingDir dir;
-  const auto m = load_mapping(dir.write(
+  const auto m = *load_mapping(dir.write(
       "all.yaml",
       "robot: va1\ndeadman: lefttrigger\nbrake: moving\nbindings:\n"
       "  - signal: tool_on\n    button: hat0up\n"
@@ -253,6 +254,24 @@ TEST(MappingLoader, DefaultsAndEveryBindingKind) {
   EXPECT_EQ(laser.signal, protocol::signal_id("laser"));
   EXPECT_EQ(input::input_name(*laser.arm), "righttrigger");
   EXPECT_EQ(m.bindings[6].pos.line, 22);  // the laser binding's first line
+}
+
+// A base's layer of the same name is extended, not refused; a mapping built
+// in code is held to the same rule by validate().
+TEST(MappingLoader, ALayerNamedAgainByAnExtendingFileMergesButTwiceInOneMappingIsRefused) {
+  MappingDir dir;
+  dir.write("base.yaml", "deadman: a\nlayers:\n  arm:\n    hold: b\n    bindings: []\n");
+  auto m = *load_mapping(dir.write("top.yaml", "robot: HD1\nextends: base.yaml\nlayers:\n  arm:\n    hold: b\n"
+                                                "    bindings: []\n"));
+  ASSERT_EQ(m.layers.size(), 1U);
+  m.layers.push_back(Layer{"arm", SourcePos{"code", 9, 3}, InputUse{*input::parse_button_name("x"), {}}, false, {}});
+  try {
+    validate(m);
+    FAIL() << "a layer named twice accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().line, 9);
+    EXPECT_EQ(e.message(), "layer 'arm' given twice");
+  }
 }
 
 TEST(MappingLookup, UserFolderFirstThenTheShippedOnes) {

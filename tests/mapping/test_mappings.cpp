@@ -22,7 +22,7 @@ const fs::path kShipped = ANDROS_MAPPINGS_DIR;
 const std::string kData = ANDROS_TEST_DATA_DIR;
 
 // The shipped file itself, whatever a user keeps in ~/.config.
-Mapping shipped(std::string_view robot) { return load_mapping(find_robot_mapping(robot, {kShipped})); }
+ValidMapping shipped(std::string_view robot) { return load_mapping(find_robot_mapping(robot, {kShipped})); }
 
 std::vector<fs::path> shipped_files() {
   std::vector<fs::path> files;
@@ -49,7 +49,7 @@ TEST(ShippedMappings, EveryRobotTypeIsFoundByName) {
     const auto path = find_robot_mapping(lower, {kShipped});
     EXPECT_EQ(path.filename(), lower + ".yaml");
     const auto m = load_mapping(path);
-    EXPECT_EQ(m.robot, std::string(robot));
+    EXPECT_EQ(m->robot, std::string(robot));
   }
 }
 
@@ -70,7 +70,7 @@ std::set<protocol::SignalId> targets(const Mapping& m) {
 
 TEST(ShippedMappings, EverySignalIsReachableFromAStandardPad) {
   for (const auto robot : protocol::kRobotTypes) {
-    const auto m = shipped(robot);
+    const auto m = *shipped(robot);
     const auto reached = targets(m);
     for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
       const auto kind = protocol::kSignals[i].kind;

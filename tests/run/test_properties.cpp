@@ -151,12 +151,14 @@ class CentreOracle {
 
 using Coverage = std::array<int, protocol::kSignalCount>;
 
-void check_script(const mapping::Mapping& mapping, const std::vector<input::InputEvent>& script, bool weapons, Coverage& coverage) {
+void check_script(const mapping::ValidMapping& valid, const std::vector<input::InputEvent>& script, bool weapons,
+                  Coverage& coverage) {
+  const mapping::Mapping& mapping = *valid;
   std::string text;
   for (const auto& e : script) text += input::format_event(e) + "\n";
   TextReader in(text, "random.events", kEventScriptLimits);
   input::ScriptPlayer player(in);
-  mapping::Engine engine(mapping, mapping::EngineOptions{weapons, 0x5A});
+  mapping::Engine engine(valid, mapping::EngineOptions{weapons, 0x5A});
   EnabledOracle oracle(mapping.deadman->key);
   CentreOracle centre(mapping);
   std::size_t next_event = 0;
@@ -206,7 +208,7 @@ void check_script(const mapping::Mapping& mapping, const std::vector<input::Inpu
 }
 
 TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
-  std::vector<mapping::Mapping> mappings;
+  std::vector<mapping::ValidMapping> mappings;
   for (const auto robot : protocol::kRobotTypes) {
     mappings.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR})));
   }

@@ -1,17 +1,20 @@
 #pragma once
-// What a call says when it refuses its input.
+// The whole text of the InputError a piece of code throws, for tests that
+// compare error messages as the user reads them.
 
 #include <string>
+#include <utility>
 
 #include "andros/base/error.hpp"
 
 namespace andros::testing {
 
-/// The message of the InputError call() throws, or "no error".
-template <typename Call>
-std::string input_error_of(const Call& call) {
+/// What `action()` throws as an InputError ("FILE:LINE:COL: error: ..."), or
+/// "no error" when it returns.
+template <typename Action>
+std::string input_error_text(Action&& action) {
   try {
-    call();
+    std::forward<Action>(action)();
   } catch (const InputError& e) {
     return e.what();
   }

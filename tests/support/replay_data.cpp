@@ -65,7 +65,7 @@ std::string describe_difference(const protocol::ControlState& want, const protoc
   return out;
 }
 
-void expect_replay(mapping::Mapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
+void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
                    const std::string& expected) {
   const std::uint8_t code = 0x01;
   mapping::Engine engine(std::move(mapping), mapping::EngineOptions{weapons, code});

@@ -30,7 +30,7 @@ std::string read_text(const std::string& path);
 
 /// Replays `events` through the mapping and EXPECTs every frame to match
 /// `expected` exactly (and to pass validation).
-void expect_replay(mapping::Mapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
+void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
                    const std::string& expected);
 
 }  // namespace andros::testing

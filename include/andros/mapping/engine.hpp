@@ -26,9 +26,9 @@ struct EngineOptions {
 
 class Engine {
  public:
-  /// Runs validate(mapping, false) and throws its InputError: a mapping built
-  /// by hand gets the same checks as a loaded one.
-  Engine(Mapping mapping, EngineOptions options);
+  /// Runs a validated mapping (validate(), load_mapping()); a hand-built one
+  /// without a deadman is never enabled, so it only ever sends neutral frames.
+  Engine(ValidMapping mapping, EngineOptions options);
 
   /// One tick at time now_ms (ms since start, non-decreasing): the data bytes
   /// of the frame to send. Always a frame that passes validation. The first
@@ -60,7 +60,7 @@ class Engine {
   [[nodiscard]] std::size_t slot(BindingRef ref) const;
   [[nodiscard]] protocol::ControlState resting_state() const;
 
-  Mapping mapping_;
+  ValidMapping mapping_;
   EngineOptions options_;
   protocol::FrameBuilder builder_;
   EngineStatus status_;

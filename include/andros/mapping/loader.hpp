@@ -16,7 +16,7 @@ Mapping load_mapping_file(const std::filesystem::path& file);
 
 /// Loads a robot's mapping from an explicit file (`--mapping FILE`) and
 /// validates it; it must name a robot.
-Mapping load_mapping(const std::filesystem::path& file);
+ValidMapping load_mapping(const std::filesystem::path& file);
 
 /// Where `--robot NAME` looks, in order: $XDG_CONFIG_HOME/andros-bridge/mappings
 /// (default ~/.config/...), the source tree's mappings/ when it exists, the
@@ -29,6 +29,6 @@ std::filesystem::path find_robot_mapping(std::string_view robot,
                                          const std::vector<std::filesystem::path>& search_path);
 
 /// Finds, loads and validates a robot type's mapping; its `robot` must match.
-Mapping load_robot_mapping(std::string_view robot);
+ValidMapping load_robot_mapping(std::string_view robot);
 
 }  // namespace andros::mapping

@@ -1,12 +1,15 @@
 #pragma once
 /// A robot's mapping: which controller input drives which switchbox signal.
-/// Plain data, filled by the YAML loader (mapping_loader.hpp) or by hand in a
-/// test, and checked by validate() before an Engine runs it.
+/// Plain data, filled by the YAML loader (loader.hpp) or by hand in a test;
+/// validate() checks it once and hands back a ValidMapping, the only kind an
+/// Engine runs.
 
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -20,6 +23,7 @@ inline constexpr int kDefaultCenter = 128;
 inline constexpr std::uint8_t kDefaultByte12 = 0x00;
 inline constexpr std::uint8_t kDefaultBattery = 0xCC;
 inline constexpr double kDefaultThreshold = 0.5;
+inline constexpr int kMaxKnobRate = 25500;  ///< units per second: 0 to 255 in 10 ms
 
 /// How a stick or trigger value becomes a number in [-1, 1] (docs/mapping.md).
 struct AxisShape {
@@ -131,13 +135,33 @@ struct Mapping {
   std::vector<Layer> layers;
 };
 
+class ValidMapping;
+
 /// Checks the rules that span bindings (docs/mapping.md): an input bound
 /// twice in a layer, two bindings on one analog byte, a weapon without arm,
 /// targets a binding kind cannot drive, a signal both toggled and momentary
 /// (anywhere in the mapping), a missing deadman or robot. Throws
 /// InputError at the offending FILE:LINE:COL. A base mapping (require_robot
 /// false) may lack robot and deadman.
-void validate(const Mapping& mapping, bool require_robot = true);
+ValidMapping validate(Mapping mapping, bool require_robot = true);
+
+/// A mapping that passed validate(), read-only. validate() is the one way to
+/// make one, so a mapping reaches an Engine checked exactly once, whether it
+/// was loaded or built by hand.
+class ValidMapping {
+ public:
+  [[nodiscard]] const Mapping& operator*() const { return mapping_; }
+  [[nodiscard]] const Mapping* operator->() const { return &mapping_; }
+
+ private:
+  friend ValidMapping validate(Mapping mapping, bool require_robot);
+  explicit ValidMapping(Mapping mapping) : mapping_(std::move(mapping)) {}
+  Mapping mapping_;
+};
+
+/// The rule that a mapping names each layer once: throws InputError at
+/// layer.pos when `names` (the layers seen so far) already holds its name.
+void check_layer_name(std::set<std::string>& names, const Layer& layer);
 
 /// A binding by position: layer -1 is the base list, else mapping.layers[layer].
 struct BindingRef {

@@ -58,7 +58,6 @@ class FrameBuilder {
   explicit FrameBuilder(std::uint8_t code) : code_(code) {}
 
   [[nodiscard]] DataBytes build(const ControlState& state) const;
-  [[nodiscard]] std::uint8_t code() const { return code_; }
 
  private:
   std::uint8_t code_;
