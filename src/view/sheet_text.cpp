@@ -8,9 +8,9 @@
 namespace andros::view {
 namespace {
 
-constexpr std::size_t kInputColumn = 24;
-constexpr std::size_t kMarkColumn = 10;
-constexpr std::size_t kNoteWidth = 100;
+constexpr std::size_t kInputColumn = 23;
+constexpr std::size_t kMarkColumn = 9;
+constexpr std::size_t kNoteWidth = 78;  // with the "- " before it: 80 columns
 
 std::string padded(std::string text, std::size_t width) {
   text.resize(std::max(text.size() + 1, width), ' ');
@@ -36,7 +36,7 @@ std::string render_sheet_text(const Sheet& sheet) {
     for (const auto& e : panel.entries) {
       std::string function = e.function;
       if (!e.detail.empty()) function += " (" + e.detail + ")";
-      if (e.inherited) function += " [from base]";
+      if (e.inherited) function += " [base]";
       out += "  " + padded(e.input, kInputColumn) + padded(std::string(mark_name(e.mark)), kMarkColumn) + function;
       while (!out.empty() && out.back() == ' ') out.pop_back();
       out += '\n';
@@ -45,7 +45,7 @@ std::string render_sheet_text(const Sheet& sheet) {
   out += "\nNOTES\n";
   auto notes = sheet.notes;
   notes.emplace_back("Marks: DEADMAN enables motion, LAYER switches layers, ARMING is held to fire a WEAPON, TOGGLE "
-                     "flips on each press, KNOB moves a level while held, SELECTOR steps a rotary switch. [from base]: "
+                     "flips on each press, KNOB moves a level while held, SELECTOR steps a rotary switch. [base]: "
                      "a base binding the layer keeps. Stick and trigger switches act past half way unless a figure "
                      "is given.");
   for (const auto& note : notes) {

@@ -30,35 +30,36 @@ PY
 for robot in f6a va1 wolverine hd1 prowler rav rons; do
   well_formed "$shipped/$robot.svg" "DEADMAN" "ARM LAYER" "CAMERA LAYER" "WEAPONS LAYER" "fire weapon_1" "laser"
 done
-robot_line=$(grep -c "^HD1 cheat sheet (hd1.yaml)" "$shipped/hd1.txt")
-[[ $robot_line -eq 1 ]] || fail "hd1.txt header"
+grep -q "^HD1 cheat sheet (hd1.yaml)" "$shipped/hd1.txt" || fail "hd1.txt header"
+wide=$(awk 'length > 80' "$shipped/hd1.txt")
+[[ -z $wide ]] || fail "hd1.txt is wider than a terminal's 80 columns: $wide"
 
 # Every binding kind, in both formats: each label of the text tables is in the SVG.
 kinds="$DATA/sheet/kinds.yaml"
 expect_exit 0 "$BIN" sheet --mapping "$kinds" --format text
 cp "$TMP/out" "$TMP/kinds.txt"
 for line in \
-  "  LT                      DEADMAN   hold to enable motion (past half way)" \
-  "  LB                      LAYER     hold: arm layer" \
-  "  RB                      LAYER     weapons layer on/off" \
-  "  X                       TOGGLE    tool_on" \
-  "  B                       KNOB      light up (64/s)" \
-  "  Start                   SELECTOR  speed selector: next" \
-  "  Back                    SELECTOR  speed selector: previous" \
-  "  D-pad up                          front_art_up" \
-  "  RT                                fiber_unwind" \
-  "  right stick up/down               up: rear_art_up (past 30%)" \
-  "  right stick left/right            left: pt_left, right: pt_right" \
-  "  left stick up/down                drive (analog, up = above centre)" \
-  "  RT                                arm_speed (analog 0..255)" \
-  "  Y                       WEAPON    fire weapon_1 (needs --weapons + left stick click)" \
-  "  left stick click        ARMING    hold to arm weapons" \
-  "  RB                      LAYER     weapons layer off (back to base)"; do
+  "  LT                     DEADMAN  hold to enable motion (past half way)" \
+  "  LB                     LAYER    hold: arm layer" \
+  "  RB                     LAYER    weapons layer on/off" \
+  "  X                      TOGGLE   tool_on" \
+  "  B                      KNOB     light up (64/s)" \
+  "  Start                  SELECTOR speed selector: next" \
+  "  Back                   SELECTOR speed selector: previous" \
+  "  D-pad up                        front_art_up" \
+  "  RT                              fiber_unwind" \
+  "  right stick up/down             up: rear_art_up (past 30%)" \
+  "  right stick left/right          left: pt_left, right: pt_right" \
+  "  left stick up/down              drive (analog, up = above centre)" \
+  "  RT                              arm_speed (analog 0..255)" \
+  "  Y                      WEAPON   fire weapon_1 (needs --weapons + left stick click)" \
+  "  left stick click       ARMING   hold to arm weapons" \
+  "  RB                     LAYER    weapons layer off (back to base)"; do
   grep -qxF -- "$line" "$TMP/kinds.txt" || fail "text sheet lacks '$line'"
 done
 expect_exit 0 "$BIN" sheet --mapping "$kinds" --output "$TMP/kinds.svg"
 [[ -s "$TMP/out" ]] && fail "--output also wrote to stdout"
-mapfile -t labels < <(sed -n '/^NOTES$/q; s/^  .\{34\}\(.*\)$/\1/p' "$TMP/kinds.txt" | sed 's/ (.*//; s/ \[from base\]$//' | grep -vx function | sort -u)
+mapfile -t labels < <(sed -n '/^NOTES$/q; s/^  .\{32\}\(.*\)$/\1/p' "$TMP/kinds.txt" | sed 's/ (.*//; s/ \[base\]$//' | grep -vx function | sort -u)
 ((${#labels[@]} > 10)) || fail "too few labels read from the text sheet: ${#labels[*]}"
 well_formed "$TMP/kinds.svg" "${labels[@]}"
 expect_exit 0 "$BIN" sheet --mapping "$kinds"

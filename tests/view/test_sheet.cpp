@@ -102,16 +102,20 @@ TEST(Sheet, PlainJoystickGetsListPanels) {
 TEST(Sheet, TextIsATablePerLayer) {
   const auto text = render_sheet_text(kinds_sheet());
   EXPECT_NE(text.find("\nBASE LAYER: active when no other layer is\n"
-                      "  input                   mark      function\n"
-                      "  LT                      DEADMAN   hold to enable motion (past half way)\n"
-                      "  LB                      LAYER     hold: arm layer\n"),
+                      "  input                  mark     function\n"
+                      "  LT                     DEADMAN  hold to enable motion (past half way)\n"
+                      "  LB                     LAYER    hold: arm layer\n"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("\n  Y                       WEAPON    fire weapon_1 (needs --weapons + left stick click)\n"),
+  EXPECT_NE(text.find("\n  Y                      WEAPON   fire weapon_1 (needs --weapons + left stick click)\n"),
             std::string::npos);
-  EXPECT_NE(text.find("\n  X                       TOGGLE    tool_on [from base]\n"), std::string::npos);
-  for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
-    EXPECT_LE(end - start, 110u) << text.substr(start, end - start);
+  EXPECT_NE(text.find("\n  X                      TOGGLE   tool_on [base]\n"), std::string::npos);
+  const auto notes = text.substr(text.find("\nNOTES\n"));
+  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: speed_low > none > speed_high; starts\n  at none\n"),
+            std::string::npos)
+      << notes;
+  for (std::size_t start = 0, end; (end = notes.find('\n', start)) != std::string::npos; start = end + 1) {
+    EXPECT_LE(end - start, 80u) << notes.substr(start, end - start);
   }
 }
 
