@@ -84,7 +84,7 @@ const std::array<Setting, 14> kTable = {{
        s.read_rate_hz = static_cast<int>(parse_integer(t, 1, 1000, "rate", p));
      },
      [](const Settings& s) { return std::to_string(s.read_rate_hz); }, false},
-    {"", "--format", "FORMAT", kReplay, "{}: T HEX72 per line, 36 raw bytes per frame, or a JSON line per frame",
+    {"", "--format", "hex|raw|jsonl", kReplay, "{}: T HEX72 per line, 36 raw bytes per frame, or a JSON line per frame",
      [] { return joined(protocol::kReplayFormatNames); },
      [](std::string_view t, const SourcePos& p, Settings& s) { s.format = protocol::parse_replay_format(t, p); },
      [](const Settings& s) { return std::string(protocol::kReplayFormatNames[static_cast<std::size_t>(s.format)]); },

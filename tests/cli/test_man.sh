@@ -65,4 +65,6 @@ expect_offers --raw andros-bridge frame encode --r
 touch "$TMP/drive.events"
 expect_offers "$TMP/drive.events" andros-bridge replay "$TMP/dr"
 expect_offers --weapons andros-bridge run --robot hd1 --w
+expect_offers jsonl andros-bridge replay --format j
+expect_offers text andros-bridge sheet --format t
 exit $((failures > 0))

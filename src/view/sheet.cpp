@@ -1,0 +1,244 @@
+// The cheat sheet's content: each layer's inputs and what they do, read off
+// the mapping model (docs/sheets.md). The renderers only lay it out.
+#include "andros/view/sheet.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "sheet_layout.hpp"
+
+namespace andros::view {
+namespace {
+
+using input::InputKey;
+using input::InputKind;
+using mapping::Binding;
+
+constexpr std::array<std::string_view, input::kPadButtonNames.size()> kButtonLabels = {
+    "A",  "B",  "X",        "Y",          "Back",        "Guide",       "Start",
+    "left stick click",      "right stick click", "LB", "RB", "D-pad up", "D-pad down", "D-pad left",
+    "D-pad right", "Misc",   "paddle 1",  "paddle 2",    "paddle 3",    "paddle 4",    "touchpad"};
+constexpr std::array<std::string_view, input::kPadAxisNames.size()> kAxisLabels = {
+    "left stick left/right", "left stick up/down", "right stick left/right", "right stick up/down", "LT", "RT"};
+
+std::string label(InputKey key) {
+  switch (key.kind) {
+    case InputKind::kPadButton: return std::string(kButtonLabels.at(key.index));
+    case InputKind::kPadAxis: return std::string(kAxisLabels.at(key.index));
+    case InputKind::kJoyButton: return "button " + std::to_string(key.index);
+    case InputKind::kJoyAxis: return "axis " + std::to_string(key.index);
+    case InputKind::kHat:
+      return "hat " + std::to_string(key.index / 4) + " " + std::string(input::kHatDirectionNames.at(key.index % 4));
+  }
+  return input::input_name(key);
+}
+
+bool is_trigger(InputKey key) { return key.kind == InputKind::kPadAxis && key.index >= 4; }
+
+/// The way an axis is pushed to read as `positive` after invert: "up", "right", "squeezed".
+std::string direction(InputKey axis, bool invert, bool positive) {
+  const bool raw_positive = positive != invert;
+  if (axis.kind != InputKind::kPadAxis) return raw_positive ? "positive" : "negative";
+  if (is_trigger(axis)) return raw_positive ? "squeezed" : "below 0";
+  const bool vertical = axis.index % 2 == 1;
+  if (vertical) return raw_positive ? "down" : "up";
+  return raw_positive ? "right" : "left";
+}
+
+std::string name(protocol::SignalId id) { return std::string(protocol::info(id).name); }
+
+std::string percent(double fraction) {
+  return std::to_string(static_cast<int>(std::lround(fraction * 100))) + "%";
+}
+
+std::string past(double threshold) {
+  return threshold == mapping::kDefaultThreshold ? "" : "past " + percent(threshold);
+}
+
+/// Collects one layer's entries, one per input (a second meaning is joined on).
+class PanelBuilder {
+ public:
+  void add(InputKey key, SheetMark mark, std::string function, std::string detail = {}, bool inherited = false) {
+    auto [it, fresh] = entries_.try_emplace(key, SheetEntry{key, label(key), mark, function, detail, inherited});
+    if (!fresh) it->second.function += "; " + function;
+  }
+
+  void add_binding(const Binding& b, bool inherited) {
+    std::visit([&](const auto& rule) { add_rule(rule, inherited); }, b.rule);
+  }
+
+  std::vector<SheetEntry> entries() const {
+    std::vector<SheetEntry> out;
+    for (const auto& [key, entry] : entries_) out.push_back(entry);
+    std::stable_sort(out.begin(), out.end(), [](const SheetEntry& a, const SheetEntry& b) {
+      const auto ia = sheet_detail::pad_slot_index(a.key);
+      const auto ib = sheet_detail::pad_slot_index(b.key);
+      if (ia && ib) return *ia < *ib;
+      return ia.has_value() && !ib.has_value();  // drawn inputs first, the rest in key order
+    });
+    return out;
+  }
+
+ private:
+  void add_rule(const mapping::ButtonBinding& b, bool inherited) {
+    const auto mark = b.toggle ? SheetMark::kToggle : SheetMark::kPlain;
+    if (b.input.is_button()) return add(b.input, mark, name(b.signal), {}, inherited);
+    const auto dir = direction(b.input, b.invert, true);
+    const bool plain_trigger = is_trigger(b.input) && !b.invert;
+    add(b.input, mark, plain_trigger ? name(b.signal) : dir + ": " + name(b.signal), past(b.threshold), inherited);
+  }
+  void add_rule(const mapping::WeaponBinding& b, bool inherited) {
+    const std::string arm = b.arm ? label(*b.arm) : "arming";
+    add(b.input, SheetMark::kWeapon, "fire " + name(b.signal), "needs --weapons + " + arm, inherited);
+    if (b.arm && entries_.count(*b.arm) == 0) {
+      add(*b.arm, SheetMark::kArming, "hold to arm weapons", is_trigger(*b.arm) ? "past half way" : "", inherited);
+    }
+  }
+  void add_rule(const mapping::PairBinding& b, bool inherited) {
+    add(b.axis, SheetMark::kPlain,
+        direction(b.axis, b.invert, false) + ": " + name(b.signals[0]) + ", " + direction(b.axis, b.invert, true) +
+            ": " + name(b.signals[1]),
+        past(b.threshold), inherited);
+  }
+  void add_rule(const mapping::AxisBinding& b, bool inherited) {
+    std::string detail = "analog";
+    if (protocol::info(b.analog).kind == protocol::SignalKind::kCentred) {
+      detail += ", " + direction(b.axis, b.shape.invert, true) + " = above centre";
+    } else {
+      detail += " 0..255";
+      if (!is_trigger(b.axis) || b.shape.invert) detail += ", " + direction(b.axis, b.shape.invert, true) + " = more";
+    }
+    add(b.axis, SheetMark::kPlain, name(b.analog), detail, inherited);
+  }
+  void add_rule(const mapping::KnobBinding& b, bool inherited) {
+    const auto rate = std::to_string(b.rate) + "/s";
+    add(b.increase, SheetMark::kKnob, name(b.analog) + " up", rate, inherited);
+    add(b.decrease, SheetMark::kKnob, name(b.analog) + " down", rate, inherited);
+  }
+  void add_rule(const mapping::SelectorBinding& b, bool inherited) {
+    add(b.next, SheetMark::kSelector, b.name + " selector: next", {}, inherited);
+    if (b.prev) add(*b.prev, SheetMark::kSelector, b.name + " selector: previous", {}, inherited);
+  }
+
+  std::map<InputKey, SheetEntry> entries_;
+};
+
+std::string position(const std::vector<protocol::SignalId>& signals) {
+  std::string out;
+  for (const auto id : signals) out += (out.empty() ? "" : "+") + name(id);
+  return out.empty() ? "none" : out;
+}
+
+std::string positions(const mapping::SelectorBinding& s) {
+  std::string out;
+  for (const auto& p : s.positions) out += (out.empty() ? "" : " > ") + position(p);
+  return out;
+}
+
+std::string where(const mapping::Mapping& m, int layer) {
+  return layer < 0 ? "" : " (" + m.layers.at(static_cast<std::size_t>(layer)).name + " layer)";
+}
+
+std::vector<std::string> notes(const mapping::Mapping& m) {
+  std::vector<std::string> out;
+  std::set<std::string> arms;
+  for (const auto ref : mapping::all_bindings(m)) {
+    const auto& b = mapping::binding_at(m, ref);
+    if (const auto* s = std::get_if<mapping::SelectorBinding>(&b.rule)) {
+      out.push_back(s->name + " selector" + where(m, ref.layer) + ", " + label(s->next) + " steps" +
+                    (s->prev ? ", " + label(*s->prev) + " back" : "") + ": " + positions(*s) + "; starts at " +
+                    position(s->positions.at(static_cast<std::size_t>(s->initial))));
+    } else if (const auto* k = std::get_if<mapping::KnobBinding>(&b.rule)) {
+      out.push_back(name(k->analog) + " knob" + where(m, ref.layer) + ": " + label(k->increase) + " up, " +
+                    label(k->decrease) + " down, " + std::to_string(k->rate) + " units/s; starts at " +
+                    std::to_string(k->initial.value_or(0)) + ", kept while not enabled");
+    } else if (const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule); w != nullptr && w->arm) {
+      arms.insert(label(*w->arm));
+    }
+  }
+  if (!arms.empty()) {
+    std::string list;
+    for (const auto& a : arms) list += (list.empty() ? "" : " or ") + a;
+    out.push_back("Weapons fire only when the run has --weapons, the deadman" +
+                  (m.deadman ? " (" + label(m.deadman->key) + ")" : std::string()) + " is held and the arming input (" +
+                  list + ") is held.");
+  }
+  out.push_back("Releasing the deadman switches toggles off. After the deadman press or a layer change, an input "
+                "with a new meaning acts only once seen at rest.");
+  return out;
+}
+
+void add_layer_keys(const mapping::Mapping& m, int panel, PanelBuilder& out) {
+  if (m.deadman) {
+    out.add(m.deadman->key, SheetMark::kDeadman, "hold to enable motion",
+            m.deadman->key.is_button() ? "" : "past half way");
+  }
+  for (std::size_t i = 0; i < m.layers.size(); ++i) {
+    const auto& layer = m.layers[i];
+    const bool own = static_cast<int>(i) == panel;
+    std::string what = layer.toggle ? (own ? layer.name + " layer off (back to base)" : layer.name + " layer on/off")
+                                    : (own ? "held: " + layer.name + " layer" : "hold: " + layer.name + " layer");
+    out.add(layer.input.key, SheetMark::kLayerKey, what);
+  }
+}
+
+bool drawable(const Sheet& sheet) {
+  for (const auto& panel : sheet.panels) {
+    for (const auto& e : panel.entries) {
+      if (!sheet_detail::pad_slot_index(e.key)) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string_view mark_name(SheetMark mark) {
+  switch (mark) {
+    case SheetMark::kPlain: return "";
+    case SheetMark::kDeadman: return "DEADMAN";
+    case SheetMark::kLayerKey: return "LAYER";
+    case SheetMark::kArming: return "ARMING";
+    case SheetMark::kWeapon: return "WEAPON";
+    case SheetMark::kToggle: return "TOGGLE";
+    case SheetMark::kKnob: return "KNOB";
+    case SheetMark::kSelector: return "SELECTOR";
+  }
+  return "";
+}
+
+Sheet build_sheet(const mapping::Mapping& m) {
+  Sheet sheet;
+  sheet.robot = m.robot.value_or("");
+  sheet.file = std::filesystem::path(m.file).filename().string();
+  sheet.deadman = m.deadman ? label(m.deadman->key) : "";
+  for (int layer = -1; layer < static_cast<int>(m.layers.size()); ++layer) {
+    PanelBuilder builder;
+    add_layer_keys(m, layer, builder);
+    for (const auto ref : mapping::effective_bindings(m, layer)) {
+      builder.add_binding(mapping::binding_at(m, ref), layer >= 0 && ref.layer < 0);
+    }
+    SheetPanel panel{"base layer", "active when no other layer is", builder.entries()};
+    if (layer >= 0) {
+      const auto& l = m.layers.at(static_cast<std::size_t>(layer));
+      panel.title = l.name + " layer";
+      panel.how = l.toggle ? label(l.input.key) + " turns it on and off" : "while " + label(l.input.key) + " is held";
+    }
+    sheet.panels.push_back(std::move(panel));
+  }
+  sheet.notes = notes(m);
+  sheet.pad = drawable(sheet);
+  return sheet;
+}
+
+SheetFormat parse_sheet_format(std::string_view text, const SourcePos& pos) {
+  if (text == "svg") return SheetFormat::kSvg;
+  if (text == "text") return SheetFormat::kText;
+  throw InputError(pos, "unknown format " + quote(text) + " (svg or text)");
+}
+
+}  // namespace andros::view

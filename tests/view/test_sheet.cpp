@@ -1,0 +1,139 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "andros/mapping/loader.hpp"
+#include "andros/view/sheet.hpp"
+#include "support/temp_dir.hpp"
+
+namespace andros::view {
+namespace {
+
+Sheet kinds_sheet() { return build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/sheet/kinds.yaml")); }
+
+const SheetEntry& entry(const Sheet& sheet, std::size_t panel, std::string_view input) {
+  const auto& entries = sheet.panels.at(panel).entries;
+  const auto it = std::find_if(entries.begin(), entries.end(), [&](const SheetEntry& e) { return e.input == input; });
+  if (it == entries.end()) throw std::runtime_error("no entry for " + std::string(input));
+  return *it;
+}
+
+void expect_entry(const Sheet& sheet, std::size_t panel, std::string_view input, SheetMark mark,
+                  std::string_view function, std::string_view detail = {}, bool inherited = false) {
+  const auto& e = entry(sheet, panel, input);
+  EXPECT_EQ(e.mark, mark) << input;
+  EXPECT_EQ(e.function, function) << input;
+  EXPECT_EQ(e.detail, detail) << input;
+  EXPECT_EQ(e.inherited, inherited) << input;
+}
+
+TEST(Sheet, EveryBindingKindHasItsEntryAndMark) {
+  const auto s = kinds_sheet();
+  EXPECT_EQ(s.robot, "F6A");
+  EXPECT_EQ(s.file, "kinds.yaml");
+  EXPECT_EQ(s.deadman, "LT");
+  EXPECT_TRUE(s.pad);
+  ASSERT_EQ(s.panels.size(), 3u);
+  expect_entry(s, 0, "LT", SheetMark::kDeadman, "hold to enable motion", "past half way");
+  expect_entry(s, 0, "D-pad up", SheetMark::kPlain, "front_art_up");
+  expect_entry(s, 0, "X", SheetMark::kToggle, "tool_on");
+  expect_entry(s, 0, "RT", SheetMark::kPlain, "fiber_unwind");
+  expect_entry(s, 0, "right stick up/down", SheetMark::kPlain, "up: rear_art_up", "past 30%");
+  expect_entry(s, 0, "right stick left/right", SheetMark::kPlain, "left: pt_left, right: pt_right");
+  expect_entry(s, 0, "left stick up/down", SheetMark::kPlain, "drive", "analog, up = above centre");
+  expect_entry(s, 0, "B", SheetMark::kKnob, "light up", "64/s");
+  expect_entry(s, 0, "A", SheetMark::kKnob, "light down", "64/s");
+  expect_entry(s, 0, "Start", SheetMark::kSelector, "speed selector: next");
+  expect_entry(s, 0, "Back", SheetMark::kSelector, "speed selector: previous");
+  expect_entry(s, 0, "LB", SheetMark::kLayerKey, "hold: arm layer");
+  expect_entry(s, 0, "RB", SheetMark::kLayerKey, "weapons layer on/off");
+}
+
+TEST(Sheet, LayersShowTheirOwnBindingsAndTheBaseOnesTheyKeep) {
+  const auto s = kinds_sheet();
+  EXPECT_EQ(s.panels[1].title, "arm layer");
+  EXPECT_EQ(s.panels[1].how, "while LB is held");
+  expect_entry(s, 1, "RT", SheetMark::kPlain, "arm_speed", "analog 0..255");  // replaces fiber_unwind
+  expect_entry(s, 1, "X", SheetMark::kToggle, "tool_on", "", true);
+  expect_entry(s, 1, "LB", SheetMark::kLayerKey, "held: arm layer");
+  expect_entry(s, 1, "RB", SheetMark::kLayerKey, "weapons layer on/off");
+  expect_entry(s, 1, "LT", SheetMark::kDeadman, "hold to enable motion", "past half way");
+
+  EXPECT_EQ(s.panels[2].how, "RB turns it on and off");
+  expect_entry(s, 2, "Y", SheetMark::kWeapon, "fire weapon_1", "needs --weapons + left stick click");
+  expect_entry(s, 2, "left stick click", SheetMark::kArming, "hold to arm weapons");
+  expect_entry(s, 2, "RB", SheetMark::kLayerKey, "weapons layer off (back to base)");
+  expect_entry(s, 2, "RT", SheetMark::kPlain, "fiber_unwind", "", true);
+}
+
+TEST(Sheet, EntriesFollowTheDrawingsOrder) {
+  const auto s = kinds_sheet();
+  std::vector<std::string> inputs;
+  for (const auto& e : s.panels[0].entries) inputs.push_back(e.input);
+  const std::vector<std::string> want = {"LT", "LB", "Back", "left stick up/down", "D-pad up", "RT", "RB", "Start",
+                                         "B", "X", "A", "right stick up/down", "right stick left/right"};
+  EXPECT_EQ(inputs, want);
+}
+
+TEST(Sheet, NotesGiveSelectorPositionsKnobsAndTheWeaponsRule) {
+  const auto s = kinds_sheet();
+  const auto has = [&](std::string_view text) {
+    return std::any_of(s.notes.begin(), s.notes.end(), [&](const std::string& n) { return n == text; });
+  };
+  EXPECT_TRUE(has("speed selector, Start steps, Back back: speed_low > none > speed_high; starts at none"));
+  EXPECT_TRUE(has("light knob: B up, A down, 64 units/s; starts at 10, kept while not enabled"));
+  EXPECT_TRUE(has("Weapons fire only when the run has --weapons, the deadman (LT) is held and the arming input "
+                  "(left stick click) is held."));
+}
+
+TEST(Sheet, PlainJoystickGetsListPanels) {
+  const auto s = build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/joystick.yaml"));
+  EXPECT_FALSE(s.pad);
+  expect_entry(s, 0, "button 4", SheetMark::kDeadman, "hold to enable motion");
+  expect_entry(s, 0, "hat 0 up", SheetMark::kPlain, "front_art_up");
+  expect_entry(s, 0, "axis 1", SheetMark::kPlain, "drive", "analog, negative = above centre");
+  expect_entry(s, 0, "axis 2", SheetMark::kPlain, "positive: zoom_up", "past 25%");
+  expect_entry(s, 0, "axis 3", SheetMark::kPlain, "negative: zoom_down", "past 25%");
+  const auto svg = render_sheet_svg(s);
+  EXPECT_EQ(svg.find("<ellipse"), std::string::npos) << "no pad drawing for a joystick";
+  EXPECT_NE(svg.find(">button 4</text>"), std::string::npos);
+}
+
+TEST(Sheet, TextIsATablePerLayer) {
+  const auto text = render_sheet_text(kinds_sheet());
+  EXPECT_NE(text.find("\nBASE LAYER: active when no other layer is\n"
+                      "  input                  mark     function\n"
+                      "  LT                     DEADMAN  hold to enable motion (past half way)\n"
+                      "  LB                     LAYER    hold: arm layer\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("\n  Y                      WEAPON   fire weapon_1 (needs --weapons + left stick click)\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("\n  X                      TOGGLE   tool_on [base]\n"), std::string::npos);
+  const auto notes = text.substr(text.find("\nNOTES\n"));
+  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: speed_low > none > speed_high; starts\n  at none\n"),
+            std::string::npos)
+      << notes;
+  for (std::size_t start = 0, end; (end = notes.find('\n', start)) != std::string::npos; start = end + 1) {
+    EXPECT_LE(end - start, 80u) << notes.substr(start, end - start);
+  }
+}
+
+TEST(Sheet, SvgIsOnePageAndEscapesNames) {
+  testing::TempDir dir;
+  const auto file = dir.write("a&<b>.yaml", "robot: HD1\ndeadman: a\nlayers:\n  l\"1:\n    hold: b\n    bindings: []\n");
+  const auto svg = render_sheet_svg(build_sheet(*mapping::load_mapping(file)));
+  EXPECT_NE(svg.find("width=\"190mm\" height=\"260mm\" viewBox=\"0 0 190 260\""), std::string::npos);
+  EXPECT_NE(svg.find("a&amp;&lt;b&gt;.yaml"), std::string::npos);
+  EXPECT_NE(svg.find("L&quot;1 LAYER"), std::string::npos);
+  EXPECT_EQ(svg.find("a&<b>"), std::string::npos);
+}
+
+TEST(Sheet, FormatIsSvgOrText) {
+  EXPECT_EQ(parse_sheet_format("svg", {}), SheetFormat::kSvg);
+  EXPECT_EQ(parse_sheet_format("text", {}), SheetFormat::kText);
+  EXPECT_THROW(parse_sheet_format("png", {}), InputError);
+}
+
+}  // namespace
+}  // namespace andros::view
