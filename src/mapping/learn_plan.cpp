@@ -124,7 +124,9 @@ std::optional<std::string> used_by(const Mapping& m, const std::vector<LearnStep
         (other.layer != step.layer || (is_arm(step) && is_arm(other)))) {
       continue;
     }
-    return "'" + input::input_name(key) + "' is already used for " + target(m, other) + " in the " + layer_name(m, other.layer);
+    const auto name = "'" + input::input_name(key) + "' is ";
+    if (other.role != Role::kBinding) return name + target(m, other);
+    return name + "already used for " + target(m, other) + " in the " + layer_name(m, other.layer);
   }
   return std::nullopt;
 }
