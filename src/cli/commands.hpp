@@ -17,5 +17,6 @@ void add_record_command(CLI::App& app, int& exit_code);
 /// Hidden: the command line as JSON (scripts/man/ makes the man page and completion from it).
 void add_help_data_command(CLI::App& app, int& exit_code);
 void add_sheet_command(CLI::App& app, int& exit_code);
+void add_learn_command(CLI::App& app, int& exit_code);
 
 }  // namespace andros::cli

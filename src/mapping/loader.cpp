@@ -4,6 +4,7 @@
 #include <set>
 
 #include "andros/protocol/robots.hpp"
+#include "merge.hpp"
 #include "yaml_reader.hpp"
 
 namespace andros::mapping {
@@ -154,14 +155,23 @@ Binding read_binding(const Reader& r, const YAML::Node& n) {
   return read_selector_binding(r, n, b);
 }
 
-std::vector<Binding> read_bindings(const Reader& r, const YAML::Node& list) {
+/// A list of bindings, and the `unbind:` items that drop bindings of the file it extends.
+struct BindingList {
+  std::vector<Binding> bindings;
+  std::vector<Unbind> unbinds;
+};
+
+BindingList read_bindings(const Reader& r, const YAML::Node& list) {
   r.expect_list(list, "bindings");
-  std::vector<Binding> out;
-  for (const auto& n : list) out.push_back(read_binding(r, n));
+  BindingList out;
+  for (const auto& n : list) {
+    if (n.IsMap() && n["unbind"]) out.unbinds.push_back(read_unbind(r, n));
+    else out.bindings.push_back(read_binding(r, n));
+  }
   return out;
 }
 
-Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n) {
+Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, BindingList& list) {
   r.expect_keys(n, {"hold", "toggle", "bindings"}, "a layer");
   Layer layer;
   layer.name = r.text(name, "layer name");
@@ -173,16 +183,8 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n) {
   const auto button = layer.toggle ? n["toggle"] : n["hold"];
   layer.input = use(r, button, r.button(button));
   if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
-  layer.bindings = read_bindings(r, n["bindings"]);
+  list = read_bindings(r, n["bindings"]);
   return layer;
-}
-
-// A file's bindings replace the base's bindings they conflict with.
-void merge_bindings(std::vector<Binding>& base, std::vector<Binding> over) {
-  std::erase_if(base, [&](const Binding& old) {
-    return std::any_of(over.begin(), over.end(), [&](const Binding& b) { return bindings_conflict(old, b); });
-  });
-  for (auto& b : over) base.push_back(std::move(b));
 }
 
 /// The files being read, outermost first, and the YAML nodes they may still hold.
@@ -223,6 +225,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
   m.file = file.string();
+  m.chain.insert(m.chain.begin(), canonical.string());
   if (root["robot"]) {
     const auto name = r.text(root["robot"], "robot");
     m.robot = protocol::canonical_robot(name);
@@ -246,18 +249,23 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
     else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
-  if (root["bindings"]) merge_bindings(m.bindings, read_bindings(r, root["bindings"]));
+  if (root["bindings"]) {
+    auto list = read_bindings(r, root["bindings"]);
+    merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);
+  }
   if (const auto layers = root["layers"]) {
     r.expect_map(layers, "layers");
     std::set<std::string> seen;
     for (const auto& kv : layers) {
-      auto layer = read_layer(r, kv.first, kv.second);
+      BindingList list;
+      auto layer = read_layer(r, kv.first, kv.second, list);
       check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
       const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
       if (it == m.layers.end()) {
+        merge_bindings(layer.bindings, std::move(list.bindings), list.unbinds);
         m.layers.push_back(std::move(layer));
       } else {
-        merge_bindings(it->bindings, std::move(layer.bindings));
+        merge_bindings(it->bindings, std::move(list.bindings), list.unbinds);
         it->input = layer.input;
         it->toggle = layer.toggle;
         it->pos = layer.pos;

@@ -17,6 +17,9 @@ namespace fs = std::filesystem;
 using MappingDir = testing::TempDir;
 
 const std::string kHead = "robot: HD1\ndeadman: leftshoulder\nbindings:\n";  // bindings start on line 4
+const std::string kUnbindHead = "robot: HD1\nextends: base.yaml\nbindings:\n";
+const std::string kUnbindBase = "deadman: leftshoulder\nbindings:\n  - signal: front_art_up\n    button: dpup\nlayers:\n  arm:\n"
+                                "    hold: rightshoulder\n    bindings:\n      - signal: gripper_open\n        button: a\n";
 
 struct BadMapping {
   const char* what;
@@ -111,7 +114,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"a lone comma", ",\n", 1, 1, "YAML syntax: unexpected ','"},
         BadMapping{"a comma before a key", ",extends: other.yaml\n\n", 1, 1, "YAML syntax: unexpected ','"},
         BadMapping{"an alias inside what it names", "robot: HD1\ndeadman: a\nbindings: &b [*b]\n", 3, 11, "more than 100000 YAML nodes"},
-        BadMapping{"extends cycle", "robot: HD1\nextends: base.yaml\n", 1, 10, "'extends' makes a cycle: bad.yaml -> base.yaml -> bad.yaml", "extends: bad.yaml\n", "base.yaml"}),
+        BadMapping{"extends cycle", "robot: HD1\nextends: base.yaml\n", 1, 10, "'extends' makes a cycle: bad.yaml -> base.yaml -> bad.yaml", "extends: bad.yaml\n", "base.yaml"},
+        BadMapping{"unbind of an input the base does not bind", kUnbindHead + "  - unbind: paddle2\n", 4, 13, "'unbind: paddle2': the file this one extends binds nothing to it in this layer", kUnbindBase},
+        BadMapping{"unbind with no extends", kHead + "  - unbind: dpup\n", 4, 13, "binds nothing to it", kUnbindBase},
+        BadMapping{"unbind of a base-layer input in a layer", "robot: HD1\nextends: base.yaml\nlayers:\n  arm:\n    hold: rightshoulder\n    bindings:\n      - unbind: dpup\n", 7, 17, "binds nothing to it in this layer", kUnbindBase},
+        BadMapping{"unbind of an unknown input", kUnbindHead + "  - unbind: dpupp\n", 4, 13, "unknown input 'dpupp'", kUnbindBase},
+        BadMapping{"unbind with another key", kUnbindHead + "  - unbind: dpup\n    button: a\n", 5, 5, "unknown key 'button' in an unbind item", kUnbindBase}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (auto& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';

@@ -124,6 +124,7 @@ enum class BrakeMode : std::uint8_t {
 
 struct Mapping {
   std::string file;                  ///< the file it was loaded from
+  std::vector<std::string> chain;    ///< the files read, canonical: this one, then each it extends
   std::optional<std::string> robot;  ///< canonical robot type; none for a base file
   SourcePos robot_pos;
   int center = kDefaultCenter;

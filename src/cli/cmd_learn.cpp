@@ -1,0 +1,96 @@
+// `andros-bridge learn`: change a mapping's inputs by pressing them.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "andros/base/error.hpp"
+#include "andros/base/stop.hpp"
+#include "andros/mapping/loader.hpp"
+#include "commands.hpp"
+#include "andros/cli/learn_session.hpp"
+#include "sdl_options.hpp"
+
+namespace andros::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LearnCommandOptions {
+  std::string robot;
+  std::string mapping;
+  std::string output;
+  input::SdlInputOptions sdl;
+};
+
+/// The output may not be the mapping learned from nor a file it extends: it
+/// would extend itself.
+void check_output(const mapping::Mapping& base, const fs::path& output) {
+  std::error_code ec;
+  if (fs::is_directory(output, ec)) throw InputError(SourcePos{"--output"}, quote(output.string()) + " is a directory");
+  const auto folder = fs::absolute(output).parent_path();
+  if (!fs::is_directory(folder, ec)) throw InputError(SourcePos{"--output"}, "no folder " + quote(folder.string()));
+  const auto canonical = fs::weakly_canonical(fs::absolute(output)).string();
+  for (const auto& file : base.chain) {
+    if (file == canonical) {
+      throw InputError(SourcePos{"--output"}, quote(output.string()) +
+                                                  " is the mapping learned from or a file it extends: write to another file");
+    }
+  }
+}
+
+int run_learn(const LearnCommandOptions& opt) {
+  if (opt.robot.empty() == opt.mapping.empty()) throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
+  const fs::path base_file =
+      opt.mapping.empty() ? mapping::find_robot_mapping(opt.robot, mapping::mapping_search_path()) : fs::path(opt.mapping);
+  auto base = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot) : mapping::load_mapping(opt.mapping);
+  check_output(*base, opt.output);
+  StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
+  input::LiveGestures pad(opt.sdl);
+  mapping::LearnPlan plan(*base);
+  Keyboard keys(STDIN_FILENO);
+  std::printf("learning %s (robot %s, %zu inputs) from %s\n"
+              "Enter keeps the input, s skips the rest of this layer, b goes back, w writes now, q quits without writing\n",
+              opt.output.c_str(), plan.base().robot.value_or("?").c_str(), plan.steps().size(), pad.selection().c_str());
+  LearnSession session(plan, pad, keys, stdout);
+  while (!signals.requested() && session.step(20)) {
+  }
+  if (session.end() != LearnSession::End::kWrite) {
+    std::printf("quit: %s not written\n", opt.output.c_str());
+    return kExitRuntime;
+  }
+  if (!plan.changed()) {
+    std::printf("nothing changed: %s not written\n", opt.output.c_str());
+    return kExitOk;
+  }
+  write_learned(plan, base_file, opt.output);
+  std::printf("wrote %s; try it with 'andros-bridge check %s'\n", opt.output.c_str(), opt.output.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_learn_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<LearnCommandOptions>();
+  auto* cmd = app.add_subcommand(
+      "learn",
+      "Change a mapping's buttons by pressing them: walks every input of the mapping\n"
+      "(the deadman, each binding, each layer key), shows what it does and its input now,\n"
+      "and takes the next button, stick push or trigger pull on the controller. Enter keeps\n"
+      "the input, s skips the rest of the layer, b goes back, w writes now, q (or Ctrl-C)\n"
+      "quits without writing. An input already used in the same layer is refused. Writes a\n"
+      "mapping that extends the one learned from with only what changed, loaded and\n"
+      "checked before it replaces --output. See docs/mapping.md (Changing buttons with learn).\n"
+      "Exit: 0 written or nothing changed, 1 quit, 2 bad options or mapping.");
+  cmd->add_option("--robot", opt->robot, "the robot whose mapping to learn from (as 'run --robot' finds it)")
+      ->type_name("NAME");
+  cmd->add_option("--mapping", opt->mapping, "the mapping file to learn from")->type_name("FILE");
+  cmd->add_option("--output,-o", opt->output, "the mapping file to write (replaced if it exists)")
+      ->type_name("FILE")
+      ->required();
+  add_sdl_options(cmd, opt->sdl);
+  cmd->callback([opt, &exit_code] { exit_code = run_learn(*opt); });
+}
+
+}  // namespace andros::cli
