@@ -22,6 +22,7 @@
 #include "andros/protocol/robots.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
+#include "andros/run/feedback.hpp"
 #include "andros/view/run_status.hpp"
 #include "andros/view/status_display.hpp"
 #include "commands.hpp"
@@ -120,6 +121,21 @@ std::string failed_neutral_frames(const run::ShutdownReport& shut, const std::st
   return what + " (" + link + "): the vehicle may still be acting on the last command it got";
 }
 
+/// What the rumble and light are chosen from. Until the engine's status
+/// reaches the observer by value, its reason for not being enabled is read
+/// back from its text (describe()).
+run::FeedbackStatus feedback_status(const run::TickReport& r, const run::FrameSource& frames, const link::Link& link) {
+  using mapping::EnableState;
+  EnableState enable = EnableState::kEnabled;
+  if (!frames.enabled()) {
+    enable = EnableState::kDeadmanReleased;
+    for (const auto state : {EnableState::kNoController, EnableState::kDeadmanNotFresh}) {
+      if (frames.enable_text() == mapping::describe(state)) enable = state;
+    }
+  }
+  return {r.input->connected(), enable, link.state() == link::LinkState::kUp && link.motion_allowed()};
+}
+
 /// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
 /// out, then stop until continued (fg, bg, SIGCONT), and redraw.
 void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>& display,
@@ -149,6 +165,7 @@ int run_bridge(const RunOptions& opt) {
   JobControlSignals job;
   mapping::Mapping mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                                     : mapping::load_mapping(config.mapping);
+  const mapping::FeedbackTable feedback_table = mapping.feedback;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;
@@ -182,7 +199,12 @@ int run_bridge(const RunOptions& opt) {
   const run::RunControl control{
       [&] { return poll_requests(signals, job); },
       [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
-  bridge.run(control, [&board](const run::TickReport& r) { board.observe(r); });
+  // On the loop's thread, which owns SDL: the rumble starts without waiting.
+  run::FeedbackNotifier feedback(feedback_table, *input);
+  bridge.run(control, [&](const run::TickReport& r) {
+    board.observe(r);
+    if (!r.shutting_down) feedback.observe(feedback_status(r, *frames, *link));
+  });
   display.reset();
 
   const auto end = board.snapshot();

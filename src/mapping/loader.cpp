@@ -4,6 +4,7 @@
 #include <set>
 
 #include "andros/protocol/robots.hpp"
+#include "feedback_reader.hpp"
 #include "yaml_reader.hpp"
 
 namespace andros::mapping {
@@ -218,7 +219,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   chain.files.push_back(canonical);
   const Reader r(file.string());
   const YAML::Node root = r.load_document(chain.node_budget);
-  r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
+  r.expect_keys(root,
+                {"robot", "extends", "center", "constants", "deadman", "brake", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -246,6 +248,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
     else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
+  if (root["feedback"]) read_feedback(r, root["feedback"], m.feedback);
   if (root["bindings"]) merge_bindings(m.bindings, read_bindings(r, root["bindings"]));
   if (const auto layers = root["layers"]) {
     r.expect_map(layers, "layers");

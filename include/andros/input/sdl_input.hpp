@@ -74,6 +74,11 @@ class SdlInput final : public InputSource {
   void pump(InputState& state, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
 
+  /// Sets the chosen controller's light and starts its rumble (at the last
+  /// poll's time; later pulses start from poll()). Nothing without a
+  /// controller, or for what it lacks. Never blocks, never throws.
+  void feedback(const FeedbackPattern& pattern) override;
+
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;
 

@@ -26,6 +26,8 @@ class SdlDevice {
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::string& guid() const { return guid_; }
   [[nodiscard]] bool attached() const;
+  /// The joystick under it (a game controller's too): rumble and light.
+  [[nodiscard]] SDL_Joystick* joystick() const { return joystick_; }
 
   /// The held buttons, hats and off-centre axes now, as events stamped t_ms.
   /// Game-controller triggers are left at rest (see the .cpp).
