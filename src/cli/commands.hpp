@@ -14,5 +14,6 @@ void add_run_command(CLI::App& app, int& exit_code);
 void add_monitor_command(CLI::App& app, int& exit_code);
 void add_controllers_command(CLI::App& app, int& exit_code);
 void add_record_command(CLI::App& app, int& exit_code);
+void add_inputs_command(CLI::App& app, int& exit_code);
 
 }  // namespace andros::cli

@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
   andros::cli::add_monitor_command(app, exit_code);
   andros::cli::add_controllers_command(app, exit_code);
   andros::cli::add_record_command(app, exit_code);
+  andros::cli::add_inputs_command(app, exit_code);
   refuse_empty_values(app);
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);

@@ -144,6 +144,11 @@ void SdlInput::feedback(const FeedbackPattern& pattern) {
   if (impl_->device) impl_->feedback.play(impl_->device->joystick(), pattern, impl_->last_poll_ms);
 }
 
+std::optional<DeviceLayout> SdlInput::device() const {
+  if (!impl_->device) return std::nullopt;
+  return impl_->device->layout();
+}
+
 std::string SdlInput::selection() const { return impl_->selection.describe(); }
 
 std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop) {
