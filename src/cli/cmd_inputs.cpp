@@ -85,9 +85,11 @@ void add_inputs_command(CLI::App& app, int& exit_code) {
       "Show what the controller reports, live: every button, axis, trigger and hat by SDL\n"
       "name and number, each axis with its value and the deadzone (or threshold) the\n"
       "mapping applies to it. On a terminal a screen; otherwise one line per change.\n"
-      "Ctrl-C ends it.");
+      "Ctrl-C ends it. See docs/controllers.md.");
   cmd->add_option("--robot", opt->robot, "show the deadzones of this robot type's mapping");
-  cmd->add_option("--mapping", opt->mapping, "show the deadzones of this mapping file");
+  cmd->add_option("--mapping", opt->mapping,
+                  "show the deadzones of this mapping file (with neither option: deadzone 0, the\n"
+                  "mapping default)");
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_inputs(*opt); });
 }

@@ -12,7 +12,7 @@ namespace {
 using input::InputKey;
 using input::InputKind;
 
-constexpr int kBarHalf = 7;
+constexpr int kBarHalf = 5;
 constexpr std::size_t kScreenWidth = 79;  ///< an 80-column terminal, the cursor never wrapping
 constexpr int kButtonsPerRow = 4;
 
@@ -167,7 +167,9 @@ std::string render_inputs_screen(const input::InputState& state, const std::opti
                                  const AxisUses& uses, const std::string& heading) {
   std::string out = heading + "\n";
   if (!layout || !state.connected()) return fit(out + "controller: none connected, waiting\n");
-  out += "controller: " + device_text(*layout) + "\n\nbuttons (* held)\n";
+  // The GUID apart: a long name must not push it off the screen.
+  out += "controller: " + layout->name + (layout->game_controller ? " (game controller)" : " (joystick)") +
+         "\n  GUID " + layout->guid + "\n\nbuttons (* held)\n";
   int column = 0;
   for (const auto key : layout->buttons) {
     out += fmt(" %c%3u %-13s", state.button(key).down ? '*' : ' ', static_cast<unsigned>(key.index),

@@ -62,7 +62,7 @@ TEST_F(InputTesterTest, APadShowsEveryNamedInputWithItsNumber) {
   EXPECT_NE(screen.find("* 11 dpup"), std::string::npos) << screen;
   EXPECT_NE(screen.find("    1 b "), std::string::npos) << screen;
   EXPECT_NE(screen.find("touchpad"), std::string::npos);
-  EXPECT_NE(screen.find("righttrigger  32767 [|==============] moves   deadzone 0.00 arm_speed\n"), std::string::npos) << screen;
+  EXPECT_NE(screen.find("righttrigger  32767 [|==========] moves   deadzone 0.00 arm_speed\n"), std::string::npos) << screen;
 
   pad.unplug();
   EXPECT_EQ(poll(input, board), std::vector<std::string>{"260 disconnect"});
