@@ -20,6 +20,7 @@
 #include "andros/mapping/loader.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
+#include "andros/run/feedback.hpp"
 #include "andros/view/run_status.hpp"
 #include "andros/view/status_display.hpp"
 #include "commands.hpp"
@@ -96,6 +97,7 @@ int run_bridge(const RunOptions& opt) {
   auto mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                         : mapping::load_mapping(config.mapping);
   const int center = mapping->center;
+  const mapping::FeedbackTable feedback_table = mapping->feedback;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
   std::unique_ptr<input::InputSource> input;
@@ -135,7 +137,12 @@ int run_bridge(const RunOptions& opt) {
   const run::RunControl control{
       [&] { return poll_requests(stop, job); },
       [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
-  bridge.run(control, [&board](const run::TickReport& r) { board.observe(r); });
+  // On the loop's thread, which owns SDL: the rumble starts without waiting.
+  run::FeedbackNotifier feedback(feedback_table, *input);
+  bridge.run(control, [&](const run::TickReport& r) {
+    board.observe(r);
+    if (!r.shutting_down) feedback.observe(run::feedback_status(r));
+  });
   display.reset();
 
   const auto end = board.snapshot();

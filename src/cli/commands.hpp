@@ -18,5 +18,6 @@ void add_record_command(CLI::App& app, int& exit_code);
 void add_help_data_command(CLI::App& app, int& exit_code);
 void add_sheet_command(CLI::App& app, int& exit_code);
 void add_learn_command(CLI::App& app, int& exit_code);
+void add_inputs_command(CLI::App& app, int& exit_code);
 
 }  // namespace andros::cli

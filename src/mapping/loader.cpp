@@ -5,6 +5,7 @@
 
 #include "andros/protocol/robots.hpp"
 #include "merge.hpp"
+#include "feedback_reader.hpp"
 #include "yaml_reader.hpp"
 
 namespace andros::mapping {
@@ -220,7 +221,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   chain.files.push_back(canonical);
   const Reader r(file.string());
   const YAML::Node root = r.load_document(chain.node_budget);
-  r.expect_keys(root, {"robot", "extends", "center", "constants", "deadman", "brake", "bindings", "layers"},
+  r.expect_keys(root,
+                {"robot", "extends", "center", "constants", "deadman", "brake", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -249,6 +251,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
     else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
+  if (root["feedback"]) read_feedback(r, root["feedback"], m.feedback);
   if (root["bindings"]) {
     auto list = read_bindings(r, root["bindings"]);
     merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);

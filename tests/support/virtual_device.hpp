@@ -4,22 +4,33 @@
 #include <SDL.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace andros::test {
 
 /// Runs before any SDL_Init: no display is ever needed.
 inline void use_dummy_video() { setenv("SDL_VIDEODRIVER", "dummy", 1); }
 
+/// What SDL asked a virtual device's motors and light to do (its Rumble and
+/// SetLED callbacks), in order. SDL stops a rumble itself when it is due,
+/// with a call of strength 0, 0.
+struct FeedbackLog {
+  std::vector<std::array<Uint16, 2>> rumbles;  ///< low, high
+  std::vector<std::array<Uint8, 3>> leds;
+};
+
 class VirtualDevice {
  public:
   /// A game controller: SDL maps virtual button i to SDL_GameControllerButton
-  /// i and axis i to SDL_GameControllerAxis i.
-  static VirtualDevice pad(const char* name, std::uint16_t product = 1) {
+  /// i and axis i to SDL_GameControllerAxis i. With a log, it has rumble and
+  /// a light, and records what it is asked to do.
+  static VirtualDevice pad(const char* name, std::uint16_t product = 1, FeedbackLog* log = nullptr) {
     return VirtualDevice(name, SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX,
-                         SDL_CONTROLLER_BUTTON_MAX, 0, product);
+                         SDL_CONTROLLER_BUTTON_MAX, 0, product, log);
   }
   /// A flight stick SDL has no mapping for: numbered buttons, axes, a hat.
   static VirtualDevice stick(const char* name, std::uint16_t product = 2) {
@@ -27,7 +38,7 @@ class VirtualDevice {
   }
 
   VirtualDevice(const char* name, SDL_JoystickType type, int axes, int buttons, int hats,
-                std::uint16_t product) {
+                std::uint16_t product, FeedbackLog* log = nullptr) {
     SDL_VirtualJoystickDesc desc;
     SDL_zero(desc);
     desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
@@ -38,6 +49,17 @@ class VirtualDevice {
     desc.vendor_id = 0x1234;
     desc.product_id = product;
     desc.name = name;
+    if (log != nullptr) {
+      desc.userdata = log;
+      desc.Rumble = [](void* data, Uint16 low, Uint16 high) {
+        static_cast<FeedbackLog*>(data)->rumbles.push_back({low, high});
+        return 0;
+      };
+      desc.SetLED = [](void* data, Uint8 r, Uint8 g, Uint8 b) {
+        static_cast<FeedbackLog*>(data)->leds.push_back({r, g, b});
+        return 0;
+      };
+    }
     const int index = SDL_JoystickAttachVirtualEx(&desc);
     EXPECT_GE(index, 0) << SDL_GetError();
     // The test's own handle, to drive the device: SDL shares one per device.

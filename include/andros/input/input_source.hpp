@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "andros/input/feedback.hpp"
 #include "andros/input/snapshot.hpp"
 
 namespace andros::input {
@@ -22,6 +23,11 @@ class InputSource {
   /// True when the source has nothing more to give (the end of a script).
   /// A live controller source never finishes.
   [[nodiscard]] virtual bool finished(std::int64_t now_ms) const = 0;
+
+  /// Plays a pattern on the controller, if it has rumble or a light; never
+  /// blocks. Called on the thread that calls pump(). A script has no
+  /// controller: nothing happens.
+  virtual void feedback(const FeedbackPattern& /*pattern*/) {}
 };
 
 }  // namespace andros::input

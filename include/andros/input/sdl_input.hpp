@@ -6,10 +6,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "andros/base/text_file.hpp"
+#include "andros/input/device_layout.hpp"
 #include "andros/input/input_source.hpp"
 #include "andros/input/snapshot.hpp"
 
@@ -73,6 +75,14 @@ class SdlInput final : public InputSource {
 
   void pump(InputState& state, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
+
+  /// Sets the chosen controller's light and starts its rumble (at the last
+  /// poll's time; later pulses start from poll()). Nothing without a
+  /// controller, or for what it lacks. Never blocks, never throws.
+  void feedback(const FeedbackPattern& pattern) override;
+
+  /// The chosen controller's inputs; none while it is not connected.
+  [[nodiscard]] std::optional<DeviceLayout> device() const;
 
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;

@@ -15,6 +15,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/input/snapshot.hpp"
+#include "andros/mapping/feedback.hpp"
 #include "andros/protocol/signals.hpp"
 
 namespace andros::mapping {
@@ -132,6 +133,7 @@ struct Mapping {
   std::uint8_t battery = kDefaultBattery;
   std::optional<InputUse> deadman;
   BrakeMode brake = BrakeMode::kEnabled;
+  FeedbackTable feedback = default_feedback();  ///< rumble and light per event
   std::vector<Binding> bindings;  ///< the base layer
   std::vector<Layer> layers;
 };

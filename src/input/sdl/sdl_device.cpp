@@ -56,6 +56,29 @@ std::unique_ptr<SdlDevice> SdlDevice::open(int device_index) {
 
 bool SdlDevice::attached() const { return SDL_JoystickGetAttached(joystick_) == SDL_TRUE; }
 
+DeviceLayout SdlDevice::layout() const {
+  DeviceLayout out{name_, guid_, pad_ != nullptr, {}, {}, 0};
+  if (pad_) {
+    for (int b = 0; b < SDL_CONTROLLER_BUTTON_MAX; ++b) {
+      if (SDL_GameControllerHasButton(pad_.get(), static_cast<SDL_GameControllerButton>(b)) == SDL_TRUE) {
+        out.buttons.push_back(key(InputKind::kPadButton, b));
+      }
+    }
+    for (int a = 0; a < SDL_CONTROLLER_AXIS_MAX; ++a) {
+      if (SDL_GameControllerHasAxis(pad_.get(), static_cast<SDL_GameControllerAxis>(a)) == SDL_TRUE) {
+        out.axes.push_back(key(InputKind::kPadAxis, a));
+      }
+    }
+    return out;
+  }
+  const int buttons = std::min(SDL_JoystickNumButtons(joystick_), kMaxJoystickIndex + 1);
+  for (int b = 0; b < buttons; ++b) out.buttons.push_back(key(InputKind::kJoyButton, b));
+  const int axes = std::min(SDL_JoystickNumAxes(joystick_), kMaxJoystickIndex + 1);
+  for (int a = 0; a < axes; ++a) out.axes.push_back(key(InputKind::kJoyAxis, a));
+  out.hats = std::max(0, std::min(SDL_JoystickNumHats(joystick_), kMaxHatIndex + 1));
+  return out;
+}
+
 void SdlDevice::append_state(std::int64_t t_ms, std::vector<InputEvent>& out) const {
   using T = InputEvent::Type;
   if (pad_) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "andros/input/device_layout.hpp"
 #include "andros/input/snapshot.hpp"
 
 namespace andros::input {
@@ -26,6 +27,10 @@ class SdlDevice {
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::string& guid() const { return guid_; }
   [[nodiscard]] bool attached() const;
+  /// The joystick under it (a game controller's too): rumble and light.
+  [[nodiscard]] SDL_Joystick* joystick() const { return joystick_; }
+  /// Every input it has, for the input tester.
+  [[nodiscard]] DeviceLayout layout() const;
 
   /// The held buttons, hats and off-centre axes now, as events stamped t_ms.
   /// Game-controller triggers are left at rest (see the .cpp).

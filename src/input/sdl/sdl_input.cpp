@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "controller_selection.hpp"
+#include "feedback_player.hpp"
 #include "sdl_device.hpp"
 
 namespace andros::input {
@@ -29,6 +30,8 @@ struct SdlInput::Impl {
   bool rescan = true;  // a device may have appeared: look for the chosen one
   bool waiting_logged = false;
   std::vector<InputEvent> events;
+  FeedbackPlayer feedback;
+  std::int64_t last_poll_ms = 0;
 };
 
 void SdlInput::Impl::poll(std::int64_t now_ms) {
@@ -40,6 +43,8 @@ void SdlInput::Impl::poll(std::int64_t now_ms) {
   drain(now_ms);
   if (device && !device->attached()) lose(now_ms);  // in case the removal event is late
   if (!device && rescan) connect_chosen(now_ms);
+  last_poll_ms = now_ms;
+  if (device) feedback.update(device->joystick(), now_ms);
 }
 
 void SdlInput::Impl::drain(std::int64_t now_ms) {
@@ -106,6 +111,7 @@ void SdlInput::Impl::connect_chosen(std::int64_t now_ms) {
 void SdlInput::Impl::lose(std::int64_t now_ms) {
   spdlog::warn("controller lost: {}", device->name());
   device.reset();
+  feedback.cancel();
   // SDL releases a removed device's buttons and recentres its axes just
   // before reporting the removal. That is not the operator's input, and the
   // disconnect clears the state anyway: keep it out of recordings.
@@ -132,6 +138,15 @@ const std::vector<InputEvent>& SdlInput::poll(std::int64_t now_ms) {
 
 void SdlInput::pump(InputState& state, std::int64_t now_ms) {
   for (const auto& event : poll(now_ms)) state.apply(event);
+}
+
+void SdlInput::feedback(const FeedbackPattern& pattern) {
+  if (impl_->device) impl_->feedback.play(impl_->device->joystick(), pattern, impl_->last_poll_ms);
+}
+
+std::optional<DeviceLayout> SdlInput::device() const {
+  if (!impl_->device) return std::nullopt;
+  return impl_->device->layout();
 }
 
 std::string SdlInput::selection() const { return impl_->selection.describe(); }

@@ -1,0 +1,46 @@
+#pragma once
+/// Rumble and light for the operator: which events two successive statuses
+/// show, and the pattern of the most important one played on the controller.
+
+#include <optional>
+#include <vector>
+
+#include "andros/input/input_source.hpp"
+#include "andros/mapping/engine.hpp"
+#include "andros/mapping/feedback.hpp"
+#include "andros/run/bridge.hpp"
+
+namespace andros::run {
+
+/// What the events are read from, once per tick.
+struct FeedbackStatus {
+  bool connected = false;  ///< a controller is connected
+  mapping::EnableState enable = mapping::EnableState::kNoController;
+  bool link_up = false;  ///< the link is up and frames follow the controller
+
+  bool operator==(const FeedbackStatus&) const = default;
+};
+
+/// A tick's report as the feedback reads it.
+FeedbackStatus feedback_status(const TickReport& report);
+
+/// The events between two statuses, most important first (FeedbackEvent
+/// order); none for equal statuses. Pure.
+std::vector<mapping::FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after);
+
+/// Feeds each tick's status through feedback_events() and plays the first
+/// event that has a pattern in the table on the input's controller.
+class FeedbackNotifier {
+ public:
+  FeedbackNotifier(mapping::FeedbackTable table, input::InputSource& input) : table_(table), input_(input) {}
+
+  /// Call on the thread that pumps the input. Returns the event played, if any.
+  std::optional<mapping::FeedbackEvent> observe(const FeedbackStatus& status);
+
+ private:
+  mapping::FeedbackTable table_;
+  input::InputSource& input_;
+  FeedbackStatus last_;  ///< before the first tick: nothing connected, not enabled, link down
+};
+
+}  // namespace andros::run

@@ -1,0 +1,41 @@
+#include "andros/run/feedback.hpp"
+
+#include <algorithm>
+
+namespace andros::run {
+
+using mapping::EnableState;
+using mapping::FeedbackEvent;
+
+FeedbackStatus feedback_status(const TickReport& report) {
+  return {report.connected, report.engine.enable,
+          report.link.state == link::LinkState::kUp && report.link.motion_allowed};
+}
+
+std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
+  std::vector<FeedbackEvent> events;
+  if (after.enable == EnableState::kDeadmanNotFresh && before.enable != EnableState::kDeadmanNotFresh) {
+    events.push_back(FeedbackEvent::kDeadmanRefused);
+  }
+  if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
+  // A lost controller cannot be told anything: no "disabled" with it.
+  if (before.enable == EnableState::kEnabled && after.enable != EnableState::kEnabled && after.connected) {
+    events.push_back(FeedbackEvent::kDisabled);
+  }
+  if (after.enable == EnableState::kEnabled && before.enable != EnableState::kEnabled) {
+    events.push_back(FeedbackEvent::kEnabled);
+  }
+  if (after.connected && !before.connected) events.push_back(FeedbackEvent::kControllerBack);
+  return events;
+}
+
+std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& status) {
+  const auto events = feedback_events(last_, status);
+  last_ = status;
+  const auto it = std::find_if(events.begin(), events.end(), [this](FeedbackEvent e) { return table_[e].has_value(); });
+  if (it == events.end()) return std::nullopt;
+  input_.feedback(*table_[*it]);
+  return *it;
+}
+
+}  // namespace andros::run

@@ -1,0 +1,209 @@
+#include "andros/view/inputs_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "andros/mapping/axis.hpp"
+
+namespace andros::view {
+namespace {
+
+using input::InputKey;
+using input::InputKind;
+
+constexpr int kBarHalf = 5;
+constexpr std::size_t kScreenWidth = 79;  ///< an 80-column terminal, the cursor never wrapping
+constexpr int kButtonsPerRow = 4;
+
+std::string fmt(const char* format, auto... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return buf;
+}
+
+bool is_axis(InputKey key) { return key.kind == InputKind::kPadAxis || key.kind == InputKind::kJoyAxis; }
+bool is_trigger(InputKey key) { return key.kind == InputKind::kPadAxis && key.index >= 4; }
+
+std::string signal_name(protocol::SignalId id) { return std::string(protocol::info(id).name); }
+
+/// The axis a binding reads and how, if it reads one.
+std::optional<std::pair<InputKey, AxisUse>> read_by(const mapping::BindingRule& rule) {
+  using R = AxisUse::Rest;
+  using Use = std::pair<InputKey, AxisUse>;
+  if (const auto* a = std::get_if<mapping::AxisBinding>(&rule)) {
+    return Use{a->axis, {R::kDeadzone, a->shape.deadzone, a->shape.invert, signal_name(a->analog), ""}};
+  }
+  if (const auto* p = std::get_if<mapping::PairBinding>(&rule)) {
+    return Use{p->axis, {R::kBand, p->threshold, p->invert, signal_name(p->signals[0]) + "/" + signal_name(p->signals[1]), ""}};
+  }
+  if (const auto* b = std::get_if<mapping::ButtonBinding>(&rule); b != nullptr && is_axis(b->input)) {
+    return Use{b->input, {R::kThreshold, b->threshold, b->invert, signal_name(b->signal), ""}};
+  }
+  if (const auto* w = std::get_if<mapping::WeaponBinding>(&rule); w != nullptr && w->arm && is_axis(*w->arm)) {
+    return Use{*w->arm, {R::kThreshold, mapping::kDefaultThreshold, false, "arms " + signal_name(w->signal), ""}};
+  }
+  return std::nullopt;
+}
+
+/// "moves"/"on" when the mapping would act on this value, else "at rest".
+const char* reading(const AxisUse& use, std::int16_t value) {
+  double x = mapping::normalise_axis(value);
+  if (use.invert) x = -x;
+  switch (use.rest) {
+    case AxisUse::Rest::kDeadzone: return std::fabs(x) > use.limit ? "moves" : "at rest";
+    case AxisUse::Rest::kBand: return std::fabs(x) >= use.limit ? "on" : "at rest";
+    case AxisUse::Rest::kThreshold: return x >= use.limit ? "on" : "at rest";
+  }
+  return "";
+}
+
+/// "deadzone 0.10 drive", "threshold 0.50 zoom_up in layer camera".
+std::string limit_text(const AxisUse& use) {
+  std::string out = fmt("%s %.2f", use.rest == AxisUse::Rest::kDeadzone ? "deadzone" : "threshold", use.limit);
+  if (use.signal.empty()) return out + " (default)";
+  return out + " " + use.signal + (use.layer.empty() ? "" : " in layer " + use.layer);
+}
+
+/// "a #0" for a pad input, "3" for a joystick's.
+std::string input_label(InputKey key) {
+  const std::string name = input::input_name(key);
+  return key.kind == InputKind::kPadButton || key.kind == InputKind::kPadAxis ? name + " #" + std::to_string(key.index)
+                                                                             : name;
+}
+
+std::string hat_text(int mask) {
+  if (mask == 0) return "centred";
+  std::string out;
+  for (std::size_t d = 0; d < input::kHatDirectionNames.size(); ++d) {
+    if ((mask & (1 << d)) == 0) continue;
+    if (!out.empty()) out += "+";
+    out += input::kHatDirectionNames[d];
+  }
+  return out;
+}
+
+std::string bar(InputKey key, std::int16_t value) {
+  std::string out(2 * kBarHalf + 1, ' ');
+  const double x = mapping::normalise_axis(value);
+  if (is_trigger(key)) {  // 0..32767, from the left
+    const int n = static_cast<int>(std::lround(std::max(0.0, x) * 2 * kBarHalf));
+    for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i + 1)] = '=';
+    out[0] = '|';
+    return "[" + out + "]";
+  }
+  const int n = static_cast<int>(std::lround(x * kBarHalf));
+  for (int i = std::min(0, n); i <= std::max(0, n); ++i) out[static_cast<std::size_t>(kBarHalf + i)] = '=';
+  out[kBarHalf] = '|';
+  return "[" + out + "]";
+}
+
+std::string device_text(const input::DeviceLayout& d) {
+  return d.name + " (" + (d.game_controller ? "game controller" : "joystick") + ", GUID " + d.guid + ")";
+}
+
+void append_axis(std::string& out, const input::InputState& state, InputKey key, const AxisUses& uses) {
+  const std::int16_t v = state.axis(key);
+  const AxisUse use = axis_use(uses, key);
+  // The verdict before the limit: a narrow screen cuts the signal's name, not it.
+  out += fmt("  %3u %-12s %6d %s %-7s ", static_cast<unsigned>(key.index), input::input_name(key).c_str(), v,
+             bar(key, v).c_str(), reading(use, v));
+  out += limit_text(use) + "\n";
+}
+
+/// Each line cut to the screen's width (a long signal or layer name).
+std::string fit(const std::string& text) {
+  std::string out;
+  for (std::size_t from = 0; from < text.size();) {
+    const auto end = std::min(text.find('\n', from), text.size());
+    out += text.substr(from, std::min(end - from, kScreenWidth)) + "\n";
+    from = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+AxisUses axis_uses(const mapping::Mapping& mapping) {
+  AxisUses uses;
+  if (mapping.deadman && is_axis(mapping.deadman->key)) {
+    uses[mapping.deadman->key] = {AxisUse::Rest::kThreshold, mapping::kDefaultThreshold, false, "deadman", ""};
+  }
+  for (const auto ref : mapping::all_bindings(mapping)) {
+    auto use = read_by(mapping::binding_at(mapping, ref).rule);
+    if (!use) continue;
+    if (ref.layer >= 0) use->second.layer = mapping.layers[static_cast<std::size_t>(ref.layer)].name;
+    uses.emplace(use->first, use->second);  // the first reader wins
+  }
+  return uses;
+}
+
+AxisUse axis_use(const AxisUses& uses, InputKey axis) {
+  const auto it = uses.find(axis);
+  return it == uses.end() ? AxisUse{} : it->second;
+}
+
+std::string format_input_change(const input::InputEvent& e, const AxisUses& uses,
+                                const std::optional<input::DeviceLayout>& layout) {
+  using T = input::InputEvent::Type;
+  const std::string t = std::to_string(e.t_ms) + " ";
+  switch (e.type) {
+    case T::kConnect: return t + "connect " + (layout ? device_text(*layout) : e.name);
+    case T::kDisconnect: return t + "disconnect";
+    case T::kButton: return t + "button " + input_label(e.key) + (e.value != 0 ? " down" : " up");
+    case T::kAxis: {
+      const auto v = static_cast<std::int16_t>(e.value);
+      const AxisUse use = axis_use(uses, e.key);
+      return t + (is_trigger(e.key) ? "trigger " : "axis ") + input_label(e.key) +
+             fmt(" %d %.3f ", v, mapping::normalise_axis(v)) + limit_text(use) + ": " + reading(use, v);
+    }
+    case T::kHat: return t + "hat " + std::to_string(e.key.index / 4) + " " + hat_text(e.value);
+    case T::kEnd: break;
+  }
+  return t + "end";
+}
+
+std::string render_inputs_screen(const input::InputState& state, const std::optional<input::DeviceLayout>& layout,
+                                 const AxisUses& uses, const std::string& heading) {
+  std::string out = heading + "\n";
+  if (!layout || !state.connected()) return fit(out + "controller: none connected, waiting\n");
+  // The GUID apart: a long name must not push it off the screen.
+  out += "controller: " + layout->name + (layout->game_controller ? " (game controller)" : " (joystick)") +
+         "\n  GUID " + layout->guid + "\n\nbuttons (* held)\n";
+  int column = 0;
+  for (const auto key : layout->buttons) {
+    out += fmt(" %c%3u %-13s", state.button(key).down ? '*' : ' ', static_cast<unsigned>(key.index),
+               input::input_name(key).c_str());
+    if (++column % kButtonsPerRow == 0) out += "\n";
+  }
+  if (column % kButtonsPerRow != 0) out += "\n";
+  if (layout->game_controller && layout->buttons.size() < input::kPadButtonNames.size()) {
+    std::string missing;
+    for (std::uint16_t b = 0; b < input::kPadButtonNames.size(); ++b) {
+      const InputKey key{InputKind::kPadButton, b};
+      if (std::find(layout->buttons.begin(), layout->buttons.end(), key) == layout->buttons.end()) {
+        missing += " " + input::input_name(key);
+      }
+    }
+    out += "  not in its SDL mapping:" + missing + "\n";
+  }
+  out += "\naxes               value\n";
+  for (const auto key : layout->axes) {
+    if (!is_trigger(key)) append_axis(out, state, key, uses);
+  }
+  if (layout->game_controller) {
+    out += "triggers\n";
+    for (const auto key : layout->axes) {
+      if (is_trigger(key)) append_axis(out, state, key, uses);
+    }
+  }
+  if (layout->hats > 0) {
+    out += "hats\n";
+    for (int h = 0; h < layout->hats; ++h) {
+      out += fmt("  %3d %-12s %s\n", h, ("hat" + std::to_string(h)).c_str(), hat_text(state.hat(h)).c_str());
+    }
+  }
+  return fit(out);
+}
+
+}  // namespace andros::view

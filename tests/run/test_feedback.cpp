@@ -1,0 +1,85 @@
+// Which feedback events two successive statuses show, and which one plays.
+#include <gtest/gtest.h>
+
+#include "andros/run/feedback.hpp"
+
+namespace andros::run {
+namespace {
+
+using mapping::EnableState;
+using E = mapping::FeedbackEvent;
+using Events = std::vector<E>;
+
+constexpr FeedbackStatus kIdle{false, EnableState::kNoController, true};
+constexpr FeedbackStatus kConnected{true, EnableState::kDeadmanReleased, true};
+constexpr FeedbackStatus kRefused{true, EnableState::kDeadmanNotFresh, true};
+constexpr FeedbackStatus kEnabled{true, EnableState::kEnabled, true};
+
+FeedbackStatus link_down(FeedbackStatus s) {
+  s.link_up = false;
+  return s;
+}
+
+TEST(FeedbackEvents, EachChangeGivesItsEvent) {
+  EXPECT_EQ(feedback_events(kIdle, kConnected), Events{E::kControllerBack});
+  EXPECT_EQ(feedback_events(kConnected, kEnabled), Events{E::kEnabled});
+  EXPECT_EQ(feedback_events(kEnabled, kConnected), Events{E::kDisabled});
+  EXPECT_EQ(feedback_events(kConnected, kRefused), Events{E::kDeadmanRefused});
+  EXPECT_EQ(feedback_events(kEnabled, link_down(kEnabled)), Events{E::kLinkLost});
+}
+
+TEST(FeedbackEvents, NoChangeNoEvent) {
+  for (const auto& s : {kIdle, kConnected, kRefused, kEnabled, link_down(kEnabled)}) {
+    EXPECT_TRUE(feedback_events(s, s).empty());
+  }
+  // The link coming back, and a controller lost, tell nothing (a lost one cannot be told).
+  EXPECT_TRUE(feedback_events(link_down(kConnected), kConnected).empty());
+  EXPECT_TRUE(feedback_events(kConnected, kIdle).empty());
+  EXPECT_TRUE(feedback_events(kEnabled, kIdle).empty());
+  EXPECT_TRUE(feedback_events(kRefused, kConnected).empty());
+}
+
+TEST(FeedbackEvents, SeveralAtOnceComeMostImportantFirst) {
+  // Plugged in with the deadman held (or held since start-up: stuck).
+  EXPECT_EQ(feedback_events(kIdle, kRefused), (Events{E::kDeadmanRefused, E::kControllerBack}));
+  // Resumed after a pause with the deadman still held.
+  EXPECT_EQ(feedback_events(kEnabled, kRefused), (Events{E::kDeadmanRefused, E::kDisabled}));
+  EXPECT_EQ(feedback_events(kEnabled, link_down(kConnected)), (Events{E::kLinkLost, E::kDisabled}));
+  EXPECT_EQ(feedback_events(link_down(kIdle), kEnabled), (Events{E::kEnabled, E::kControllerBack}));
+}
+
+class RecordingInput final : public input::InputSource {
+ public:
+  void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
+  [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
+  void feedback(const input::FeedbackPattern& pattern) override { played.push_back(pattern); }
+  std::vector<input::FeedbackPattern> played;
+};
+
+TEST(FeedbackNotifier, PlaysTheFirstEventThatHasAPattern) {
+  RecordingInput input;
+  auto table = mapping::default_feedback();
+  FeedbackNotifier notifier(table, input);
+  EXPECT_EQ(notifier.observe(kRefused), E::kDeadmanRefused);
+  ASSERT_EQ(input.played.size(), 1U);
+  EXPECT_EQ(input.played[0], *table[E::kDeadmanRefused]);
+  EXPECT_EQ(notifier.observe(kRefused), std::nullopt);
+  EXPECT_EQ(input.played.size(), 1U);
+
+  table[E::kDeadmanRefused].reset();
+  FeedbackNotifier without_refused(table, input);
+  EXPECT_EQ(without_refused.observe(kRefused), E::kControllerBack);
+  EXPECT_EQ(input.played.back(), *table[E::kControllerBack]);
+}
+
+TEST(FeedbackNotifier, AllOffPlaysNothing) {
+  RecordingInput input;
+  FeedbackNotifier notifier(mapping::FeedbackTable{}, input);
+  for (const auto& s : {kRefused, kConnected, kEnabled, link_down(kEnabled), kConnected, kIdle}) {
+    EXPECT_EQ(notifier.observe(s), std::nullopt);
+  }
+  EXPECT_TRUE(input.played.empty());
+}
+
+}  // namespace
+}  // namespace andros::run

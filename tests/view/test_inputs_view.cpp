@@ -1,0 +1,149 @@
+// The input tester's lines and screen, and the deadzones it reads from a mapping.
+#include <gtest/gtest.h>
+
+#include "andros/mapping/loader.hpp"
+#include "andros/view/inputs_view.hpp"
+#include "support/temp_dir.hpp"
+
+namespace andros::view {
+namespace {
+
+using input::InputEvent;
+using input::InputKey;
+using input::InputKind;
+using T = InputEvent::Type;
+
+constexpr InputKey kLeftX{InputKind::kPadAxis, 0};
+constexpr InputKey kLeftY{InputKind::kPadAxis, 1};
+constexpr InputKey kRightX{InputKind::kPadAxis, 2};
+constexpr InputKey kRightTrigger{InputKind::kPadAxis, 5};
+
+InputEvent event(std::int64_t t, T type, InputKey key = {}, int value = 0, std::string name = "") {
+  InputEvent e;
+  e.t_ms = t;
+  e.type = type;
+  e.key = key;
+  e.value = value;
+  e.name = std::move(name);
+  return e;
+}
+
+input::DeviceLayout pad_layout() {
+  input::DeviceLayout d{"Test Pad", "0300aaaa", true, {}, {}, 0};
+  for (std::uint16_t b = 0; b < 15; ++b) d.buttons.push_back({InputKind::kPadButton, b});  // no misc1, paddles, touchpad
+  for (std::uint16_t a = 0; a < 6; ++a) d.axes.push_back({InputKind::kPadAxis, a});
+  return d;
+}
+
+AxisUses core_uses() { return axis_uses(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/core.yaml")); }
+
+TEST(InputsView, AxisUsesAreTheBindingsThatReadEachAxis) {
+  const auto uses = core_uses();
+  EXPECT_EQ(uses.at(kLeftY).rest, AxisUse::Rest::kDeadzone);
+  EXPECT_DOUBLE_EQ(uses.at(kLeftY).limit, 0.1);
+  EXPECT_EQ(uses.at(kLeftY).signal, "drive");
+  EXPECT_TRUE(uses.at(kLeftY).invert);
+  EXPECT_EQ(uses.at(kRightX).rest, AxisUse::Rest::kBand);
+  EXPECT_EQ(uses.at(kRightX).signal, "pt_left/pt_right");
+  EXPECT_DOUBLE_EQ(uses.at(kRightTrigger).limit, 0.0);
+  EXPECT_FALSE(uses.contains(InputKey{InputKind::kPadAxis, 3}));  // righty: unbound
+  const auto unbound = axis_use(uses, InputKey{InputKind::kPadAxis, 3});
+  EXPECT_EQ(unbound.rest, AxisUse::Rest::kDeadzone);
+  EXPECT_DOUBLE_EQ(unbound.limit, 0.0);
+}
+
+TEST(InputsView, AxisUsesFindLayersAndTriggerDeadmen) {
+  testing::TempDir dir;
+  const auto uses = axis_uses(*mapping::load_mapping(dir.write("m.yaml",
+                                                              "robot: HD1\n"
+                                                              "deadman: lefttrigger\n"
+                                                              "layers:\n"
+                                                              "  arm:\n"
+                                                              "    hold: a\n"
+                                                              "    bindings:\n"
+                                                              "      - analog: drive\n"
+                                                              "        axis: righty\n"
+                                                              "        deadzone: 0.2\n")));
+  const auto deadman = uses.at(InputKey{InputKind::kPadAxis, 4});
+  EXPECT_EQ(deadman.rest, AxisUse::Rest::kThreshold);
+  EXPECT_DOUBLE_EQ(deadman.limit, 0.5);
+  EXPECT_EQ(deadman.signal, "deadman");
+  const auto righty = uses.at(InputKey{InputKind::kPadAxis, 3});
+  EXPECT_DOUBLE_EQ(righty.limit, 0.2);
+  EXPECT_EQ(righty.layer, "arm");
+  EXPECT_EQ(format_input_change(event(0, T::kAxis, {InputKind::kPadAxis, 3}, 9000), uses, std::nullopt),
+            "0 axis righty #3 9000 0.275 deadzone 0.20 drive in layer arm: moves");
+}
+
+TEST(InputsView, OneLinePerChangeByNameAndNumber) {
+  const auto uses = core_uses();
+  const auto pad = std::optional(pad_layout());
+  EXPECT_EQ(format_input_change(event(0, T::kConnect, {}, 0, "Test Pad"), uses, pad),
+            "0 connect Test Pad (game controller, GUID 0300aaaa)");
+  EXPECT_EQ(format_input_change(event(40, T::kButton, {InputKind::kPadButton, 11}, 1), uses, pad),
+            "40 button dpup #11 down");
+  EXPECT_EQ(format_input_change(event(80, T::kButton, {InputKind::kPadButton, 0}, 0), uses, pad), "80 button a #0 up");
+  EXPECT_EQ(format_input_change(event(120, T::kAxis, kLeftY, -1000), uses, pad),
+            "120 axis lefty #1 -1000 -0.031 deadzone 0.10 drive: at rest");
+  EXPECT_EQ(format_input_change(event(160, T::kAxis, kLeftY, -18112), uses, pad),
+            "160 axis lefty #1 -18112 -0.553 deadzone 0.10 drive: moves");
+  EXPECT_EQ(format_input_change(event(200, T::kAxis, kRightX, 16384), uses, pad),
+            "200 axis rightx #2 16384 0.500 threshold 0.50 pt_left/pt_right: on");
+  EXPECT_EQ(format_input_change(event(240, T::kAxis, {InputKind::kPadAxis, 4}, 300), uses, pad),
+            "240 trigger lefttrigger #4 300 0.009 deadzone 0.00 (default): moves");
+  EXPECT_EQ(format_input_change(event(280, T::kHat, {InputKind::kHat, 4}, 9), {}, std::nullopt), "280 hat 1 up+left");
+  EXPECT_EQ(format_input_change(event(320, T::kAxis, {InputKind::kJoyAxis, 2}, 0), {}, std::nullopt),
+            "320 axis 2 0 0.000 deadzone 0.00 (default): at rest");
+  EXPECT_EQ(format_input_change(event(360, T::kButton, {InputKind::kJoyButton, 7}, 1), {}, std::nullopt),
+            "360 button 7 down");
+  EXPECT_EQ(format_input_change(event(400, T::kDisconnect), uses, std::nullopt), "400 disconnect");
+}
+
+TEST(InputsView, TheScreenShowsEveryInputOfThePad) {
+  InputsBoard board(core_uses(), "heading line");
+  EXPECT_NE(board.compose().find("none connected"), std::string::npos);
+  const auto lines = board.update({event(0, T::kConnect, {}, 0, "Test Pad"),
+                                   event(0, T::kButton, {InputKind::kPadButton, 9}, 1),
+                                   event(0, T::kAxis, kLeftY, -32768)},
+                                  pad_layout());
+  EXPECT_EQ(lines.size(), 3U);
+  const auto screen = board.compose();
+  EXPECT_EQ(screen.rfind("heading line\n", 0), 0U);
+  EXPECT_NE(screen.find("controller: Test Pad (game controller)\n  GUID 0300aaaa\n"), std::string::npos);
+  EXPECT_NE(screen.find("*  9 leftshoulder"), std::string::npos) << screen;
+  EXPECT_NE(screen.find("   10 rightshoulder"), std::string::npos) << screen;
+  for (const auto name : {"a", "b", "x", "y", "back", "guide", "start", "leftstick", "dpright"}) {
+    EXPECT_NE(screen.find(" " + std::string(name) + " "), std::string::npos) << name;
+  }
+  EXPECT_NE(screen.find("not in its SDL mapping: misc1 paddle1 paddle2 paddle3 paddle4 touchpad"), std::string::npos);
+  EXPECT_NE(screen.find("    1 lefty        -32768 [=====|     ] moves   deadzone 0.10 drive\n"),
+            std::string::npos)
+      << screen;
+  EXPECT_NE(screen.find("triggers\n    4 lefttrigger       0 [|          ] at rest deadzone 0.00 (default)\n"),
+            std::string::npos)
+      << screen;
+  EXPECT_NE(screen.find("righttrigger"), std::string::npos);
+  for (std::size_t from = 0, to = 0; (to = screen.find('\n', from)) != std::string::npos; from = to + 1) {
+    EXPECT_LE(to - from, 79U) << screen.substr(from, to - from);
+  }
+}
+
+TEST(InputsView, TheScreenShowsAJoysticksNumberedInputsAndHats) {
+  InputsBoard board({}, "h");
+  input::DeviceLayout stick{"Stick", "0300bbbb", false, {}, {}, 1};
+  for (std::uint16_t b = 0; b < 12; ++b) stick.buttons.push_back({InputKind::kJoyButton, b});
+  for (std::uint16_t a = 0; a < 4; ++a) stick.axes.push_back({InputKind::kJoyAxis, a});
+  board.update({event(0, T::kConnect, {}, 0, "Stick"), event(0, T::kHat, {InputKind::kHat, 0}, 2),
+                event(0, T::kButton, {InputKind::kJoyButton, 11}, 1)},
+               stick);
+  const auto screen = board.compose();
+  EXPECT_NE(screen.find("controller: Stick (joystick)\n  GUID 0300bbbb\n"), std::string::npos);
+  EXPECT_NE(screen.find("* 11 11 "), std::string::npos) << screen;
+  EXPECT_NE(screen.find("    3 3 "), std::string::npos) << screen;
+  EXPECT_NE(screen.find("hats\n    0 hat0         right"), std::string::npos) << screen;
+  EXPECT_EQ(screen.find("triggers"), std::string::npos);
+  EXPECT_EQ(screen.find("not in its SDL mapping"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace andros::view
