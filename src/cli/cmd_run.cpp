@@ -24,6 +24,8 @@
 #include "commands.hpp"
 #include "engine_frames.hpp"
 #include "run_input.hpp"
+#include "run_reload.hpp"
+#include "run_service.hpp"
 #include "run_status.hpp"
 #include "sdl_options.hpp"
 
@@ -98,6 +100,7 @@ std::unique_ptr<io::Link> make_link(const RunConfig& config, const io::SimVehicl
 
 io::Request poll_requests(io::ShutdownSignals& signals, io::JobControlSignals& job) {
   if (signals.requested()) return io::Request::kStop;
+  if (signals.reload_requested()) return io::Request::kReload;
   switch (job.poll()) {
     case io::JobControlSignals::Event::kStopAsked: return io::Request::kSuspend;
     case io::JobControlSignals::Event::kContinued:
@@ -135,8 +138,29 @@ void suspend_process(io::JobControlSignals& job, std::optional<io::StatusDisplay
   if (display) display->start();
 }
 
+/// SIGHUP: the configuration and mapping read again, on the loop's thread
+/// between the reload's neutral frames and a fresh start. A bad file keeps
+/// the old settings, and says why.
+void reload_settings(const RunOptions& opt, RunConfig& config, ReloadableFrames& frames, RunStatusBoard& board,
+                     ServiceReporter& service) {
+  service.reloading();
+  try {
+    RunConfig fresh = resolve_config(opt);
+    if (auto why = needs_restart(config, fresh); !why.empty()) throw InputError(SourcePos{"reload"}, why);
+    frames.replace(make_engine_frames(fresh));
+    config = std::move(fresh);
+    board.set_robot(config.mapping.empty() ? config.robot : config.mapping);
+    spdlog::info("reloaded (SIGHUP): robot {}{}; not enabled until the deadman is pressed again",
+                 config.mapping.empty() ? config.robot : config.mapping, config.weapons ? ", WEAPONS ENABLED" : "");
+    service.reloaded("");
+  } catch (const std::exception& e) {
+    spdlog::error("reload (SIGHUP) failed, the old settings stay: {}", e.what());
+    service.reloaded(std::string("reload failed: ") + e.what());
+  }
+}
+
 int run_bridge(const RunOptions& opt) {
-  const RunConfig config = resolve_config(opt);
+  RunConfig config = resolve_config(opt);
   const std::int64_t rate_mhz = rate_millihertz(config);  // refuses a rate the link cannot carry
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
@@ -146,7 +170,7 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   io::ShutdownSignals signals;
   io::JobControlSignals job;
-  const auto frames = make_engine_frames(config);
+  ReloadableFrames frames(make_engine_frames(config));
   std::unique_ptr<InputSource> input;
   try {
     input = make_input_source(config.input, opt.sdl, [&signals] { return signals.requested(); });
@@ -166,7 +190,7 @@ int run_bridge(const RunOptions& opt) {
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == "sdl" ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
-  RunStatusBoard board(initial, *link, *frames, sim.get());
+  RunStatusBoard board(initial, *link, frames, sim.get());
   std::optional<io::StatusDisplay> display;
   if (io::is_interactive(STDOUT_FILENO)) display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
 
@@ -174,12 +198,19 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
-  io::Bridge bridge(*input, *frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
+  io::Bridge bridge(*input, frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
+  ServiceReporter service(io::ServiceNotifier::from_environment());
+  signals.reload_on_hangup();
   const io::RunControl control{
       [&] { return poll_requests(signals, job); },
-      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
-  bridge.run(control, [&board](const io::TickReport& r) { board.observe(r); });
+      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); },
+      [&] { reload_settings(opt, config, frames, board, service); }};
+  bridge.run(control, [&](const io::TickReport& r) {
+    board.observe(r);
+    service.observe(r, board.snapshot());
+  });
   display.reset();
+  service.stopping();
 
   const auto end = board.snapshot();
   std::string why = "end of the input";
@@ -207,7 +238,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "run",
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
-      "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
+      "frames, drain, close. SIGHUP (systemctl reload) rereads the config file and mapping:\n"
+      "neutral frames, then a fresh deadman press. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
       "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
       "to a built-in simulated vehicle (sim).");
   opt->cmd = cmd;

@@ -21,8 +21,8 @@ void RunStatusBoard::observe(const io::TickReport& r) {
     next.shutting_down = r.shutting_down;
     next.connected = r.input->connected();
     if (next.connected) next.controller = r.input->name().empty() ? "controller" : r.input->name();
-    next.enabled = frames_.enabled() && !r.shutting_down;
-    next.enable_text = frames_.enable_text();
+    next.enabled = frames_.enabled() && !r.shutting_down && !r.reloading;
+    next.enable_text = r.reloading ? "reloading the settings" : frames_.enable_text();
     next.layer = frames_.layer();
     next.link_state = link_.state();
     next.motion_allowed = link_.motion_allowed();
@@ -62,6 +62,11 @@ std::string RunStatusBoard::compose() const {
   io::RunStatus s = snapshot();
   if (vehicle_ != nullptr) s.vehicle = vehicle_->snapshot();
   return io::render_run_view(s, true);
+}
+
+void RunStatusBoard::set_robot(std::string robot) {
+  const std::lock_guard lock(mutex_);
+  status_.robot = std::move(robot);
 }
 
 io::RunStatus RunStatusBoard::snapshot() const {

@@ -22,6 +22,8 @@ class RunStatusBoard {
   void observe(const io::TickReport& report);
   /// The screen, for the display thread.
   [[nodiscard]] std::string compose() const;
+  /// After a reload: the robot (or mapping file) the view names.
+  void set_robot(std::string robot);
   /// The last status (after the run, for the closing line).
   [[nodiscard]] io::RunStatus snapshot() const;
 
