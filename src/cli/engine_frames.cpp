@@ -1,5 +1,7 @@
 #include "engine_frames.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include "andros/engine.hpp"
 #include "andros/mapping_loader.hpp"
 
@@ -34,6 +36,8 @@ class EngineFrames final : public io::FrameSource {
 
 std::unique_ptr<io::FrameSource> make_engine_frames(const RunConfig& config) {
   Mapping mapping = config.mapping.empty() ? load_robot_mapping(config.robot) : load_mapping(config.mapping);
+  spdlog::info("mapping: {}", config.mapping.empty() ? find_robot_mapping(config.robot, mapping_search_path()).string()
+                                                       : config.mapping);
   return std::make_unique<EngineFrames>(
       Engine(std::move(mapping), EngineOptions{.weapons = config.weapons, .code = config.code}));
 }
