@@ -150,8 +150,8 @@ void reload_settings(const RunOptions& opt, RunConfig& config, ReloadableFrames&
     frames.replace(make_engine_frames(fresh));
     config = std::move(fresh);
     board.set_robot(config.mapping.empty() ? config.robot : config.mapping);
-    spdlog::info("reloaded (SIGHUP): robot {}{}; not enabled until the deadman is pressed again",
-                 config.mapping.empty() ? config.robot : config.mapping, config.weapons ? ", WEAPONS ENABLED" : "");
+    spdlog::info("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
+                 mapping_file(config), config.weapons ? ", WEAPONS ENABLED" : "");
     service.reloaded("");
   } catch (const std::exception& e) {
     spdlog::error("reload (SIGHUP) failed, the old settings stay: {}", e.what());
@@ -198,6 +198,7 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
                config.weapons ? ", WEAPONS ENABLED" : "");
+  spdlog::info("mapping: {}", mapping_file(config));
   io::Bridge bridge(*input, frames, *link, io::BridgeOptions{.rate_millihertz = rate_mhz});
   ServiceReporter service(io::ServiceNotifier::from_environment());
   signals.reload_on_hangup();

@@ -1,7 +1,5 @@
 #include "engine_frames.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include "andros/engine.hpp"
 #include "andros/mapping_loader.hpp"
 
@@ -36,10 +34,12 @@ class EngineFrames final : public io::FrameSource {
 
 std::unique_ptr<io::FrameSource> make_engine_frames(const RunConfig& config) {
   Mapping mapping = config.mapping.empty() ? load_robot_mapping(config.robot) : load_mapping(config.mapping);
-  spdlog::info("mapping: {}", config.mapping.empty() ? find_robot_mapping(config.robot, mapping_search_path()).string()
-                                                       : config.mapping);
   return std::make_unique<EngineFrames>(
       Engine(std::move(mapping), EngineOptions{.weapons = config.weapons, .code = config.code}));
+}
+
+std::string mapping_file(const RunConfig& config) {
+  return config.mapping.empty() ? find_robot_mapping(config.robot, mapping_search_path()).string() : config.mapping;
 }
 
 }  // namespace andros::cli

@@ -215,14 +215,15 @@ def scenario_reload():
     first, second, third = run.frames(0, hup[1]), run.frames(hup[1], hup[2]), run.frames(hup[2])
     check(any(f["drive"] == 255 for f in first), "no hd1 driving before the reload")
     for name, frames in (("the reload", second), ("the failed reload", third)):
-        check(not any(f["drive"] == 255 for f in frames), f"hd1's mapping after {name}")
+        # Frames already on their way when the signal was sent come first (one or two; ten under load).
         start = next((i for i, f in enumerate(frames) if neutral(f)), len(frames))
-        check(start <= 2, f"no neutral frame on the tick after {name}")
+        check(start <= 10, f"{start} frames before the first neutral one after {name}")
+        check(not any(f["drive"] == 255 for f in frames[start:]), f"hd1's mapping after {name}")
         quiet = next((i for i, f in enumerate(frames[start:]) if not neutral(f)), None)
         # The deadman stays held through the reload: 2 s of neutral frames until the script presses it afresh.
         check(quiet is not None and quiet >= 25, f"{quiet} neutral frames after {name}: no fresh press required")
         check(any(f["drive"] == 0 for f in frames), f"plain.yaml does not drive after {name}")
-    check("reloaded (SIGHUP): robot plain.yaml" in err or "reloaded (SIGHUP): robot " in err, f"no reload line: {err}")
+    check(f"reloaded (SIGHUP): mapping {TMP}/plain.yaml;" in err, f"no reload line: {err}")
     check(f"reload (SIGHUP) failed, the old settings stay: {conf}:2" in err and "R2D2" in err,
           f"the failed reload does not say why: {err}")
     check(any("reload failed: " in m and "R2D2" in m for _, m, _ in run.with_text("STATUS=")),
