@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "andros/config.hpp"
@@ -146,7 +147,7 @@ void reload_settings(const RunOptions& opt, RunConfig& config, ReloadableFrames&
   service.reloading();
   try {
     RunConfig fresh = resolve_config(opt);
-    if (auto why = needs_restart(config, fresh); !why.empty()) throw InputError(SourcePos{"reload"}, why);
+    if (auto why = needs_restart(config, fresh); !why.empty()) throw std::runtime_error(why);
     frames.replace(make_engine_frames(fresh));
     config = std::move(fresh);
     board.set_robot(config.mapping.empty() ? config.robot : config.mapping);
@@ -239,10 +240,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "run",
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
-      "frames, drain, close. SIGHUP (systemctl reload) rereads the config file and mapping:\n"
-      "neutral frames, then a fresh deadman press. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
-      "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
-      "to a built-in simulated vehicle (sim).");
+      "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
+      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file and the\n"
+      "mapping: neutral frames, then a fresh deadman press. Flags override the config file.\n"
+      "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->cmd = cmd;
   cmd->add_option("--config", opt->config,
                   "config file (key=value; default: $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf,\n"

@@ -210,6 +210,9 @@ def scenario_reload():
     write(conf, f"serialport={LINK}\nrobot=R2D2\n")
     hup.append(len(run.capture))
     run.proc.send_signal(signal.SIGHUP)
+    run.pump(1.0)  # still in the neutral stretch: the next fresh press is at 6.3 s
+    write(conf, f"serialport={LINK}\nmapping=plain.yaml\ncode=3C\n")  # the link's code is not changed by a reload
+    run.proc.send_signal(signal.SIGHUP)
     code, err = run.finish(15)
     check(code == 0, f"exit {code}: {err}")
     first, second, third = run.frames(0, hup[1]), run.frames(hup[1], hup[2]), run.frames(hup[2])
@@ -226,9 +229,11 @@ def scenario_reload():
     check(f"reloaded (SIGHUP): mapping {TMP}/plain.yaml;" in err, f"no reload line: {err}")
     check(f"reload (SIGHUP) failed, the old settings stay: {conf}:2" in err and "R2D2" in err,
           f"the failed reload does not say why: {err}")
+    check("failed, the old settings stay: code 01 -> 3C: a reload changes the robot" in err,
+          f"a code changed by a reload is not refused: {err}")
     check(any("reload failed: " in m and "R2D2" in m for _, m, _ in run.with_text("STATUS=")),
           "no STATUS= for the failed reload")
-    check(len(run.with_text("RELOADING=1")) == 2 and len(run.with_text("READY=1")) == 3,
+    check(len(run.with_text("RELOADING=1")) == 3 and len(run.with_text("READY=1")) == 4,
           "RELOADING=1 / READY=1 not once per reload")
     check(all(neutral(f) for f in third[-3:]), "the run did not end on neutral frames")
 
