@@ -1,4 +1,3 @@
-#include "andros/base/clock.hpp"
 #include "andros/run/bridge.hpp"
 
 #include <time.h>
@@ -6,6 +5,8 @@
 #include <cerrno>
 #include <exception>
 #include <utility>
+
+#include "andros/base/clock.hpp"
 
 namespace andros::run {
 

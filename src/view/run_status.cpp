@@ -1,7 +1,8 @@
-#include "andros/base/clock.hpp"
 #include "andros/view/run_status.hpp"
 
 #include <spdlog/spdlog.h>
+
+#include "andros/base/clock.hpp"
 
 namespace andros::view {
 namespace {
