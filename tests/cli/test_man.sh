@@ -52,11 +52,13 @@ complete_words() {
 }
 expect_offers() {  # WANTED WORDS...: WANTED is among the offers
   local want=$1; shift
-  complete_words "$@" | grep -qxF -- "$want" || fail "completing '$*' does not offer '$want': $(complete_words "$@" | tr '\n' ' ')"
+  local offers; offers=$(complete_words "$@")  # whole, then searched: grep -q on a pipe would cut it short (SIGPIPE)
+  grep -qxF -- "$want" <<<"$offers" || fail "completing '$*' does not offer '$want': $(tr '\n' ' ' <<<"$offers")"
 }
 expect_not_offered() {
   local unwanted=$1; shift
-  ! complete_words "$@" | grep -qxF -- "$unwanted" || fail "completing '$*' offers '$unwanted'"
+  local offers; offers=$(complete_words "$@")
+  ! grep -qxF -- "$unwanted" <<<"$offers" || fail "completing '$*' offers '$unwanted'"
 }
 expect_offers run andros-bridge r
 expect_offers replay andros-bridge r
