@@ -75,10 +75,25 @@ TEST(FrameTiming, MeasuresRateAndJitter) {
   for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
   const auto s = t.summary(49 * p);
   EXPECT_EQ(s.count, 50u);
-  EXPECT_EQ(s.rate_hz, 25);  // the frames of the last second
+  EXPECT_NEAR(s.rate_hz, 25.0, 0.02);  // 1 / the mean period
   EXPECT_NEAR(s.period_ms, 40.0, 0.05);
   EXPECT_NEAR(s.jitter_ms, 1.0, 0.05);
   EXPECT_NEAR(s.worst_ms, 1.0, 0.05);
+}
+
+TEST(FrameTiming, TheRateIsTheWindowsMeanNotACountThatFlipsWithThePhase) {
+  // 25 Hz with a little jitter, read at every phase of a period: a count of
+  // the last second said 25 or 26; the window's mean says 25.0 each time.
+  timing::FrameTiming t;
+  const std::int64_t p = 40'000'000;
+  for (int i = 0; i < 200; ++i) t.add(i * p + (i % 3) * 300'000);
+  for (std::int64_t phase = 0; phase < p; phase += p / 8) {
+    const auto s = t.summary(199 * p + phase);
+    EXPECT_NEAR(s.rate_hz, 25.0, 0.05) << phase;
+  }
+  // A stream that stopped: 0 once no frame came for 2 periods (at least 1 s).
+  EXPECT_GT(t.summary(199 * p + 900'000'000).rate_hz, 24.9);
+  EXPECT_EQ(t.summary(199 * p + 1'100'000'000).rate_hz, 0.0);
 }
 
 }  // namespace
