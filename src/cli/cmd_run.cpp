@@ -97,6 +97,10 @@ int run_bridge(const RunOptions& opt) {
   auto mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
                                         : mapping::load_mapping(config.mapping);
   const int center = mapping->center;
+  const std::string robot = mapping->robot.value_or(config.robot);
+  const std::string mapping_file = mapping->file;
+  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", robot, mapping_file, config.port, config.code,
+               config.weapons ? ", WEAPONS ENABLED" : "");
   const mapping::FeedbackTable feedback_table = mapping->feedback;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
@@ -114,25 +118,26 @@ int run_bridge(const RunOptions& opt) {
   const auto link = make_link(config, sim.get());
 
   view::RunStatus initial;
-  initial.robot = config.mapping.empty() ? config.robot : config.mapping;
+  initial.robot = robot;
+  initial.mapping_file = mapping_file;
+  initial.weapons = config.weapons;
   initial.code = config.code;
   initial.center = center;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
-  const auto compose = [&board, &sim] {
+  const auto compose = [&board, &sim](view::TermSize size) {
     view::RunStatus status = board.snapshot();
     if (sim) status.vehicle = sim->snapshot();
-    return view::render_run_view(status, true);
+    return view::render_run_view(status, size);
   };
   std::optional<view::StatusDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();
-  spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
-               config.weapons ? ", WEAPONS ENABLED" : "");
+  spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   run::Bridge bridge(*input, *frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   const run::RunControl control{
       [&] { return poll_requests(stop, job); },
