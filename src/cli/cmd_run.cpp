@@ -99,8 +99,6 @@ int run_bridge(const RunOptions& opt) {
   const int center = mapping->center;
   const std::string robot = mapping->robot.value_or(config.robot);
   const std::string mapping_file = mapping->file;
-  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", robot, mapping_file, config.port, config.code,
-               config.weapons ? ", WEAPONS ENABLED" : "");
   const mapping::FeedbackTable feedback_table = mapping->feedback;
   const auto frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
@@ -116,6 +114,9 @@ int run_bridge(const RunOptions& opt) {
   std::unique_ptr<link::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());
+  // Logged once every setting has been checked, so that an error stays one line.
+  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", robot, mapping_file, config.port, config.code,
+               config.weapons ? ", WEAPONS ENABLED" : "");
 
   view::RunStatus initial;
   initial.robot = robot;
