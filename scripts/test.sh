@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds, runs every test:
 # the suite, the same suite again under AddressSanitizer + UndefinedBehaviorSanitizer
-# (build-asan/), and, where clang's libFuzzer is installed, each fuzz target briefly.
+# (build-asan/), the Debian package (built by scripts/package.sh, then checked by
+# tests/package/test_package.sh), and, where clang's libFuzzer is installed, each
+# fuzz target briefly.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,6 +31,12 @@ echo "== build and test under ASan + UBSan ($build-asan)"
 BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600 | tee -a "$summary"
+
+echo "== Debian package: build (scripts/package.sh) and check (tests/package/test_package.sh)"
+package_start=$SECONDS
+scripts/package.sh >"$build/package.log" 2>&1 || { tail -40 "$build/package.log"; exit 1; }
+tests/package/test_package.sh dist/andros-bridge_*.deb
+echo "== Debian package: $((SECONDS - package_start)) s"
 
 if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
   echo "== fuzz each target briefly"

@@ -5,9 +5,10 @@ usage: generate.py ANDROS_BRIDGE_BINARY SOURCE_DIR OUTPUT_DIR
 
 One source each, so nothing can drift: andros-bridge(1) and the completion
 come from the program's own command line (`andros-bridge help-data`, walked
-from the CLI11 definitions that print --help); andros-bridge.conf(5),
-andros-bridge-mapping(5) and andros-bridge-events(5) from the docs/ pages that
-users read.
+from the CLI11 definitions that print --help); the keys of
+andros-bridge.conf(5) from the settings table (through help-data), its prose
+from docs/running.md; andros-bridge-mapping(5) and andros-bridge-events(5)
+from the docs/ pages that users read.
 """
 import datetime
 import json
@@ -94,6 +95,34 @@ def manual_1(data, date):
     return "\n".join(out) + "\n"
 
 
+def config_keys(data):
+    """KEYS of andros-bridge.conf(5), from the settings table."""
+    out = [".SH KEYS"]
+    for row in data["config_keys"]:
+        tag = "\\fB" + md2man.escape(row["key"]) + "\\fR=\\fI" + md2man.escape(row["value"] or "enabled") + "\\fR"
+        text = row["help"]
+        if row["default"]:
+            text += " (default: " + row["default"] + ")"
+        if row["file_relative"]:
+            text += "; a relative path is taken from the config file's folder"
+        text += "; on the command line: " + row["flag"] + "."
+        out += [".TP", tag, text_lines(text)]
+    return "\n".join(out) + "\n"
+
+
+def without_tables(markdown):
+    """The page without its tables (a table the man page makes from the program instead)."""
+    out = []
+    for line in markdown.splitlines():
+        if not line.lstrip().startswith("|"):
+            out.append(line)
+        else:
+            prose = [i for i, l in enumerate(out) if l.strip()]
+            if prose and out[prose[-1]].endswith(":"):
+                out[prose[-1]] += " see KEYS below."
+    return "\n".join(out)
+
+
 def section(markdown, heading):
     """The '## heading' section of a page, its heading made the page's title."""
     lines = markdown.splitlines()
@@ -119,7 +148,8 @@ def main():
         "andros-bridge.1": manual_1(data, date),
         "andros-bridge.conf.5": md2man.page(
             "andros-bridge.conf", "5", "the andros-bridge configuration file",
-            md2man.convert(section(read("running.md"), "The configuration file")), date, data["version"]),
+            md2man.convert(without_tables(section(read("running.md"), "The configuration file")))
+            + config_keys(data), date, data["version"]),
         "andros-bridge-mapping.5": md2man.page(
             "andros-bridge-mapping", "5", "andros-bridge mapping files",
             md2man.convert(read("mapping.md")), date, data["version"]),

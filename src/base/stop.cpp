@@ -38,12 +38,22 @@ void StopRequest::raise() {
 bool StopRequest::requested() {
   if (raised_) return true;
   if (!signals_) return false;
-  if (const int sig = signals_->take()) {
+  while (const int sig = signals_->take()) {
+    if (sig == SIGHUP && hangup_reloads_) {
+      reload_pending_ = true;
+      continue;
+    }
     int none = 0;
     signal_.compare_exchange_strong(none, sig);
     raise();
+    break;
   }
   return raised_;
+}
+
+bool StopRequest::reload_requested() {
+  requested();
+  return reload_pending_.exchange(false);
 }
 
 bool StopRequest::sleep_until(std::int64_t abs_ns) { return !wait(-1, abs_ns) && !requested(); }

@@ -1,4 +1,3 @@
-#include "andros/base/clock.hpp"
 #include "andros/base/write_fully.hpp"
 
 #include <poll.h>

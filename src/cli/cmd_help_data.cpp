@@ -1,12 +1,14 @@
 // `andros-bridge help-data`: the command line as JSON, walked from the same
-// CLI11 definitions that print --help. The man page andros-bridge(1) and the
-// bash completion are generated from it at build time (scripts/man/), so that
-// neither can drift from the program.
+// CLI11 definitions that print --help, and the config file's keys from the
+// settings table. The man pages andros-bridge(1) and andros-bridge.conf(5)
+// and the bash completion are generated from it at build time (scripts/man/),
+// so that none can drift from the program.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "andros/base/error.hpp"
+#include "andros/cli/settings.hpp"
 #include "andros/protocol/robots.hpp"
 #include "andros/version.hpp"
 #include "commands.hpp"
@@ -48,6 +50,16 @@ void add_help_data_command(CLI::App& app, int& exit_code) {
   cmd->callback([&app, &exit_code] {
     nlohmann::json data = describe_app(app);
     data["version"] = kVersion;
+    data["config_keys"] = nlohmann::json::array();
+    for (const auto& row : settings_table()) {
+      if (row.key.empty()) continue;
+      data["config_keys"].push_back({{"key", row.key},
+                                     {"flag", flag_name(row)},
+                                     {"value", row.value_name},
+                                     {"default", default_text(row)},
+                                     {"help", help_text(row)},
+                                     {"file_relative", row.file_relative}});
+    }
     data["robots"] = nlohmann::json::array();
     for (const auto robot : protocol::kRobotTypes) data["robots"].push_back(robot);
     std::cout << data.dump(1) << '\n';

@@ -7,9 +7,9 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/stop.hpp"
+#include "andros/cli/learn_session.hpp"
 #include "andros/mapping/loader.hpp"
 #include "commands.hpp"
-#include "andros/cli/learn_session.hpp"
 #include "sdl_options.hpp"
 
 namespace andros::cli {

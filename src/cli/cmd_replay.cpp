@@ -7,8 +7,8 @@
 #include <string>
 
 #include "andros/base/error.hpp"
-#include "andros/cli/command_line.hpp"
 #include "andros/base/text_file.hpp"
+#include "andros/cli/command_line.hpp"
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/frame_output.hpp"

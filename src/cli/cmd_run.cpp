@@ -7,6 +7,7 @@
 #include <csignal>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "andros/base/error.hpp"
@@ -17,14 +18,14 @@
 #include "andros/link/serial_link.hpp"
 #include "andros/link/sim_vehicle.hpp"
 #include "andros/link/tcp_link.hpp"
-#include "andros/mapping/loader.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
 #include "andros/view/run_status.hpp"
 #include "andros/view/status_display.hpp"
 #include "commands.hpp"
 #include "run_input.hpp"
+#include "run_reload.hpp"
+#include "run_service.hpp"
 #include "sdl_options.hpp"
 
 namespace andros::cli {
@@ -46,6 +47,7 @@ std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVeh
 
 run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
   if (stop.requested()) return run::Request::kStop;
+  if (stop.reload_requested()) return run::Request::kReload;
   switch (job.poll()) {
     case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;
     case JobControlSignals::Event::kContinued:
@@ -83,8 +85,31 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
   if (display) display->start();
 }
 
+/// SIGHUP: the configuration and mapping read again, on the loop's thread
+/// between the reload's neutral frames and a fresh start. A bad file keeps
+/// the old settings, and says why.
+void reload_settings(const RunOptions& opt, Settings& settings, ReloadableFrames& frames,
+                     run::FeedbackNotifier& feedback, view::RunStatusBoard& board, ServiceReporter& service) {
+  service.reloading();
+  try {
+    Settings fresh = resolve_settings(*opt.settings);
+    if (auto why = needs_restart(settings, fresh); !why.empty()) throw std::runtime_error(why);
+    EngineSetup setup = load_engine(fresh);
+    frames.replace(std::move(setup.frames));
+    feedback.set_table(setup.feedback);
+    settings = std::move(fresh);
+    board.set_mapping(setup.robot, setup.mapping_file, settings.weapons, setup.center);
+    spdlog::info("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
+                 setup.mapping_file, settings.weapons ? ", WEAPONS ENABLED" : "");
+    service.reloaded("");
+  } catch (const std::exception& e) {
+    spdlog::error("reload (SIGHUP) failed, the old settings stay: {}", e.what());
+    service.reloaded(std::string("reload failed: ") + e.what());
+  }
+}
+
 int run_bridge(const RunOptions& opt) {
-  const Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
+  Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
   const std::int64_t rate_mhz = config.rate.millihertz;
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
@@ -94,14 +119,8 @@ int run_bridge(const RunOptions& opt) {
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   StopRequest stop(kStopSignals);
   JobControlSignals job;
-  auto mapping = config.mapping.empty() ? mapping::load_robot_mapping(config.robot)
-                                        : mapping::load_mapping(config.mapping);
-  const int center = mapping->center;
-  const std::string robot = mapping->robot.value_or(config.robot);
-  const std::string mapping_file = mapping->file;
-  const mapping::FeedbackTable feedback_table = mapping->feedback;
-  const auto frames = run::make_engine_frames(
-      mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = config.weapons, .code = config.code}));
+  EngineSetup engine = load_engine(config);
+  ReloadableFrames frames(std::move(engine.frames));
   std::unique_ptr<input::InputSource> input;
   try {
     input = make_input_source(config.input, opt.sdl, [&stop] { return stop.requested(); });
@@ -115,15 +134,15 @@ int run_bridge(const RunOptions& opt) {
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());
   // Logged once every setting has been checked, so that an error stays one line.
-  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", robot, mapping_file, config.port, config.code,
-               config.weapons ? ", WEAPONS ENABLED" : "");
+  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", engine.robot, engine.mapping_file, config.port,
+               config.code, config.weapons ? ", WEAPONS ENABLED" : "");
 
   view::RunStatus initial;
-  initial.robot = robot;
-  initial.mapping_file = mapping_file;
+  initial.robot = engine.robot;
+  initial.mapping_file = engine.mapping_file;
   initial.weapons = config.weapons;
   initial.code = config.code;
-  initial.center = center;
+  initial.center = engine.center;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
@@ -139,17 +158,22 @@ int run_bridge(const RunOptions& opt) {
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
-  run::Bridge bridge(*input, *frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  run::Bridge bridge(*input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  // On the loop's thread, which owns SDL: the rumble starts without waiting.
+  run::FeedbackNotifier feedback(engine.feedback, *input);
+  ServiceReporter service(ServiceNotifier::from_environment());
+  stop.reload_on_hangup();
   const run::RunControl control{
       [&] { return poll_requests(stop, job); },
-      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); }};
-  // On the loop's thread, which owns SDL: the rumble starts without waiting.
-  run::FeedbackNotifier feedback(feedback_table, *input);
+      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); },
+      [&] { reload_settings(opt, config, frames, feedback, board, service); }};
   bridge.run(control, [&](const run::TickReport& r) {
     board.observe(r);
-    if (!r.shutting_down) feedback.observe(run::feedback_status(r));
+    if (!r.shutting_down && !r.reloading) feedback.observe(run::feedback_status(r));
+    service.observe(r, board.snapshot());
   });
   display.reset();
+  service.stopping();
 
   const auto end = board.snapshot();
   std::string why = "end of the input";
@@ -178,8 +202,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
       "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
-      "deadman needs a fresh press. Flags override the config file. With no port, frames go\n"
-      "to a built-in simulated vehicle (sim).");
+      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file and the\n"
+      "mapping: neutral frames, then a fresh deadman press. Flags override the config file.\n"
+      "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });

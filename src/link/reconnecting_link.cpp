@@ -1,4 +1,3 @@
-#include "andros/base/clock.hpp"
 #include "andros/link/reconnecting_link.hpp"
 
 #include <spdlog/spdlog.h>
@@ -8,6 +7,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+
+#include "andros/base/clock.hpp"
 
 namespace andros::link {
 

@@ -1,5 +1,3 @@
-#include "andros/base/clock.hpp"
-#include "andros/base/text.hpp"
 #include "andros/link/tcp_link.hpp"
 
 #include <fcntl.h>
@@ -14,7 +12,9 @@
 #include <cstddef>
 #include <cstring>
 
+#include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 
 namespace andros::link {
 

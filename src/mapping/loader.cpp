@@ -4,8 +4,8 @@
 #include <set>
 
 #include "andros/protocol/robots.hpp"
-#include "merge.hpp"
 #include "feedback_reader.hpp"
+#include "merge.hpp"
 #include "yaml_reader.hpp"
 
 namespace andros::mapping {

@@ -19,7 +19,13 @@ std::vector<fs::path> mapping_search_path() {
     dirs.emplace_back(fs::path(home) / ".config" / "andros-bridge" / "mappings");
   }
   std::error_code ec;
-  if (fs::is_directory(kSourceMappingsDir, ec)) dirs.emplace_back(kSourceMappingsDir);
+  if (*kSourceMappingsDir != '\0' && fs::is_directory(kSourceMappingsDir, ec)) dirs.emplace_back(kSourceMappingsDir);
+  // Beside the binary: an installed tree unpacked somewhere else (dpkg-deb -x) finds its own.
+  const auto exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto beside = (exe.parent_path() / kMappingsFromBinDir).lexically_normal();
+    if (beside != fs::path(kInstalledMappingsDir) && fs::is_directory(beside, ec)) dirs.push_back(beside);
+  }
   dirs.emplace_back(kInstalledMappingsDir);
   return dirs;
 }

@@ -1,4 +1,3 @@
-#include "andros/base/clock.hpp"
 #include "andros/run/bridge.hpp"
 
 #include <time.h>
@@ -6,6 +5,8 @@
 #include <cerrno>
 #include <exception>
 #include <utility>
+
+#include "andros/base/clock.hpp"
 
 namespace andros::run {
 
@@ -32,6 +33,13 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
         skipped = 0;
         continue;
       }
+      if (request == Request::kReload) {
+        send_neutral(start_ns, tick, observe, true);
+        control.reload();
+        frames_.restart();
+        skipped = 0;
+        continue;
+      }
       if (request == Request::kResumed) frames_.restart();
       const std::int64_t t_ms = schedule_.tick_ms(tick);
       // The input is read right after the tick's time: never older than the frame.
@@ -55,6 +63,12 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
 
 /// Neutral frames from tick `tick` (not sent yet) on.
 void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe) {
+  shutdown_report_.neutral_sent = send_neutral(start_ns, tick, observe, false);
+  shutdown_report_.neutral_wanted = options_.shutdown_frames;
+  shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
+}
+
+int Bridge::send_neutral(std::int64_t start_ns, std::int64_t& tick, const Observer& observe, bool reloading) {
   const protocol::DataBytes neutral = frames_.neutral();
   const protocol::Frame frame = protocol::encode(neutral);
   int sent = 0;
@@ -67,11 +81,12 @@ void Bridge::shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& 
     sleep_until_ns_uninterrupted(start_ns + schedule_.tick_ns(tick));
     const link::SendResult result = link_.send(frame, monotonic_ns());
     if (result == link::SendResult::kSent) ++sent;
-    observe(report(tick, schedule_.tick_ms(tick), 0, neutral, result, true));
+    TickReport r = report(tick, schedule_.tick_ms(tick), 0, neutral, result, !reloading);
+    r.reloading = reloading;
+    observe(r);
   }
-  shutdown_report_.neutral_sent = sent;
-  shutdown_report_.neutral_wanted = options_.shutdown_frames;
-  shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
+  tick = schedule_.next_tick(tick, monotonic_ns() - start_ns);
+  return sent;
 }
 
 TickReport Bridge::report(std::int64_t tick, std::int64_t t_ms, std::int64_t skipped,

@@ -15,6 +15,7 @@
 #include <deque>
 #include <thread>
 
+#include "andros/base/service_notify.hpp"
 #include "andros/base/write_fully.hpp"
 #include "andros/view/status_display.hpp"
 
@@ -48,6 +49,17 @@ const char* level_colour(spdlog::level::level_enum level) {
     case spdlog::level::err: return "\x1b[31m\x1b[1m";
     case spdlog::level::critical: return "\x1b[1m\x1b[41m";
     default: return "\x1b[36m";
+  }
+}
+
+/// sd-daemon(3)'s priority prefixes (syslog levels).
+int syslog_priority(spdlog::level::level_enum level) {
+  switch (level) {
+    case spdlog::level::critical: return 2;
+    case spdlog::level::err: return 3;
+    case spdlog::level::warn: return 4;
+    case spdlog::level::info: return 6;
+    default: return 7;
   }
 }
 
@@ -100,6 +112,7 @@ void FdLogSink::write_out(const std::shared_ptr<Queue>& q) {
 FdLogSink::FdLogSink(int fd, Options options)
     : queue_(std::make_shared<Queue>()),
       colour_(options.colour),
+      priority_prefix_(options.priority_prefix),
       formatter_(std::make_unique<spdlog::pattern_formatter>()) {
   queue_->fd = fd;
   queue_->name = std::move(options.name);
@@ -129,7 +142,8 @@ FdLogSink::~FdLogSink() {
   else queue_->thread.detach();
 }
 
-void FdLogSink::write_line(std::string line) {
+void FdLogSink::write_line(std::string line, int priority) {
+  if (priority_prefix_) line.insert(0, "<" + std::to_string(priority) + ">");
   line += '\n';
   const std::lock_guard lock(queue_->mutex);
   if (queue_->failed || queue_->exited) {
@@ -174,7 +188,7 @@ void FdLogSink::log(const spdlog::details::log_msg& msg) {
     line.insert(msg.color_range_end, "\x1b[m");
     line.insert(msg.color_range_start, level_colour(msg.level));
   }
-  write_line(std::move(line));
+  write_line(std::move(line), syslog_priority(msg.level));
 }
 
 void FdLogSink::flush() { flush_for(queue_->flush_wait_ms); }
@@ -191,10 +205,11 @@ void FdLogSink::set_formatter(std::unique_ptr<spdlog::formatter> formatter) {
 std::shared_ptr<FdLogSink> install_stderr_log() {
   FdLogSink::Options options;
   options.colour = is_interactive(STDERR_FILENO);
+  options.priority_prefix = is_journal_stream(STDERR_FILENO);
   if (isatty(STDOUT_FILENO) != 0 && !same_file(STDOUT_FILENO, STDERR_FILENO)) options.note_fd = STDOUT_FILENO;
   auto sink = std::make_shared<FdLogSink>(STDERR_FILENO, options);
   spdlog::set_default_logger(std::make_shared<spdlog::logger>("andros-bridge", sink));
-  spdlog::set_pattern("%^%l%$: %v");
+  spdlog::set_pattern(options.priority_prefix ? "%v" : "%^%l%$: %v");
   return sink;
 }
 

@@ -1,7 +1,8 @@
-#include "andros/base/clock.hpp"
 #include "andros/view/run_status.hpp"
 
 #include <spdlog/spdlog.h>
+
+#include "andros/base/clock.hpp"
 
 namespace andros::view {
 namespace {
@@ -22,8 +23,8 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.shutting_down = r.shutting_down;
     next.connected = r.connected;
     if (next.connected) next.controller = r.controller.empty() ? "controller" : r.controller;
-    next.enabled = r.engine.enable == mapping::EnableState::kEnabled && !r.shutting_down;
-    next.enable_text = enable_text(r.engine);
+    next.enabled = r.engine.enable == mapping::EnableState::kEnabled && !r.shutting_down && !r.reloading;
+    next.enable_text = r.reloading ? "reloading the settings" : enable_text(r.engine);
     next.layer = r.engine.layer;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
@@ -57,6 +58,14 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
   }
+}
+
+void RunStatusBoard::set_mapping(std::string robot, std::string mapping_file, bool weapons, int center) {
+  const std::lock_guard lock(mutex_);
+  status_.robot = std::move(robot);
+  status_.mapping_file = std::move(mapping_file);
+  status_.weapons = weapons;
+  status_.center = center;
 }
 
 RunStatus RunStatusBoard::snapshot() const {

@@ -102,5 +102,23 @@ TEST(StopRequest, OnlyItsOwnSignalsAsk) {
   EXPECT_FALSE(code_only.requested());
 }
 
+TEST(StopRequest, AHangUpStopsUntilItIsMadeAReload) {
+  {
+    StopRequest stop(kStopSignals);
+    raise(SIGHUP);  // blocked: pending, not fatal
+    EXPECT_TRUE(stop.requested());
+    EXPECT_EQ(stop.signal_number(), SIGHUP);
+  }
+  StopRequest stop(kStopSignals);
+  stop.reload_on_hangup();
+  raise(SIGHUP);
+  EXPECT_FALSE(stop.requested());
+  EXPECT_TRUE(stop.reload_requested());
+  EXPECT_FALSE(stop.reload_requested());  // once per signal
+  raise(SIGTERM);
+  EXPECT_TRUE(stop.requested());
+  EXPECT_EQ(stop.signal_number(), SIGTERM);
+}
+
 }  // namespace
 }  // namespace andros

@@ -88,7 +88,7 @@ def job_control(bin_, data, port):
     t0 = port.snapshot()[0][0]  # tick 0: the script's time 0
     proc.send_signal(signal.SIGTSTP)
     stopped = wait_stopped(proc)
-    before = port.snapshot()
+    before = port.settled()
     if not stopped:
         fail("not stopped after SIGTSTP")
     tail = [d for _, d, _ in before[-3:]]
@@ -125,7 +125,7 @@ def background_stop(bin_, data, port):
     proc.send_signal(signal.SIGTTOU)
     if not wait_stopped(proc):
         fail("not stopped after SIGTTOU")
-    before = port.snapshot()
+    before = port.settled()
     if [d for _, d, _ in before[-3:]] != [128, 128, 128]:
         fail(f"the frames before the stop do not end neutral: drive {[d for _, d, _ in before[-6:]]}")
     proc.send_signal(signal.SIGCONT)

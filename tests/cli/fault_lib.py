@@ -53,6 +53,20 @@ class Port:
         with self.lock:
             return list(self.frames)
 
+    def settled(self, quiet=0.3, timeout=5):
+        """The frames once none has arrived for `quiet` seconds (at most `timeout`): what a
+        stopped process sent, with the last frames read off the pty too."""
+        deadline = time.monotonic() + timeout
+        last, since = self.snapshot(), time.monotonic()
+        while time.monotonic() < deadline:
+            time.sleep(0.02)
+            now = self.snapshot()
+            if len(now) != len(last):
+                last, since = now, time.monotonic()
+            elif time.monotonic() - since >= quiet:
+                break
+        return last
+
     def wait(self, what, timeout):
         """Waits until what(frames) is true; False after timeout seconds."""
         deadline = time.monotonic() + timeout

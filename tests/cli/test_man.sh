@@ -33,10 +33,17 @@ while IFS=$'\t' read -r path flag; do
   [[ -z $flag ]] || grep -qF -- "$flag" <<<"$text" || fail "andros-bridge(1) does not name $flag of '$path'"
 done <"$TMP/expected"
 grep -q "WOLVERINE" <<<"$text" || fail "andros-bridge(1) does not list the robot types"
+# andros-bridge.conf(5) describes every key of the settings table, and
+# docs/running.md's table of keys lists exactly those.
 conf=$(groff -man -Tutf8 -P-c -P-b -P-u "$MAN/andros-bridge.conf.5" 2>/dev/null)
-for key in baudrate serialport robot code rate mapping weapons input; do
-  grep -q "^ *$key\b" <<<"$conf" || fail "andros-bridge.conf(5) does not describe the key $key"
+keys=$(python3 -c 'import json,sys; print(" ".join(r["key"] for r in json.load(open(sys.argv[1]))["config_keys"]))' "$TMP/help.json")
+[[ $(wc -w <<<"$keys") -ge 8 ]] || fail "help-data lists too few config keys: $keys"
+for key in $keys; do
+  grep -q "^ *$key=" <<<"$conf" || fail "andros-bridge.conf(5) does not describe the key $key"
 done
+docs_keys=$(sed -n '/^## The configuration file/,/^## /p' "$(dirname "$0")/../../docs/running.md" |
+  sed -n 's/^| `\([a-z]*\)` |.*/\1/p' | tr '\n' ' ')
+[[ $docs_keys == "$keys " ]] || fail "docs/running.md lists the keys '$docs_keys', the program '$keys'"
 
 # complete WORDS...: what the completion offers for the last word.
 complete_words() {

@@ -6,8 +6,8 @@
 
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
-#include "support/temp_dir.hpp"
 #include "support/input_error.hpp"
+#include "support/temp_dir.hpp"
 
 namespace andros::cli {
 namespace {

@@ -187,6 +187,37 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
   EXPECT_EQ(reader.next(12, 2000).size(), 12u);
 }
 
+TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkThenStartsAfresh) {
+  OnPty on;
+  auto& [pty, input, frames, link, bridge] = on;
+  int polls = 0;
+  std::vector<TickReport> ticks;
+  std::vector<std::size_t> ticks_at_reload;
+  const RunControl control{[&] {
+                                 ++polls;
+                                 if (polls == 3) return Request::kReload;
+                                 return polls >= 6 ? Request::kStop : Request::kNone;
+                               },
+                               [] { FAIL() << "a reload is not a pause"; },
+                               [&] {
+                                 ticks_at_reload.push_back(ticks.size());
+                                 EXPECT_EQ(link.state(), link::LinkState::kUp);  // not closed
+                                 EXPECT_EQ(frames.restarts, 0);                // restarted after the swap
+                               }};
+  bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
+  EXPECT_EQ(frames.restarts, 1);
+  // Ticks 0, 1; the reload seen on tick 2 sends neutral frames on 2, 3, 4; the swap.
+  ASSERT_EQ(ticks_at_reload, std::vector<std::size_t>{5});
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(ticks[i].reloading, i >= 2) << "tick " << i;
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_FALSE(ticks[i].shutting_down) << "tick " << i;
+  // Then on, without a gap or a burst: 2 ticks, and the stop's 3 neutral frames.
+  ASSERT_EQ(ticks.size(), 5u + 2u + 3u);
+  EXPECT_EQ(ticks[5].tick, ticks[4].tick + 1);
+  EXPECT_EQ(link.counters().losses, 0u);
+  test::FrameReader reader(pty.master.get());
+  EXPECT_EQ(reader.next(10, 2000).size(), 10u);
+}
+
 TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
   Idle input;
   PressToDrive frames;

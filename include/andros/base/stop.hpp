@@ -39,6 +39,11 @@ class StopRequest {
   void raise();
   /// True once raised or a signal of the set arrived; stays true. Never blocks.
   bool requested();
+  /// From now on SIGHUP (when in the set) asks for a reload (`systemctl
+  /// reload`, docs/running.md), not a stop.
+  void reload_on_hangup() { hangup_reloads_ = true; }
+  /// True once for each SIGHUP taken since reload_on_hangup(). Never blocks.
+  bool reload_requested();
   /// The signal that asked (0: none, or raised by code).
   [[nodiscard]] int signal_number() const { return signal_.load(); }
 
@@ -57,6 +62,8 @@ class StopRequest {
   UniqueFd wake_;       ///< eventfd, readable once raised
   std::atomic<bool> raised_{false};
   std::atomic<int> signal_{0};
+  std::atomic<bool> hangup_reloads_{false};
+  std::atomic<bool> reload_pending_{false};
 };
 
 }  // namespace andros

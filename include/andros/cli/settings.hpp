@@ -13,8 +13,8 @@
 
 #include "andros/base/error.hpp"
 #include "andros/protocol/frame.hpp"
-#include "andros/protocol/robots.hpp"
 #include "andros/protocol/frame_output.hpp"
+#include "andros/protocol/robots.hpp"
 #include "andros/timing/rate.hpp"
 
 namespace andros::cli {

@@ -19,8 +19,9 @@ Mapping load_mapping_file(const std::filesystem::path& file);
 ValidMapping load_mapping(const std::filesystem::path& file);
 
 /// Where `--robot NAME` looks, in order: $XDG_CONFIG_HOME/andros-bridge/mappings
-/// (default ~/.config/...), the source tree's mappings/ when it exists, the
-/// installed mappings/.
+/// (default ~/.config/...), the source tree's mappings/ when it exists (not
+/// in a package's build), bin/../share/andros-bridge/mappings beside the
+/// binary (an installed tree unpacked elsewhere), the installed mappings/.
 std::vector<std::filesystem::path> mapping_search_path();
 
 /// The first `<robot in lower case>.yaml` on the search path. Throws

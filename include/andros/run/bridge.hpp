@@ -2,7 +2,8 @@
 /// The run loop: on every tick of an absolute-time clock, pump the input,
 /// compute the frame, send it; on a stop request or the end of the input,
 /// send neutral frames at the normal period, drain and close the link. A
-/// suspend request (job control) sends the same neutral frames, then pauses.
+/// suspend request (job control) sends the same neutral frames, then pauses;
+/// a reload request sends them, swaps the settings, and starts afresh.
 
 #include <cstdint>
 #include <functional>
@@ -51,6 +52,7 @@ struct TickReport {
   std::string controller;    ///< its name (may be empty)
   mapping::EngineStatus engine;  ///< after this tick's step (shutting down: the last step's)
   link::LinkStatus link;     ///< after this tick's send
+  bool reloading = false;   ///< one of a reload's neutral frames
 };
 
 struct BridgeOptions {
@@ -63,9 +65,10 @@ struct BridgeOptions {
 /// What the world around the loop asks of it, read at each tick.
 enum class Request : std::uint8_t {
   kNone,
-  kStop,     ///< end the run (SIGINT, SIGTERM, SIGHUP)
+  kStop,     ///< end the run (SIGINT, SIGTERM)
   kSuspend,  ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
   kResumed,  ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
+  kReload,   ///< reread the settings (SIGHUP): neutral frames, RunControl::reload, then afresh
 };
 
 struct RunControl {
@@ -73,6 +76,10 @@ struct RunControl {
   /// Called after a suspend's neutral frames (link drained and closed);
   /// returns when the run goes on.
   std::function<void()> pause;
+  /// Called after a reload's neutral frames (the link stays open), on the
+  /// loop's thread: swaps the frame source's settings, or keeps them and
+  /// says why. The frame source is then restarted (a fresh deadman press).
+  std::function<void()> reload = [] {};
 };
 
 /// How the neutral frames at the end went.
@@ -110,6 +117,9 @@ class Bridge {
   [[nodiscard]] TickReport report(std::int64_t tick, std::int64_t t_ms, std::int64_t skipped,
                                   const protocol::DataBytes& data, link::SendResult result,
                                   bool shutting_down) const;
+  /// Neutral frames from tick `tick` on (tick is left at the next one to
+  /// send); returns how many the link took.
+  int send_neutral(std::int64_t start_ns, std::int64_t& tick, const Observer& observe, bool reloading);
 
   input::InputSource& input_;
   FrameSource& frames_;

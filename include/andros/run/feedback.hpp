@@ -34,6 +34,8 @@ class FeedbackNotifier {
  public:
   FeedbackNotifier(mapping::FeedbackTable table, input::InputSource& input) : table_(table), input_(input) {}
 
+  /// After a reload: the new mapping's patterns.
+  void set_table(mapping::FeedbackTable table) { table_ = table; }
   /// Call on the thread that pumps the input. Returns the event played, if any.
   std::optional<mapping::FeedbackEvent> observe(const FeedbackStatus& status);
 

@@ -25,6 +25,7 @@ class FdLogSink final : public spdlog::sinks::sink {
     int note_fd = -1;                     ///< where to say that fd failed (-1: nowhere)
     bool colour = false;                  ///< ANSI colour on the level (fd is a terminal)
     int flush_wait_ms = 300;              ///< how long flush() and destruction wait for queued lines
+    bool priority_prefix = false;         ///< `<N>` syslog priority before each line (fd is the journal)
   };
 
   /// Starts the writer thread. fd stays owned by the caller and must outlive the sink.
@@ -35,8 +36,9 @@ class FdLogSink final : public spdlog::sinks::sink {
   FdLogSink(const FdLogSink&) = delete;
   FdLogSink& operator=(const FdLogSink&) = delete;
 
-  /// Queues one line as is (the newline is added). Never blocks on the fd.
-  void write_line(std::string line);
+  /// Queues one line as is (the newline is added; with priority_prefix, the
+  /// `<priority>` too: 3, err, for the callers' own error lines). Never blocks on the fd.
+  void write_line(std::string line, int priority = 3);
   /// Waits at most timeout_ms until every queued line is written (or given up).
   bool flush_for(int timeout_ms);
   /// True once a write to the fd failed: nothing more is written to it.
@@ -56,13 +58,16 @@ class FdLogSink final : public spdlog::sinks::sink {
 
   std::shared_ptr<Queue> queue_;  ///< shared with the writer thread, which may outlive the sink
   bool colour_;
+  bool priority_prefix_;
   std::mutex format_mutex_;
   std::unique_ptr<spdlog::formatter> formatter_;
 };
 
 /// Makes spdlog's default logger write `LEVEL: message` lines to stderr
 /// through an FdLogSink (the note, if stderr fails, goes to stdout when that
-/// is a terminal of its own). Call once, before any thread logs.
+/// is a terminal of its own). Call once, before any thread logs. When stderr
+/// is the journal (a systemd service), lines are `<N>message` instead: the
+/// journal takes the level from the prefix.
 std::shared_ptr<FdLogSink> install_stderr_log();
 
 }  // namespace andros::view

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds the Debian package (debian/, dpkg-buildpackage -b -us -uc) and puts
+# it in dist/: dist/andros-bridge_VERSION_ARCH.deb. Installs what the build
+# needs with apt-get (as root, or through sudo), as scripts/setup.sh does.
+# The build runs on a copy of the tree in build-deb/, so the work tree stays
+# clean. Install with: sudo apt install ./dist/andros-bridge_*.deb
+set -euo pipefail
+cd "$(dirname "$0")/.."
+as_root=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "package: need root or sudo to install build dependencies" >&2; exit 1; }
+  as_root=(sudo)
+fi
+
+scripts/setup.sh dpkg-dev debhelper fakeroot
+if ! dpkg-checkbuilddeps >/dev/null 2>&1; then
+  echo "package: installing the build dependencies of debian/control"
+  "${as_root[@]}" apt-get update -qq
+  "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get build-dep -y -qq --no-install-recommends ./
+fi
+
+work=build-deb
+rm -rf "$work" && mkdir -p "$work/src" dist
+tar -c --exclude='./build*' --exclude='./obj-*' --exclude=./dist --exclude=./.git . | tar -x -C "$work/src"
+# parallel: both cores; noautodbgsym: no -dbgsym package (nothing ships it).
+(cd "$work/src" && DEB_BUILD_OPTIONS="parallel=$(nproc) noautodbgsym ${DEB_BUILD_OPTIONS:-}" \
+  dpkg-buildpackage -b -us -uc)
+rm -f dist/andros-bridge_*.deb
+mv "$work"/andros-bridge_*.deb dist/
+rm -rf "$work"
+echo "package: $(ls dist/andros-bridge_*.deb)"
