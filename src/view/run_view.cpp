@@ -1,8 +1,9 @@
 // `run`'s screen: what matters first and always (docs/running.md, "What the
 // operator sees"), then what fits.
+#include "andros/view/status_view.hpp"
+
 #include <algorithm>
 
-#include "andros/view/status_view.hpp"
 #include "format.hpp"
 
 namespace andros::view {

@@ -1,9 +1,9 @@
 #include "andros/view/status_display.hpp"
 
 #include <fcntl.h>
-#include <sys/ioctl.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
