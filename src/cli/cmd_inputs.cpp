@@ -56,7 +56,7 @@ int run_inputs(const InputsOptions& opt) {
   view::InputsBoard board(std::move(uses), "andros-bridge inputs: " + input.selection() + " (Ctrl-C ends)\n" + source);
   std::optional<view::StatusDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) {
-    display.emplace([&board] { return board.compose(); }, kRedrawsPerSecond);
+    display.emplace([&board](view::TermSize) { return view::text_screen(board.compose()); }, kRedrawsPerSecond);
     display->start();
   } else {
     std::printf("# %s\n# %s\n", input.selection().c_str(), source.c_str());

@@ -72,7 +72,7 @@ int monitor_file(const std::string& path, link::VehicleView& view) {
   }
   if (n < 0) throw RuntimeError(path + ": read error: " + std::strerror(errno));
   view.finish();
-  std::fputs(view::render_monitor_view(path, view.snapshot(0), false, false).c_str(), stdout);
+  std::fputs(view::render_monitor_view(path, view.snapshot(0), false, view::TermSize{}).text().c_str(), stdout);
   return kExitOk;
 }
 
@@ -85,10 +85,10 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   std::optional<view::StatusDisplay> display;
   if (interactive) {
     display.emplace(
-        [&] {
+        [&](view::TermSize size) {
           const auto now = monotonic_ns();
           const std::lock_guard lock(mutex);
-          return view::render_monitor_view(name, view.snapshot(now), true, true);
+          return view::render_monitor_view(name, view.snapshot(now), true, size);
         },
         kRedrawsPerSecond);
     display->start();
@@ -138,7 +138,8 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   if (display) {
     display->stop();  // draws the last screen, taking the lock itself
   } else {
-    std::fputs(view::render_monitor_view(name, view.snapshot(monotonic_ns()), true, false).c_str(), stdout);
+    const auto screen = view::render_monitor_view(name, view.snapshot(monotonic_ns()), true, view::TermSize{});
+    std::fputs(screen.text().c_str(), stdout);
   }
   return failed ? kExitRuntime : kExitOk;
 }

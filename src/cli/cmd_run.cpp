@@ -98,7 +98,7 @@ void reload_settings(const RunOptions& opt, Settings& settings, ReloadableFrames
     frames.replace(std::move(setup.frames));
     feedback.set_table(setup.feedback);
     settings = std::move(fresh);
-    board.set_mapping(settings.mapping.empty() ? settings.robot : settings.mapping, setup.center);
+    board.set_mapping(setup.robot, setup.mapping_file, settings.weapons, setup.center);
     spdlog::info("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
                  setup.mapping_file, settings.weapons ? ", WEAPONS ENABLED" : "");
     service.reloaded("");
@@ -133,28 +133,31 @@ int run_bridge(const RunOptions& opt) {
   std::unique_ptr<link::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
   const auto link = make_link(config, sim.get());
+  // Logged once every setting has been checked, so that an error stays one line.
+  spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", engine.robot, engine.mapping_file, config.port,
+               config.code, config.weapons ? ", WEAPONS ENABLED" : "");
 
   view::RunStatus initial;
-  initial.robot = config.mapping.empty() ? config.robot : config.mapping;
+  initial.robot = engine.robot;
+  initial.mapping_file = engine.mapping_file;
+  initial.weapons = config.weapons;
   initial.code = config.code;
   initial.center = engine.center;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
-  const auto compose = [&board, &sim] {
+  const auto compose = [&board, &sim](view::TermSize size) {
     view::RunStatus status = board.snapshot();
     if (sim) status.vehicle = sim->snapshot();
-    return view::render_run_view(status, true);
+    return view::render_run_view(status, size);
   };
   std::optional<view::StatusDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();
-  spdlog::info("streaming to {} at {} Hz, code {:02X}{}", initial.link_name, initial.rate_hz, config.code,
-               config.weapons ? ", WEAPONS ENABLED" : "");
-  spdlog::info("mapping: {}", engine.mapping_file);
+  spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   run::Bridge bridge(*input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);

@@ -12,6 +12,7 @@ EngineSetup load_engine(const Settings& settings) {
   auto mapping = settings.mapping.empty() ? mapping::load_robot_mapping(settings.robot)
                                           : mapping::load_mapping(settings.mapping);
   EngineSetup setup;
+  setup.robot = mapping->robot.value_or(settings.robot);
   setup.mapping_file = mapping->file;
   setup.center = mapping->center;
   setup.feedback = mapping->feedback;

@@ -16,7 +16,8 @@ namespace andros::cli {
 /// view and the rumble need from the mapping.
 struct EngineSetup {
   std::unique_ptr<run::FrameSource> frames;
-  std::string mapping_file;  ///< the file loaded (for the log)
+  std::string robot;         ///< its robot type (the settings' when the mapping names none)
+  std::string mapping_file;  ///< the file loaded
   int center = 128;          ///< drive and pivot's rest value (for the gauges)
   mapping::FeedbackTable feedback;
 };

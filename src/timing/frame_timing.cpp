@@ -13,9 +13,6 @@ TimingSummary FrameTiming::summary(std::int64_t now_ns) const {
   const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(count_, kWindow));
   // Oldest to newest.
   const auto at = [&](std::size_t i) { return times_[(count_ - n + i) % kWindow]; };
-  for (std::size_t i = 0; i < n; ++i) {
-    if (now_ns - at(i) < 1'000'000'000) ++out.rate_hz;
-  }
   if (n < 2) return out;
   double sum = 0;
   for (std::size_t i = 1; i < n; ++i) sum += static_cast<double>(at(i) - at(i - 1));
@@ -28,6 +25,10 @@ TimingSummary FrameTiming::summary(std::int64_t now_ns) const {
     worst = std::max(worst, std::abs(d));
   }
   out.period_ms = mean / 1e6;
+  // Over the whole window, not a count of the last second (which flips
+  // between 25 and 26 with the phase); a stream that stopped shows 0.
+  const auto quiet = static_cast<double>(now_ns - at(n - 1));
+  out.rate_hz = quiet > std::max(kStoppedPeriods * mean, 1e9) ? 0.0 : 1e9 / mean;
   out.jitter_ms = std::sqrt(sq / static_cast<double>(n - 1)) / 1e6;
   out.worst_ms = worst / 1e6;
   return out;

@@ -5,22 +5,18 @@
 #include <cstdio>
 
 #include "andros/mapping/axis.hpp"
+#include "format.hpp"
 
 namespace andros::view {
 namespace {
 
+using detail::fmt;
 using input::InputKey;
 using input::InputKind;
 
 constexpr int kBarHalf = 5;
 constexpr std::size_t kScreenWidth = 79;  ///< an 80-column terminal, the cursor never wrapping
 constexpr int kButtonsPerRow = 4;
-
-std::string fmt(const char* format, auto... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, args...);
-  return buf;
-}
 
 bool is_axis(InputKey key) { return key.kind == InputKind::kPadAxis || key.kind == InputKind::kJoyAxis; }
 bool is_trigger(InputKey key) { return key.kind == InputKind::kPadAxis && key.index >= 4; }

@@ -11,12 +11,14 @@
 #include <csignal>
 #include <chrono>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <thread>
 
 #include "andros/base/service_notify.hpp"
 #include "andros/base/write_fully.hpp"
+#include "andros/view/screen.hpp"
 #include "andros/view/status_display.hpp"
 
 namespace andros::view {
@@ -204,7 +206,7 @@ void FdLogSink::set_formatter(std::unique_ptr<spdlog::formatter> formatter) {
 
 std::shared_ptr<FdLogSink> install_stderr_log() {
   FdLogSink::Options options;
-  options.colour = is_interactive(STDERR_FILENO);
+  options.colour = is_interactive(STDERR_FILENO) && colour_wanted(std::getenv("NO_COLOR"), std::getenv("TERM"));
   options.priority_prefix = is_journal_stream(STDERR_FILENO);
   if (isatty(STDOUT_FILENO) != 0 && !same_file(STDOUT_FILENO, STDERR_FILENO)) options.note_fd = STDOUT_FILENO;
   auto sink = std::make_shared<FdLogSink>(STDERR_FILENO, options);

@@ -60,9 +60,11 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
 }
 
-void RunStatusBoard::set_mapping(std::string robot, int center) {
+void RunStatusBoard::set_mapping(std::string robot, std::string mapping_file, bool weapons, int center) {
   const std::lock_guard lock(mutex_);
   status_.robot = std::move(robot);
+  status_.mapping_file = std::move(mapping_file);
+  status_.weapons = weapons;
   status_.center = center;
 }
 

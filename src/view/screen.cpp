@@ -72,6 +72,10 @@ void Screen::block(std::vector<Line> lines, int priority, bool may_shrink) {
   blocks_.push_back(Block{std::move(lines), priority, may_shrink});
 }
 
+void Screen::tail(std::vector<Line> lines, int priority) {
+  blocks_.push_back(Block{std::move(lines), priority, true, true});
+}
+
 std::vector<Line> Screen::fit(TermSize size) const {
   const auto rows = static_cast<std::size_t>(std::max(size.rows, 1));
   std::vector<Line> out(pinned_.begin(), pinned_.begin() + static_cast<std::ptrdiff_t>(std::min(rows, pinned_.size())));
@@ -91,7 +95,9 @@ std::vector<Line> Screen::fit(TermSize size) const {
     left -= shown[i];
   }
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
-    out.insert(out.end(), blocks_[i].lines.begin(), blocks_[i].lines.begin() + static_cast<std::ptrdiff_t>(shown[i]));
+    const auto& lines = blocks_[i].lines;
+    const auto skip = static_cast<std::ptrdiff_t>(blocks_[i].keep_last ? lines.size() - shown[i] : 0);
+    out.insert(out.end(), lines.begin() + skip, lines.begin() + skip + static_cast<std::ptrdiff_t>(shown[i]));
   }
   return out;
 }
@@ -112,6 +118,29 @@ std::string Screen::render(TermSize size, bool colour) const {
     out += '\n';
   }
   return out;
+}
+
+std::string Screen::text() const {
+  std::size_t rows = pinned_.size();
+  for (const auto& b : blocks_) rows += b.lines.size();
+  std::string out;
+  for (const auto& line : fit({1, static_cast<int>(rows)})) {
+    for (const auto& piece : line.pieces()) out += piece.text;
+    out += '\n';
+  }
+  return out;
+}
+
+Screen text_screen(std::string_view text) {
+  std::vector<Line> lines;
+  for (std::size_t start = 0; start < text.size();) {
+    const auto end = std::min(text.find('\n', start), text.size());
+    lines.emplace_back(std::string(text.substr(start, end - start)));
+    start = end + 1;
+  }
+  Screen screen;
+  screen.block(std::move(lines), 1, true);
+  return screen;
 }
 
 std::string plain(const Line& line, std::size_t width) {

@@ -3,8 +3,10 @@
 #include <fcntl.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -16,8 +18,31 @@ namespace andros::view {
 namespace {
 
 constexpr int kFinalDrawMs = 300;  ///< the last screen's time limit: exit never waits longer on the terminal
+constexpr std::size_t kLogLines = 64;  ///< kept for the screen: more than a tall terminal's spare rows
+constexpr int kLogPriority = -1;       ///< below every block of a view
+
+/// The log lines as the screen's last block: warnings yellow, errors red.
+std::vector<Line> log_lines(const std::vector<std::string>& formatted) {
+  std::vector<Line> out;
+  for (auto text : formatted) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    const auto level = text.find(' ') + 1;  // after "HH:MM:SS "
+    const auto style = text.compare(level, 7, "warning") == 0 ? Style::kWarn
+                       : text.compare(level, 5, "error") == 0 || text.compare(level, 8, "critical") == 0
+                           ? Style::kAlert
+                           : Style::kPlain;
+    out.emplace_back(std::move(text), style);
+  }
+  return out;
+}
 
 }  // namespace
+
+TermSize terminal_size(int fd) {
+  winsize ws{};
+  if (::ioctl(fd, TIOCGWINSZ, &ws) != 0 || ws.ws_col == 0 || ws.ws_row == 0) return TermSize{};
+  return TermSize{ws.ws_col, ws.ws_row};
+}
 
 bool is_interactive(int fd) {
   const char* term = std::getenv("TERM");
@@ -27,7 +52,7 @@ bool is_interactive(int fd) {
 StatusDisplay::StatusDisplay(Compose compose, int redraws_per_second)
     : compose_(std::move(compose)),
       period_ms_(1000 / redraws_per_second),
-      log_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(6)) {
+      log_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(kLogLines)) {
   log_->set_pattern("%H:%M:%S %l: %v");
   // A description of the terminal of its own: O_NONBLOCK on stdout's would
   // reach the shell and every other process sharing it.
@@ -35,6 +60,7 @@ StatusDisplay::StatusDisplay(Compose compose, int redraws_per_second)
   if (tty != nullptr) fd_ = ::open(tty, O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   own_fd_ = fd_ >= 0;
   if (!own_fd_) fd_ = STDOUT_FILENO;
+  colour_ = isatty(fd_) != 0 && colour_wanted(std::getenv("NO_COLOR"), std::getenv("TERM"));
 }
 
 StatusDisplay::~StatusDisplay() {
@@ -84,19 +110,27 @@ void StatusDisplay::run() {
 
 void StatusDisplay::draw(bool final) {
   if (!foreground()) return;
-  std::string screen = "\x1b[H" + compose_();
-  screen += "\nlog:\n";
-  for (const auto& line : log_->last_formatted()) screen += "  " + line;
-  // Clear what is left of the last, perhaps longer, screen.
-  screen += "\x1b[J";
-  if (final) screen += "\x1b[?25h";
-  // Each line is cleared to its end as it is drawn, so nothing stale shows.
-  std::string out;
-  out.reserve(screen.size() + 256);
-  for (const char c : screen) {
-    if (c == '\n') out += "\x1b[K";
-    out += c;
+  auto size = terminal_size(fd_);
+  // One column short of the edge: a line never leaves the cursor waiting to wrap.
+  size.cols = std::max(size.cols - 1, 1);
+  Screen screen = compose_(size);
+  screen.tail(log_lines(log_->last_formatted()), kLogPriority);
+  const std::string text = screen.render(size, colour_);
+  // Each line is cleared to its end as it is drawn, so nothing stale shows;
+  // the last one ends without a newline, which would scroll the top away.
+  std::string out = "\x1b[H";
+  out.reserve(text.size() + 256);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\n') {
+      out += text[i];
+      continue;
+    }
+    out += "\x1b[K";
+    if (i + 1 < text.size()) out += '\n';
   }
+  // Clear what is left of the last, perhaps longer, screen.
+  out += "\x1b[J";
+  if (final) out += "\x1b[?25h\n";
   // A screen the terminal cannot take in time is cut short; the next one starts from the top.
   write_out(out, final ? kFinalDrawMs : period_ms_);
 }

@@ -153,10 +153,11 @@ fs = [json.loads(l)["signals"] for l in open(sys.argv[1])]
 sys.exit(0 if any(f["safety"] and f["drive"] > 128 for f in fs) and fs[-1]["safety"] == 0 and fs[-1]["drive"] == 128 else 1)
 PY
 
-# On a terminal: the live status view, redrawn, with the log kept under it.
+# On a terminal (120x40): the live status view, redrawn, with the log kept under it.
 python3 - "$BIN" "$LIVE/drive.events" >"$TMP/tty.txt" <<'PY' || fail "status view: $(tail -c 600 "$TMP/tty.txt")"
-import os, pty, re, select, subprocess, sys
+import fcntl, os, pty, re, select, struct, subprocess, sys, termios
 m, s = pty.openpty()
+fcntl.ioctl(s, termios.TIOCSWINSZ, struct.pack("HHHH", 40, 120, 0, 0))  # room for every switch group
 env = dict(os.environ, TERM="xterm")
 p = subprocess.Popen([sys.argv[1], "run", "--input", sys.argv[2]], stdout=s, stderr=subprocess.DEVNULL, env=env)
 os.close(s)
@@ -174,7 +175,7 @@ screens = text.split("\x1b[H")
 last = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", screens[-1])
 print(last)
 want = ["andros-bridge run", "controller  Test pad", "link        sim vehicle on", "vehicle     ",
-        "as the vehicle decodes it:", "  drive    ", "  weapons  ", "drive      [", "light      [", "log:", "enabled"]
+        "as the vehicle decodes it:", "  drive    ", "  weapons  ", "drive      [", "light      [", "info: stopping: sending neutral frames"]
 missing = [w for w in want if w not in last]
 print("exit", code, "screens", len(screens), "missing", missing)
 # Several redraws, everything shown, and the cursor given back at the end.

@@ -38,7 +38,7 @@ export XDG_CONFIG_HOME=$TMP/xdg
   --input "$ROOT/usr/share/andros-bridge/demos/drive.events" >/dev/null 2>"$TMP/run"
 code=$?
 [[ $code -eq 0 ]] || fail "run into sim exited $code: $(cat "$TMP/run")"
-grep -q "^info: mapping: $ROOT/usr/share/andros-bridge/mappings/hd1.yaml$" "$TMP/run" ||
+grep -q "^info: robot HD1, mapping $ROOT/usr/share/andros-bridge/mappings/hd1.yaml, port sim, code 01$" "$TMP/run" ||
   fail "the packaged binary did not load its own mapping: $(grep mapping "$TMP/run")"
 grep -Eq "sim vehicle decoded [0-9]{3,} frames: ([0-9]+) valid, 0 bad checksum, 0 invalid" "$TMP/run" ||
   fail "the sim vehicle did not decode the demo's frames: $(tail -2 "$TMP/run")"

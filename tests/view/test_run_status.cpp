@@ -73,5 +73,21 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.enable_text, "enabled");
 }
 
+TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {
+  RunStatus initial;
+  initial.robot = "HD1";
+  initial.mapping_file = "/m/hd1.yaml";
+  RunStatusBoard board(initial);
+  board.set_mapping("RAV", "/m/rav.yaml", true, 100);
+  const auto s = board.snapshot();
+  EXPECT_EQ(s.robot, "RAV");
+  EXPECT_EQ(s.mapping_file, "/m/rav.yaml");
+  EXPECT_TRUE(s.weapons);
+  EXPECT_EQ(s.center, 100);
+  const auto text = render_run_view(s, {80, 24}).text();
+  EXPECT_NE(text.find("WEAPONS ENABLED"), std::string::npos) << text;
+  EXPECT_NE(text.find("mapping     /m/rav.yaml\n"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace andros::view

@@ -61,6 +61,14 @@ TEST(Screen, AShrinkableBlockGivesItsFirstLines) {
   EXPECT_EQ(texts(s, {80, 5}), (std::vector<std::string>{"fixed0", "fixed1", "log0", "log1", "log2"}));
 }
 
+TEST(Screen, ATailBlockGivesItsLastLines) {
+  Screen s;
+  s.pin(Line("head"));
+  s.tail(lines("log", 10), 0);
+  EXPECT_EQ(texts(s, {80, 3}), (std::vector<std::string>{"head", "log8", "log9"}));
+  EXPECT_EQ(s.fit({80, 30}).size(), 11u);
+}
+
 TEST(Screen, LinesAreCutToTheWidthWithoutBreakingEscapes) {
   Screen s;
   s.pin(Line("0123456789", Style::kAlert).add("abcdef", Style::kGood));

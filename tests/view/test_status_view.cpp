@@ -8,6 +8,18 @@
 namespace andros::view {
 namespace {
 
+/// The lines as plain text, one a line.
+std::string joined(const std::vector<Line>& lines) {
+  std::string out;
+  for (const auto& line : lines) out += plain(line, 1000) + "\n";
+  return out;
+}
+
+/// switch_lines at 78 columns, then the gauges: the old panel.
+std::string render_frame_panel(const protocol::DataBytes& data, int center) {
+  return joined(switch_lines(data, 78, false)) + joined(gauge_lines(data, center));
+}
+
 TEST(StatusView, EveryBitSignalIsInExactlyOneGroup) {
   std::multiset<protocol::SignalId> seen;
   for (const auto& g : signal_groups()) seen.insert(g.signals.begin(), g.signals.end());
@@ -24,7 +36,7 @@ TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
   s[protocol::signal_id("drive")] = 255;
   s[protocol::signal_id("pivot")] = 0;
   s[protocol::signal_id("light")] = 255;
-  const auto text = render_frame_panel(protocol::FrameBuilder(1).build(s), mapping::kDefaultCenter, false);
+  const auto text = render_frame_panel(protocol::FrameBuilder(1).build(s), mapping::kDefaultCenter);
   EXPECT_NE(text.find(" SAFETY drive_brake"), std::string::npos) << text;
   EXPECT_NE(text.find(" PT_LEFT pt_right"), std::string::npos) << text;
   EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
@@ -45,17 +57,17 @@ protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot) {
 
 TEST(StatusView, CentredGaugesGrowFromTheCentreTheyAreHanded) {
   // center: 100 (no shipped mapping sets one): 100 is at rest, 50 half way down, 255 and 0 the ends.
-  auto text = render_frame_panel(drive_pivot(100, 50), 100, false);
+  auto text = render_frame_panel(drive_pivot(100, 50), 100);
   EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
   EXPECT_NE(text.find("pivot      [     #####|          ]  50"), std::string::npos) << text;
-  text = render_frame_panel(drive_pivot(255, 0), 100, false);
+  text = render_frame_panel(drive_pivot(255, 0), 100);
   EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
   EXPECT_NE(text.find("pivot      [##########|          ]   0"), std::string::npos) << text;
   // The run screen draws around the centre in its status.
   RunStatus s;
   s.center = 100;
   s.sent = drive_pivot(100, 100);
-  text = render_run_view(s, false);
+  text = render_run_view(s, {80, 40}).text();
   EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
   EXPECT_NE(text.find("pivot      [          |          ] 100"), std::string::npos) << text;
 }
@@ -64,9 +76,10 @@ TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
   RunStatus s;
   s.enabled = true;
   s.enable_text = "enabled";
-  EXPECT_NE(render_run_view(s, false).find("state       ENABLED\n"), std::string::npos);
+  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
   s.enable_text = "enabled; at rest first: lefty";
-  EXPECT_NE(render_run_view(s, false).find("state       ENABLED; at rest first: lefty\n"), std::string::npos);
+  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"),
+            std::string::npos);
 }
 
 TEST(FrameTiming, MeasuresRateAndJitter) {
@@ -75,10 +88,25 @@ TEST(FrameTiming, MeasuresRateAndJitter) {
   for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
   const auto s = t.summary(49 * p);
   EXPECT_EQ(s.count, 50u);
-  EXPECT_EQ(s.rate_hz, 25);  // the frames of the last second
+  EXPECT_NEAR(s.rate_hz, 25.0, 0.02);  // 1 / the mean period
   EXPECT_NEAR(s.period_ms, 40.0, 0.05);
   EXPECT_NEAR(s.jitter_ms, 1.0, 0.05);
   EXPECT_NEAR(s.worst_ms, 1.0, 0.05);
+}
+
+TEST(FrameTiming, TheRateIsTheWindowsMeanNotACountThatFlipsWithThePhase) {
+  // 25 Hz with a little jitter, read at every phase of a period: a count of
+  // the last second said 25 or 26; the window's mean says 25.0 each time.
+  timing::FrameTiming t;
+  const std::int64_t p = 40'000'000;
+  for (int i = 0; i < 200; ++i) t.add(i * p + (i % 3) * 300'000);
+  for (std::int64_t phase = 0; phase < p; phase += p / 8) {
+    const auto s = t.summary(199 * p + phase);
+    EXPECT_NEAR(s.rate_hz, 25.0, 0.05) << phase;
+  }
+  // A stream that stopped: 0 once no frame came for 2 periods (at least 1 s).
+  EXPECT_GT(t.summary(199 * p + 900'000'000).rate_hz, 24.9);
+  EXPECT_EQ(t.summary(199 * p + 1'100'000'000).rate_hz, 0.0);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 namespace andros::timing {
 
 struct TimingSummary {
-  double rate_hz = 0;       ///< frames in the last second
+  double rate_hz = 0;       ///< 1 / the mean period; 0 once no frame came for 2 periods (and 1 s)
   double period_ms = 0;     ///< mean period over the recent frames
   double jitter_ms = 0;     ///< standard deviation of the recent periods
   double worst_ms = 0;      ///< largest |period - mean| among them
@@ -22,6 +22,7 @@ class FrameTiming {
 
  private:
   static constexpr std::size_t kWindow = 128;
+  static constexpr double kStoppedPeriods = 2.0;
   std::array<std::int64_t, kWindow> times_{};
   std::uint64_t count_ = 0;
 };

@@ -20,8 +20,9 @@ class RunStatusBoard {
   /// Called by the run loop after every tick (cheap: no formatting). The
   /// report is all the board learns: it holds no link and no engine.
   void observe(const run::TickReport& report);
-  /// After a reload: the robot (or mapping file) the view names, and the centre its gauges grow from.
-  void set_mapping(std::string robot, int center);
+  /// After a reload: the robot and mapping file the view names, whether
+  /// weapons are enabled, and the centre its gauges grow from.
+  void set_mapping(std::string robot, std::string mapping_file, bool weapons, int center);
   /// The last status, copied under the lock: for the display thread, and
   /// after the run for the closing line.
   [[nodiscard]] RunStatus snapshot() const;

@@ -53,21 +53,29 @@ class Screen {
   /// Shown while rows are left, higher priority first, at their place in the
   /// order they were added. A block shows whole or, when it may shrink, its first lines.
   void block(std::vector<Line> lines, int priority, bool may_shrink = false);
+  /// A block that, shrunk, keeps its last lines (the newest of a log).
+  void tail(std::vector<Line> lines, int priority);
   /// Exactly min(rows, lines) lines, '\n'-terminated, each cut to cols; with
   /// colour, ANSI SGR sequences (each line ends with a reset).
   [[nodiscard]] std::string render(TermSize size, bool colour) const;
   /// The lines that fit, for tests and off-terminal use.
   [[nodiscard]] std::vector<Line> fit(TermSize size) const;
+  /// Every line, plain and whole: the screen printed to a file or pipe.
+  [[nodiscard]] std::string text() const;
 
  private:
   struct Block {
     std::vector<Line> lines;
     int priority;
     bool may_shrink;
+    bool keep_last = false;
   };
   std::vector<Line> pinned_;
   std::vector<Block> blocks_;
 };
+
+/// A screen of plain text lines, one block that shrinks to its first lines.
+Screen text_screen(std::string_view text);
 
 /// The plain text of a line cut to width (no escapes).
 std::string plain(const Line& line, std::size_t width);

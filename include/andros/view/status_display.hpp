@@ -4,8 +4,11 @@
 /// clock. It writes through a non-blocking descriptor of its own on the
 /// terminal, with a time limit per screen, so that neither its thread nor
 /// stop() ever waits on a stuck terminal for long; it draws only while the
-/// process is in the terminal's foreground. While it runs, log lines are kept
-/// and shown under the screen instead of scrolling through it.
+/// process is in the terminal's foreground. Each screen is composed for the
+/// terminal's size at that moment (a resize shows at the next redraw), never
+/// more lines than it has; while it runs, the newest log lines fill the rows
+/// the screen leaves, instead of scrolling through it. Colour only where
+/// colour_wanted() says so.
 
 #include <functional>
 #include <memory>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "andros/base/stop.hpp"
+#include "andros/view/screen.hpp"
 
 namespace spdlog::sinks {
 class sink;
@@ -27,9 +31,10 @@ namespace andros::view {
 
 class StatusDisplay {
  public:
-  using Compose = std::function<std::string()>;
+  using Compose = std::function<Screen(TermSize)>;
 
-  /// compose is called on the display thread; it must lock what it reads.
+  /// compose is called on the display thread with the size to fill; it must
+  /// lock what it reads.
   StatusDisplay(Compose compose, int redraws_per_second);
   ~StatusDisplay();  ///< stops, draws the last screen, restores the log
   StatusDisplay(const StatusDisplay&) = delete;
@@ -51,6 +56,7 @@ class StatusDisplay {
   int period_ms_;
   int fd_ = -1;        ///< the terminal, opened anew (non-blocking) or stdout
   bool own_fd_ = false;
+  bool colour_ = false;
   bool broken_ = false;  ///< a write failed (terminal gone): nothing more is drawn
   std::shared_ptr<spdlog::sinks::ringbuffer_sink<std::mutex>> log_;
   std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_sinks_;  ///< the log's sinks before start()
@@ -60,5 +66,8 @@ class StatusDisplay {
 
 /// True when fd is a terminal and TERM is not "dumb".
 bool is_interactive(int fd);
+
+/// The terminal's size (TIOCGWINSZ), or 80x24 when it does not say.
+TermSize terminal_size(int fd);
 
 }  // namespace andros::view

@@ -14,6 +14,7 @@
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/timing/frame_timing.hpp"
+#include "andros/view/screen.hpp"
 
 namespace andros::view {
 
@@ -24,15 +25,20 @@ struct SignalGroup {
 };
 const std::vector<SignalGroup>& signal_groups();
 
-/// Switch groups and gauges (drive, pivot, arm speed, light) for one frame;
-/// the drive and pivot gauges grow from center (the mapping's rest value).
-/// With ansi, active switches are shown in reverse video and idle ones dim;
-/// without, active ones are upper case.
-std::string render_frame_panel(const protocol::DataBytes& data, int center, bool ansi);
+/// The switch groups of a frame, wrapped to width: active switches in upper
+/// case (reverse video in colour), idle ones lower case (dim). compact: only
+/// the active ones, one line a group, for a small terminal.
+std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact);
+
+/// The drive, pivot, arm speed and light gauges, and the frame in hex; drive
+/// and pivot grow from center (the mapping's rest value).
+std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center);
 
 /// What `run` knows at one moment.
 struct RunStatus {
   std::string robot;
+  std::string mapping_file;      ///< the mapping the run uses
+  bool weapons = false;          ///< weapon signals may be sent in this run (--weapons)
   std::uint8_t code = 0;
   int center = mapping::kDefaultCenter;  ///< the mapping's rest value of drive and pivot
   double rate_hz = 0;            ///< the configured rate
@@ -54,11 +60,17 @@ struct RunStatus {
   std::optional<link::VehicleSnapshot> vehicle;  ///< the simulated vehicle's view
 };
 
-std::string render_run_view(const RunStatus& status, bool ansi);
+/// `run`'s screen for a terminal of this size: pinned first (the WEAPONS
+/// banner when weapons are enabled, title and measured rate, state, link,
+/// controller, mapping file), then counters, switch groups and gauges while
+/// rows are left (docs/running.md, "What the operator sees").
+Screen render_run_view(const RunStatus& status, TermSize size);
 
-/// `monitor`'s view of a port or capture. A frame does not say which mapping
-/// made it: drive and pivot are drawn around the default centre.
-std::string render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live,
-                                bool ansi);
+/// `monitor`'s view of a port or capture: pinned source, rate (live),
+/// counts and the last frame's validity, then its switches and gauges. A
+/// frame does not say which mapping made it: drive and pivot are drawn around
+/// the default centre.
+Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live,
+                           TermSize size);
 
 }  // namespace andros::view
