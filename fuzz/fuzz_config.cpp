@@ -8,7 +8,7 @@
 #include "andros/base/error.hpp"
 #include "andros/cli/config.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/run/replay.hpp"
+#include "andros/timing/rate.hpp"
 #include "fuzz_check.hpp"
 
 using andros::fuzz::check;
