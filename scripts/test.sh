@@ -12,8 +12,19 @@ jobs=$(nproc)
 summary=$(mktemp)
 trap 'rm -f "$summary"' EXIT
 
+# phase NAME: starts a timed phase (the previous one ends); closing lists their times.
+phases=()
+phase() {
+  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s")
+  phase_name=$1
+  phase_start=$SECONDS
+  [[ -z $1 ]] || echo "== $1"
+}
+
 # closing: the plain 'N passed, N failed' line over every ctest run so far.
 closing() {
+  phase ""
+  echo "phases: $(IFS=';'; echo "${phases[*]}" | sed 's/;/, /g')"
   local total=0 failed=0 f t
   while read -r f t; do
     total=$((total + t))
@@ -22,24 +33,22 @@ closing() {
   echo "tests: $((total - failed)) passed, $failed failed"
 }
 
-echo "== build and test ($build)"
+phase "build and test ($build)"
 scripts/build.sh
 ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 300 | tee -a "$summary"
 if [[ ${ANDROS_QUICK:-} == 1 ]]; then closing; exit 0; fi
 
-echo "== build and test under ASan + UBSan ($build-asan)"
+phase "build and test under ASan + UBSan ($build-asan)"
 BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600 | tee -a "$summary"
 
-echo "== Debian package: build (scripts/package.sh) and check (tests/package/test_package.sh)"
-package_start=$SECONDS
+phase "Debian package: build (scripts/package.sh) and check (tests/package/test_package.sh)"
 scripts/package.sh >"$build/package.log" 2>&1 || { tail -40 "$build/package.log"; exit 1; }
 tests/package/test_package.sh dist/andros-bridge_*.deb
-echo "== Debian package: $((SECONDS - package_start)) s"
 
 if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
-  echo "== fuzz each target briefly"
+  phase "fuzz each target briefly"
   scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 else
   echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"
