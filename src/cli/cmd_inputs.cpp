@@ -37,7 +37,7 @@ view::AxisUses load_uses(const InputsOptions& opt, std::string& source) {
     source = "no mapping given: deadzone 0, the mapping default (--robot or --mapping shows a mapping's)";
     return {};
   }
-  const auto mapping = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot) : mapping::load_mapping(opt.mapping);
+  const auto mapping = mapping::load_chosen_mapping(opt.mapping, opt.robot);
   source = "deadzones and thresholds of " + mapping->file;
   return view::axis_uses(*mapping);
 }

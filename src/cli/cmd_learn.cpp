@@ -44,7 +44,7 @@ int run_learn(const LearnCommandOptions& opt) {
   if (opt.robot.empty() == opt.mapping.empty()) throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
   const fs::path base_file =
       opt.mapping.empty() ? mapping::find_robot_mapping(opt.robot, mapping::mapping_search_path()) : fs::path(opt.mapping);
-  auto base = opt.mapping.empty() ? mapping::load_robot_mapping(opt.robot) : mapping::load_mapping(opt.mapping);
+  auto base = mapping::load_chosen_mapping(opt.mapping, opt.robot);
   check_output(*base, opt.output);
   StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
   input::LiveGestures pad(opt.sdl);

@@ -52,8 +52,7 @@ void run_replay(const ReplayOptions& opt) {
   }
   const Settings settings = resolve_settings(*opt.settings);
   const timing::FrameClock clock(settings.rate.millihertz);
-  auto mapping = settings.mapping.empty() ? mapping::load_robot_mapping(settings.robot)
-                                         : mapping::load_mapping(settings.mapping);
+  auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
   auto script = input::checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
                                                        : TextReader::open(opt.events, kEventScriptLimits));
 

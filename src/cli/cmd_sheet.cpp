@@ -41,9 +41,7 @@ void write_sheet(const std::string& output, const std::string& sheet) {
 void run_sheet(const SheetOptions& opt) {
   if (!opt.robot.empty() && !opt.mapping.empty()) throw InputError("sheet: give --robot or --mapping, not both");
   const auto format = view::parse_sheet_format(opt.format, SourcePos{"--format"});
-  const auto mapping = opt.mapping.empty()
-                           ? mapping::load_robot_mapping(opt.robot.empty() ? protocol::kDefaultRobot : opt.robot)
-                           : mapping::load_mapping(opt.mapping);
+  const auto mapping = mapping::load_chosen_mapping(opt.mapping, opt.robot.empty() ? protocol::kDefaultRobot : opt.robot);
   const auto sheet = view::build_sheet(*mapping);
   write_sheet(opt.output, format == view::SheetFormat::kSvg ? view::render_sheet_svg(sheet)
                                                              : view::render_sheet_text(sheet));

@@ -9,8 +9,7 @@
 namespace andros::cli {
 
 EngineSetup load_engine(const Settings& settings) {
-  auto mapping = settings.mapping.empty() ? mapping::load_robot_mapping(settings.robot)
-                                          : mapping::load_mapping(settings.mapping);
+  auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
   EngineSetup setup;
   setup.robot = mapping->robot.value_or(settings.robot);
   setup.mapping_file = mapping->file;

@@ -55,4 +55,8 @@ ValidMapping load_robot_mapping(std::string_view robot) {
   return mapping;
 }
 
+ValidMapping load_chosen_mapping(const std::string& file, std::string_view robot) {
+  return file.empty() ? load_robot_mapping(robot) : load_mapping(file);
+}
+
 }  // namespace andros::mapping

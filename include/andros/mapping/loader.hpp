@@ -32,4 +32,8 @@ std::filesystem::path find_robot_mapping(std::string_view robot,
 /// Finds, loads and validates a robot type's mapping; its `robot` must match.
 ValidMapping load_robot_mapping(std::string_view robot);
 
+/// What `--mapping FILE` / `--robot NAME` choose: the file when one is given,
+/// else the robot's shipped mapping.
+ValidMapping load_chosen_mapping(const std::string& file, std::string_view robot);
+
 }  // namespace andros::mapping
