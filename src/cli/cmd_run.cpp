@@ -170,7 +170,8 @@ int run_bridge(const RunOptions& opt) {
   bridge.run(control, [&](const run::TickReport& r) {
     board.observe(r);
     if (!r.shutting_down && !r.reloading) feedback.observe(run::feedback_status(r));
-    service.observe(r, board.snapshot());
+    // The board's copy is taken only for a service manager: not on every tick of a plain run.
+    if (service.active()) service.observe(r, board.snapshot());
   });
   display.reset();
   service.stopping();

@@ -15,6 +15,9 @@ class ServiceReporter {
  public:
   explicit ServiceReporter(ServiceNotifier notifier) : notifier_(std::move(notifier)) {}
 
+  /// False when not run by a service manager: observe() would do nothing.
+  [[nodiscard]] bool active() const { return notifier_.active(); }
+
   /// After each tick: WATCHDOG=1 when due, READY=1 once the link has taken
   /// the first frame, STATUS= when the one-line state changes.
   void observe(const run::TickReport& report, const view::RunStatus& status);
