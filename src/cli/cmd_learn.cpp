@@ -42,9 +42,8 @@ void check_output(const mapping::Mapping& base, const fs::path& output) {
 
 int run_learn(const LearnCommandOptions& opt) {
   if (opt.robot.empty() == opt.mapping.empty()) throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
-  const fs::path base_file =
-      opt.mapping.empty() ? mapping::find_robot_mapping(opt.robot, mapping::mapping_search_path()) : fs::path(opt.mapping);
   auto base = mapping::load_chosen_mapping(opt.mapping, opt.robot);
+  const fs::path base_file = base->file;  // the file loaded: the one given, or the robot's found on the search path
   check_output(*base, opt.output);
   StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
   input::LiveGestures pad(opt.sdl);
