@@ -37,7 +37,7 @@ class FixedFrames final : public run::FrameSource {
  public:
   run::Step step(const input::InputState&, std::int64_t) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
-  void restart() override {}
+  void restart(const input::InputState&) override {}
 };
 
 class Idle final : public input::InputSource {
@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
   Idle input;
   FixedFrames frames;
   link::SerialLink link(bridge_pty.path, 9600);
-  run::Bridge bridge(input, frames, link, run::BridgeOptions{.rate_millihertz = kRate * 1000});
+  RealClock clock;
+  run::Bridge bridge(clock, input, frames, link, run::BridgeOptions{.rate_millihertz = kRate * 1000});
   UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
   link::configure_raw_8n1(plain_fd.get(), 9600);
   const protocol::Frame frame = protocol::encode(neutral_frame());
@@ -129,7 +130,7 @@ int main(int argc, char** argv) {
   });
   std::thread bridge_loop([&] {
     bridge.run([&] { return stop.requested(); }, [&](const run::TickReport& r) {
-      if (!r.shutting_down && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
+      if (!r.shutting_down() && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
     });
   });
   bridge_reader.join();

@@ -58,8 +58,17 @@ void run_replay(const ReplayOptions& opt) {
 
   input::ScriptPlayer player(script);
   mapping::Engine engine(std::move(mapping), mapping::EngineOptions{settings.weapons, settings.code});
+  // A script's `reload FILE` names FILE relative to the script's folder, as a user expects.
+  const std::filesystem::path script_dir =
+      opt.events == "-" ? std::filesystem::path() : std::filesystem::path(opt.events).parent_path();
+  run::ReplayOptions replay_options{.rate_millihertz = settings.rate.millihertz,
+                                    .engine = mapping::EngineOptions{settings.weapons, settings.code}};
+  replay_options.load = [&script_dir](const std::string& file) {
+    const std::filesystem::path p(file);
+    return mapping::load_mapping(p.is_absolute() ? p : script_dir / p);
+  };
   write_frames(settings, [&](std::ostream& out) {
-    run::replay(player, engine, clock,
+    run::replay(player, std::move(engine), replay_options,
                 [&](std::int64_t t, const protocol::DataBytes& data) { protocol::write_frame(out, settings.format, t, data); });
   });
 }
@@ -70,9 +79,11 @@ void add_replay_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<ReplayOptions>();
   auto* cmd = app.add_subcommand(
       "replay",
-      "Run an event script through a mapping on a virtual clock and write the frames:\n"
-      "one every 1000/rate ms from t=0 through the script's end. Deterministic: the same\n"
-      "script gives the same bytes on any machine, at any speed.");
+      "Run an event script through the bridge's own loop on a virtual clock and write the\n"
+      "frames the vehicle receives: one every 1000/rate ms from t=0 through the script's end.\n"
+      "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
+      "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
+      "any machine, at any speed.");
   cmd->add_option("EVENTS", opt->events,
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
                   "before the first frame is written")

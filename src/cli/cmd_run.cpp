@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -59,6 +60,13 @@ run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
   return run::Request::kNone;
 }
 
+/// A script's `reload MAPPING` names it relative to the script's folder.
+std::string script_relative(const std::string& script, const std::string& mapping) {
+  const std::filesystem::path p(mapping);
+  if (p.is_absolute()) return mapping;
+  return (std::filesystem::path(script).parent_path() / p).lexically_normal().string();
+}
+
 /// The error line for neutral frames that did not reach the link.
 std::string failed_neutral_frames(const run::ShutdownReport& shut, const std::string& link) {
   const std::string what =
@@ -85,26 +93,29 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
   if (display) display->start();
 }
 
-/// SIGHUP: the configuration and mapping read again, on the loop's thread
-/// between the reload's neutral frames and a fresh start. A bad file keeps
-/// the old settings, and says why.
-void reload_settings(const RunOptions& opt, Settings& settings, ReloadableFrames& frames,
-                     run::FeedbackNotifier& feedback, view::RunStatusBoard& board, ServiceReporter& service) {
-  service.reloading();
+/// SIGHUP (or a script's `reload [MAPPING]`): the configuration and mapping
+/// read again, then swapped in on the loop's thread once the reload's neutral
+/// frames are out. A bad file keeps the old settings, and says why.
+run::ReloadOutcome reload_settings(const RunOptions& opt, const std::string& mapping_override, Settings& settings,
+                                   ReloadableFrames& frames, run::FeedbackNotifier& feedback,
+                                   view::RunStatusBoard& board, ServiceReporter& service) {
   try {
     Settings fresh = resolve_settings(*opt.settings);
+    if (!mapping_override.empty()) fresh.mapping = mapping_override;
     if (auto why = needs_restart(settings, fresh); !why.empty()) throw std::runtime_error(why);
     EngineSetup setup = load_engine(fresh);
     frames.replace(std::move(setup.frames));
     feedback.set_table(setup.feedback);
     settings = std::move(fresh);
     board.set_mapping(setup.robot, setup.mapping_file, settings.weapons, setup.center);
-    spdlog::info("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
-                 setup.mapping_file, settings.weapons ? ", WEAPONS ENABLED" : "");
+    spdlog::info("reloaded: mapping {}{}; not enabled until the deadman is pressed again", setup.mapping_file,
+                 settings.weapons ? ", WEAPONS ENABLED" : "");
     service.reloaded("");
+    return {true, ""};
   } catch (const std::exception& e) {
-    spdlog::error("reload (SIGHUP) failed, the old settings stay: {}", e.what());
+    spdlog::error("reload failed, the old settings stay: {}", e.what());
     service.reloaded(std::string("reload failed: ") + e.what());
+    return {false, e.what()};
   }
 }
 
@@ -158,18 +169,26 @@ int run_bridge(const RunOptions& opt) {
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
-  run::Bridge bridge(*input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  RealClock clock;
+  run::Bridge bridge(clock, *input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
   stop.reload_on_hangup();
-  const run::RunControl control{
-      [&] { return poll_requests(stop, job); },
-      [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); },
-      [&] { reload_settings(opt, config, frames, feedback, board, service); }};
+  std::string reload_mapping;  // a script's `reload MAPPING`, relative to the script's folder
+  run::RunControl control;
+  control.poll = [&] { return poll_requests(stop, job); };
+  control.pause = [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); };
+  control.begin_reload = [&](const std::string& mapping) {
+    service.reloading();
+    reload_mapping = mapping.empty() ? "" : script_relative(config.input, mapping);
+  };
+  control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
+    return reload_settings(opt, reload_mapping, config, frames, feedback, board, service);
+  };
   bridge.run(control, [&](const run::TickReport& r) {
     board.observe(r);
-    if (!r.shutting_down && !r.reloading) feedback.observe(run::feedback_status(r));
+    feedback.observe(run::feedback_status(r));
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
     if (service.active()) service.observe(r, board.snapshot());
   });

@@ -9,6 +9,7 @@
 #include "andros/cli/settings.hpp"
 #include "andros/mapping/feedback.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/run/engine_frames.hpp"
 
 namespace andros::cli {
 
@@ -26,20 +27,7 @@ struct EngineSetup {
 /// InputError for a bad mapping.
 EngineSetup load_engine(const Settings& settings);
 
-/// The run loop's frame source, whose engine a reload replaces. Everything
-/// is called on the loop's thread.
-class ReloadableFrames final : public run::FrameSource {
- public:
-  explicit ReloadableFrames(std::unique_ptr<run::FrameSource> inner) : inner_(std::move(inner)) {}
-  void replace(std::unique_ptr<run::FrameSource> inner) { inner_ = std::move(inner); }
-
-  run::Step step(const input::InputState& input, std::int64_t now_ms) override { return inner_->step(input, now_ms); }
-  [[nodiscard]] protocol::DataBytes neutral() const override { return inner_->neutral(); }
-  void restart() override { inner_->restart(); }
-
- private:
-  std::unique_ptr<run::FrameSource> inner_;
-};
+using run::ReloadableFrames;
 
 /// A reload changes the mapping (robot, mapping) and weapons. The port, baud,
 /// code, rate and input are the link's and the clock's: changing them needs a

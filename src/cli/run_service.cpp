@@ -10,7 +10,7 @@ std::string service_status_line(const view::RunStatus& s) {
   std::string state;
   if (s.shutting_down) state = "stopping: neutral frames";
   else if (s.enabled) state = s.enable_text;
-  else state = "not enabled: " + s.enable_text;
+  else state = std::string(run::to_string(s.state)) + ": " + s.enable_text;
   std::string link = fmt::format("link {}: {}", s.link_name, link::to_string(s.link_state));
   if (!s.motion_allowed) link += " (neutral frames only: the server stalled)";
   else if (!s.link_detail.empty() && s.link_state != link::LinkState::kUp) link += " (" + s.link_detail + ")";
@@ -23,7 +23,7 @@ void ServiceReporter::observe(const run::TickReport& report, const view::RunStat
   std::string line = service_status_line(status);
   if (!reload_failure_.empty()) line += "; " + reload_failure_;
   std::string message;
-  if (!ready_ && report.result == link::SendResult::kSent && !report.shutting_down) {
+  if (!ready_ && report.result == link::SendResult::kSent && !report.shutting_down()) {
     ready_ = true;
     message = "READY=1\n";
   }

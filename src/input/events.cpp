@@ -115,9 +115,35 @@ std::optional<InputEvent> EventReader::next() {
         }
       }
       if (!found) throw fail(tokens[3], "unknown hat position " + quote(tokens[3].text));
+    } else if (kind.text == "link") {
+      want_args(1, "link down|up|taken");
+      const auto& what = tokens[2].text;
+      if (what == "down") {
+        ev.type = T::kLinkDown;
+      } else if (what == "up") {
+        ev.type = T::kLinkUp;
+      } else if (what == "taken") {
+        ev.type = T::kLinkTaken;
+      } else {
+        throw fail(tokens[2], "unknown link event " + quote(what) + " (expected down, up or taken)");
+      }
+    } else if (kind.text == "suspend") {
+      want_args(0, "suspend");
+      ev.type = T::kSuspend;
+    } else if (kind.text == "resume") {
+      want_args(0, "resume");
+      ev.type = T::kResume;
+    } else if (kind.text == "stop") {
+      want_args(0, "stop");
+      ev.type = T::kStop;
+    } else if (kind.text == "reload") {
+      if (tokens.size() > 3) throw fail(tokens[3], "expected 'reload [MAPPING]'");
+      ev.type = T::kReload;
+      if (tokens.size() == 3) ev.name = std::string(tokens[2].text);
     } else {
       throw fail(kind, "unknown event " + quote(kind.text) +
-                           " (expected connect, disconnect, button, axis, hat or end)");
+                           " (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, "
+                           "reload or stop)");
     }
     last_t_ = ev.t_ms;
     return ev;
@@ -157,6 +183,13 @@ std::string format_event(const InputEvent& event) {
       break;
     case T::kDisconnect: out += "disconnect"; break;
     case T::kEnd: out += "end"; break;
+    case T::kLinkDown: out += "link down"; break;
+    case T::kLinkUp: out += "link up"; break;
+    case T::kLinkTaken: out += "link taken"; break;
+    case T::kSuspend: out += "suspend"; break;
+    case T::kResume: out += "resume"; break;
+    case T::kStop: out += "stop"; break;
+    case T::kReload: out += event.name.empty() ? "reload" : pad("reload") + event.name; break;
     case T::kButton: out += pad("button") + input_name(event.key) + ' ' + std::to_string(event.value); break;
     case T::kAxis: out += pad("axis") + input_name(event.key) + ' ' + std::to_string(event.value); break;
     case T::kHat: {

@@ -63,6 +63,10 @@ void InputState::set_button(InputKey key, bool down, bool initial) {
 
 void InputState::apply(const InputEvent& event) {
   using T = InputEvent::Type;
+  if (event.is_fault()) {
+    faults_.push_back(event);
+    return;
+  }
   if (event.type == T::kConnect) {
     // A new session: nothing carries over from the last one.
     connected_ = true;

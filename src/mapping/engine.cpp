@@ -69,7 +69,14 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
     // Presses made before start-up are history: they neither act nor enable.
     for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
     if (mapping_->deadman) deadman_base_ = input.button(mapping_->deadman->key).presses;
+    // A trigger released now may be squeezed afresh.
+    deadman_released_seen_ = !deadman_held(input);
   }
+}
+
+void Engine::restart(const input::InputState& now) {
+  started_ = true;
+  start_session(now, true);
 }
 
 // An input the rest rule holds back neither holds nor presses (the deadman and

@@ -14,7 +14,7 @@ class EngineFrames final : public FrameSource {
     return Step{data, engine_.status()};
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
-  void restart() override { engine_.restart(); }
+  void restart(const input::InputState& now) override { engine_.restart(now); }
 
  private:
   mapping::Engine engine_;

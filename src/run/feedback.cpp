@@ -8,7 +8,9 @@ using mapping::EnableState;
 using mapping::FeedbackEvent;
 
 FeedbackStatus feedback_status(const TickReport& report) {
-  return {report.connected, report.engine.enable,
+  // Enabled as the state machine says, never as the engine alone sees it: the
+  // pad's light cannot say "enabled" while nothing reaches the vehicle.
+  return {report.connected, report.engine.enable, report.enabled(),
           report.link.state == link::LinkState::kUp && report.link.motion_allowed};
 }
 
@@ -19,10 +21,8 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
   }
   if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
   // A lost controller cannot be told anything: no "disabled" with it.
-  if (before.enable == EnableState::kEnabled && after.enable != EnableState::kEnabled && after.connected) {
-    events.push_back(FeedbackEvent::kDisabled);
-  }
-  if (after.enable == EnableState::kEnabled && before.enable != EnableState::kEnabled) {
+  if (before.enabled && !after.enabled && after.connected) events.push_back(FeedbackEvent::kDisabled);
+  if (after.enabled && !before.enabled) {
     events.push_back(FeedbackEvent::kEnabled);
   }
   if (after.connected && !before.connected) events.push_back(FeedbackEvent::kControllerBack);

@@ -1,15 +1,70 @@
 #include "andros/run/replay.hpp"
 
-namespace andros::run {
+#include <optional>
 
-std::int64_t replay(input::ScriptPlayer& player, mapping::Engine& engine, const timing::FrameClock& clock, const FrameSink& sink) {
-  input::InputState input;
-  for (std::int64_t k = 0;; ++k) {
-    const auto t = clock.time_of(k);
-    player.advance_to(t, input);
-    sink(t, engine.step(input, t));
-    if (player.finished_at(t)) return k + 1;
-  }
+#include "andros/link/fault_link.hpp"
+#include "andros/run/engine_frames.hpp"
+
+namespace andros::run {
+namespace {
+
+/// The script as the loop's input.
+class PlayerInput final : public input::InputSource {
+ public:
+  explicit PlayerInput(input::ScriptPlayer& player) : player_(player) {}
+  void pump(input::InputState& state, std::int64_t now_ms) override { player_.advance_to(now_ms, state); }
+  [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_.finished_at(now_ms); }
+
+ private:
+  input::ScriptPlayer& player_;
+};
+
+}  // namespace
+
+std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const ReplayOptions& options,
+                    const FrameSink& sink) {
+  VirtualClock clock;
+  PlayerInput input(player);
+  std::string mapping_file = engine.mapping().file;
+  ReloadableFrames frames(make_engine_frames(std::move(engine)));
+  link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+  Bridge bridge(clock, input, frames, link,
+                BridgeOptions{.rate_millihertz = options.rate_millihertz,
+                              .neutral_tail_at_end = options.neutral_tail_at_end});
+
+  // A reload is read at once (the clock waits for it) and applied after its neutral frames.
+  std::optional<mapping::ValidMapping> loaded;
+  std::string loaded_file;
+  std::optional<ReloadOutcome> outcome;
+  RunControl control;
+  control.begin_reload = [&](const std::string& file) {
+    const std::string wanted = file.empty() ? mapping_file : file;
+    try {
+      loaded = options.load(wanted);
+      loaded_file = wanted;
+      outcome = ReloadOutcome{true, ""};
+    } catch (const InputError& e) {
+      outcome = ReloadOutcome{false, e.what()};
+    }
+  };
+  control.finish_reload = [&] {
+    if (outcome && outcome->ok) {
+      frames.replace(make_engine_frames(mapping::Engine(std::move(*loaded), options.engine)));
+      mapping_file = loaded_file;
+      loaded.reset();
+    }
+    return std::exchange(outcome, std::nullopt);
+  };
+
+  std::int64_t delivered = 0;
+  bridge.run(control, [&](const TickReport& r) {
+    options.observe(r);
+    if (r.sent && r.result == link::SendResult::kSent) {
+      sink(r.t_ms, r.data);
+      ++delivered;
+    }
+  });
+  return delivered;
 }
 
 }  // namespace andros::run

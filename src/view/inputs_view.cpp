@@ -154,7 +154,7 @@ std::string format_input_change(const input::InputEvent& e, const AxisUses& uses
              fmt(" %d %.3f ", v, mapping::normalise_axis(v)) + limit_text(use) + ": " + reading(use, v);
     }
     case T::kHat: return t + "hat " + std::to_string(e.key.index / 4) + " " + hat_text(e.value);
-    case T::kEnd: break;
+    default: break;  // end and the fault events: not from a controller
   }
   return t + "end";
 }

@@ -20,11 +20,12 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next = status_;
     next.t_ms = r.t_ms;
     next.sent = r.data;
-    next.shutting_down = r.shutting_down;
+    next.shutting_down = r.shutting_down();
     next.connected = r.connected;
     if (next.connected) next.controller = r.controller.empty() ? "controller" : r.controller;
-    next.enabled = r.engine.enable == mapping::EnableState::kEnabled && !r.shutting_down && !r.reloading;
-    next.enable_text = r.reloading ? "reloading the settings" : enable_text(r.engine);
+    next.state = r.state;
+    next.enabled = r.enabled();
+    next.enable_text = state_text(r);
     next.layer = r.engine.layer;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
@@ -51,9 +52,9 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     if (after.connected) spdlog::info("controller: {}", after.controller);
     else spdlog::info("controller: none connected");
   }
-  if (first_tick_ || before.enabled != after.enabled || before.enable_text != after.enable_text) {
+  if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled) spdlog::info("{}", after.enable_text);
-    else spdlog::info("not enabled: {}", after.enable_text);
+    else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
@@ -71,6 +72,25 @@ void RunStatusBoard::set_mapping(std::string robot, std::string mapping_file, bo
 RunStatus RunStatusBoard::snapshot() const {
   const std::lock_guard lock(mutex_);
   return status_;
+}
+
+std::string state_text(const run::TickReport& r) {
+  using run::OpState;
+  switch (r.state) {
+    case OpState::kNoLink:
+      return "nothing reaches the vehicle (link " + (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
+             "); once it is up, press the deadman afresh";
+    case OpState::kNoController: return "connect a controller, then press the deadman";
+    case OpState::kNotEnabled:
+      // The engine saw the deadman held, but driving was interrupted since (link, reload, resume).
+      if (r.engine.enable == mapping::EnableState::kEnabled) return "driving was interrupted: release and press the deadman again";
+      return std::string(describe(r.engine.enable));
+    case OpState::kEnabled: return enable_text(r.engine);
+    case OpState::kSuspended: return "neutral frames sent, link closed (job control)";
+    case OpState::kReloading: return "neutral frames while the settings are read";
+    case OpState::kStopping: return "sending neutral frames";
+  }
+  return "?";
 }
 
 std::string enable_text(const mapping::EngineStatus& status) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "andros/base/text.hpp"
 #include "format.hpp"
 
 namespace andros::view {
@@ -42,7 +43,7 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
   if (s.enabled && !s.shutting_down) {
     out.push_back(Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
   } else {
-    const auto text = s.shutting_down ? "SHUTTING DOWN: sending neutral frames" : "NOT ENABLED: " + s.enable_text;
+    const auto text = s.shutting_down ? "SHUTTING DOWN: sending neutral frames" : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);
     const std::string indent(kLabel.size(), ' ');
     for (const auto& part : wrap(text, room)) {

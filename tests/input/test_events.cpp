@@ -67,7 +67,11 @@ TEST_P(EventScriptErrors, NameFileLineAndColumn) {
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, EventScriptErrors,
     ::testing::Values(
-        BadScript{"0 connect\n10 jump\n", 2, 4, "unknown event 'jump' (expected connect, disconnect, button, axis, hat or end)"},
+        BadScript{"0 connect\n10 jump\n", 2, 4, "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)"},
+        BadScript{"0 connect\n10 link sideways\n", 2, 9, "unknown link event 'sideways' (expected down, up or taken)"},
+        BadScript{"0 connect\n10 link\n", 2, 4, "expected 'link down|up|taken'"},
+        BadScript{"0 connect\n10 suspend now\n", 2, 12, "expected 'suspend'"},
+        BadScript{"0 connect\n10 reload a.yaml b.yaml\n", 2, 18, "expected 'reload [MAPPING]'"},
         BadScript{"0 connect\n100 button a 1\n50 button a 0\n", 3, 1, "time 50 ms goes backwards (previous event at 100 ms)"},
         BadScript{"0 connect\n1 button trigger 1\n", 2, 10, "unknown button 'trigger'"},
         BadScript{"0 connect\n1 axis leftz 0\n", 2, 8, "unknown axis 'leftz'"},

@@ -87,8 +87,8 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
   ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
   ASSERT_EQ(f[protocol::signal_id("drive")], 255);
   ASSERT_EQ(f[protocol::signal_id("tool_on")], 1);
-  engine.restart();  // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
   apply_script(in, "50 button y 1\n");  // a press while stopped is history too
+  engine.restart(in);  // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
   f = protocol::read_signals(engine.step(in, 80));
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);

@@ -8,6 +8,7 @@
 #include "andros/base/error.hpp"
 #include "andros/input/script_input.hpp"
 #include "andros/link/pty_pair.hpp"
+#include "andros/link/fault_link.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "support/frame_reader.hpp"
@@ -15,11 +16,13 @@
 namespace andros::run {
 namespace {
 
-/// A stand-in for the mapping engine: drive 200 while button a is held.
+/// A stand-in for the mapping engine: drive 200 while button a is held,
+/// pressed after the last restart.
 class PressToDrive final : public FrameSource {
  public:
   Step step(const input::InputState& input, std::int64_t) override {
-    const bool enabled = input.connected() && input.button(*input::parse_button_name("a")).down;
+    const auto a = input.button(*input::parse_button_name("a"));
+    const bool enabled = input.connected() && a.down && a.presses > base_;
     protocol::ControlState s;
     s[protocol::signal_id("drive")] = enabled ? 200 : 128;
     s[protocol::signal_id("pivot")] = 128;
@@ -34,8 +37,14 @@ class PressToDrive final : public FrameSource {
     s[protocol::signal_id("pivot")] = 128;
     return protocol::FrameBuilder(0x3C).build(s);
   }
-  void restart() override { ++restarts; }
+  void restart(const input::InputState& now) override {
+    ++restarts;
+    base_ = now.button(*input::parse_button_name("a")).presses;
+  }
   int restarts = 0;
+
+ private:
+  std::uint32_t base_ = 0;
 };
 
 /// An input that never ends.
@@ -45,13 +54,14 @@ class Idle final : public input::InputSource {
   bool finished(std::int64_t) const override { return false; }
 };
 
-/// A bridge at 25 Hz from an idle input to a pty, the far end read by the test.
-struct OnPty {
-  link::PtyPair pty = link::open_pty_pair();
+/// A bridge at 25 Hz on a virtual clock from an idle input to a sink that keeps what it took.
+struct OnSink {
+  VirtualClock clock;
   Idle input;
   PressToDrive frames;
-  link::SerialLink link{pty.path, 9600};
-  Bridge bridge{input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
+  std::vector<protocol::Frame> got;
+  link::SinkLink link{[this](std::int64_t, const protocol::Frame& f) { got.push_back(f); }};
+  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
 };
 
 std::string write_script(const std::string& text) {
@@ -73,17 +83,18 @@ struct ScriptOnPty {
   input::ScriptInput input;
   PressToDrive frames;
   link::SerialLink link{pty.path, 9600};
-  Bridge bridge{input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
+  RealClock clock;
+  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
 };
 
 TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
   ScriptOnPty on("0 connect pad\n40 button a 1\n120 button a 0\n160 end\n");
-  auto& [pty, script, input, frames, link, bridge] = on;
+  auto& [pty, script, input, frames, link, clock, bridge] = on;
   std::vector<std::int64_t> times;
   int shutdown_ticks = 0;
   bridge.run([] { return false; },
              [&](const TickReport& r) {
-               if (r.shutting_down) ++shutdown_ticks;
+               if (r.shutting_down()) ++shutdown_ticks;
                else times.push_back(r.t_ms);
              });
   EXPECT_EQ(times, (std::vector<std::int64_t>{0, 40, 80, 120, 160}));
@@ -101,10 +112,22 @@ TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
   EXPECT_EQ(link.state(), link::LinkState::kConnecting);  // closed
 }
 
-TEST(Bridge, EachReportCarriesTheStepsStatusAndTheLinksState) {
-  ScriptOnPty on("0 connect pad\n40 button a 1\n120 end\n");
+/// A script through the bridge on a virtual clock into a sink: the reports.
+std::vector<TickReport> run_script(const std::string& text, PressToDrive& frames, const RunControl& control = {}) {
+  const auto path = write_script(text);
+  input::ScriptInput input(path);
+  std::filesystem::remove(path);
+  VirtualClock clock;
+  link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
   std::vector<TickReport> ticks;
-  on.bridge.run([] { return false; }, [&](const TickReport& r) { ticks.push_back(r); });
+  bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
+  return ticks;
+}
+
+TEST(Bridge, EachReportCarriesTheStepsStatusTheStateAndTheLinksState) {
+  PressToDrive frames;
+  const auto ticks = run_script("0 connect pad\n40 button a 1\n120 end\n", frames);
   ASSERT_EQ(ticks.size(), 4u + 3u);
   for (std::size_t i = 0; i < ticks.size(); ++i) {
     const auto& r = ticks[i];
@@ -113,118 +136,174 @@ TEST(Bridge, EachReportCarriesTheStepsStatusAndTheLinksState) {
     // Shutting down, the status is the last step's.
     const auto enable = i == 0 ? mapping::EnableState::kDeadmanReleased : mapping::EnableState::kEnabled;
     EXPECT_EQ(r.engine.enable, enable) << "tick " << i;
-    EXPECT_EQ(r.data[7], i == 0 || r.shutting_down ? 128 : 200) << "tick " << i;
-    // Taken after this tick's send.
-    const auto& c = r.link.counters;
-    EXPECT_EQ(c.sent + c.busy + c.down, i + 1) << "tick " << i;
-    if (r.result == link::SendResult::kSent) {
-      EXPECT_EQ(r.link.state, link::LinkState::kUp);
-    }
+    const auto state = i == 0 ? OpState::kNotEnabled : i < 4 ? OpState::kEnabled : OpState::kStopping;
+    EXPECT_EQ(r.state, state) << "tick " << i;
+    EXPECT_EQ(r.data[7], i == 0 || r.shutting_down() ? 128 : 200) << "tick " << i;
+    EXPECT_EQ(r.link.counters.sent, i + 1) << "tick " << i;
   }
 }
 
-TEST(Bridge, AStopRequestEndsOnNeutralFrames) {
-  OnPty on;
-  auto& [pty, input, frames, link, bridge] = on;
+TEST(Bridge, AStopRequestEndsOnNeutralFramesAndTheLinkClosed) {
+  OnSink on;
   int ticks = 0;
   int neutral = 0;
-  bridge.run([&] { return ticks >= 4; },
-             [&](const TickReport& r) {
-               ++ticks;
-               if (r.shutting_down && r.result == link::SendResult::kSent) ++neutral;
-             });
+  on.bridge.run([&] { return ticks >= 4; },
+                [&](const TickReport& r) {
+                  ++ticks;
+                  if (r.shutting_down() && r.result == link::SendResult::kSent) ++neutral;
+                });
   EXPECT_EQ(neutral, 3);
-  test::FrameReader reader(pty.master.get());
-  EXPECT_EQ(reader.next(7, 2000).size(), 7u);
+  EXPECT_EQ(on.got.size(), 7u);
+  EXPECT_EQ(on.link.state(), link::LinkState::kConnecting);  // closed
+  EXPECT_TRUE(on.bridge.shutdown_report().ok());
 }
 
 TEST(Bridge, TheTickThatSeesAStopCarriesTheFirstNeutralFrame) {
-  OnPty on;
-  auto& [pty, input, frames, link, bridge] = on;
+  OnSink on;
   std::int64_t polls = 0;
   std::vector<TickReport> ticks;
-  bridge.run([&] { return ++polls > 4; }, [&](const TickReport& r) { ticks.push_back(r); });
-  // Polled before ticks 0..4; the stop is seen on tick 4, which is neutral, not left out.
+  on.bridge.run([&] { return ++polls > 4; }, [&](const TickReport& r) { ticks.push_back(r); });
+  // Polled on ticks 0..4; the stop is seen on tick 4, which is neutral, not left out.
   ASSERT_EQ(ticks.size(), 7u);
   for (std::size_t i = 0; i < ticks.size(); ++i) {
     EXPECT_EQ(ticks[i].tick, static_cast<std::int64_t>(i));
-    EXPECT_EQ(ticks[i].shutting_down, i >= 4) << "tick " << i;
+    EXPECT_EQ(ticks[i].t_ms, static_cast<std::int64_t>(i) * 40);
+    EXPECT_EQ(ticks[i].shutting_down(), i >= 4) << "tick " << i;
   }
 }
 
 TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
-  OnPty on;
-  auto& [pty, input, frames, link, bridge] = on;
+  OnSink on;
   int polls = 0;
   int paused = 0;
   std::vector<TickReport> ticks;
   std::vector<std::size_t> ticks_at_pause;
-  const RunControl control{
-      [&] {
-        ++polls;
-        if (polls == 3) return Request::kSuspend;
-        if (polls == 6) return Request::kResumed;
-        return polls >= 8 ? Request::kStop : Request::kNone;
-      },
-      [&] {
-        ++paused;
-        ticks_at_pause.push_back(ticks.size());
-        EXPECT_EQ(link.state(), link::LinkState::kConnecting);  // drained and closed
-      }};
-  bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
+  RunControl control;
+  control.poll = [&] {
+    ++polls;
+    if (polls == 3) return Request::kSuspend;
+    if (polls == 6) return Request::kResumed;
+    return polls >= 8 ? Request::kStop : Request::kNone;
+  };
+  control.pause = [&] {
+    ++paused;
+    ticks_at_pause.push_back(ticks.size());
+    EXPECT_EQ(on.link.state(), link::LinkState::kConnecting);  // drained and closed
+    on.clock.advance(std::chrono::seconds(5));                 // the process stays stopped a while
+  };
+  const int restarts_before = on.frames.restarts;
+  on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
   EXPECT_EQ(paused, 1);
-  EXPECT_EQ(frames.restarts, 2);  // after the pause, and on the resume
+  // After the pause, when the link comes back, and on the SIGSTOP-behind-the-back resume.
+  EXPECT_EQ(on.frames.restarts - restarts_before, 3);
   // Ticks 0, 1; the suspend seen on tick 2 sends neutral frames on 2, 3, 4; the pause.
   ASSERT_EQ(ticks_at_pause, std::vector<std::size_t>{5});
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(ticks[i].shutting_down, i >= 2) << "tick " << i;
-  // Then the run goes on after the neutral ticks, without a burst, and ends on 3 neutral frames.
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(ticks[i].state == OpState::kSuspended, i >= 2) << "tick " << i;
+  // Then the run goes on at the first tick still to come, without a burst, and ends on 3 neutral frames.
   ASSERT_EQ(ticks.size(), 5u + 4u + 3u);
-  EXPECT_GT(ticks[5].tick, ticks[4].tick);
+  EXPECT_EQ(ticks[5].tick, 4 + 125 + 1);  // 5 s after tick 4: tick 129 is due, 130 the first to come
   EXPECT_EQ(ticks[5].skipped, 0);
-  EXPECT_FALSE(ticks[5].shutting_down);
-  EXPECT_TRUE(ticks[9].shutting_down);
-  test::FrameReader reader(pty.master.get());
-  EXPECT_EQ(reader.next(12, 2000).size(), 12u);
+  EXPECT_EQ(ticks[5].state, OpState::kNoController);  // the link came back: a new link; no pad here
+  EXPECT_TRUE(ticks[9].shutting_down());
+  EXPECT_EQ(on.got.size(), 12u);
 }
 
-TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkThenStartsAfresh) {
-  OnPty on;
-  auto& [pty, input, frames, link, bridge] = on;
+TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenStartsAfresh) {
+  OnSink on;
   int polls = 0;
+  int finish_calls = 0;
   std::vector<TickReport> ticks;
-  std::vector<std::size_t> ticks_at_reload;
-  const RunControl control{[&] {
-                                 ++polls;
-                                 if (polls == 3) return Request::kReload;
-                                 return polls >= 6 ? Request::kStop : Request::kNone;
-                               },
-                               [] { FAIL() << "a reload is not a pause"; },
-                               [&] {
-                                 ticks_at_reload.push_back(ticks.size());
-                                 EXPECT_EQ(link.state(), link::LinkState::kUp);  // not closed
-                                 EXPECT_EQ(frames.restarts, 0);                // restarted after the swap
-                               }};
-  bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
-  EXPECT_EQ(frames.restarts, 1);
-  // Ticks 0, 1; the reload seen on tick 2 sends neutral frames on 2, 3, 4; the swap.
-  ASSERT_EQ(ticks_at_reload, std::vector<std::size_t>{5});
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(ticks[i].reloading, i >= 2) << "tick " << i;
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_FALSE(ticks[i].shutting_down) << "tick " << i;
-  // Then on, without a gap or a burst: 2 ticks, and the stop's 3 neutral frames.
-  ASSERT_EQ(ticks.size(), 5u + 2u + 3u);
-  EXPECT_EQ(ticks[5].tick, ticks[4].tick + 1);
-  EXPECT_EQ(link.counters().losses, 0u);
-  test::FrameReader reader(pty.master.get());
-  EXPECT_EQ(reader.next(10, 2000).size(), 10u);
+  std::vector<std::string> begun;
+  RunControl control;
+  control.poll = [&] {
+    ++polls;
+    if (polls == 3) return Request::kReload;
+    if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: ignored
+    return polls >= 9 ? Request::kStop : Request::kNone;
+  };
+  control.pause = [] { FAIL() << "a reload is not a pause"; };
+  control.begin_reload = [&](const std::string& mapping) { begun.push_back(mapping); };
+  control.finish_reload = [&]() -> std::optional<ReloadOutcome> {
+    EXPECT_EQ(on.link.state(), link::LinkState::kUp);  // not closed
+    // The reading takes two ticks more than the neutral frames.
+    if (++finish_calls < 3) return std::nullopt;
+    return ReloadOutcome{true, ""};
+  };
+  const int restarts_before = on.frames.restarts;
+  on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
+  EXPECT_EQ(begun, std::vector<std::string>{""});
+  EXPECT_EQ(on.frames.restarts - restarts_before, 1);
+  // Ticks 0, 1; the reload seen on tick 2: neutral frames on 2..6 (3 at least, then while it reads).
+  for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(ticks[i].reloading(), i >= 2) << "tick " << i;
+  EXPECT_EQ(finish_calls, 3);
+  ASSERT_EQ(ticks.size(), 7u + 1u + 3u);
+  EXPECT_EQ(ticks[7].tick, ticks[6].tick + 1);  // without a gap
+  EXPECT_EQ(ticks[7].state, OpState::kNoController);
+  for (const auto& r : ticks) EXPECT_EQ(r.data[7], 128);
 }
 
-TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
+TEST(Bridge, ALinkThatComesBackLandsInNotEnabledUntilAFreshPress) {
+  PressToDrive frames;
+  // a held from 40; the link lost at 120 and back at 200; released at 280, pressed at 320.
+  const auto ticks = run_script(
+      "0 connect pad\n40 button a 1\n120 link down\n200 link up\n280 button a 0\n320 button a 1\n400 end\n", frames);
+  std::vector<std::pair<std::int64_t, int>> delivered;  // t, drive
+  for (const auto& r : ticks) {
+    if (r.result == link::SendResult::kSent && !r.shutting_down()) delivered.emplace_back(r.t_ms, r.data[7]);
+  }
+  const std::vector<std::pair<std::int64_t, int>> want = {
+      {0, 128}, {40, 200}, {80, 200}, {200, 128}, {240, 128}, {280, 128}, {320, 200}, {360, 200}, {400, 200}};
+  EXPECT_EQ(delivered, want);
+  EXPECT_EQ(ticks[3].state, OpState::kNoLink);
+  EXPECT_EQ(ticks[3].link.detail, "link down (event script)");
+  EXPECT_EQ(ticks[5].state, OpState::kNotEnabled);
+}
+
+TEST(Bridge, APortTakenAndRegainedIsANewLink) {
+  PressToDrive frames;
+  const auto ticks =
+      run_script("0 connect pad\n40 button a 1\n80 link taken\n160 link up\n240 end\n", frames);
+  for (const auto& r : ticks) {
+    if (r.t_ms >= 80 && !r.shutting_down()) {
+      EXPECT_EQ(r.data[7], 128) << r.t_ms;
+      EXPECT_NE(r.state, OpState::kEnabled) << r.t_ms;
+    }
+  }
+  EXPECT_EQ(ticks[2].link.detail, "taken by another program (event script)");
+}
+
+TEST(Bridge, AScriptSuspendSendsNeutralFramesClosesTheLinkAndSendsNothingUntilResumed) {
+  PressToDrive frames;
+  const auto ticks =
+      run_script("0 connect pad\n40 button a 1\n80 suspend\n400 resume\n600 end\n", frames);
+  std::vector<std::int64_t> sent_at;
+  for (const auto& r : ticks) {
+    if (r.sent && r.result == link::SendResult::kSent) sent_at.push_back(r.t_ms);
+    if (r.t_ms >= 80 && !r.shutting_down()) {
+      EXPECT_EQ(r.data[7], 128) << r.t_ms;
+    }
+  }
+  // 0, 40; neutral 80, 120, 160; nothing until 400; then on to the end and its neutral frames.
+  std::vector<std::int64_t> want = {0, 40, 80, 120, 160};
+  for (std::int64_t t = 400; t <= 600; t += 40) want.push_back(t);
+  for (std::int64_t t = 640; t <= 720; t += 40) want.push_back(t);
+  EXPECT_EQ(sent_at, want);
+}
+
+TEST(Bridge, KeepsTicksWhileTheLinkIsDownAndSaysNoLink) {
+  VirtualClock clock;
   Idle input;
   PressToDrive frames;
   link::SerialLink link("/nonexistent/andros-port", 9600);
-  Bridge bridge(input, frames, link, BridgeOptions{.rate_millihertz = 50'000});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 50'000});
   int ticks = 0;
-  bridge.run([&] { return ticks >= 5; }, [&](const TickReport&) { ++ticks; });
+  bridge.run([&] { return ticks >= 5; },
+             [&](const TickReport& r) {
+               ++ticks;
+               if (!r.shutting_down()) {
+                 EXPECT_EQ(r.state, OpState::kNoLink);
+               }
+             });
   EXPECT_EQ(ticks, 5 + 3 + 5);  // frames computed; the shutdown's tries bounded
   EXPECT_EQ(link.counters().sent, 0u);
 }
@@ -232,51 +311,50 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDown) {
 /// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
 class StallOnce final : public FrameSource {
  public:
+  explicit StallOnce(VirtualClock& clock) : clock_(clock) {}
   Step step(const input::InputState& input, std::int64_t now_ms) override {
-    if (now_ms == 80) {
-      const timespec stall{0, 130'000'000};
-      nanosleep(&stall, nullptr);
-    }
+    if (now_ms == 80) clock_.advance(std::chrono::milliseconds(130));
     return inner_.step(input, now_ms);
   }
   protocol::DataBytes neutral() const override { return inner_.neutral(); }
-  void restart() override {}
+  void restart(const input::InputState&) override {}
 
  private:
+  VirtualClock& clock_;
   PressToDrive inner_;
 };
 
 TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
-  auto pty = link::open_pty_pair();
+  VirtualClock clock;
   Idle input;
-  StallOnce frames;
-  link::SerialLink link(pty.path, 9600);
-  Bridge bridge(input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  StallOnce frames(clock);
+  link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
   std::vector<TickReport> ticks;
   bridge.run([&] { return ticks.size() >= 6; }, [&](const TickReport& r) {
-    if (!r.shutting_down) ticks.push_back(r);
+    if (!r.shutting_down()) ticks.push_back(r);
   });
-  ASSERT_GE(ticks.size(), 4u);
+  ASSERT_EQ(ticks.size(), 6u);
   EXPECT_EQ(ticks[2].tick, 2);
-  // 130 ms after tick 2's time (80 ms) ticks 3 and 4 (120, 160) are past:
+  // 130 ms after tick 2's time (80 ms) ticks 3..5 (120, 160, 200) are past:
   // the next frame is the latest tick due, once, with the others skipped.
-  EXPECT_GE(ticks[3].tick, 5);
-  EXPECT_EQ(ticks[3].skipped, ticks[3].tick - 3);
-  EXPECT_EQ(ticks[3].t_ms, ticks[3].tick * 40);
-  for (std::size_t i = 4; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].skipped, ticks[i].tick - ticks[i - 1].tick - 1);
+  EXPECT_EQ(ticks[3].tick, 5);
+  EXPECT_EQ(ticks[3].skipped, 2);
+  EXPECT_EQ(ticks[3].t_ms, 200);
+  EXPECT_EQ(ticks[4].tick, 6);
+  EXPECT_EQ(ticks[4].skipped, 0);
 }
 
 TEST(Bridge, ReportsWhetherTheNeutralFramesReachedTheLink) {
-  OnPty on;  // a pty: the frames go out
-  auto& [pty, input, frames, link, delivered] = on;
+  OnSink on;  // the frames go out
   int ticks = 0;
-  delivered.run([&] { return ticks >= 2; }, [&](const TickReport&) { ++ticks; });
-  EXPECT_TRUE(delivered.shutdown_report().ok());
-  EXPECT_EQ(delivered.shutdown_report().neutral_sent, 3);
+  on.bridge.run([&] { return ticks >= 2; }, [&](const TickReport&) { ++ticks; });
+  EXPECT_TRUE(on.bridge.shutdown_report().ok());
+  EXPECT_EQ(on.bridge.shutdown_report().neutral_sent, 3);
 
   // A device gone: nothing could be handed over, and the caller is told.
   link::SerialLink gone("/nonexistent/andros-port", 9600);
-  Bridge lost(input, frames, gone, BridgeOptions{.rate_millihertz = 50'000});
+  Bridge lost(on.clock, on.input, on.frames, gone, BridgeOptions{.rate_millihertz = 50'000});
   ticks = 0;
   lost.run([&] { return ticks >= 2; }, [&](const TickReport&) { ++ticks; });
   EXPECT_FALSE(lost.shutdown_report().ok());

@@ -10,10 +10,10 @@ using mapping::EnableState;
 using E = mapping::FeedbackEvent;
 using Events = std::vector<E>;
 
-constexpr FeedbackStatus kIdle{false, EnableState::kNoController, true};
-constexpr FeedbackStatus kConnected{true, EnableState::kDeadmanReleased, true};
-constexpr FeedbackStatus kRefused{true, EnableState::kDeadmanNotFresh, true};
-constexpr FeedbackStatus kEnabled{true, EnableState::kEnabled, true};
+constexpr FeedbackStatus kIdle{false, EnableState::kNoController, false, true};
+constexpr FeedbackStatus kConnected{true, EnableState::kDeadmanReleased, false, true};
+constexpr FeedbackStatus kRefused{true, EnableState::kDeadmanNotFresh, false, true};
+constexpr FeedbackStatus kEnabled{true, EnableState::kEnabled, true, true};
 
 FeedbackStatus link_down(FeedbackStatus s) {
   s.link_up = false;
@@ -26,6 +26,18 @@ TEST(FeedbackEvents, EachChangeGivesItsEvent) {
   EXPECT_EQ(feedback_events(kEnabled, kConnected), Events{E::kDisabled});
   EXPECT_EQ(feedback_events(kConnected, kRefused), Events{E::kDeadmanRefused});
   EXPECT_EQ(feedback_events(kEnabled, link_down(kEnabled)), Events{E::kLinkLost});
+}
+
+TEST(FeedbackStatus, EnabledIsTheOperatingStatesNotTheEngines) {
+  // The engine saw a fresh press, but nothing reaches the vehicle: the light stays off.
+  TickReport r;
+  r.connected = true;
+  r.engine.enable = EnableState::kEnabled;
+  r.state = OpState::kNoLink;
+  EXPECT_FALSE(feedback_status(r).enabled);
+  EXPECT_EQ(feedback_events(kConnected, feedback_status(r)), Events{E::kLinkLost});  // no kEnabled
+  r.state = OpState::kEnabled;
+  EXPECT_TRUE(feedback_status(r).enabled);
 }
 
 TEST(FeedbackEvents, NoChangeNoEvent) {

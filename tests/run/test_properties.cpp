@@ -163,7 +163,10 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
   CentreOracle centre(mapping);
   std::size_t next_event = 0;
   protocol::ControlState previous = protocol::read_signals(engine.neutral());
-  replay(player, engine, timing::FrameClock(timing::kDefaultRateMillihertz), [&](std::int64_t t, const protocol::DataBytes& data) {
+  TickReport last;  // the tick's report comes before its frame
+  ReplayOptions options{.engine = {weapons, 0x5A}};
+  options.observe = [&last](const TickReport& r) { last = r; };
+  replay(player, std::move(engine), options, [&](std::int64_t t, const protocol::DataBytes& data) {
     for (; next_event < script.size() && script[next_event].t_ms <= t; ++next_event) {
       oracle.apply(script[next_event]);
       centre.apply(script[next_event]);
@@ -173,10 +176,10 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
     const auto where = [&] { return "t=" + std::to_string(t) + " in\n" + text; };
     ASSERT_TRUE(protocol::validation_errors(data).empty()) << where();
     ASSERT_EQ(data[protocol::kCodeByte], 0x5A);
-    ASSERT_EQ(engine.status().enable == mapping::EnableState::kEnabled, enabled) << where();
+    ASSERT_EQ(last.engine.enable == mapping::EnableState::kEnabled, enabled) << where();
     ASSERT_EQ(s[protocol::signal_id("safety")], enabled ? 1 : 0) << where();
     for (const auto id : {protocol::signal_id("drive"), protocol::signal_id("pivot")}) {
-      if (centre.must_centre(id, engine.status().layer, enabled)) {
+      if (centre.must_centre(id, last.engine.layer, enabled)) {
         ASSERT_EQ(s[id], mapping.center) << protocol::info(id).name << " before its stick was seen at rest, " << where();
       } else if (enabled && s[id] != mapping.center) {
         ++coverage[id];

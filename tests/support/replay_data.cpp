@@ -72,7 +72,8 @@ void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rat
   TextReader in(read_text(events), events, kEventScriptLimits);
   input::ScriptPlayer player(in);
   std::vector<std::pair<std::int64_t, protocol::DataBytes>> got;
-  run::replay(player, engine, timing::FrameClock(rate_millihertz), [&](std::int64_t t, const protocol::DataBytes& d) { got.emplace_back(t, d); });
+  run::replay(player, std::move(engine), run::ReplayOptions{.rate_millihertz = rate_millihertz, .engine = {weapons, code}},
+              [&](std::int64_t t, const protocol::DataBytes& d) { got.emplace_back(t, d); });
 
   const auto want = read_expected(expected, code);
   ASSERT_EQ(got.size(), want.size()) << "frame count of " << events;

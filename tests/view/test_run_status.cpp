@@ -11,6 +11,7 @@ run::TickReport tick(std::int64_t t_ms) {
   r.result = link::SendResult::kSent;
   r.connected = true;
   r.controller = "pad";
+  r.state = run::OpState::kEnabled;
   r.engine.enable = mapping::EnableState::kEnabled;
   r.engine.layer = "arm";
   r.link.state = link::LinkState::kUp;
@@ -65,12 +66,40 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.link_detail.rfind("neutral frames only", 0), 0u) << s.link_detail;
 
   r = tick(120);
-  r.shutting_down = true;  // the last step said enabled; shutting down is never enabled
+  r.state = run::OpState::kStopping;  // the last step said enabled; shutting down is never enabled
   board.observe(r);
   s = board.snapshot();
   EXPECT_TRUE(s.shutting_down);
   EXPECT_FALSE(s.enabled);
-  EXPECT_EQ(s.enable_text, "enabled");
+  EXPECT_EQ(s.enable_text, "sending neutral frames");
+}
+
+TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
+  RunStatusBoard board(RunStatus{});
+  // The engine sees the deadman freshly held, but the port does not exist:
+  // nothing reaches the vehicle, and the screen must not say ENABLED.
+  auto r = tick(40);
+  r.state = run::OpState::kNoLink;
+  r.result = link::SendResult::kDown;
+  r.link.state = link::LinkState::kConnecting;
+  r.link.detail = "No such file or directory";
+  board.observe(r);
+  auto s = board.snapshot();
+  EXPECT_FALSE(s.enabled);
+  EXPECT_EQ(s.state, run::OpState::kNoLink);
+  EXPECT_NE(s.enable_text.find("nothing reaches the vehicle (link No such file or directory)"), std::string::npos)
+      << s.enable_text;
+  // The link came back: a new link, the deadman held through it is not a fresh press.
+  r.state = run::OpState::kNotEnabled;
+  board.observe(r);
+  s = board.snapshot();
+  EXPECT_FALSE(s.enabled);
+  EXPECT_EQ(s.enable_text, "driving was interrupted: release and press the deadman again");
+  for (const auto state : {run::OpState::kSuspended, run::OpState::kReloading, run::OpState::kNoController}) {
+    r.state = state;
+    board.observe(r);
+    EXPECT_FALSE(board.snapshot().enabled) << run::to_string(state);
+  }
 }
 
 TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {

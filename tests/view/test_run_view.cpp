@@ -21,6 +21,7 @@ RunStatus driving(bool weapons) {
   s.input = "controller";
   s.connected = true;
   s.controller = "Xbox 360 Controller";
+  s.state = run::OpState::kEnabled;
   s.enabled = true;
   s.enable_text = "enabled";
   s.layer = "arm";
@@ -80,6 +81,7 @@ TEST(RunView, AtLeastTheBannerAndTheStateOnATinyTerminal) {
 
 TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   RunStatus s = driving(false);
+  s.state = run::OpState::kNotEnabled;
   s.enabled = false;
   s.enable_text = "deadman released";
   s.link_state = link::LinkState::kConnecting;
@@ -99,8 +101,20 @@ TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   EXPECT_NE(ok.find("\x1b[1;97;41m"), std::string::npos) << ok;
 }
 
+TEST(RunView, TheHeadlineIsTheOperatingState) {
+  RunStatus s = driving(false);
+  s.state = run::OpState::kNoLink;
+  s.enabled = false;
+  s.enable_text = "nothing reaches the vehicle";
+  EXPECT_EQ(shown(s, {80, 24})[1], "state       NO LINK: nothing reaches the vehicle   layer: arm");
+  s.state = run::OpState::kReloading;
+  s.enable_text = "neutral frames while the settings are read";
+  EXPECT_EQ(shown(s, {80, 24})[1], "state       RELOADING: neutral frames while the settings are read   layer: arm");
+}
+
 TEST(RunView, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
   RunStatus s = driving(false);
+  s.state = run::OpState::kNotEnabled;
   s.enabled = false;
   s.enable_text = "deadman held since connect or start-up: release and press it again";
   const auto lines = shown(s, {80, 24});

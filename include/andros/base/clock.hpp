@@ -4,9 +4,13 @@
 /// the periodic schedule every periodic loop keeps. What stops a loop is
 /// StopRequest (stop.hpp).
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 
 namespace andros {
+
+using Nanos = std::chrono::nanoseconds;
 
 inline constexpr std::int64_t kNsPerMs = 1'000'000;
 inline constexpr std::int64_t kNsPerSecond = 1'000'000'000;
@@ -18,6 +22,38 @@ std::int64_t monotonic_ns();
 /// frame clock's sleep, which nothing may shorten. A sleep that a stop request
 /// should end is StopRequest::sleep_until.
 void sleep_until_ns_uninterrupted(std::int64_t abs_ns);
+
+/// The time a loop reads and sleeps on, injected so that the same loop runs
+/// live (RealClock) and in replay and tests (VirtualClock), byte for byte.
+class Clock {
+ public:
+  virtual ~Clock() = default;
+  /// Time since an arbitrary epoch; never goes back.
+  [[nodiscard]] virtual Nanos now() const = 0;
+  /// Returns once now() >= t (at once when it already is). Nothing shortens
+  /// it: a stop is answered on the tick that sees it.
+  virtual void sleep_until(Nanos t) = 0;
+};
+
+/// CLOCK_MONOTONIC, absolute sleeps that a signal does not shorten.
+class RealClock final : public Clock {
+ public:
+  [[nodiscard]] Nanos now() const override { return Nanos(monotonic_ns()); }
+  void sleep_until(Nanos t) override { sleep_until_ns_uninterrupted(t.count()); }
+};
+
+/// A clock that moves only when slept on: sleep_until(t) sets it to t. A
+/// loop on it runs as fast as it computes, through the same ticks as live.
+class VirtualClock final : public Clock {
+ public:
+  [[nodiscard]] Nanos now() const override { return now_; }
+  void sleep_until(Nanos t) override { now_ = std::max(now_, t); }
+  /// Time passing outside the loop (a stall, a paused process).
+  void advance(Nanos d) { now_ += d; }
+
+ private:
+  Nanos now_{0};
+};
 
 /// A periodic schedule in exact integers: tick k falls floor(k * cycle_ns /
 /// ticks_per_cycle) ns after the start, so that no rounding accumulates from

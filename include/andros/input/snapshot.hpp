@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace andros::input {
 
@@ -55,13 +57,26 @@ std::optional<InputKey> parse_axis_name(std::string_view name);
 std::string input_name(InputKey key);
 
 struct InputEvent {
-  enum class Type : std::uint8_t { kConnect, kDisconnect, kButton, kAxis, kHat, kEnd };
+  enum class Type : std::uint8_t {
+    kConnect, kDisconnect, kButton, kAxis, kHat, kEnd,
+    // Fault events (docs/event-scripts.md): what happens around the
+    // controller, for the run loop to answer as it answers the real thing.
+    kLinkDown,   ///< `link down`: the link is lost
+    kLinkUp,     ///< `link up`: it is back
+    kLinkTaken,  ///< `link taken`: another program holds the port
+    kSuspend,    ///< `suspend`: job control (Ctrl-Z)
+    kResume,     ///< `resume`: fg after it
+    kReload,     ///< `reload [FILE]`: SIGHUP; name = the mapping file to load (empty: the same one)
+    kStop,       ///< `stop`: SIGINT/SIGTERM, the run ends on neutral frames
+  };
+  /// A fault event: one the controller's snapshot does not take.
+  [[nodiscard]] bool is_fault() const { return type >= Type::kLinkDown; }
 
   std::int64_t t_ms = 0;
   Type type = Type::kEnd;
   InputKey key{};       ///< button or axis; for kHat, {kHat, hat * 4}
   int value = 0;        ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
-  std::string name;     ///< controller name, for kConnect
+  std::string name;     ///< controller name, for kConnect; the mapping file, for kReload
   int line = 0;         ///< source line in an event script, 0 when live
 };
 
@@ -91,6 +106,10 @@ class InputState {
   /// The hat's SDL_HAT_* mask (0 = centred).
   [[nodiscard]] int hat(int hat_index) const;
 
+  /// The fault events applied since the last call, in order (the run loop
+  /// answers them; the snapshot itself ignores them).
+  [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
+
  private:
   void set_button(InputKey key, bool down, bool initial);
 
@@ -100,6 +119,7 @@ class InputState {
   std::string name_;
   std::map<InputKey, ButtonState> buttons_;
   std::map<InputKey, std::int16_t> axes_;
+  std::vector<InputEvent> faults_;
 };
 
 }  // namespace andros::input

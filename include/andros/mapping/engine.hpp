@@ -35,9 +35,10 @@ class Engine {
   /// call is start-up: deadman presses counted before it are not fresh.
   protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms);
 
-  /// Makes the next step a start-up again (after the process was paused):
-  /// presses made before it are history, the deadman needs a fresh press.
-  void restart() { started_ = false; }
+  /// Starts afresh from the input as it is now (the run loop's rebase: after
+  /// a link regained, a reload, a resume): every press it has counted is
+  /// history, the deadman needs a fresh press, toggles and layers are cleared.
+  void restart(const input::InputState& now);
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at centre.

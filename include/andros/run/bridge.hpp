@@ -1,19 +1,26 @@
 #pragma once
-/// The run loop: on every tick of an absolute-time clock, pump the input,
-/// compute the frame, send it; on a stop request or the end of the input,
-/// send neutral frames at the normal period, drain and close the link. A
-/// suspend request (job control) sends the same neutral frames, then pauses;
-/// a reload request sends them, swaps the settings, and starts afresh.
+/// The run loop, live and in replay: on every tick of an injected clock, pump
+/// the input, answer the requests and fault events through the operating
+/// state machine (operating_state.hpp), compute the frame, send it (motion
+/// only in "enabled"). A stop sends neutral frames at the normal period,
+/// drains and closes the link; a suspend sends the same frames, closes the
+/// link and pauses; a reload sends neutral frames while the settings are read
+/// off the loop, then starts afresh. Whatever interrupted driving, only a
+/// fresh deadman press enables again.
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "andros/base/clock.hpp"
 #include "andros/input/input_source.hpp"
 #include "andros/input/snapshot.hpp"
+#include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/protocol/frame.hpp"
+#include "andros/run/operating_state.hpp"
 #include "andros/timing/tick_schedule.hpp"
 
 namespace andros::run {
@@ -24,18 +31,18 @@ struct Step {
   mapping::EngineStatus status;
 };
 
-/// What computes the frames: the mapping engine in `run`, a fixed frame in
-/// the benchmarks and tests.
+/// What computes the frames: the mapping engine in `run` and replay, a fixed
+/// frame in the benchmarks and tests.
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
   /// The frame for the tick at now_ms (ms since start) from this input.
   virtual Step step(const input::InputState& input, std::int64_t now_ms) = 0;
-  /// The frame sent at shutdown.
+  /// The neutral frame (stop, suspend, reload, no link, not enabled).
   [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
-  /// After a pause: the next step is a start-up again (presses made before it
-  /// are history; the deadman needs a fresh press).
-  virtual void restart() = 0;
+  /// Starts afresh from the input as it is now: every press it has counted
+  /// is history, and the deadman needs a fresh press after it.
+  virtual void restart(const input::InputState& now) = 0;
 };
 
 /// What one tick did, for the status view and the log. Values only, copied by
@@ -47,19 +54,27 @@ struct TickReport {
   std::int64_t skipped = 0;  ///< ticks skipped before this one after a stall
   protocol::DataBytes data{};  ///< the frame offered to the link (result: whether it took it)
   link::SendResult result = link::SendResult::kDown;
-  bool shutting_down = false;
+  bool sent = true;          ///< false: nothing was offered this tick (suspended, link closed)
+  OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
   bool connected = false;    ///< a controller is connected
   std::string controller;    ///< its name (may be empty)
-  mapping::EngineStatus engine;  ///< after this tick's step (shutting down: the last step's)
+  mapping::EngineStatus engine;  ///< after this tick's step (the last step's when none ran)
   link::LinkStatus link;     ///< after this tick's send
-  bool reloading = false;   ///< one of a reload's neutral frames
+
+  [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
+  [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
+  [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
 };
 
 struct BridgeOptions {
   std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;
-  int shutdown_frames = 3;     ///< neutral frames sent at the end
+  int shutdown_frames = 3;     ///< neutral frames sent at a stop, a suspend and a reload
   int shutdown_extra_ticks = 5;///< ticks allowed beyond those for frames the link refused
   int drain_timeout_ms = 300;
+  /// The end of the input ends the run on neutral frames (run); false: on
+  /// the last frame, as replay's contract has it (a script's `stop` still
+  /// gives them).
+  bool neutral_tail_at_end = true;
 };
 
 /// What the world around the loop asks of it, read at each tick.
@@ -68,18 +83,29 @@ enum class Request : std::uint8_t {
   kStop,     ///< end the run (SIGINT, SIGTERM)
   kSuspend,  ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
   kResumed,  ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
-  kReload,   ///< reread the settings (SIGHUP): neutral frames, RunControl::reload, then afresh
+  kReload,   ///< reread the settings (SIGHUP): neutral frames while they are read, then afresh
+};
+
+/// How a reload ended.
+struct ReloadOutcome {
+  bool ok = false;      ///< the new settings are in place; false: the old ones stay
+  std::string message;  ///< why not, when not
 };
 
 struct RunControl {
-  std::function<Request()> poll;
+  std::function<Request()> poll = [] { return Request::kNone; };
   /// Called after a suspend's neutral frames (link drained and closed);
   /// returns when the run goes on.
-  std::function<void()> pause;
-  /// Called after a reload's neutral frames (the link stays open), on the
-  /// loop's thread: swaps the frame source's settings, or keeps them and
-  /// says why. The frame source is then restarted (a fresh deadman press).
-  std::function<void()> reload = [] {};
+  std::function<void()> pause = [] {};
+  /// Starts reading the settings again, off the loop (mapping: an event
+  /// script's `reload FILE`, empty for the configured one); returns at once.
+  std::function<void(const std::string& mapping)> begin_reload = [](const std::string&) {};
+  /// Called on the loop's thread at each tick of a reload once its neutral
+  /// frames are out: nullopt while the reading goes on; then the outcome,
+  /// with the new settings already swapped in when ok.
+  std::function<std::optional<ReloadOutcome>()> finish_reload = [] {
+    return std::optional<ReloadOutcome>(ReloadOutcome{false, "no reload here"});
+  };
 };
 
 /// How the neutral frames at the end went.
@@ -95,8 +121,7 @@ class Bridge {
   using StopCheck = std::function<bool()>;
   using Observer = std::function<void(const TickReport&)>;
 
-  Bridge(input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options)
-      : input_(input), frames_(frames), link_(link), options_(options), schedule_(options.rate_millihertz) {}
+  Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options);
 
   /// Runs until a stop request or the end of the input, then shuts down. A
   /// request seen on tick k is answered on tick k: its frame is the first
@@ -106,29 +131,52 @@ class Bridge {
   /// The same, with stop() as the only request.
   void run(const StopCheck& stop, const Observer& observe);
 
-  /// After run(): whether the neutral frames reached the link. When not, the
-  /// vehicle may still be acting on the last frame it got: the caller says so
-  /// and exits 1.
+  /// After run() (or a suspend): whether the neutral frames reached the link.
+  /// When not, the vehicle may still be acting on the last frame it got: the
+  /// caller says so and exits 1.
   [[nodiscard]] const ShutdownReport& shutdown_report() const { return shutdown_report_; }
+  [[nodiscard]] const OperatingState& state() const { return machine_; }
 
  private:
-  void shutdown(std::int64_t start_ns, std::int64_t tick, const Observer& observe);
-  /// The values a tick's report carries, copied now.
-  [[nodiscard]] TickReport report(std::int64_t tick, std::int64_t t_ms, std::int64_t skipped,
-                                  const protocol::DataBytes& data, link::SendResult result,
-                                  bool shutting_down) const;
-  /// Neutral frames from tick `tick` on (tick is left at the next one to
-  /// send); returns how many the link took.
-  int send_neutral(std::int64_t start_ns, std::int64_t& tick, const Observer& observe, bool reloading);
+  /// One tick of the driving states or of a reload; false once the run ends.
+  bool tick(const RunControl& control, const Observer& observe);
+  void on_request(Request request, const RunControl& control);
+  void on_fault(const input::InputEvent& fault, const RunControl& control);
+  /// The event through the machine; a rebase restarts the frame source from the input as it is.
+  Effect apply(OpEvent event);
+  void begin_suspend();
+  void begin_reload(const RunControl& control, const std::string& mapping);
+  /// Sends the frame, answers what the link did, reports.
+  link::SendResult send(const protocol::DataBytes& data, const Observer& observe);
+  /// Neutral frames from the current tick on (left at the next one to
+  /// send), then the link drained and closed: a stop's and a suspend's.
+  void neutral_then_close(const Observer& observe);
+  void suspend(const RunControl& control, const Observer& observe);
+  void advance();
+  [[nodiscard]] bool link_up() const;
+  [[nodiscard]] OpEvent link_lost_event() const;
+  [[nodiscard]] TickReport report(const protocol::DataBytes& data, link::SendResult result, bool sent) const;
 
+  Clock& clock_;
   input::InputSource& input_;
   FrameSource& frames_;
-  link::Link& link_;
+  link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
+  OperatingState machine_;
   input::InputState state_;
   mapping::EngineStatus engine_status_;  ///< the last step's
   ShutdownReport shutdown_report_;
+  Nanos start_{0};
+  std::int64_t tick_ = 0;     ///< the tick to run next
+  std::int64_t skipped_ = 0;
+  int reload_neutral_ = 0;     ///< neutral frames a reload has sent so far
+  int reload_ticks_ = 0;
+  bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames
+  bool suspend_frames_due_ = false;   ///< suspended, its neutral frames not sent yet
+  bool suspend_pending_ = false;      ///< asked for during a reload
+  bool resume_pending_ = false;       ///< a script's resume seen before its suspend's frames went
+  bool closed_ = false;               ///< the run's last neutral frames are out
 };
 
 }  // namespace andros::run

@@ -1,5 +1,6 @@
 #pragma once
-// The mapping engine as the run loop's frame source.
+// The mapping engine as the run loop's frame source, and a frame source a
+// reload swaps.
 
 #include <memory>
 
@@ -10,5 +11,20 @@ namespace andros::run {
 
 /// The engine as a frame source for the run loop.
 std::unique_ptr<FrameSource> make_engine_frames(mapping::Engine engine);
+
+/// The run loop's frame source, whose engine a reload replaces. Everything
+/// is called on the loop's thread.
+class ReloadableFrames final : public FrameSource {
+ public:
+  explicit ReloadableFrames(std::unique_ptr<FrameSource> inner) : inner_(std::move(inner)) {}
+  void replace(std::unique_ptr<FrameSource> inner) { inner_ = std::move(inner); }
+
+  Step step(const input::InputState& input, std::int64_t now_ms) override { return inner_->step(input, now_ms); }
+  [[nodiscard]] protocol::DataBytes neutral() const override { return inner_->neutral(); }
+  void restart(const input::InputState& now) override { inner_->restart(now); }
+
+ private:
+  std::unique_ptr<FrameSource> inner_;
+};
 
 }  // namespace andros::run

@@ -1,24 +1,46 @@
 #pragma once
-/// Replay (docs/event-scripts.md): an event script through the engine on a
-/// virtual clock. Same script, same mapping, same options: same bytes, on any
-/// machine, at any speed. The CLI's `replay` is a thin wrapper over this.
+/// Replay (docs/event-scripts.md): an event script through the run loop
+/// itself (Bridge) on a virtual clock, with the script as the input and a
+/// sink as the link. Same script, same mapping, same options: same bytes, on
+/// any machine, at any speed, fault events (link, suspend, reload, stop)
+/// included. The CLI's `replay` is a thin wrapper over this.
 
-#include <array>
 #include <cstdint>
 #include <functional>
+#include <string>
 
+#include "andros/base/error.hpp"
 #include "andros/input/script_player.hpp"
 #include "andros/mapping/engine.hpp"
-#include "andros/timing/rate.hpp"
+#include "andros/run/bridge.hpp"
 
 namespace andros::run {
 
+/// A frame the vehicle received: its time (ms since start) and data bytes.
 using FrameSink = std::function<void(std::int64_t t_ms, const protocol::DataBytes& data)>;
+/// A script's `reload FILE`: the mapping in FILE (as the script names it),
+/// validated; throws InputError for a bad one (the old mapping then stays).
+using MappingLoader = std::function<mapping::ValidMapping(const std::string& file)>;
 
-/// Steps the engine at every frame time from t = 0 through the first frame
-/// time >= the script's end (its `end`, or its last event), each frame
-/// reflecting every event with a time <= its own. Returns the frame count.
-std::int64_t replay(input::ScriptPlayer& player, mapping::Engine& engine, const timing::FrameClock& clock,
+struct ReplayOptions {
+  std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;
+  mapping::EngineOptions engine;
+  /// The end of the script ends on the last frame (the contract's replay); a
+  /// `stop` event always ends on the neutral frames of a stop.
+  bool neutral_tail_at_end = false;
+  /// For `reload`: FILE, or the running mapping's file when the event names none.
+  MappingLoader load = [](const std::string& file) -> mapping::ValidMapping {
+    throw InputError("reload " + file + ": no mapping loader in this replay");
+  };
+  /// Every tick's report (the state machine's state with it), for tests.
+  Bridge::Observer observe = [](const TickReport&) {};
+};
+
+/// Runs the loop from t = 0 through the first frame time >= the script's end
+/// (its `end`, or its last event), each frame reflecting every event with a
+/// time <= its own; frames the link did not take (a `link down`, a suspend)
+/// are not delivered. Returns the count delivered.
+std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const ReplayOptions& options,
                     const FrameSink& sink);
 
 }  // namespace andros::run

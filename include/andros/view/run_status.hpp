@@ -41,4 +41,8 @@ class RunStatusBoard {
 /// stick pushed through the deadman press explains itself.
 std::string enable_text(const mapping::EngineStatus& status);
 
+/// The operating state in words for the screen, the log and the service
+/// status: why nothing moves, or (enabled) what the engine still holds back.
+std::string state_text(const run::TickReport& report);
+
 }  // namespace andros::view

@@ -13,6 +13,7 @@
 #include "andros/link/vehicle_snapshot.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
+#include "andros/run/operating_state.hpp"
 #include "andros/timing/frame_timing.hpp"
 #include "andros/view/screen.hpp"
 
@@ -46,8 +47,9 @@ struct RunStatus {
   std::string input;             ///< "sdl" or the script's path
   std::string controller;        ///< its name; empty when none is connected
   bool connected = false;
-  bool enabled = false;
-  std::string enable_text;
+  run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
+  bool enabled = false;          ///< state == kEnabled
+  std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
   bool shutting_down = false;
   std::string link_name;

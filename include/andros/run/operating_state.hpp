@@ -1,0 +1,90 @@
+#pragma once
+/// The bridge's operating state: one machine that every event around the
+/// frame loop goes through (docs/safety-states.md has its table and diagram).
+/// Motion is sent only in kEnabled, and the only way into kEnabled is a fresh
+/// deadman press seen in kNotEnabled. Everything that interrupts driving (the
+/// link lost, regained or taken, the controller lost, a reload, a suspend or
+/// a resume) lands in a state that is not kEnabled, and the way back from
+/// each passes through kNotEnabled with the engine rebased, so that a press
+/// made before it is history. What the screen, the log, the pad's light and
+/// the service status say is read from this state.
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace andros::run {
+
+enum class OpState : std::uint8_t {
+  kNoLink,        ///< the link is not up: nothing reaches the vehicle
+  kNoController,  ///< the link is up, no controller
+  kNotEnabled,    ///< needs a fresh deadman press, inputs at rest
+  kEnabled,       ///< frames follow the controller
+  kSuspended,     ///< job control: neutral frames sent, link closed, waiting to go on
+  kReloading,     ///< neutral frames while the settings are read again
+  kStopping,      ///< the run ends: neutral frames, drain, close
+};
+
+enum class OpEvent : std::uint8_t {
+  kLinkUp,          ///< the link came up (first time or again)
+  kLinkDown,        ///< the link was lost
+  kLinkTaken,       ///< another program holds the port
+  kControllerUp,    ///< a controller connected
+  kControllerDown,  ///< the controller was lost
+  kFreshPress,      ///< the engine saw a fresh deadman press (it holds back inputs not at rest)
+  kRelease,         ///< the engine is no longer enabled (deadman released)
+  kReloadBegin,     ///< SIGHUP, or a script's `reload`
+  kReloadDone,      ///< the reload's outcome is in (applied or refused)
+  kSuspend,         ///< Ctrl-Z, or a script's `suspend`
+  kResume,          ///< fg / SIGCONT, or a script's `resume`
+  kShutdown,        ///< SIGINT, SIGTERM, a script's `stop` or its end
+};
+
+/// What the loop must do on a transition, besides sending per the new state.
+struct Effect {
+  bool changed = false;  ///< the state changed
+  /// The engine starts afresh from the input as it is now: every press so
+  /// far is history, the deadman needs a fresh press (FrameSource::restart).
+  bool rebase = false;
+};
+
+/// One row of the transition table: in `from`, `event` leads to `to`.
+/// kSettle as a target: the first of kNoLink, kNoController, kNotEnabled
+/// whose condition holds (link down; no controller; otherwise).
+struct Transition {
+  OpState from;
+  OpEvent event;
+  OpState to;
+  bool rebase;
+  bool settle;  ///< `to` is decided by the link and controller (see above)
+};
+
+class OperatingState {
+ public:
+  /// link_up: the link is up before the first frame (a replay's sink).
+  explicit OperatingState(bool link_up = false);
+
+  [[nodiscard]] OpState state() const { return state_; }
+  [[nodiscard]] bool motion_allowed() const { return state_ == OpState::kEnabled; }
+  [[nodiscard]] bool link_up() const { return link_up_; }
+  [[nodiscard]] bool controller_up() const { return controller_up_; }
+
+  /// Applies one event. An event with no row for the current state changes
+  /// nothing but the link and controller conditions it reports.
+  Effect on(OpEvent event);
+
+  /// The whole table, for docs and tests.
+  static std::span<const Transition> table();
+
+ private:
+  [[nodiscard]] OpState settled() const;
+
+  OpState state_;
+  bool link_up_;
+  bool controller_up_ = false;
+};
+
+std::string_view to_string(OpState state);
+std::string_view to_string(OpEvent event);
+
+}  // namespace andros::run

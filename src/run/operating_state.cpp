@@ -1,0 +1,119 @@
+#include "andros/run/operating_state.hpp"
+
+#include <array>
+
+namespace andros::run {
+namespace {
+
+using S = OpState;
+using E = OpEvent;
+
+constexpr Transition row(S from, E event, S to, bool rebase = false) { return {from, event, to, rebase, false}; }
+constexpr Transition settle(S from, E event, bool rebase) { return {from, event, S::kNotEnabled, rebase, true}; }
+
+// Written out row by row, so that docs/safety-states.md and the tests read the same table.
+constexpr auto kTable = std::to_array<Transition>({
+    // The link.
+    row(S::kNoController, E::kLinkDown, S::kNoLink),
+    row(S::kNotEnabled, E::kLinkDown, S::kNoLink),
+    row(S::kEnabled, E::kLinkDown, S::kNoLink),
+    row(S::kNoController, E::kLinkTaken, S::kNoLink),
+    row(S::kNotEnabled, E::kLinkTaken, S::kNoLink),
+    row(S::kEnabled, E::kLinkTaken, S::kNoLink),
+    settle(S::kNoLink, E::kLinkUp, true),  // a link that comes back is a new link
+    // The controller.
+    row(S::kNotEnabled, E::kControllerDown, S::kNoController),
+    row(S::kEnabled, E::kControllerDown, S::kNoController),
+    // The engine counts presses per connection: one held at connect is not fresh.
+    settle(S::kNoController, E::kControllerUp, false),
+    // The deadman.
+    row(S::kNotEnabled, E::kFreshPress, S::kEnabled),
+    row(S::kEnabled, E::kRelease, S::kNotEnabled),
+    // Reload, suspend, shutdown: from any driving state.
+    row(S::kNoLink, E::kReloadBegin, S::kReloading),
+    row(S::kNoController, E::kReloadBegin, S::kReloading),
+    row(S::kNotEnabled, E::kReloadBegin, S::kReloading),
+    row(S::kEnabled, E::kReloadBegin, S::kReloading),
+    settle(S::kReloading, E::kReloadDone, true),
+    row(S::kNoLink, E::kSuspend, S::kSuspended),
+    row(S::kNoController, E::kSuspend, S::kSuspended),
+    row(S::kNotEnabled, E::kSuspend, S::kSuspended),
+    row(S::kEnabled, E::kSuspend, S::kSuspended),
+    settle(S::kSuspended, E::kResume, true),
+    // Stopped behind the loop's back (SIGSTOP) and continued: afresh too.
+    settle(S::kNoLink, E::kResume, true),
+    settle(S::kNoController, E::kResume, true),
+    settle(S::kNotEnabled, E::kResume, true),
+    settle(S::kEnabled, E::kResume, true),
+    row(S::kNoLink, E::kShutdown, S::kStopping),
+    row(S::kNoController, E::kShutdown, S::kStopping),
+    row(S::kNotEnabled, E::kShutdown, S::kStopping),
+    row(S::kEnabled, E::kShutdown, S::kStopping),
+    row(S::kSuspended, E::kShutdown, S::kStopping),
+    row(S::kReloading, E::kShutdown, S::kStopping),
+});
+
+}  // namespace
+
+OperatingState::OperatingState(bool link_up) : state_(S::kNoLink), link_up_(link_up) { state_ = settled(); }
+
+std::span<const Transition> OperatingState::table() { return kTable; }
+
+OpState OperatingState::settled() const {
+  if (!link_up_) return S::kNoLink;
+  if (!controller_up_) return S::kNoController;
+  return S::kNotEnabled;
+}
+
+Effect OperatingState::on(OpEvent event) {
+  // The conditions the settled states read are kept whatever the state.
+  switch (event) {
+    case E::kLinkUp: link_up_ = true; break;
+    case E::kLinkDown:
+    case E::kLinkTaken: link_up_ = false; break;
+    case E::kControllerUp: controller_up_ = true; break;
+    case E::kControllerDown: controller_up_ = false; break;
+    default: break;
+  }
+  for (const auto& t : kTable) {
+    if (t.from != state_ || t.event != event) continue;
+    const OpState to = t.settle ? settled() : t.to;
+    const bool changed = to != state_;
+    state_ = to;
+    return Effect{changed, t.rebase};
+  }
+  return {};
+}
+
+std::string_view to_string(OpState state) {
+  switch (state) {
+    case S::kNoLink: return "no link";
+    case S::kNoController: return "no controller";
+    case S::kNotEnabled: return "not enabled";
+    case S::kEnabled: return "enabled";
+    case S::kSuspended: return "suspended";
+    case S::kReloading: return "reloading";
+    case S::kStopping: return "stopping";
+  }
+  return "?";
+}
+
+std::string_view to_string(OpEvent event) {
+  switch (event) {
+    case E::kLinkUp: return "link up";
+    case E::kLinkDown: return "link down";
+    case E::kLinkTaken: return "link taken";
+    case E::kControllerUp: return "controller up";
+    case E::kControllerDown: return "controller down";
+    case E::kFreshPress: return "fresh deadman press";
+    case E::kRelease: return "deadman released";
+    case E::kReloadBegin: return "reload";
+    case E::kReloadDone: return "reload done";
+    case E::kSuspend: return "suspend";
+    case E::kResume: return "resume";
+    case E::kShutdown: return "shutdown";
+  }
+  return "?";
+}
+
+}  // namespace andros::run
