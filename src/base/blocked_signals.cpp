@@ -28,6 +28,13 @@ BlockedSignals::~BlockedSignals() {
 
 int BlockedSignals::take() { return take_from(set_); }
 
+bool BlockedSignals::take(int sig) {
+  sigset_t one;
+  sigemptyset(&one);
+  sigaddset(&one, sig);
+  return take_from(one) == sig;
+}
+
 void BlockedSignals::discard(std::initializer_list<int> only) {
   sigset_t set = set_;
   if (only.size() > 0) {

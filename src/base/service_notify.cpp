@@ -24,6 +24,19 @@ bool parse_number(std::string_view text, T& out) {
   return error == std::errc() && end == text.data() + text.size() && !text.empty();
 }
 
+/// WATCHDOG_USEC in ns, clamped to kMaxWatchdogNs (a number too long for
+/// 64 bits too); 0 for anything that is not a number of microseconds.
+std::int64_t watchdog_period_ns(std::string_view usec_text) {
+  constexpr std::uint64_t kMaxUsec = ServiceNotifier::kMaxWatchdogNs / 1000;
+  std::uint64_t usec = 0;
+  const char* const last = usec_text.data() + usec_text.size();
+  const auto [end, error] = std::from_chars(usec_text.data(), last, usec);
+  if (usec_text.empty() || end != last) return 0;
+  if (error == std::errc::result_out_of_range) return ServiceNotifier::kMaxWatchdogNs;
+  if (error != std::errc()) return 0;
+  return usec >= kMaxUsec ? ServiceNotifier::kMaxWatchdogNs : static_cast<std::int64_t>(usec) * 1000;
+}
+
 }  // namespace
 
 ServiceNotifier ServiceNotifier::from_environment() {
@@ -38,12 +51,10 @@ ServiceNotifier ServiceNotifier::from_environment() {
   notifier.fd_.reset(::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0));
 
   // The watchdog is ours only when WATCHDOG_PID, if set, names this process.
-  std::int64_t usec = 0;
   pid_t pid = 0;
   const auto pid_text = env("WATCHDOG_PID");
-  if (parse_number(env("WATCHDOG_USEC"), usec) && usec > 0 &&
-      (pid_text.empty() || (parse_number(pid_text, pid) && pid == ::getpid()))) {
-    notifier.watchdog_ns_ = usec * 1000;
+  if (pid_text.empty() || (parse_number(pid_text, pid) && pid == ::getpid())) {
+    notifier.watchdog_ns_ = watchdog_period_ns(env("WATCHDOG_USEC"));
   }
   return notifier;
 }
@@ -61,7 +72,10 @@ bool ServiceNotifier::send(std::string_view message) const {
 
 void ServiceNotifier::watchdog(std::int64_t now_ns) {
   if (watchdog_ns_ <= 0 || !fd_) return;
-  if (last_ping_ns_ >= 0 && now_ns - last_ping_ns_ < watchdog_ns_ / 2) return;
+  // With now_ns >= last_ping_ns_ >= 0 the difference cannot overflow,
+  // whatever now_ns is. A time before the last ping (never on the monotonic
+  // clock) pings.
+  if (last_ping_ns_ >= 0 && now_ns >= last_ping_ns_ && now_ns - last_ping_ns_ < watchdog_ns_ / 2) return;
   send("WATCHDOG=1");
   last_ping_ns_ = now_ns;
 }

@@ -78,7 +78,8 @@ std::string failed_neutral_frames(const run::ShutdownReport& shut, const std::st
 }
 
 /// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
-/// out, then stop until continued (fg, bg, SIGCONT), and redraw.
+/// out, then stop until continued (fg, bg, SIGCONT), and redraw. A SIGCONT
+/// during the neutral frames means it does not stop at all.
 void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>& display,
                      const run::ShutdownReport& neutral, const std::string& link) {
   if (display) display->stop();
@@ -88,8 +89,11 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
     spdlog::error("suspended (SIG{}): {}", sigabbrev_np(job.stop_signal()), failed_neutral_frames(neutral, link));
   }
   spdlog::default_logger()->flush();  // bounded
-  job.stop_process();
-  spdlog::info("resumed: not enabled until the deadman is pressed again");
+  if (job.stop_process() == JobControlSignals::Stop::kContinuedBeforeStop) {
+    spdlog::info("continued (SIGCONT) before it stopped: not enabled until the deadman is pressed again");
+  } else {
+    spdlog::info("resumed: not enabled until the deadman is pressed again");
+  }
   if (display) display->start();
 }
 

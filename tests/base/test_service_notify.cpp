@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "andros/base/service_notify.hpp"
@@ -78,6 +80,59 @@ TEST(ServiceNotifier, AWatchdogForAnotherProcessIsNotOurs) {
   ::setenv("WATCHDOG_PID", std::to_string(::getpid()).c_str(), 1);
   ::setenv("WATCHDOG_USEC", "soon", 1);
   EXPECT_EQ(ServiceNotifier::from_environment().watchdog_ns(), 0);
+}
+
+TEST(ServiceNotifier, AWatchdogUsecThatIsNotANumberIsNone) {
+  Manager manager;
+  for (const char* text : {"", "soon", "-1", "+1000000", "1000000us", " 1000000", "0"}) {
+    ::setenv("WATCHDOG_USEC", text, 1);
+    EXPECT_EQ(ServiceNotifier::from_environment().watchdog_ns(), 0) << '"' << text << '"';
+  }
+}
+
+// systemd's WATCHDOG_USEC is 64 bits unsigned: in ns, a period above ~9.2e15 us
+// overflowed (and the pings stopped). Anything above a day is a day.
+TEST(ServiceNotifier, AWatchdogPeriodAboveADayIsADay) {
+  Manager manager;
+  constexpr std::int64_t kDayUs = 86'400'000'000;
+  const struct {
+    const char* usec;
+    std::int64_t ns;
+  } cases[] = {
+      {"1", 1'000},
+      {"1000000", 1'000'000'000},
+      {"86399999999", (kDayUs - 1) * 1'000},
+      {"86400000000", ServiceNotifier::kMaxWatchdogNs},
+      {"86400000001", ServiceNotifier::kMaxWatchdogNs},
+      {"9223372036854775", ServiceNotifier::kMaxWatchdogNs},  // INT64_MAX ns, in us
+      {"9300000000000000", ServiceNotifier::kMaxWatchdogNs},
+      {"9223372036854775807", ServiceNotifier::kMaxWatchdogNs},
+      {"18446744073709551615", ServiceNotifier::kMaxWatchdogNs},  // 2^64-1
+      {"99999999999999999999999999", ServiceNotifier::kMaxWatchdogNs},  // beyond 64 bits: still a number
+  };
+  EXPECT_EQ(ServiceNotifier::kMaxWatchdogNs, kDayUs * 1'000);
+  for (const auto& c : cases) {
+    ::setenv("WATCHDOG_USEC", c.usec, 1);
+    EXPECT_EQ(ServiceNotifier::from_environment().watchdog_ns(), c.ns) << c.usec;
+  }
+}
+
+TEST(ServiceNotifier, AClampedWatchdogStillPingsEveryHalfPeriod) {
+  Manager manager;
+  constexpr std::int64_t kHalf = ServiceNotifier::kMaxWatchdogNs / 2;
+  constexpr std::int64_t kLatest = std::numeric_limits<std::int64_t>::max();
+  for (const char* usec : {"9300000000000000", "18446744073709551615"}) {
+    ::setenv("WATCHDOG_USEC", usec, 1);
+    auto notifier = ServiceNotifier::from_environment();
+    std::string pings;
+    // (now, whether it pings): the first at once, then every half day, up to the latest time there is.
+    for (const std::int64_t now : {std::int64_t{0}, kHalf - 1, kHalf, 2 * kHalf - 1, 2 * kHalf,
+                                   kLatest - kHalf, kLatest - 1, kLatest}) {
+      notifier.watchdog(now);
+      pings += manager.next() == "WATCHDOG=1" ? 'p' : '.';
+    }
+    EXPECT_EQ(pings, "p.p.pp.p") << usec;
+  }
 }
 
 TEST(ServiceNotifier, AManagerThatDoesNotReadNeverBlocks) {

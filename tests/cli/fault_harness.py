@@ -13,8 +13,8 @@ are only compared against generous bounds (a period or more of margin).
 import os, signal, subprocess, sys, tempfile, time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from fault_lib import (STARTED, Port, driving, fail, full_pipe, long_drive, read_some, start, terminal,
-                       wait_exit, wait_stopped)
+from fault_lib import (STARTED, Port, driving, fail, full_pipe, long_drive, proc_state, read_some, start,
+                       terminal, wait_exit, wait_stopped)
 
 
 def closed_log(bin_, data, port):
@@ -137,6 +137,38 @@ def background_stop(bin_, data, port):
         fail(f"exit {code}")
 
 
+def continue_early(bin_, data, port):
+    """`kill -TSTP; sleep 0.08; kill -CONT`: the SIGCONT lands during the Ctrl-Z's neutral
+    frames, before the process stops itself. It must not stop then (a SIGCONT already spent
+    would leave it stopped for good, deaf to SIGTERM): it runs on, neutral until a fresh
+    press, and SIGTERM ends it as usual."""
+    log = tempfile.TemporaryFile()  # unnamed: nothing to remove, whichever way the scenario ends
+    proc = start(long_drive(bin_, data, port), stdout=subprocess.DEVNULL, stderr=log, stdin=subprocess.DEVNULL)
+    if not port.wait(lambda f: driving(f) >= 5, 10):
+        fail("no driving frames")
+    proc.send_signal(signal.SIGTSTP)
+    time.sleep(0.08)  # the neutral frames take 3 periods (120 ms at 25 Hz) and a drain
+    proc.send_signal(signal.SIGCONT)
+    n = len(port.snapshot())
+    going = port.wait(lambda f: len(f) >= n + 10, 5)  # frames after the neutral ones
+    state = proc_state(proc.pid)
+    after = port.snapshot()[n:]
+    print(f"after SIGCONT: state {state}, {len(after)} frames, {driving(after)} driving")
+    if not going or state == "T":
+        fail(f"stopped for good after a SIGCONT during the neutral frames (state {state}, "
+             f"{len(after)} frames after it)")
+    if driving(after):
+        fail("drove after the SIGCONT without a fresh deadman press")
+    proc.send_signal(signal.SIGTERM)
+    code = wait_exit(proc, 10)
+    log.seek(0)
+    lines = [line.strip() for line in log.read().decode(errors="replace").splitlines()
+             if "SIGCONT" in line or "resumed" in line]
+    print("\n".join(lines))  # which way it went: continued before it stopped (or, late, resumed)
+    if code != 0:
+        fail(f"exit {code} after SIGTERM, expected 0")
+
+
 def paused_terminal(bin_, data, port):
     """The status view on a terminal paused with Ctrl-S: frames go on, and SIGTERM still
     ends the run through its neutral frames within a bounded time."""
@@ -179,7 +211,7 @@ def monitor_zero(bin_, data, port):
 
 
 SCENARIOS = {"closed-log": closed_log, "stuck-log": stuck_log, "stop-tick": stop_tick,
-             "job-control": job_control,
+             "job-control": job_control, "continue-early": continue_early,
              "background-stop": background_stop, "paused-terminal": paused_terminal, "monitor-zero": monitor_zero}
 
 

@@ -1,5 +1,6 @@
 # `run` and `monitor` under faults from the process around them: a log pipe
-# closed or full, the stop's timing, Ctrl-Z and SIGCONT, a paused terminal
+# closed or full, the stop's timing, Ctrl-Z and SIGCONT (also one that comes
+# during the Ctrl-Z's neutral frames), a paused terminal
 # (docs/running.md, "Logs, pipes and job control").
 source "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
@@ -18,6 +19,7 @@ scenario closed-log --min 10 --driving --neutral-tail 3
 scenario stuck-log --min 10 --driving --neutral-tail 3
 scenario stop-tick --driving --neutral-tail 3
 scenario job-control --driving --enabled --neutral-tail 3
+scenario continue-early --driving --neutral-tail 3
 scenario background-stop --driving --neutral-tail 3
 scenario paused-terminal --min 25 --driving --neutral-tail 3
 scenario monitor-zero

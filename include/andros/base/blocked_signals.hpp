@@ -20,6 +20,8 @@ class BlockedSignals {
 
   /// One pending signal of the set, or 0 when none. Never blocks.
   int take();
+  /// Takes `sig` (one of the set) if it is pending; false when it is not. Never blocks.
+  bool take(int sig);
   /// Drops every pending signal of the set, or of `only` among them.
   void discard(std::initializer_list<int> only = {});
 

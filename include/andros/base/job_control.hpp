@@ -28,8 +28,18 @@ class JobControlSignals {
   Event poll();
   /// The last stop signal seen (SIGTSTP...), 0 for none.
   [[nodiscard]] int stop_signal() const { return stop_signal_; }
+  /// How stop_process() ended.
+  enum class Stop : std::uint8_t {
+    kStopped,              ///< stopped, then continued (fg, bg, SIGCONT)
+    kContinuedBeforeStop,  ///< a SIGCONT came after the stop was asked: it was not stopped
+  };
+
   /// Stops the whole process (SIGSTOP) and returns once it is continued.
-  void stop_process();
+  /// A SIGCONT that came after the last stop signal (during the neutral
+  /// frames) already said "go on": then it returns at once, without
+  /// stopping. Stop signals still pending (a second Ctrl-Z) are answered by
+  /// this one stop.
+  [[nodiscard]] Stop stop_process();
 
  private:
   /// A Ctrl-Z during the shutdown was answered by it: dropped on the way out, it cannot stop the process.

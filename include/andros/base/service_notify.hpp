@@ -26,8 +26,14 @@ class ServiceNotifier {
   static ServiceNotifier from_environment();
   ServiceNotifier() = default;
 
+  /// The longest watchdog period kept: a day. A manager that asks for more
+  /// (up to systemd's 2^64-1 us) is pinged every half day, more often than it
+  /// needs, and no time sum can overflow.
+  static constexpr std::int64_t kMaxWatchdogNs = 24LL * 60 * 60 * 1'000'000'000;
+
   [[nodiscard]] bool active() const { return static_cast<bool>(fd_); }
-  /// The watchdog period the manager asked for (WATCHDOG_USEC), 0 for none.
+  /// The watchdog period the manager asked for (WATCHDOG_USEC), at most
+  /// kMaxWatchdogNs; 0 for none.
   [[nodiscard]] std::int64_t watchdog_ns() const { return watchdog_ns_; }
 
   /// Sends one message ("READY=1", "STATUS=..."); false when it was not sent.
