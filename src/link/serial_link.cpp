@@ -92,6 +92,16 @@ ReconnectingLink::OpenResult SerialLink::open_step(std::string& why) {
   return OpenResult::kOpen;
 }
 
+SerialLink::~SerialLink() { close_fd(); }
+
+// TIOCEXCL outlives the last close of a pseudo-terminal (its tty lives as long
+// as the master end does) and would then refuse every later open but root's,
+// this bridge's own reopen included: given up before closing.
+void SerialLink::close_fd() {
+  if (fd_) ioctl(fd_.get(), TIOCNXCL);
+  fd_.reset();
+}
+
 int SerialLink::queued_bytes() const {
   int queued = 0;
   if (ioctl(fd_.get(), TIOCOUTQ, &queued) != 0) return -1;

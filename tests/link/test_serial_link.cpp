@@ -1,6 +1,9 @@
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -12,7 +15,6 @@
 
 namespace andros::link {
 namespace {
-
 
 protocol::Frame test_frame(std::uint8_t drive) {
   protocol::ControlState s;
@@ -57,6 +59,28 @@ TEST(SerialLink, IsExclusive) {
   ASSERT_EQ(first.send(test_frame(1), monotonic_ns()), SendResult::kSent);
   EXPECT_EQ(second.send(test_frame(2), monotonic_ns()), SendResult::kDown);
   EXPECT_NE(second.detail().find("in use"), std::string::npos) << second.detail();
+}
+
+// A pseudo-terminal keeps TIOCEXCL after its last close, and would refuse
+// every later open but root's, the bridge's own reopen included.
+TEST(SerialLink, GivesUpExclusiveModeWhenItCloses) {
+  auto pty = open_pty_pair();
+  const auto exclusive_now = [&pty] {
+    const UniqueFd fd(::open(pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
+    if (!fd) return errno == EBUSY ? 1 : -1;  // refused by TIOCEXCL (all but root)
+    int exclusive = -1;
+    EXPECT_EQ(ioctl(fd.get(), TIOCGEXCL, &exclusive), 0);
+    return exclusive;
+  };
+  {
+    SerialLink link(pty.path, 9600);
+    ASSERT_EQ(link.send(test_frame(1), monotonic_ns()), SendResult::kSent);
+    EXPECT_EQ(exclusive_now(), 1);
+    link.drain_and_close(200);
+    EXPECT_EQ(exclusive_now(), 0);
+    ASSERT_EQ(link.send(test_frame(2), monotonic_ns() + 1'000'000'000), SendResult::kSent);
+  }
+  EXPECT_EQ(exclusive_now(), 0);  // destroyed while open
 }
 
 TEST(SerialLink, RefusesSomethingThatIsNotATty) {

@@ -13,11 +13,15 @@ inline constexpr int kSerialRetryMs = 200;
 class SerialLink final : public ReconnectingLink {
  public:
   SerialLink(std::string path, int baud);
+  ~SerialLink() override;
+  SerialLink(const SerialLink&) = delete;
+  SerialLink& operator=(const SerialLink&) = delete;
 
  protected:
   OpenResult open_step(std::string& why) override;
   int queued_bytes() const override;
   void finish_drain() override;
+  void close_fd() override;
 
  private:
   std::string path_;
