@@ -40,7 +40,9 @@ const std::array<Setting, 14> kTable = {{
      [](std::string_view t, const SourcePos& p, Settings& s) { s.baud = parse_baud(t, p); },
      [](const Settings& s) { return std::to_string(s.baud); }, false},
     {"serialport", "--port", "PATH|sim|tcp:HOST:PORT", kRun,
-     "where frames go: a serial device, the built-in simulated vehicle (sim) or a TCP serial server", nullptr,
+     "where frames go: a serial device (refused at start while another program holds it), the built-in simulated "
+     "vehicle (sim) or a TCP serial server",
+     nullptr,
      [](std::string_view t, const SourcePos& p, Settings& s) {
        s.port = std::string(t);
        s.port_pos = p;

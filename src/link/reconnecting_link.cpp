@@ -29,7 +29,7 @@ long ReconnectingLink::write_bytes(const std::uint8_t* data, std::size_t size) {
 int ReconnectingLink::backlog(std::int64_t /*now_ns*/, std::string& /*stalled*/) { return queued_bytes(); }
 
 void ReconnectingLink::fail_open(const std::string& why, std::int64_t now_ns) {
-  fd_.reset();
+  close_fd();
   if (why != detail_) spdlog::warn("link {}: cannot open: {}; retrying", name_, why);
   detail_ = why;
   next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * 1'000'000;
@@ -44,7 +44,7 @@ void ReconnectingLink::lose(const std::string& why, std::int64_t now_ns) {
   if (!quiet_) spdlog::warn("link {}: lost ({}); sending resumes when it is back", name_, why);
   last_loss_ = why;
   ++counters_.losses;
-  fd_.reset();
+  close_fd();
   state_ = LinkState::kConnecting;
   detail_ = why;
   if (now_ns - up_since_ns_ >= kStableNs) retry_ms_ = min_retry_ms_;
@@ -119,7 +119,7 @@ bool ReconnectingLink::drain_and_close(int timeout_ms) {
     drained = undelivered_bytes() == 0;
     if (drained) finish_drain();
   }
-  fd_.reset();
+  close_fd();
   state_ = LinkState::kConnecting;
   detail_ = "closed";
   return drained;

@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "andros/link/port_holder.hpp"
+
 namespace andros::link {
 namespace {
 
@@ -21,6 +23,20 @@ speed_t speed_of(int baud) {
     case 115200: return B115200;
     default: return B9600;  // the config parser lets no other value through
   }
+}
+
+/// The holder for a message, with how it holds the port (locked, opened
+/// exclusively) when no process can be named.
+std::string held_by(const PortHolder& holder, std::string_view how) {
+  return holder.pid > 0 ? describe(holder) : describe(holder) + " (" + std::string(how) + ")";
+}
+
+/// The start-up refusal of a port another program holds: streaming would
+/// wait for it, and take the port the moment that program lets go.
+[[noreturn]] void refuse_held_port(const std::string& path, const SourcePos& pos, std::string_view how) {
+  const PortHolder holder = find_port_holder(path);
+  const char* why = holder.program == kBridgeProgram ? "a second bridge is refused" : "the bridge will not share it";
+  throw InputError(pos, "serial port " + quote(path) + " is in use by " + held_by(holder, how) + ": " + why);
 }
 
 }  // namespace
@@ -40,13 +56,20 @@ void check_serial_port(const std::string& path, const SourcePos& pos) {
                               ": permission denied (join the dialout group, or install the udev rules: "
                               "docs/running.md)");
   }
-  // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
-  // One that cannot be opened just now (busy, gone) is left to the link, which waits for it.
+  // One that cannot be opened just now (unplugged since the stat) is left to the link, which waits for it.
   const UniqueFd fd(::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
-  if (fd && isatty(fd.get()) == 0) {
+  if (!fd) {
+    if (errno == EBUSY) refuse_held_port(path, pos, "opened exclusively");  // another's TIOCEXCL (root passes it)
+    return;
+  }
+  // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
+  if (isatty(fd.get()) == 0) {
     throw InputError(pos, "serial port " + quote(path) +
                               " is not a serial device (a character device that is not a terminal)");
   }
+  // Held by another bridge, or another program: waiting for it would hand the
+  // port over the moment that program exits. The lock taken here goes with fd.
+  if (flock(fd.get(), LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) refuse_held_port(path, pos, "locked");
 }
 
 bool configure_raw_8n1(int fd, int baud) {
@@ -71,12 +94,12 @@ SerialLink::SerialLink(std::string path, int baud)
 ReconnectingLink::OpenResult SerialLink::open_step(std::string& why) {
   UniqueFd fd(::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd) {
-    why = std::strerror(errno);
+    why = errno == EBUSY ? "taken by " + held_by(find_port_holder(path_), "opened exclusively") : std::strerror(errno);
     return OpenResult::kFailed;
   }
   // Two writers interleaving frames would corrupt both streams: the port is ours alone.
   if (flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
-    why = errno == EWOULDBLOCK ? "in use by another program (locked)" : std::strerror(errno);
+    why = errno == EWOULDBLOCK ? "taken by " + held_by(find_port_holder(path_), "locked") : std::strerror(errno);
     return OpenResult::kFailed;
   }
   if (!isatty(fd.get())) {
@@ -90,6 +113,16 @@ ReconnectingLink::OpenResult SerialLink::open_step(std::string& why) {
   tcflush(fd.get(), TCIOFLUSH);  // nothing stale from before we owned it
   fd_ = std::move(fd);
   return OpenResult::kOpen;
+}
+
+SerialLink::~SerialLink() { close_fd(); }
+
+// TIOCEXCL outlives the last close of a pseudo-terminal (its tty lives as long
+// as the master end does) and would then refuse every later open but root's,
+// this bridge's own reopen included: given up before closing.
+void SerialLink::close_fd() {
+  if (fd_) ioctl(fd_.get(), TIOCNXCL);
+  fd_.reset();
 }
 
 int SerialLink::queued_bytes() const {

@@ -1,8 +1,15 @@
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
+#include <array>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "andros/base/clock.hpp"
@@ -12,7 +19,6 @@
 
 namespace andros::link {
 namespace {
-
 
 protocol::Frame test_frame(std::uint8_t drive) {
   protocol::ControlState s;
@@ -50,13 +56,104 @@ TEST(SerialLink, WritesWholeFramesToAPty) {
   EXPECT_EQ(link.state(), LinkState::kConnecting);
 }
 
-TEST(SerialLink, IsExclusive) {
+std::string own_program_name() {
+  std::ifstream in("/proc/self/comm");
+  std::string name;
+  std::getline(in, name);
+  return name;
+}
+
+std::string own_pid_text() { return "(PID " + std::to_string(getpid()) + ")"; }
+
+/// The message check_serial_port throws for path, or "" when it passes.
+std::string check_message(const std::string& path) {
+  try {
+    check_serial_port(path, SourcePos{"andros.conf", 3, 12});
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pos().file, "andros.conf");
+    EXPECT_EQ(e.pos().line, 3);
+    EXPECT_EQ(e.pos().column, 12);
+    return e.message();
+  }
+  return "";
+}
+
+/// While it lives, this process has the name a bridge has (/proc/PID/comm).
+class NamedAsABridge {
+ public:
+  NamedAsABridge() {
+    prctl(PR_GET_NAME, saved_.data());
+    prctl(PR_SET_NAME, "andros-bridge");
+  }
+  ~NamedAsABridge() { prctl(PR_SET_NAME, saved_.data()); }
+  NamedAsABridge(const NamedAsABridge&) = delete;
+  NamedAsABridge& operator=(const NamedAsABridge&) = delete;
+
+ private:
+  std::array<char, 17> saved_{};
+};
+
+TEST(SerialLink, IsExclusiveAndNamesWhoHoldsThePort) {
   auto pty = open_pty_pair();
   SerialLink first(pty.path, 9600);
   SerialLink second(pty.path, 9600);
   ASSERT_EQ(first.send(test_frame(1), monotonic_ns()), SendResult::kSent);
   EXPECT_EQ(second.send(test_frame(2), monotonic_ns()), SendResult::kDown);
-  EXPECT_NE(second.detail().find("in use"), std::string::npos) << second.detail();
+  EXPECT_EQ(second.detail(), "taken by " + own_program_name() + " " + own_pid_text());
+  // Given back: the second link takes it at its next attempt, and says nothing of a holder.
+  ASSERT_EQ(test::FrameReader(pty.master.get()).next(1, 2000).size(), 1u);  // the first link's frame
+  first.drain_and_close(200);
+  EXPECT_TRUE(frame_gets_through(second, pty.master.get(), 3));
+  EXPECT_EQ(second.detail(), "");
+}
+
+TEST(CheckSerialPort, RefusesAPortAnotherBridgeHolds) {
+  auto pty = open_pty_pair();
+  const NamedAsABridge named;
+  SerialLink first(pty.path, 9600);
+  ASSERT_EQ(first.send(test_frame(1), monotonic_ns()), SendResult::kSent);
+  EXPECT_EQ(check_message(pty.path), "serial port '" + pty.path + "' is in use by andros-bridge " + own_pid_text() +
+                                         ": a second bridge is refused");
+}
+
+TEST(CheckSerialPort, RefusesAPortAnotherProgramLocks) {
+  auto pty = open_pty_pair();
+  const UniqueFd held(::open(pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
+  ASSERT_EQ(flock(held.get(), LOCK_EX | LOCK_NB), 0);
+  EXPECT_EQ(check_message(pty.path), "serial port '" + pty.path + "' is in use by " + own_program_name() + " " +
+                                         own_pid_text() + ": the bridge will not share it");
+}
+
+TEST(CheckSerialPort, PassesAPortNobodyHolds) {
+  auto pty = open_pty_pair();
+  EXPECT_EQ(check_message(pty.path), "");
+  EXPECT_EQ(check_message(pty.path), "");  // the check's own lock went with its descriptor
+  SerialLink first(pty.path, 9600);
+  ASSERT_EQ(first.send(test_frame(1), monotonic_ns()), SendResult::kSent);
+  first.drain_and_close(200);
+  EXPECT_EQ(check_message(pty.path), "");  // closed: its lock went with it
+}
+
+// A pseudo-terminal keeps TIOCEXCL after its last close, and would refuse
+// every later open but root's, the bridge's own reopen included.
+TEST(SerialLink, GivesUpExclusiveModeWhenItCloses) {
+  auto pty = open_pty_pair();
+  const auto exclusive_now = [&pty] {
+    const UniqueFd fd(::open(pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
+    if (!fd) return errno == EBUSY ? 1 : -1;  // refused by TIOCEXCL (all but root)
+    int exclusive = -1;
+    EXPECT_EQ(ioctl(fd.get(), TIOCGEXCL, &exclusive), 0);
+    return exclusive;
+  };
+  {
+    SerialLink link(pty.path, 9600);
+    ASSERT_EQ(link.send(test_frame(1), monotonic_ns()), SendResult::kSent);
+    EXPECT_EQ(exclusive_now(), 1);
+    link.drain_and_close(200);
+    EXPECT_EQ(exclusive_now(), 0);
+    ASSERT_EQ(link.send(test_frame(2), monotonic_ns() + 1'000'000'000), SendResult::kSent);
+  }
+  EXPECT_EQ(exclusive_now(), 0);  // destroyed while open
 }
 
 TEST(SerialLink, RefusesSomethingThatIsNotATty) {

@@ -40,6 +40,8 @@ class ReconnectingLink : public Link {
   virtual long write_bytes(const std::uint8_t* data, std::size_t size);
   /// After the queue is empty: let the last bytes leave the hardware (tcdrain).
   virtual void finish_drain() {}
+  /// Closes fd_ (when the link is lost, closed, or fails to open).
+  virtual void close_fd() { fd_.reset(); }
 
   UniqueFd fd_;
 
