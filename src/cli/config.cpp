@@ -59,9 +59,12 @@ void parse_config(TextReader& in, Settings& settings) {
   }
 }
 
-void read_config_file(const std::string& path, Settings& settings) {
-  auto in = TextReader::open(path, kConfigLimits);
+void read_config_file(const std::string& path, Settings& settings, ConfigRead read) {
+  auto in = read == ConfigRead::kReload ? TextReader::open_regular(path, kConfigLimits)
+                                        : TextReader::open(path, kConfigLimits);
   parse_config(in, settings);
+  settings.config_file = path;
+  settings.config_stream = in.regular_file() ? std::string() : in.kind();
 }
 
 std::vector<std::string> default_config_paths() {
