@@ -7,7 +7,7 @@ unix datagram socket bound here) and a pseudo-terminal as the port.
 Prints one FAIL line per broken check and exits 1 if there was any. Every
 wait is bounded.
 """
-import json, os, pty, select, signal, socket, subprocess, sys, time, tty
+import ctypes, json, os, pty, select, signal, socket, subprocess, sys, time, tty
 
 BIN, TMP, SCENARIO = sys.argv[1:4]
 LINK = os.path.join(TMP, "port")
@@ -148,45 +148,73 @@ def scenario_deaf():
     check(time.monotonic() - start < 8, "the run took too long behind a full notify socket")
 
 
+class LoopThreadStop:
+    """Stops one thread of the bridge, the loop's (the main one), with ptrace:
+    its other threads (log writer, simulated vehicle) run on, as they would
+    beside a loop stuck in a call. A signal would stop them all."""
+    PTRACE_DETACH, PTRACE_SEIZE, PTRACE_INTERRUPT, WALL = 17, 0x4206, 0x4207, 0x40000000
+
+    def __init__(self, tid):
+        self.libc = ctypes.CDLL(None, use_errno=True)
+        self.libc.ptrace.argtypes = [ctypes.c_long, ctypes.c_long, ctypes.c_void_p, ctypes.c_void_p]
+        self.libc.ptrace.restype = ctypes.c_long
+        self.tid = tid
+
+    def stop(self):
+        """True once the thread is stopped; False where ptrace is not permitted."""
+        if self.libc.ptrace(self.PTRACE_SEIZE, self.tid, None, None) != 0:
+            return False
+        self.libc.ptrace(self.PTRACE_INTERRUPT, self.tid, None, None)
+        os.waitpid(self.tid, self.WALL)  # the stop, taken here before Popen.poll() could take it for an exit
+        return True
+
+    def release(self):
+        self.libc.ptrace(self.PTRACE_DETACH, self.tid, None, None)
+
+
+def thread_states(pid):
+    states = {}
+    for tid in os.listdir(f"/proc/{pid}/task"):
+        with open(f"/proc/{pid}/task/{tid}/stat") as f:
+            states[int(tid)] = f.read().rsplit(")", 1)[1].split()[0]
+    return states
+
+
 def scenario_stall():
-    """A loop stuck on purpose: a reload reading a config FIFO whose writer sends
-    nothing. The process runs (its other threads too); the loop does not: no
-    frame, no WATCHDOG=1, until the FIFO gives the file."""
-    conf = os.path.join(TMP, "bridge.conf")
-    text = f"serialport={LINK}\nrobot=hd1\n"
-    write(conf, text)
-    run = Run(["--config", conf, "--input", script((20000, "end"))])
+    """The loop's thread stopped for 3 s while the process's other threads run:
+    no frame and no WATCHDOG=1 until it goes on (the pings come from the loop
+    itself, so that systemd restarts a loop that is stuck)."""
+    run = Run(["--input", script((20000, "end"))])
     run.pump(10, lambda: run.with_text("READY=1"))
     run.pump(1.5)
-    os.unlink(conf)
-    os.mkfifo(conf)
-    writer = os.open(conf, os.O_RDWR)  # a writer that sends nothing yet
-    run.proc.send_signal(signal.SIGHUP)
-    t_hup = run.now()
-    run.pump(3.0)
-    with open(f"/proc/{run.proc.pid}/stat") as f:
-        state = f.read().rsplit(")", 1)[1].split()[0]
+    loop = LoopThreadStop(run.proc.pid)
+    if not loop.stop():
+        print(f"SKIP: ptrace is not permitted here ({os.strerror(ctypes.get_errno())}): the stall is not checked")
+        run.proc.send_signal(signal.SIGTERM)
+        run.finish()
+        return
+    t_stop = run.now()
+    run.pump(0.3)  # frames written before the stop are read by then
+    cap_stalled = len(run.capture)
+    run.pump(2.7)
+    states = thread_states(run.proc.pid)
     t_release, cap_release = run.now(), len(run.capture)
-    os.write(writer, text.encode())
-    os.close(writer)
+    loop.release()
     run.pump(2.0)
     run.proc.send_signal(signal.SIGTERM)
     code, err = run.finish()
     check(code == 0, f"exit {code}: {err}")
-    check(state in "SR", f"the process was in state {state} during the stall, expected running or sleeping")
-    reloading = run.with_text("RELOADING=1")
-    check(len(reloading) == 1, "no RELOADING=1")
-    stall_start = reloading[0][0] + 0.3 if reloading else t_hup + 0.5
-    during, _ = watchdog_gaps(run, stall_start, t_release)
+    others = [st for tid, st in states.items() if tid != run.proc.pid]
+    check(states.get(run.proc.pid) == "t" and others and all(st in "SR" for st in others),
+          f"thread states during the stall {states}: expected the loop's stopped, the others running or sleeping")
+    during, _ = watchdog_gaps(run, t_stop + 0.1, t_release)
     check(not during, f"WATCHDOG=1 during the stall at {during}")
-    cap_stalled = max((c for t, _, c in run.messages if t <= stall_start), default=0)
-    check(cap_release - cap_stalled < 80, f"{cap_release - cap_stalled} bytes of frames during the stall")
-    _, gaps_before = watchdog_gaps(run, 0, t_hup)
+    check(cap_release - cap_stalled < 36, f"{cap_release - cap_stalled} bytes of frames during the stall")
+    _, gaps_before = watchdog_gaps(run, 0, t_stop)
     after, _ = watchdog_gaps(run, t_release, t_release + 2.0)
     check(gaps_before and max(gaps_before) <= 1.0, f"pings before the stall: gaps {gaps_before}")
     check(len(after) >= 2 and after[0] - t_release <= 1.0, f"pings after the stall: {after}")
     check(len(run.frames(cap_release)) >= 25, "frames did not resume after the stall")
-    check("reloaded (SIGHUP)" in err, f"no 'reloaded' line: {err}")
 
 
 def scenario_reload():
