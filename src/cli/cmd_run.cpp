@@ -7,7 +7,6 @@
 #include <csignal>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "andros/base/error.hpp"
@@ -87,25 +86,11 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
 
 /// SIGHUP: the configuration and mapping read again, on the loop's thread
 /// between the reload's neutral frames and a fresh start. A bad file keeps
-/// the old settings, and says why.
-void reload_settings(const RunOptions& opt, Settings& settings, ReloadableFrames& frames,
-                     run::FeedbackNotifier& feedback, view::RunStatusBoard& board, ServiceReporter& service) {
-  service.reloading();
-  try {
-    Settings fresh = resolve_settings(*opt.settings);
-    if (auto why = needs_restart(settings, fresh); !why.empty()) throw std::runtime_error(why);
-    EngineSetup setup = load_engine(fresh);
-    frames.replace(std::move(setup.frames));
-    feedback.set_table(setup.feedback);
-    settings = std::move(fresh);
-    board.set_mapping(setup.robot, setup.mapping_file, settings.weapons, setup.center);
-    spdlog::info("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
-                 setup.mapping_file, settings.weapons ? ", WEAPONS ENABLED" : "");
-    service.reloaded("");
-  } catch (const std::exception& e) {
-    spdlog::error("reload (SIGHUP) failed, the old settings stay: {}", e.what());
-    service.reloaded(std::string("reload failed: ") + e.what());
-  }
+/// the old settings, and says why. (RunReload reads them on a worker
+/// instead, once the loop can tick through a reload.)
+void reload_settings(const GivenFlags& flags, const ReloadTargets& to) {
+  to.service.reloading();
+  apply_reload(read_reload(flags, to.settings), to);
 }
 
 int run_bridge(const RunOptions& opt) {
@@ -166,7 +151,9 @@ int run_bridge(const RunOptions& opt) {
   const run::RunControl control{
       [&] { return poll_requests(stop, job); },
       [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); },
-      [&] { reload_settings(opt, config, frames, feedback, board, service); }};
+      [&, flags = opt.settings->given_flags()] {
+        reload_settings(flags, ReloadTargets{config, frames, feedback, board, service});
+      }};
   bridge.run(control, [&](const run::TickReport& r) {
     board.observe(r);
     if (!r.shutting_down && !r.reloading) feedback.observe(run::feedback_status(r));

@@ -2,7 +2,8 @@
 """`andros-bridge run` as a service manager sees it: a fake NOTIFY_SOCKET (a
 unix datagram socket bound here) and a pseudo-terminal as the port.
 
-  service_harness.py BIN TMPDIR SCENARIO     (notify | deaf | stall | reload)
+  service_harness.py BIN TMPDIR SCENARIO
+      (notify | deaf | stall | reload | fifo_reload | pipe_reload)
 
 Prints one FAIL line per broken check and exits 1 if there was any. Every
 wait is bounded.
@@ -34,7 +35,7 @@ def script(*lines):
 class Run:
     """The bridge, its port (a pty behind LINK) and its notify socket."""
 
-    def __init__(self, args, watchdog_usec=1_000_000, read_notify=True):
+    def __init__(self, args, watchdog_usec=1_000_000, read_notify=True, pass_fds=()):
         self.master, slave = pty.openpty()
         tty.setraw(self.master)
         os.symlink(os.ttyname(slave), LINK)
@@ -48,7 +49,7 @@ class Run:
         self.err = open(os.path.join(TMP, "err"), "w+")
         self.t0 = time.monotonic()
         self.proc = subprocess.Popen([BIN, "run", "--port", LINK] + args, env=env, stderr=self.err,
-                                     stdout=subprocess.DEVNULL)
+                                     stdout=subprocess.DEVNULL, pass_fds=pass_fds)
         self.capture = bytearray()
         self.messages = []  # (time, message, capture length then)
 
@@ -217,6 +218,58 @@ def scenario_stall():
     check(len(run.frames(cap_release)) >= 25, "frames did not resume after the stall")
 
 
+def scenario_fifo_reload():
+    """SIGHUP once the config file has been replaced by a FIFO whose writer
+    sends nothing: refused at once (never read), the old settings stay, frames
+    and pings go on, and SIGTERM still ends the run."""
+    conf = os.path.join(TMP, "bridge.conf")
+    write(conf, f"serialport={LINK}\nrobot=wolverine\n")
+    run = Run(["--config", conf, "--input", script((20000, "end"))])
+    run.pump(10, lambda: run.with_text("READY=1"))
+    run.pump(1.0)
+    os.unlink(conf)
+    os.mkfifo(conf)
+    writer = os.open(conf, os.O_RDWR)  # a writer that sends nothing
+    cap_hup, t_hup = len(run.capture), run.now()
+    run.proc.send_signal(signal.SIGHUP)
+    run.pump(3.0)
+    t_term = run.now()
+    run.proc.send_signal(signal.SIGTERM)
+    code, err = run.finish()
+    os.close(writer)
+    check(code == 0, f"exit {code} (SIGTERM after a reload of a FIFO): {err}")
+    check(f"reload (SIGHUP) failed, the old settings stay: {conf}: error: is a pipe, not a regular file" in err,
+          f"the refusal does not say why: {err}")
+    check("mapping" in err and "wolverine.yaml" in err and "hd1.yaml" not in err, f"the settings changed: {err}")
+    check(any("reload failed: " in m and "not a regular file" in m for _, m, _ in run.with_text("STATUS=")),
+          "no STATUS= for the refused reload")
+    check(len(run.frames(cap_hup)) >= 60, f"{len(run.frames(cap_hup))} frames in the 3 s after the SIGHUP")
+    times, gaps = watchdog_gaps(run, t_hup - 1.0, t_term)
+    check(len(times) >= 6 and max(gaps) <= 1.0, f"WATCHDOG=1 around the reload at {times}")
+
+
+def scenario_pipe_reload():
+    """`--config <(...)`: the pipe is read at start; a reload does not read it
+    again (drained, it would be an empty file and the defaults would take
+    over), says so, and reloads the mapping with the start's settings."""
+    read_end, write_end = os.pipe()
+    os.write(write_end, f"serialport={LINK}\nrobot=wolverine\nweapons=enabled\n".encode())
+    os.close(write_end)
+    config = f"/dev/fd/{read_end}"
+    run = Run(["--config", config, "--input", script((20000, "end"))], pass_fds=(read_end,))
+    os.close(read_end)
+    run.pump(10, lambda: run.with_text("READY=1"))
+    run.proc.send_signal(signal.SIGHUP)
+    run.pump(10, lambda: len(run.with_text("READY=1")) >= 2)
+    run.proc.send_signal(signal.SIGTERM)
+    code, err = run.finish()
+    check(code == 0, f"exit {code}: {err}")
+    check(f"config {config} was a pipe at start: not read again; mapping reread" in err, f"no pipe line: {err}")
+    check("reloaded (SIGHUP): mapping " in err and "wolverine.yaml, WEAPONS ENABLED;" in err,
+          f"the reload did not keep the start's robot and weapons: {err}")
+    check("hd1.yaml" not in err, f"the reload fell back to the default robot: {err}")
+
+
 def scenario_reload():
     """SIGHUP swaps config and mapping between neutral frames; the deadman needs a
     fresh press after it; a bad config keeps the old settings and says why."""
@@ -266,5 +319,6 @@ def scenario_reload():
     check(all(neutral(f) for f in third[-3:]), "the run did not end on neutral frames")
 
 
-{"notify": scenario_notify, "deaf": scenario_deaf, "stall": scenario_stall, "reload": scenario_reload}[SCENARIO]()
+{"notify": scenario_notify, "deaf": scenario_deaf, "stall": scenario_stall, "reload": scenario_reload,
+ "fifo_reload": scenario_fifo_reload, "pipe_reload": scenario_pipe_reload}[SCENARIO]()
 sys.exit(1 if failures else 0)
