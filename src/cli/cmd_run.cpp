@@ -190,8 +190,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
       "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
-      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file and the\n"
-      "mapping: neutral frames, then a fresh deadman press. Flags override the config file.\n"
+      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file (a regular\n"
+      "file only; one that was a pipe at start is not read again) and the mapping: neutral\n"
+      "frames, then a fresh deadman press. Flags override the config file.\n"
       "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);
