@@ -23,6 +23,21 @@ std::string with_article(std::string_view kind) {
   return std::string(vowel ? "an " : "a ") + std::string(kind);
 }
 
+/// A file's type as messages say it; fd (-1: not open) tells a terminal from other character devices.
+std::string file_kind(const struct stat& st, int fd) {
+  if (S_ISREG(st.st_mode)) return "a regular file";
+  if (S_ISDIR(st.st_mode)) return "a directory";
+  if (S_ISFIFO(st.st_mode)) return "a pipe";
+  if (S_ISSOCK(st.st_mode)) return "a socket";
+  if (S_ISCHR(st.st_mode)) return fd >= 0 && ::isatty(fd) == 1 ? "a terminal" : "a character device";
+  if (S_ISBLK(st.st_mode)) return "a block device";
+  return "not a regular file";
+}
+
+[[noreturn]] void fail_not_regular(const std::string& path, const std::string& kind) {
+  throw InputError(SourcePos{path}, "is " + kind + ", not a regular file");
+}
+
 }  // namespace
 
 std::string format_size(std::size_t bytes) {
@@ -39,6 +54,15 @@ TextReader TextReader::open(const std::string& path, const TextLimits& limits, S
     throw InputError(SourcePos{path}, "cannot read the " + std::string(limits.kind) + ": " + std::strerror(errno));
   }
   return TextReader(fd, true, path, limits, std::move(stop));
+}
+
+TextReader TextReader::open_regular(const std::string& path, const TextLimits& limits) {
+  struct stat st {};
+  // stat() follows a symbolic link, as open() does; a path that is missing is left to open() to report.
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) fail_not_regular(path, file_kind(st, -1));
+  TextReader reader = open(path, limits);
+  if (!reader.regular_) fail_not_regular(path, reader.kind_);
+  return reader;
 }
 
 TextReader TextReader::standard_input(const TextLimits& limits, StopCheck stop) {
@@ -61,6 +85,7 @@ TextReader::TextReader(int fd, bool owned, std::string name, const TextLimits& l
     throw InputError(SourcePos{name_}, "is a directory, not " + with_article(limits.kind));
   }
   regular_ = S_ISREG(st.st_mode);
+  kind_ = file_kind(st, fd_);
   if (regular_) start_offset_ = ::lseek(fd_, 0, SEEK_CUR);
 }
 
@@ -76,6 +101,7 @@ TextReader& TextReader::operator=(TextReader&& other) noexcept {
   fd_ = std::exchange(other.fd_, -1);
   owned_ = std::exchange(other.owned_, false);
   regular_ = other.regular_;
+  kind_ = std::move(other.kind_);
   start_offset_ = other.start_offset_;
   name_ = std::move(other.name_);
   limits_ = other.limits_;

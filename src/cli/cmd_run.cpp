@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "andros/base/error.hpp"
@@ -97,32 +96,6 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
   if (display) display->start();
 }
 
-/// SIGHUP (or a script's `reload [MAPPING]`): the configuration and mapping
-/// read again, then swapped in on the loop's thread once the reload's neutral
-/// frames are out. A bad file keeps the old settings, and says why.
-run::ReloadOutcome reload_settings(const RunOptions& opt, const std::string& mapping_override, Settings& settings,
-                                   ReloadableFrames& frames, run::FeedbackNotifier& feedback,
-                                   view::RunStatusBoard& board, ServiceReporter& service) {
-  try {
-    Settings fresh = resolve_settings(*opt.settings);
-    if (!mapping_override.empty()) fresh.mapping = mapping_override;
-    if (auto why = needs_restart(settings, fresh); !why.empty()) throw std::runtime_error(why);
-    EngineSetup setup = load_engine(fresh);
-    frames.replace(std::move(setup.frames));
-    feedback.set_table(setup.feedback);
-    settings = std::move(fresh);
-    board.set_mapping(setup.robot, setup.mapping_file, settings.weapons, setup.center);
-    spdlog::info("reloaded: mapping {}{}; not enabled until the deadman is pressed again", setup.mapping_file,
-                 settings.weapons ? ", WEAPONS ENABLED" : "");
-    service.reloaded("");
-    return {true, ""};
-  } catch (const std::exception& e) {
-    spdlog::error("reload failed, the old settings stay: {}", e.what());
-    service.reloaded(std::string("reload failed: ") + e.what());
-    return {false, e.what()};
-  }
-}
-
 int run_bridge(const RunOptions& opt) {
   Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
   const std::int64_t rate_mhz = config.rate.millihertz;
@@ -179,17 +152,17 @@ int run_bridge(const RunOptions& opt) {
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
   stop.reload_on_hangup();
-  std::string reload_mapping;  // a script's `reload MAPPING`, relative to the script's folder
+  // SIGHUP (or a script's `reload [MAPPING]`, MAPPING relative to the script's
+  // folder): the files read on a worker while the loop sends neutral frames;
+  // swapped in on the loop's thread.
+  RunReload reload(opt.settings->given_flags(), ReloadTargets{config, frames, feedback, board, service});
   run::RunControl control;
   control.poll = [&] { return poll_requests(stop, job); };
   control.pause = [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); };
   control.begin_reload = [&](const std::string& mapping) {
-    service.reloading();
-    reload_mapping = mapping.empty() ? "" : script_relative(config.input, mapping);
+    reload.begin(mapping.empty() ? "" : script_relative(config.input, mapping));
   };
-  control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
-    return reload_settings(opt, reload_mapping, config, frames, feedback, board, service);
-  };
+  control.finish_reload = [&] { return reload.finish(); };
   bridge.run(control, [&](const run::TickReport& r) {
     board.observe(r);
     feedback.observe(run::feedback_status(r));
@@ -226,8 +199,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "The bridge: the live controller (or an event script played in real time) to the link,\n"
       "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
       "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
-      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file and the\n"
-      "mapping: neutral frames, then a fresh deadman press. Flags override the config file.\n"
+      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file (a regular\n"
+      "file only; one that was a pipe at start is not read again) and the mapping: neutral\n"
+      "frames, then a fresh deadman press. Flags override the config file.\n"
       "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);

@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 
-#include "andros/cli/config.hpp"
 
 namespace andros::cli {
 namespace {
@@ -36,6 +35,13 @@ CommandLine::CommandLine(CLI::App& cmd, Command command) : command_(command) {
   }
 }
 
+std::optional<std::string> GivenFlags::given(std::string_view flag) const {
+  for (const auto& [row, text] : values) {
+    if (flag_name(*row) == flag) return text;
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> CommandLine::given(std::string_view flag) const {
   for (const auto& entry : entries_) {
     if (flag_name(*entry.row) != flag || entry.option->count() == 0) continue;
@@ -44,24 +50,31 @@ std::optional<std::string> CommandLine::given(std::string_view flag) const {
   return std::nullopt;
 }
 
-void apply_flags(const CommandLine& flags, Settings& settings) {
-  for (const auto& row : settings_table()) {
-    if ((row.commands & flags.command()) == 0) continue;
-    const auto flag = flag_name(row);
-    if (const auto text = flags.given(flag)) row.parse(*text, SourcePos{std::string(flag)}, settings);
+GivenFlags CommandLine::given_flags() const {
+  GivenFlags flags{command_, {}};
+  for (const auto& entry : entries_) {
+    if (entry.option->count() == 0) continue;
+    flags.values.emplace_back(entry.row, entry.row->value_name.empty() ? std::string("enabled") : entry.text);
   }
+  return flags;
+}
+
+void apply_flags(const GivenFlags& flags, Settings& settings) {
+  for (const auto& [row, text] : flags.values) row->parse(text, SourcePos{std::string(flag_name(*row))}, settings);
   // A robot on the command line beats a mapping from the file.
   if (flags.given("--robot") && !flags.given("--mapping")) settings.mapping.clear();
 }
 
-Settings resolve_settings(const CommandLine& flags) {
+Settings resolve_settings(const CommandLine& flags) { return resolve_settings(flags.given_flags(), ConfigRead::kStart); }
+
+Settings resolve_settings(const GivenFlags& flags, ConfigRead read) {
   Settings settings;
-  if (find_flag("--config", flags.command()) != nullptr) {
+  if (find_flag("--config", flags.command) != nullptr) {
     const auto given = flags.given("--config");
     const std::string file = given ? *given : find_default_config();
     if (!file.empty()) {
-      read_config_file(file, settings);
-      spdlog::info("config: {}", file);
+      read_config_file(file, settings, read);
+      if (read == ConfigRead::kStart) spdlog::info("config: {}", file);
     }
   }
   apply_flags(flags, settings);
@@ -69,7 +82,7 @@ Settings resolve_settings(const CommandLine& flags) {
     throw InputError(SourcePos{"--port"}, "the port is empty (a device path, sim or tcp:HOST:PORT)");
   }
   // Frames at the rate must fit the baud (replay's is the switchbox's).
-  if ((find_key("rate")->commands & flags.command()) != 0) timing::check_rate_fits(settings.rate, settings.baud);
+  if ((find_key("rate")->commands & flags.command) != 0) timing::check_rate_fits(settings.rate, settings.baud);
   return settings;
 }
 

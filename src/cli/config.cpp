@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 
 #include "andros/base/text.hpp"
 
@@ -28,6 +29,7 @@ std::string known_keys() {
 
 void parse_config(TextReader& in, Settings& settings) {
   const std::string& file_name = in.name();
+  std::map<std::string, int> first_line;  // each key's line: a key given twice is an error, never "last wins"
   while (const auto next = in.next_line()) {
     const std::string_view line = *next;
     const int line_no = in.line_number();
@@ -47,14 +49,22 @@ void parse_config(TextReader& in, Settings& settings) {
     if (row == nullptr) {
       throw InputError(SourcePos{file_name, line_no, 1}, "unknown key " + quote(key) + " (known: " + known_keys() + ")");
     }
+    if (const auto [first, fresh] = first_line.try_emplace(key, line_no); !fresh) {
+      const int key_col = static_cast<int>(line.find_first_not_of(" \t")) + 1;
+      throw InputError(SourcePos{file_name, line_no, key_col},
+                       "key " + quote(key) + " given twice (first at line " + std::to_string(first->second) + ")");
+    }
     const SourcePos pos{file_name, line_no, value_col};
     row->parse(row->file_relative ? relative_to(file_name, value) : std::string(value), pos, settings);
   }
 }
 
-void read_config_file(const std::string& path, Settings& settings) {
-  auto in = TextReader::open(path, kConfigLimits);
+void read_config_file(const std::string& path, Settings& settings, ConfigRead read) {
+  auto in = read == ConfigRead::kReload ? TextReader::open_regular(path, kConfigLimits)
+                                        : TextReader::open(path, kConfigLimits);
   parse_config(in, settings);
+  settings.config_file = path;
+  settings.config_stream = in.regular_file() ? std::string() : in.kind();
 }
 
 std::vector<std::string> default_config_paths() {

@@ -1,6 +1,11 @@
 #include "run_reload.hpp"
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include <exception>
+#include <stdexcept>
+#include <utility>
 
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
@@ -34,6 +39,130 @@ std::string needs_restart(const Settings& running, const Settings& fresh) {
   note("input", running.input, fresh.input);
   if (changed.empty()) return {};
   return changed + ": a reload changes the robot, mapping and weapons only; restart the bridge for these";
+}
+
+ReloadResult read_reload(const GivenFlags& flags, const Settings& running, const std::string& mapping) {
+  ReloadResult result;
+  try {
+    Settings fresh;
+    if (!running.config_stream.empty()) {
+      // Read once at start and drained since: read again, it would be an
+      // empty file, and the robot and mapping would silently become the defaults.
+      fresh = running;
+      result.note = fmt::format("config {} was {} at start: not read again; mapping reread", running.config_file,
+                                running.config_stream);
+    } else {
+      fresh = resolve_settings(flags, ConfigRead::kReload);
+      if (auto why = needs_restart(running, fresh); !why.empty()) throw std::runtime_error(why);
+    }
+    if (!mapping.empty()) fresh.mapping = mapping;
+    result.setup = load_engine(fresh);
+    result.settings = std::move(fresh);
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  return result;
+}
+
+ReloadWorker::~ReloadWorker() {
+  if (!thread_.joinable()) return;
+  bool done = false;
+  {
+    const std::lock_guard lock(state_->mutex);
+    done = state_->result.has_value();
+    state_->queued.reset();
+  }
+  // Joined only when it has ended: a read stuck in a file system must not hold the exit.
+  if (done) thread_.join();
+  else thread_.detach();
+}
+
+void ReloadWorker::work(const std::shared_ptr<State>& state, Task task) {
+  while (true) {
+    ReloadResult result;
+    try {
+      result = task();
+    } catch (const std::exception& e) {
+      result = ReloadResult{};
+      result.error = e.what();
+    } catch (...) {
+      result = ReloadResult{};
+      result.error = "unknown error";
+    }
+    const std::lock_guard lock(state->mutex);
+    if (state->queued) {
+      // Asked again while this one read: what it read may be older than the files now.
+      task = std::move(*state->queued);
+      state->queued.reset();
+      continue;
+    }
+    state->result = std::move(result);
+    return;
+  }
+}
+
+bool ReloadWorker::start(Task task) {
+  if (thread_.joinable()) {
+    const std::lock_guard lock(state_->mutex);
+    if (!state_->result) {
+      state_->queued = std::move(task);
+      return false;
+    }
+    // Ended, its result not taken yet: it is older than this request.
+  }
+  if (thread_.joinable()) thread_.join();
+  state_ = std::make_shared<State>();
+  // The thread inherits the loop's blocked signals: none of them is delivered to it.
+  thread_ = std::thread(work, state_, std::move(task));
+  return true;
+}
+
+std::optional<ReloadResult> ReloadWorker::poll() {
+  if (!thread_.joinable()) return std::nullopt;
+  std::optional<ReloadResult> result;
+  {
+    const std::lock_guard lock(state_->mutex);
+    if (!state_->result) return std::nullopt;
+    result = std::move(state_->result);
+  }
+  thread_.join();  // it has set its result and only returns
+  state_.reset();
+  return result;
+}
+
+ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
+  if (!result.note.empty()) spdlog::info("{}", result.note);
+  if (!result.settings) {
+    ReloadOutcome out{false, "reload (SIGHUP) failed, the old settings stay: " + result.error};
+    spdlog::error("{}", out.message);
+    to.service.reloaded("reload failed: " + result.error);
+    return out;
+  }
+  EngineSetup& setup = result.setup;
+  to.frames.replace(std::move(setup.frames));
+  to.feedback.set_table(setup.feedback);
+  to.settings = std::move(*result.settings);
+  to.board.set_mapping(setup.robot, setup.mapping_file, to.settings.weapons, setup.center);
+  ReloadOutcome out{true, fmt::format("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
+                                      setup.mapping_file, to.settings.weapons ? ", WEAPONS ENABLED" : "")};
+  spdlog::info("{}", out.message);
+  to.service.reloaded("");
+  return out;
+}
+
+void RunReload::begin(const std::string& mapping) {
+  // The worker reads copies: the flags, and the settings as they are now.
+  if (worker_.start([flags = flags_, running = to_.settings, mapping] { return read_reload(flags, running, mapping); })) {
+    to_.service.reloading();
+  } else {
+    spdlog::info("reload (SIGHUP) while a reload is being read: the files are read again once that read ends");
+  }
+}
+
+std::optional<ReloadOutcome> RunReload::finish() {
+  auto result = worker_.poll();
+  if (!result) return std::nullopt;
+  return apply_reload(std::move(*result), to_);
 }
 
 }  // namespace andros::cli

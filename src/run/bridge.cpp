@@ -148,7 +148,12 @@ void Bridge::begin_suspend() {
 }
 
 void Bridge::begin_reload(const RunControl& control, const std::string& mapping) {
-  // Ignored while one runs, while suspended and while stopping (no row).
+  // A second one while one runs is the control's to queue (the files read
+  // again); while suspended and while stopping it is ignored (no row).
+  if (machine_.state() == OpState::kReloading) {
+    control.begin_reload(mapping);
+    return;
+  }
   if (!apply(OpEvent::kReloadBegin).changed) return;
   reload_neutral_ = 0;
   reload_ticks_ = 0;

@@ -4,8 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
 
 #include <string>
 #include <vector>
@@ -114,6 +119,43 @@ TEST(TextReader, HeldInMemoryAStreamCanBeRewound) {
   EXPECT_EQ(lines_of(text), (std::vector<std::string>{"x", "y"}));
   text.rewind();
   EXPECT_EQ(lines_of(text), (std::vector<std::string>{"x", "y"}));
+}
+
+TEST(TextReader, OpenRegularRefusesAnythingButARegularFileWithoutWaiting) {
+  const testing::TempDir dir;
+  const auto refused = [](const std::string& path) {
+    return testing::input_error_text([&] { (void)TextReader::open_regular(path, kConfigLimits); });
+  };
+  // A FIFO with no writer: open() would hand back a reader that waits for one.
+  const auto fifo = (dir.path() / "fifo").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(refused(fifo), fifo + ": error: is a pipe, not a regular file");
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);  // --config <(...): a pipe, drained at start
+  const auto pipe_path = "/dev/fd/" + std::to_string(fds[0]);
+  EXPECT_EQ(refused(pipe_path), pipe_path + ": error: is a pipe, not a regular file");
+  EXPECT_EQ(TextReader::open(pipe_path, kConfigLimits).kind(), "a pipe");
+  ::close(fds[0]);
+  ::close(fds[1]);
+  EXPECT_EQ(refused("/dev/null"), "/dev/null: error: is a character device, not a regular file");
+  EXPECT_EQ(refused(dir.path().string()), dir.path().string() + ": error: is a directory, not a regular file");
+  const auto socket_path = (dir.path() / "sock").string();
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un addr{};
+  addr.sun_family = AF_UNIX;
+  std::strncpy(addr.sun_path, socket_path.c_str(), sizeof addr.sun_path - 1);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<const sockaddr*>(&addr), sizeof addr), 0);
+  EXPECT_EQ(refused(socket_path), socket_path + ": error: is a socket, not a regular file");
+  ::close(sock);
+  // A regular file, also behind a symbolic link, reads as open() reads it.
+  const auto file = dir.write("a.conf", "x\n").string();
+  std::filesystem::create_symlink(file, dir.path() / "link.conf");
+  for (const auto& path : {file, (dir.path() / "link.conf").string()}) {
+    auto text = TextReader::open_regular(path, kSmall);
+    EXPECT_EQ(text.kind(), "a regular file");
+    EXPECT_EQ(lines_of(text), (std::vector<std::string>{"x"}));
+  }
+  EXPECT_NE(refused((dir.path() / "none").string()).find("cannot read the config file"), std::string::npos);
 }
 
 TEST(TextReader, AnEndlessStreamStopsAtTheLineLimit) {

@@ -78,6 +78,14 @@ TEST(Config, BadLinesNameFileAndLine) {
             std::string::npos);
 }
 
+TEST(Config, AKeyGivenTwiceIsAnErrorAtTheSecondNamingTheFirst) {
+  // Never "last wins": a weapons=enabled far below a weapons=disabled would arm the run unseen.
+  EXPECT_EQ(error_of("weapons=disabled\n# later\nrobot=hd1\n  weapons = enabled\n"),
+            "dir/test.conf:4:3: error: key 'weapons' given twice (first at line 1)");
+  // Keys are case-insensitive, so are their repeats; the same value twice is still twice.
+  EXPECT_EQ(error_of("\nRobot=HD1\nROBOT=hd1\n"), "dir/test.conf:3:1: error: key 'robot' given twice (first at line 2)");
+}
+
 TEST(Config, RefusesARateThatCannotFitWhereItWasSet) {
   auto c = parse("rate=12.5\n");
   EXPECT_EQ(c.rate.millihertz, 12'500);

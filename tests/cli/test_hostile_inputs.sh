@@ -60,6 +60,8 @@ w robot.conf '# legacy file\nrobot=HD2\n'
 expect_error "robot.conf:2:7: error: unknown robot 'HD2' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)" "$BIN" run --config robot.conf --input ok.events
 w code.conf 'code=1FF\n'
 expect_error "code.conf:1:6: error: code '1FF' is not a byte in hex (one or two hex digits, e.g. 01 or 3C)" "$BIN" run --config code.conf --input ok.events
+w twice.conf 'weapons=disabled\nrobot=hd1\n  Weapons=enabled\n'  # never "last wins"
+expect_error "twice.conf:3:3: error: key 'weapons' given twice (first at line 1)" "$BIN" run --config twice.conf --input ok.events
 w key.conf 'serialprot=/dev/ttyUSB0\n'
 expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config key.conf --input ok.events
 w noeq.conf 'baudrate 9600\n'

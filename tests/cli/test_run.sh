@@ -59,7 +59,7 @@ rm "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf"
 
 # Bad config lines: exit 2, one line naming FILE:LINE.
 while IFS='|' read -r line want; do
-  printf '# a comment\nrobot=HD1\n%s\n' "$line" >"$TMP/bad.conf"
+  printf '# a comment\nserialport=sim\n%s\n' "$line" >"$TMP/bad.conf"
   expect_exit 2 "$BIN" run --config "$TMP/bad.conf" --input "$LIVE/drive.events"
   expect_one_line_stderr
   expect_stderr_matches "^$TMP/bad.conf:3(:[0-9]+)?: error: $want"
@@ -71,6 +71,7 @@ colour=red|unknown key 'colour'
 rate=fast|rate 'fast' is not a number of Hz
 weapons=maybe|weapons 'maybe' must be enabled or disabled
 no equals sign|expected key=value
+serialport=sim|key 'serialport' given twice \(first at line 2\)
 CASES
 expect_exit 2 "$BIN" run --config "$TMP/missing.conf"
 expect_stderr_matches "missing.conf: error: cannot read the config file"

@@ -2,7 +2,7 @@
 # the watchdog from the loop itself, reload on SIGHUP (docs/running.md "As a service").
 source "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
-for scenario in notify deaf stall reload; do
+for scenario in notify deaf stall reload fifo_reload pipe_reload; do
   rm -rf "$TMP/$scenario" && mkdir -p "$TMP/$scenario/xdg"
   python3 "$HERE/service_harness.py" "$BIN" "$TMP/$scenario" "$scenario" || fail "scenario $scenario"
 done

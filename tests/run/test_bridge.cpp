@@ -218,7 +218,7 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
   control.poll = [&] {
     ++polls;
     if (polls == 3) return Request::kReload;
-    if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: ignored
+    if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: the control queues it
     return polls >= 9 ? Request::kStop : Request::kNone;
   };
   control.pause = [] { FAIL() << "a reload is not a pause"; };
@@ -231,7 +231,7 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
   };
   const int restarts_before = on.frames.restarts;
   on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
-  EXPECT_EQ(begun, std::vector<std::string>{""});
+  EXPECT_EQ(begun, (std::vector<std::string>{"", ""}));
   EXPECT_EQ(on.frames.restarts - restarts_before, 1);
   // Ticks 0, 1; the reload seen on tick 2: neutral frames on 2..6 (3 at least, then while it reads).
   for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(ticks[i].reloading(), i >= 2) << "tick " << i;

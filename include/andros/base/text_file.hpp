@@ -50,6 +50,12 @@ class TextReader {
  public:
   /// Opens path without blocking (a FIFO with no writer yet is waited for in next_line()).
   static TextReader open(const std::string& path, const TextLimits& limits, StopCheck stop = {});
+  /// Opens path only if it is a regular file, for a read that must never
+  /// wait: anything else (a pipe, a terminal, a socket, a device, a
+  /// directory) is an InputError, `FILE: error: is a pipe, not a regular
+  /// file`. Checked before opening (opening a device can have effects) and
+  /// again on the opened descriptor (the path may have been swapped between).
+  static TextReader open_regular(const std::string& path, const TextLimits& limits);
   /// Standard input, named "<stdin>"; not closed.
   static TextReader standard_input(const TextLimits& limits, StopCheck stop = {});
   /// Text already in memory, checked against the same limits.
@@ -69,6 +75,11 @@ class TextReader {
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const TextLimits& limits() const { return limits_; }
 
+  /// What is read, as messages say it: "a regular file", "a pipe", "a
+  /// terminal", "a character device", "a socket", "text in memory"...
+  [[nodiscard]] const std::string& kind() const { return kind_; }
+  /// True when what is read is a regular file (not text in memory).
+  [[nodiscard]] bool regular_file() const { return fd_ >= 0 && regular_; }
   /// True for text in memory and a regular file: rewind() can start over.
   [[nodiscard]] bool can_rewind() const { return fd_ < 0 || regular_; }
   /// Back to the first line. Only when can_rewind().
@@ -84,6 +95,7 @@ class TextReader {
   int fd_ = -1;  ///< -1: the text is all in buf_
   bool owned_ = false;
   bool regular_ = false;
+  std::string kind_ = "text in memory";
   std::int64_t start_offset_ = 0;
   std::string name_;
   TextLimits limits_{};

@@ -5,8 +5,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "andros/cli/config.hpp"
 #include "andros/cli/settings.hpp"
 
 namespace CLI {
@@ -15,6 +17,17 @@ class Option;
 }  // namespace CLI
 
 namespace andros::cli {
+
+/// The flags given on a command line, copied: what a reload merges over the
+/// config file again on a thread of its own, which must not reach into the
+/// CLI11 app.
+struct GivenFlags {
+  Command command = kRun;
+  /// Each flag given: its row and its text ("enabled" for a switch), in the table's order.
+  std::vector<std::pair<const Setting*, std::string>> values;
+  /// The text given for a flag by its primary name ("--rate"); nullopt when not given.
+  [[nodiscard]] std::optional<std::string> given(std::string_view flag) const;
+};
 
 /// The flags one command takes, declared on its CLI11 app from the table.
 /// Holds the text CLI11 writes while parsing: keep it alive (in a shared_ptr,
@@ -29,6 +42,8 @@ class CommandLine {
   /// The text given for a flag (by its primary name, "--rate"); a switch
   /// given is "enabled"; nullopt when not given.
   [[nodiscard]] std::optional<std::string> given(std::string_view flag) const;
+  /// Every flag given, copied.
+  [[nodiscard]] GivenFlags given_flags() const;
 
  private:
   struct Entry {
@@ -47,7 +62,12 @@ class CommandLine {
 /// The one call that (re)reads the config file and merges it with the flags.
 Settings resolve_settings(const CommandLine& flags);
 
+/// The same from copied flags. kReload reads only a regular config file and
+/// logs nothing (safe on a thread of its own; the reload's own line names
+/// the file).
+Settings resolve_settings(const GivenFlags& flags, ConfigRead read);
+
 /// Applies the flags given to settings (the last step of resolve_settings).
-void apply_flags(const CommandLine& flags, Settings& settings);
+void apply_flags(const GivenFlags& flags, Settings& settings);
 
 }  // namespace andros::cli

@@ -3,6 +3,7 @@
 /// `key=value` file read as is, plus the bridge's own keys, all rows of the
 /// settings table. Parsing does no I/O beyond reading the file it is given.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,18 @@ namespace andros::cli {
 /// FILE:LINE:COL. The rate is checked against the baud by the merge.
 void parse_config(TextReader& in, Settings& settings);
 
+/// Which config files a read takes.
+enum class ConfigRead : std::uint8_t {
+  kStart,   ///< any file that can be read, a pipe too (`--config <(...)`), waited for
+  kReload,  ///< a regular file only: a reload never waits on a pipe, a FIFO or a terminal
+};
+
 /// Opens and parses a config file (within kConfigLimits); a file that cannot
-/// be read, a directory, a line or a file too long are InputErrors too.
-void read_config_file(const std::string& path, Settings& settings);
+/// be read, a directory, a line or a file too long are InputErrors too, and
+/// for kReload anything but a regular file (`FILE: error: is a pipe, not a
+/// regular file`). Notes the file in settings.config_file, and in
+/// settings.config_stream what it was if not a regular file.
+void read_config_file(const std::string& path, Settings& settings, ConfigRead read = ConfigRead::kStart);
 
 /// Where `run` looks for a config file when --config is not given, in order:
 /// $XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf (or ~/.config/...), then

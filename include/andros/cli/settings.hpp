@@ -34,6 +34,11 @@ inline constexpr int kDefaultReadRateHz = static_cast<int>(timing::kDefaultRateM
 /// Every setting's typed value. A default-constructed Settings holds the defaults.
 struct Settings {
   std::string config;                          ///< `run --config`; empty: the default paths
+  std::string config_file;                     ///< the config file read; empty: none
+  /// What the config file was when it was not a regular file ("a pipe",
+  /// "a terminal"): read once at start, never again by a reload. Empty for a
+  /// regular file.
+  std::string config_stream;
   std::string robot{protocol::kDefaultRobot};  ///< canonical (upper-case) robot type
   std::string mapping;                         ///< a mapping file; empty: the robot's shipped one
   std::string port{kSimPort};                  ///< a device path, "sim" or "tcp:HOST:PORT"
