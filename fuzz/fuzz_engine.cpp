@@ -35,15 +35,15 @@ const std::vector<mapping::ValidMapping>& shipped() {
   return mappings;
 }
 
-// The frame is neutral: every motion and weapon bit 0, drive and pivot at centre.
-bool is_neutral(const protocol::ControlState& s, int center) {
+// The frame is neutral: every motion and weapon bit 0, drive and pivot at the protocol's 128.
+bool is_neutral(const protocol::ControlState& s) {
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     const auto kind = protocol::kSignals[i].kind;
     if ((kind == protocol::SignalKind::kMotion || kind == protocol::SignalKind::kWeapon || kind == protocol::SignalKind::kInterlock) &&
         s.values[i] != 0) {
       return false;
     }
-    if (kind == protocol::SignalKind::kCentred && s.values[i] != center) return false;
+    if (kind == protocol::SignalKind::kCentred && s.values[i] != protocol::kNeutralCentre) return false;
   }
   return true;
 }
@@ -105,7 +105,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (protocol::kSignals[k].kind == protocol::SignalKind::kWeapon && !weapons) check(s.values[k] == 0);
       }
       const bool may_move = input.connected() && input.button(deadman).down && fresh;
-      if (!may_move) check(is_neutral(s, mapping.center));
+      if (!may_move) check(is_neutral(s));
       for (std::size_t c = 0; c < centred.size(); ++c) {
         const mapping::Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
         if (centre[c].must_centre(now, !was_enabled || sessions != seen_sessions,

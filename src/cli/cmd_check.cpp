@@ -39,7 +39,9 @@ void add_check_command(CLI::App& app, int& exit_code) {
       "error (FILE:LINE:COL: error: ...) for each bad one; exits 2 if any is bad.\n"
       "A file with no 'robot:' is checked as a base for other files to extend. Warnings\n"
       "(FILE:LINE:COL: warning: ...) point at what loads but may surprise: a stick on\n"
-      "drive or pivot with no deadzone. They do not change the exit code.");
+      "drive or pivot with no deadzone. They do not change the exit code. A 'center:'\n"
+      "trim other than 128 is said on the ok line: 'FILE: ok (center 124: drive and\n"
+      "pivot rest at 124 while enabled; neutral frames carry 128)'.");
   cmd->add_option("FILE", *files, "mapping files (YAML)")->required();
   cmd->callback([files, &exit_code] {
     bool all_ok = true;
@@ -47,7 +49,12 @@ void add_check_command(CLI::App& app, int& exit_code) {
       try {
         const auto mapping = mapping::load_mapping_file(file);
         validate(mapping, mapping.robot.has_value());
-        std::printf("%s: ok%s\n", file.c_str(), mapping.robot ? "" : " (a base mapping: no robot)");
+        std::string notes = mapping.robot ? "" : "a base mapping: no robot";
+        if (const auto trim = mapping::center_effect(mapping.center); !trim.empty()) {
+          notes += (notes.empty() ? "" : "; ") + trim;
+        }
+        if (!notes.empty()) notes = " (" + notes + ")";
+        std::printf("%s: ok%s\n", file.c_str(), notes.c_str());
         std::fflush(stdout);
         for (const auto& w : warnings(mapping)) std::fprintf(stderr, "%s\n", w.c_str());
       } catch (const InputError& e) {

@@ -251,7 +251,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
 }
 
 protocol::DataBytes Engine::neutral() const {
-  SafetyContext ctx;
+  SafetyContext ctx;  // not enabled: drive and pivot at 128, whatever the trim
   ctx.center = mapping_->center;
   ctx.brake = mapping_->brake;
   return builder_.build(apply_safety(resting_state(), ctx));

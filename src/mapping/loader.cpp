@@ -1,6 +1,7 @@
 #include "andros/mapping/loader.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 
 #include "andros/protocol/robots.hpp"
@@ -17,6 +18,13 @@ using yaml::Reader;
 /// The most files in an `extends` chain (the one loaded and its bases). Each
 /// is read by a nested call, so the bound also bounds the stack.
 constexpr std::size_t kMaxExtendsChain = 16;
+
+/// A trim of drive and pivot's rest while enabled, within the band of model.hpp.
+int read_center(const Reader& r, const YAML::Node& node) {
+  const auto value = r.integer(node, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max(), "center");
+  if (value < kCenterTrimMin || value > kCenterTrimMax) r.fail(node, center_out_of_band(r.text(node, "center")));
+  return static_cast<int>(value);
+}
 
 InputUse use(const Reader& r, const YAML::Node& node, input::InputKey key) { return InputUse{key, r.pos(node)}; }
 
@@ -234,9 +242,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
     m.robot_pos = r.pos(root["robot"]);
   }
-  if (root["center"]) {
-    m.center = static_cast<int>(r.integer(root["center"], 0, 255, "center"));
-  }
+  if (const auto c = root["center"]) m.center = read_center(r, c);
   if (const auto c = root["constants"]) {
     r.expect_keys(c, {"byte12", "battery"}, "constants");
     if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));

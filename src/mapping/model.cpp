@@ -168,6 +168,19 @@ void check_toggles(const Mapping& m) {
 
 }  // namespace
 
+std::string center_out_of_band(std::string_view value) {
+  return "center " + std::string(value) + " is out of range " + std::to_string(kCenterTrimMin) + ".." +
+         std::to_string(kCenterTrimMax) + " (it only trims drive and pivot's rest while enabled; neutral frames carry " +
+         std::to_string(kDefaultCenter) + ")";
+}
+
+std::string center_effect(int center) {
+  if (center == kDefaultCenter) return "";
+  const auto c = std::to_string(center);
+  return "center " + c + ": drive and pivot rest at " + c + " while enabled; neutral frames carry " +
+         std::to_string(kDefaultCenter);
+}
+
 const Binding& binding_at(const Mapping& mapping, BindingRef ref) {
   return ref.layer < 0 ? mapping.bindings.at(ref.index)
                        : mapping.layers.at(static_cast<std::size_t>(ref.layer)).bindings.at(ref.index);
@@ -227,7 +240,9 @@ ValidMapping validate(Mapping m, bool require_robot) {
     throw InputError(SourcePos{m.file}, "missing 'robot' (one of " + protocol::robot_list() + ")");
   }
   if (require_robot && !m.deadman) throw InputError(SourcePos{m.file}, "missing 'deadman': the button that enables motion");
-  if (m.center < 0 || m.center > 255) throw InputError(SourcePos{m.file}, "center is out of range 0..255");
+  if (m.center < kCenterTrimMin || m.center > kCenterTrimMax) {
+    throw InputError(SourcePos{m.file}, center_out_of_band(std::to_string(m.center)));
+  }
   std::vector<InputUse> reserved;
   if (m.deadman) {
     const auto k = m.deadman->key;

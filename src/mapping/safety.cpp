@@ -19,7 +19,7 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
         if (!ctx.enabled || !ctx.weapons || !ctx.armed[i]) v = 0;
         break;
       case protocol::SignalKind::kCentred:
-        if (!ctx.enabled) v = static_cast<std::uint8_t>(ctx.center);
+        if (!ctx.enabled) v = protocol::kNeutralCentre;  // never the mapping's trim
         break;
       case protocol::SignalKind::kInterlock:
       case protocol::SignalKind::kSelector:

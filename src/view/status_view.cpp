@@ -84,6 +84,8 @@ std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t widt
 }
 
 std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
+  // A neutral frame (safety 0) carries the protocol's 128, not the trim: empty gauges at rest either way.
+  if (protocol::read_signals(data)[protocol::signal_id("safety")] == 0) center = protocol::kNeutralCentre;
   return {gauge("drive", byte_of(data, "drive"), center), gauge("pivot", byte_of(data, "pivot"), center),
           gauge("arm_speed", byte_of(data, "arm_speed"), std::nullopt),
           gauge("light", byte_of(data, "light"), std::nullopt),

@@ -132,6 +132,47 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
 }
 
+// Contract section 5: neutral is the protocol's. A `center:` trim moves only
+// where drive and pivot rest while enabled; every frame that is not enabled,
+// and neutral(), carries 128.
+TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {
+  Engine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"), EngineOptions{});
+  const auto drive = protocol::signal_id("drive");
+  const auto pivot = protocol::signal_id("pivot");
+  input::InputState in;
+  const auto expect_neutral = [&](const protocol::DataBytes& frame, const char* when) {
+    const auto f = protocol::read_signals(frame);
+    EXPECT_EQ(f[protocol::signal_id("safety")], 0) << when;
+    EXPECT_EQ(f[drive], 128) << when;
+    EXPECT_EQ(f[pivot], 128) << when;
+  };
+  expect_neutral(engine.step(in, 0), "no controller");
+  expect_neutral(engine.neutral(), "neutral()");
+  apply_script(in, "0 connect\n0 button leftshoulder 1\n");
+  expect_neutral(engine.step(in, 40), "deadman held at connect");
+  apply_script(in, "50 button leftshoulder 0\n");
+  expect_neutral(engine.step(in, 80), "deadman released");
+
+  apply_script(in, "90 button leftshoulder 1\n90 axis lefty -32768\n");
+  auto f = protocol::read_signals(engine.step(in, 120));
+  ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(f[drive], 124) << "enabled, the stick held back until at rest: the trimmed rest";
+  apply_script(in, "130 axis lefty 0\n");
+  f = protocol::read_signals(engine.step(in, 160));
+  EXPECT_EQ(f[drive], 124) << "enabled, stick at rest";
+  EXPECT_EQ(f[pivot], 124) << "enabled, stick at rest";
+  apply_script(in, "170 axis lefty -32768\n");
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[drive], 255);  // 124 + round(1 * 131)
+  apply_script(in, "210 axis lefty 32767\n");
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 240))[drive], 0);  // 124 + round(-1 * 124)
+  expect_neutral(engine.neutral(), "neutral() while driving (a stop, a loss, a reload)");
+
+  apply_script(in, "250 button leftshoulder 0\n");
+  expect_neutral(engine.step(in, 280), "deadman released, stick full back");
+  apply_script(in, "290 button leftshoulder 1\n295 axis lefty 0\n300 disconnect\n");
+  expect_neutral(engine.step(in, 320), "controller lost");
+}
+
 // An Engine runs only a ValidMapping, and validate() is the one way to make one.
 static_assert(!std::is_constructible_v<Engine, Mapping, EngineOptions>);
 

@@ -60,7 +60,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"interlock by address", kHead + "  - signal: byte0.2\n    button: a\n", 4, 13, "'drive_brake' is set by the safety layer"},
         BadMapping{"constant code", kHead + "  - analog: code\n    axis: leftx\n", 4, 13, "'code' is not an analog byte"},
         BadMapping{"selector signal on a button", kHead + "  - signal: speed_high\n    button: a\n", 4, 13, "selector-like switch"},
-        BadMapping{"centre out of range", "robot: HD1\ndeadman: a\ncenter: 300\n", 3, 9, "center 300 is out of range 0..255"},
+        // center only trims the enabled rest, within 128 +- 8: neutral frames carry 128 whatever it says.
+        BadMapping{"centre 300", "robot: HD1\ndeadman: a\ncenter: 300\n", 3, 9, "center 300 is out of range 120..136 (it only trims"},
+        BadMapping{"centre 0", "robot: HD1\ndeadman: a\ncenter: 0\n", 3, 9, "center 0 is out of range 120..136 (it only trims drive and pivot's rest while enabled; neutral frames carry 128)"},
+        BadMapping{"centre 255", "robot: HD1\ndeadman: a\ncenter: 255\n", 3, 9, "center 255 is out of range 120..136"},
+        BadMapping{"centre 119", "robot: HD1\ndeadman: a\ncenter: 119\n", 3, 9, "center 119 is out of range 120..136"},
+        BadMapping{"centre 137 in hex", "robot: HD1\ndeadman: a\ncenter: 0x89\n", 3, 9, "center 0x89 is out of range 120..136"},
+        BadMapping{"centre -1", "robot: HD1\ndeadman: a\ncenter: -1\n", 3, 9, "center -1 is out of range 120..136"},
+        BadMapping{"centre 0 in the base", "robot: HD1\nextends: base.yaml\n", 2, 9, "center 0 is out of range 120..136", "deadman: a\ncenter: 0\n", "base.yaml"},
         BadMapping{"battery out of range", "robot: HD1\ndeadman: a\nconstants: {battery: 0x100}\n", 3, 22, "battery 0x100 is out of range"},
         BadMapping{"deadzone of 1", kHead + "  - analog: drive\n    axis: lefty\n    deadzone: 1.0\n", 6, 15, "deadzone 1.0 is out of range 0..1 (excluded)"},
         BadMapping{"expo above 1", kHead + "  - analog: drive\n    axis: lefty\n    expo: 1.5\n", 6, 11, "expo 1.5 is out of range"},
@@ -219,6 +226,26 @@ TEST(MappingLoader, ExtendsOverridesByInputAndKeepsTheRest) {
   EXPECT_EQ(input::input_name(std::get<AxisBinding>(m.bindings[1].rule).axis), "righty");
   ASSERT_EQ(m.layers.size(), 1U);
   EXPECT_EQ(m.layers[0].bindings.size(), 2U);  // gripper_open on a and gripper_close on b
+}
+
+TEST(MappingLoader, CenterTrimBandEndsAreAccepted) {
+  MappingDir dir;
+  for (const int c : {120, 124, 136}) {
+    const auto text = "robot: HD1\ndeadman: a\ncenter: " + std::to_string(c) + "\n";
+    EXPECT_EQ(load_mapping(dir.write("trim.yaml", text))->center, c) << text;
+  }
+  // A child's trim replaces its base's; without one, the base's is kept.
+  dir.write("base.yaml", "deadman: a\ncenter: 136\n");
+  EXPECT_EQ(load_mapping(dir.write("child.yaml", "robot: HD1\nextends: base.yaml\ncenter: 120\n"))->center, 120);
+  EXPECT_EQ(load_mapping(dir.write("child.yaml", "robot: HD1\nextends: base.yaml\n"))->center, 136);
+}
+
+TEST(MappingLoader, ValidateRefusesACenterOutsideTheBandBuiltByHand) {
+  Mapping m;
+  m.center = 0;
+  EXPECT_NE(testing::input_error_text([&] { validate(m, false); }).find("center 0 is out of range 120..136"), std::string::npos);
+  m.center = 136;
+  EXPECT_NO_THROW(validate(m, false));
 }
 
 TEST(MappingLoader, DefaultsAndEveryBindingKind) {

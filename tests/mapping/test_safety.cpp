@@ -33,6 +33,14 @@ TEST(Safety, NotEnabledIsNeutralKeepingSelectorsAndLevels) {
   EXPECT_EQ(s[protocol::signal_id("light")], 99);
 }
 
+TEST(Safety, NotEnabledCentresAt128WhateverTheTrim) {
+  for (const int trim : {120, 124, 136}) {
+    const auto s = apply_safety(everything_on(), SafetyContext{false, false, {}, trim});
+    EXPECT_EQ(s[protocol::signal_id("drive")], 128) << "center " << trim;
+    EXPECT_EQ(s[protocol::signal_id("pivot")], 128) << "center " << trim;
+  }
+}
+
 TEST(Safety, EnabledSetsTheInterlocksAndDropsOpposingPairs) {
   auto asked = everything_on();
   asked[protocol::signal_id("tool_on")] = 1;
@@ -71,6 +79,17 @@ TEST(Safety, BrakeWhileMovingOnly) {
   EXPECT_EQ(apply_safety(rest, ctx)[protocol::signal_id("drive_brake")], 1);
   ctx.enabled = false;
   EXPECT_EQ(apply_safety(rest, ctx)[protocol::signal_id("drive_brake")], 0);
+}
+
+TEST(Safety, BrakeWhileMovingMeasuresFromTheTrim) {
+  // A trim is where the vehicle is still while enabled: 124 holds the brakes, 128 releases them.
+  protocol::ControlState s;
+  s[protocol::signal_id("drive")] = 124;
+  s[protocol::signal_id("pivot")] = 124;
+  const SafetyContext ctx{true, false, {}, 124, BrakeMode::kMoving};
+  EXPECT_EQ(apply_safety(s, ctx)[protocol::signal_id("drive_brake")], 0);
+  s[protocol::signal_id("drive")] = 128;
+  EXPECT_EQ(apply_safety(s, ctx)[protocol::signal_id("drive_brake")], 1);
 }
 
 }  // namespace

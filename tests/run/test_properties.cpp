@@ -200,7 +200,7 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       switch (sig.kind) {
         case protocol::SignalKind::kMotion:
         case protocol::SignalKind::kInterlock: ASSERT_EQ(s[id], 0) << sig.name << " while not enabled, " << where(); break;
-        case protocol::SignalKind::kCentred: ASSERT_EQ(s[id], mapping.center) << sig.name << ", " << where(); break;
+        case protocol::SignalKind::kCentred: ASSERT_EQ(s[id], protocol::kNeutralCentre) << sig.name << ", " << where(); break;
         case protocol::SignalKind::kLevel:
         case protocol::SignalKind::kSelector: ASSERT_EQ(s[id], previous[id]) << sig.name << " changed while not enabled, " << where(); break;
         default: break;

@@ -66,7 +66,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"trigger_held_across_layer", "rest.yaml"},
         Case{"button_held_across_layer", "rest.yaml"},
         Case{"toggle_held_across_layer", "rest.yaml"},
-        Case{"two_toggles_one_signal", "rest.yaml"}),
+        Case{"two_toggles_one_signal", "rest.yaml"},
+        // Neutral is the protocol's: a center trim moves only the enabled rest.
+        Case{"center_trim", "trim.yaml"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

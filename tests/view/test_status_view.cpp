@@ -47,29 +47,40 @@ TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
   }
 }
 
-/// A frame with drive and pivot at these bytes.
-protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot) {
+/// A frame with drive and pivot at these bytes, enabled (safety 1) or neutral.
+protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot, bool enabled = true) {
   protocol::ControlState s;
+  s[protocol::signal_id("safety")] = enabled ? 1 : 0;
   s[protocol::signal_id("drive")] = drive;
   s[protocol::signal_id("pivot")] = pivot;
   return protocol::FrameBuilder(1).build(s);
 }
 
 TEST(StatusView, CentredGaugesGrowFromTheCentreTheyAreHanded) {
-  // center: 100 (no shipped mapping sets one): 100 is at rest, 50 half way down, 255 and 0 the ends.
-  auto text = render_frame_panel(drive_pivot(100, 50), 100);
-  EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
-  EXPECT_NE(text.find("pivot      [     #####|          ]  50"), std::string::npos) << text;
-  text = render_frame_panel(drive_pivot(255, 0), 100);
+  // center: 120 (the lowest trim): 120 is at rest while enabled, 60 half way down, 255 and 0 the ends.
+  auto text = render_frame_panel(drive_pivot(120, 60), 120);
+  EXPECT_NE(text.find("drive      [          |          ] 120"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [     #####|          ]  60"), std::string::npos) << text;
+  text = render_frame_panel(drive_pivot(255, 0), 120);
   EXPECT_NE(text.find("drive      [          |##########] 255"), std::string::npos) << text;
   EXPECT_NE(text.find("pivot      [##########|          ]   0"), std::string::npos) << text;
   // The run screen draws around the centre in its status.
   RunStatus s;
-  s.center = 100;
-  s.sent = drive_pivot(100, 100);
+  s.center = 120;
+  s.sent = drive_pivot(120, 120);
   text = render_run_view(s, {80, 40}).text();
-  EXPECT_NE(text.find("drive      [          |          ] 100"), std::string::npos) << text;
-  EXPECT_NE(text.find("pivot      [          |          ] 100"), std::string::npos) << text;
+  EXPECT_NE(text.find("drive      [          |          ] 120"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [          |          ] 120"), std::string::npos) << text;
+}
+
+TEST(StatusView, ANeutralFrameDrawsEmptyGaugesWhateverTheTrim) {
+  // Neutral frames carry the protocol's 128, not the trim: at rest, so empty.
+  auto text = render_frame_panel(drive_pivot(128, 128, false), 120);
+  EXPECT_NE(text.find("drive      [          |          ] 128"), std::string::npos) << text;
+  EXPECT_NE(text.find("pivot      [          |          ] 128"), std::string::npos) << text;
+  // Enabled, 128 is 8 above the trim: a step forward.
+  text = render_frame_panel(drive_pivot(128, 128, true), 120);
+  EXPECT_NE(text.find("drive      [          |#         ] 128"), std::string::npos) << text;
 }
 
 TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {

@@ -41,7 +41,8 @@ class Engine {
   void restart(const input::InputState& now);
 
   /// The neutral frame for the current analog/selector state (shutdown, link
-  /// loss): every motion and weapon bit 0, drive and pivot at centre.
+  /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
+  /// 128 (never the mapping's `center:` trim).
   [[nodiscard]] protocol::DataBytes neutral() const;
 
   [[nodiscard]] const EngineStatus& status() const;
@@ -59,6 +60,9 @@ class Engine {
   void apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
              std::bitset<protocol::kSignalCount>& armed);
   [[nodiscard]] std::size_t slot(BindingRef ref) const;
+  /// Before the bindings: drive and pivot at the mapping's trim (their rest
+  /// while enabled), levels, selectors and constants as they stand.
+  /// apply_safety() puts drive and pivot back at 128 in a neutral frame.
   [[nodiscard]] protocol::ControlState resting_state() const;
 
   ValidMapping mapping_;

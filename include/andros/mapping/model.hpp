@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -20,7 +21,12 @@
 
 namespace andros::mapping {
 
-inline constexpr int kDefaultCenter = 128;
+inline constexpr int kDefaultCenter = protocol::kNeutralCentre;
+/// `center:` only trims drive and pivot's rest while enabled, within
+/// 128 +- 8 (docs/mapping.md): enough for a vehicle whose rest point is a few
+/// units off, never enough to drive. Neutral frames carry 128 whatever it is.
+inline constexpr int kCenterTrimMin = kDefaultCenter - 8;
+inline constexpr int kCenterTrimMax = kDefaultCenter + 8;
 inline constexpr std::uint8_t kDefaultByte12 = 0x00;
 inline constexpr std::uint8_t kDefaultBattery = 0xCC;
 inline constexpr double kDefaultThreshold = 0.5;
@@ -128,7 +134,7 @@ struct Mapping {
   std::vector<std::string> chain;    ///< the files read, canonical: this one, then each it extends
   std::optional<std::string> robot;  ///< canonical robot type; none for a base file
   SourcePos robot_pos;
-  int center = kDefaultCenter;
+  int center = kDefaultCenter;  ///< drive and pivot's rest while enabled: a trim, kCenterTrimMin..kCenterTrimMax
   std::uint8_t byte12 = kDefaultByte12;
   std::uint8_t battery = kDefaultBattery;
   std::optional<InputUse> deadman;
@@ -139,6 +145,14 @@ struct Mapping {
 };
 
 class ValidMapping;
+
+/// The error for a `center:` outside kCenterTrimMin..kCenterTrimMax, `value`
+/// as written: names the band and why it is narrow.
+std::string center_out_of_band(std::string_view value);
+
+/// What a trim does, for `check` ("center 124: drive and pivot rest at 124
+/// while enabled; neutral frames carry 128"); empty for the default 128.
+std::string center_effect(int center);
 
 /// Checks the rules that span bindings (docs/mapping.md): an input bound
 /// twice in a layer, two bindings on one analog byte, a weapon without arm,

@@ -20,12 +20,13 @@ struct SafetyContext {
   bool enabled = false;   ///< connected + deadman held + pressed fresh
   bool weapons = false;   ///< weapons enabled for the run
   std::bitset<protocol::kSignalCount> armed;  ///< weapon signals whose arming input is held
-  int center = kDefaultCenter;
+  int center = kDefaultCenter;  ///< drive and pivot's rest while enabled (the trim): `brake: moving` measures from it
   BrakeMode brake = BrakeMode::kEnabled;
 };
 
-/// Not enabled: motion and weapon bits 0, drive/pivot at centre, selectors,
-/// levels and constants unchanged. Enabled: safety = 1, drive_brake = 1 (or
+/// Not enabled: motion and weapon bits 0, drive/pivot at the protocol's
+/// centre (128, whatever the mapping's trim), selectors, levels and constants
+/// unchanged. Enabled: safety = 1, drive_brake = 1 (or
 /// only while moving), weapons only when enabled for the run and armed.
 /// Always: an opposing pair asked for both ways sends neither.
 protocol::ControlState apply_safety(protocol::ControlState state, const SafetyContext& context);

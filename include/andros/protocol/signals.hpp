@@ -26,6 +26,10 @@ enum class SignalKind : std::uint8_t {
 
 inline constexpr std::int8_t kWholeByte = -1;
 
+/// `drive` and `pivot` in every neutral frame. The protocol's, not a
+/// mapping's: no `center:` trim reaches a frame sent while not enabled.
+inline constexpr std::uint8_t kNeutralCentre = 128;
+
 struct SignalInfo {
   std::string_view name;
   std::uint8_t byte;

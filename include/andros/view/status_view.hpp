@@ -32,7 +32,8 @@ const std::vector<SignalGroup>& signal_groups();
 std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact);
 
 /// The drive, pivot, arm speed and light gauges, and the frame in hex; drive
-/// and pivot grow from center (the mapping's rest value).
+/// and pivot grow from center (the mapping's rest while enabled) in a frame
+/// with safety 1, from the protocol's 128 in a neutral one.
 std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center);
 
 /// What `run` knows at one moment.
@@ -41,7 +42,7 @@ struct RunStatus {
   std::string mapping_file;      ///< the mapping the run uses
   bool weapons = false;          ///< weapon signals may be sent in this run (--weapons)
   std::uint8_t code = 0;
-  int center = mapping::kDefaultCenter;  ///< the mapping's rest value of drive and pivot
+  int center = mapping::kDefaultCenter;  ///< the mapping's rest of drive and pivot while enabled (its trim)
   double rate_hz = 0;            ///< the configured rate
   std::int64_t t_ms = 0;
   std::string input;             ///< "sdl" or the script's path
