@@ -16,6 +16,7 @@ ap.add_argument("--enabled", action="store_true")
 ap.add_argument("--driving", action="store_true")
 ap.add_argument("--neutral-tail", type=int, default=0)
 ap.add_argument("--code")
+ap.add_argument("--all-neutral", action="store_true", help="every frame neutral (a link regained: a fresh press first)")
 a = ap.parse_args()
 # Contract section 5: neutral = every motion, weapon and interlock bit 0, drive
 # and pivot at centre. The kinds come from the signal table, not a copy of it.
@@ -40,6 +41,9 @@ if a.enabled and not any(f["signals"]["safety"] == 1 for f in frames):
     problems.append("no frame is enabled (safety = 1)")
 if a.driving and not any(f["signals"]["drive"] != 128 for f in frames):
     problems.append("no frame drives")
+if a.all_neutral and not all(neutral(f["signals"]) for f in frames):
+    problems.append("a frame is not neutral: " + str([(f["offset"], f["signals"]["safety"], f["signals"]["drive"])
+                                                     for f in frames if not neutral(f["signals"])][:5]))
 tail = frames[-a.neutral_tail:] if a.neutral_tail else []
 if a.neutral_tail and (len(tail) < a.neutral_tail or not all(neutral(f["signals"]) for f in tail)):
     problems.append(f"the last {a.neutral_tail} frames are not all neutral: "

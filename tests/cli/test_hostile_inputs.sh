@@ -42,7 +42,7 @@ expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.y
 
 # Event scripts.
 w unknown_event.events '0 connect\n10 jump\n'
-expect_error "unknown_event.events:2:4: error: unknown event 'jump' (expected connect, disconnect, button, axis, hat or end)" "$BIN" replay unknown_event.events --robot hd1
+expect_error "unknown_event.events:2:4: error: unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay unknown_event.events --robot hd1
 w backwards.events '0 connect\n100 button a 1\n50 button a 0\n'
 expect_error "backwards.events:3:1: error: time 50 ms goes backwards (previous event at 100 ms)" "$BIN" replay backwards.events --robot hd1
 w button.events '0 connect\n1 button trigger 1\n'
@@ -116,9 +116,9 @@ expect_error "bomb.yaml:7:9: error: the mapping is too large: more than 100000 Y
 
 # User text in an error is quoted: printable ASCII as is, other bytes (a NUL, a BOM) as \xNN, long text cut short.
 printf '0 conn\0ect\n' >nul.events
-expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected connect, disconnect, button, axis, hat or end)" "$BIN" replay nul.events
+expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay nul.events
 printf '0 %s\n' "$(printf 'x%.0s' $(seq 100))" >long.events
-expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat or end)" "$BIN" replay long.events
+expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay long.events
 printf '\xEF\xBB\xBFbaudrate=9600\n' >bom.conf
 expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config bom.conf --input ok.events
 w nul.yaml "$head"'  - signal: "tool\\0on"\n    button: a\n'

@@ -109,12 +109,15 @@ run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 10 -- \
 check "$TMP/cap" --min 8 --driving --neutral-tail 3
 grep -q "stopped (SIGTERM)" "$TMP/err" || fail "no SIGTERM closing line: $(cat "$TMP/err")"
 
-# Unplug/replug: the symlink moves from one pty to a new one; streaming resumes.
+# Unplug/replug: the symlink moves from one pty to a new one; streaming resumes,
+# and a link that comes back is a new link: with the deadman held throughout,
+# nothing moves on it (a stop never ends by itself).
 run_cmd harness "$TMP/cap" --replug-after 5 --term-after 10 --timeout 15 -- \
   "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
 [[ $code -eq 0 ]] || fail "replug run exited $code: $(cat "$TMP/err")"
 check "$TMP/cap" --min 5
-check "$TMP/cap.2" --min 10 --enabled --driving --neutral-tail 3
+check "$TMP/cap.2" --min 10 --all-neutral
+grep -q "not enabled: driving was interrupted" "$TMP/err" || fail "the regained link does not say why nothing moves: $(cat "$TMP/err")"
 [[ $(grep -c "lost" "$TMP/err") -eq 1 ]] || fail "the loss is not logged exactly once: $(cat "$TMP/err")"
 [[ $(grep -c "link .*: up" "$TMP/err") -eq 2 ]] || fail "link up not logged twice: $(cat "$TMP/err")"
 

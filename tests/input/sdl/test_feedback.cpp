@@ -114,7 +114,9 @@ class FeedbackRun {
     t_ += 40;
     input_.pump(state_, t_);
     engine_.step(state_, t_);
-    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().enable, link_up});
+    // The loop's state is enabled when the engine is and the link is up (no interruption here).
+    const bool enabled = engine_.status().enable == mapping::EnableState::kEnabled && link_up;
+    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().enable, enabled, link_up});
   }
 
  private:

@@ -1,0 +1,175 @@
+// The operating-state machine: every row of its table taken from a state
+// reached by real events, and the rules the table must keep whatever its rows.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "andros/run/operating_state.hpp"
+
+namespace andros::run {
+namespace {
+
+using S = OpState;
+using E = OpEvent;
+
+constexpr std::array kStates = {S::kNoLink,    S::kNoController, S::kNotEnabled, S::kEnabled,
+                                S::kSuspended, S::kReloading,    S::kStopping};
+constexpr std::array kEvents = {E::kLinkUp,       E::kLinkDown,    E::kLinkTaken, E::kControllerUp,
+                                E::kControllerDown, E::kFreshPress, E::kRelease,   E::kReloadBegin,
+                                E::kReloadDone,   E::kSuspend,     E::kResume,    E::kShutdown};
+
+/// The conditions a machine can be in while in `state`: link up or not, controller up or not.
+struct Start {
+  S state;
+  bool link;
+  bool controller;
+};
+
+/// A machine brought to `start` by events, as the loop would.
+OperatingState reach(const Start& start) {
+  OperatingState m(false);
+  if (start.controller) m.on(E::kControllerUp);
+  if (start.link) m.on(E::kLinkUp);
+  switch (start.state) {
+    case S::kNoLink:
+    case S::kNoController:
+    case S::kNotEnabled: break;
+    case S::kEnabled: m.on(E::kFreshPress); break;
+    case S::kSuspended: m.on(E::kSuspend); break;
+    case S::kReloading: m.on(E::kReloadBegin); break;
+    case S::kStopping: m.on(E::kShutdown); break;
+  }
+  return m;
+}
+
+/// Every way to be in each state (the driving ones have one each; the others any).
+std::vector<Start> starts() {
+  std::vector<Start> out = {{S::kNoLink, false, false},     {S::kNoLink, false, true},
+                            {S::kNoController, true, false}, {S::kNotEnabled, true, true},
+                            {S::kEnabled, true, true}};
+  for (const auto s : {S::kSuspended, S::kReloading, S::kStopping}) {
+    for (const bool link : {false, true}) {
+      for (const bool pad : {false, true}) {
+        // Enabled first where it can be, so that the stop, suspend or reload interrupts driving.
+        out.push_back({s, link, pad});
+      }
+    }
+  }
+  return out;
+}
+
+S settled(bool link, bool controller) {
+  if (!link) return S::kNoLink;
+  return controller ? S::kNotEnabled : S::kNoController;
+}
+
+TEST(OperatingState, ReachesEveryStartItClaims) {
+  for (const auto& start : starts()) {
+    const auto m = reach(start);
+    EXPECT_EQ(m.state(), start.state) << to_string(start.state) << " link " << start.link << " pad " << start.controller;
+    EXPECT_EQ(m.link_up(), start.link);
+    EXPECT_EQ(m.controller_up(), start.controller);
+  }
+}
+
+TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
+  std::set<std::pair<S, E>> exercised;
+  for (const auto& row : OperatingState::table()) {
+    int taken = 0;
+    for (const auto& start : starts()) {
+      if (start.state != row.from) continue;
+      auto m = reach(start);
+      const Effect effect = m.on(row.event);
+      const bool link = row.event == E::kLinkUp     ? true
+                        : row.event == E::kLinkDown || row.event == E::kLinkTaken ? false
+                                                                                 : start.link;
+      const bool pad = row.event == E::kControllerUp     ? true
+                       : row.event == E::kControllerDown ? false
+                                                         : start.controller;
+      const S want = row.settle ? settled(link, pad) : row.to;
+      EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
+      EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);
+      EXPECT_EQ(effect.changed, want != row.from);
+      ++taken;
+    }
+    EXPECT_GT(taken, 0) << "no test reaches " << to_string(row.from);
+    EXPECT_TRUE(exercised.insert({row.from, row.event}).second)
+        << "two rows for " << to_string(row.from) << " + " << to_string(row.event);
+  }
+}
+
+TEST(OperatingState, AnEventWithoutARowChangesNothingButItsCondition) {
+  for (const auto& start : starts()) {
+    for (const auto event : kEvents) {
+      bool has_row = false;
+      for (const auto& row : OperatingState::table()) has_row |= row.from == start.state && row.event == event;
+      if (has_row) continue;
+      auto m = reach(start);
+      const Effect effect = m.on(event);
+      EXPECT_EQ(m.state(), start.state) << to_string(start.state) << " + " << to_string(event);
+      EXPECT_FALSE(effect.changed);
+      EXPECT_FALSE(effect.rebase);
+    }
+  }
+}
+
+TEST(OperatingState, TheOnlyWayIntoEnabledIsAFreshPressInNotEnabled) {
+  for (const auto& row : OperatingState::table()) {
+    if (row.to == S::kEnabled && !row.settle) {
+      EXPECT_EQ(row.from, S::kNotEnabled);
+      EXPECT_EQ(row.event, E::kFreshPress);
+    }
+  }
+  // Whatever sequence of events: enabled only right after a fresh press seen in not enabled.
+  for (const auto& start : starts()) {
+    for (const auto first : kEvents) {
+      for (const auto second : kEvents) {
+        auto m = reach(start);
+        m.on(first);
+        const S before = m.state();
+        m.on(second);
+        if (m.state() == S::kEnabled && before != S::kEnabled) {
+          EXPECT_EQ(before, S::kNotEnabled);
+          EXPECT_EQ(second, E::kFreshPress);
+        }
+      }
+    }
+  }
+}
+
+TEST(OperatingState, WhateverInterruptsDrivingEndsEnabledAndComesBackThroughARebase) {
+  // Each of these, from enabled, leaves a state that is not enabled.
+  for (const auto event : {E::kLinkDown, E::kLinkTaken, E::kControllerDown, E::kRelease, E::kReloadBegin,
+                           E::kSuspend, E::kResume, E::kShutdown}) {
+    auto m = reach({S::kEnabled, true, true});
+    m.on(event);
+    EXPECT_FALSE(m.motion_allowed()) << to_string(event);
+  }
+  // Every way back to the driving states from an interruption rebases the
+  // engine (a press before it is history), but a controller coming back:
+  // the engine counts presses per connection itself.
+  for (const auto& row : OperatingState::table()) {
+    if (!row.settle) continue;
+    EXPECT_EQ(row.rebase, row.event != E::kControllerUp) << to_string(row.from) << " + " << to_string(row.event);
+  }
+}
+
+TEST(OperatingState, StoppingIsTheEnd) {
+  for (const auto event : kEvents) {
+    auto m = reach({S::kStopping, true, true});
+    m.on(event);
+    EXPECT_EQ(m.state(), S::kStopping) << to_string(event);
+  }
+}
+
+TEST(OperatingState, EveryStateAndEventHasAName) {
+  std::set<std::string_view> names;
+  for (const auto s : kStates) EXPECT_TRUE(names.insert(to_string(s)).second);
+  for (const auto e : kEvents) EXPECT_TRUE(names.insert(to_string(e)).second);
+  EXPECT_EQ(names.count("?"), 0U);
+}
+
+}  // namespace
+}  // namespace andros::run
