@@ -35,8 +35,9 @@ class Engine {
   /// call is start-up: deadman presses counted before it are not fresh.
   protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms);
 
-  /// Makes the next step a start-up again (after the process was paused):
-  /// presses made before it are history, the deadman needs a fresh press.
+  /// Makes the next step a start-up again (after the process was paused, or
+  /// any stop): presses made before it are history, the deadman needs a fresh
+  /// press, toggles and a toggled layer (a weapons one above all) are off.
   void restart() { started_ = false; }
 
   /// The neutral frame for the current analog/selector state (shutdown, link
@@ -68,6 +69,7 @@ class Engine {
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<input::InputKey> buttons_;                   ///< every button the mapping reads
+  std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
   // State carried from tick to tick.
   bool started_ = false;
   std::uint32_t connection_ = 0;
