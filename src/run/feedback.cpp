@@ -9,7 +9,7 @@ using mapping::FeedbackEvent;
 
 FeedbackStatus feedback_status(const TickReport& report) {
   return {report.connected, report.engine.enable,
-          report.link.state == link::LinkState::kUp && report.link.motion_allowed};
+          report.link.state == link::LinkState::kUp && report.link.motion_allowed, report.engine.weapons_mode};
 }
 
 std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
@@ -22,6 +22,8 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
   if (before.enable == EnableState::kEnabled && after.enable != EnableState::kEnabled && after.connected) {
     events.push_back(FeedbackEvent::kDisabled);
   }
+  if (after.weapons_mode && !before.weapons_mode) events.push_back(FeedbackEvent::kWeaponsOn);
+  if (before.weapons_mode && !after.weapons_mode && after.connected) events.push_back(FeedbackEvent::kWeaponsOff);
   if (after.enable == EnableState::kEnabled && before.enable != EnableState::kEnabled) {
     events.push_back(FeedbackEvent::kEnabled);
   }

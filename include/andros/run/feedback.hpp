@@ -17,6 +17,7 @@ struct FeedbackStatus {
   bool connected = false;  ///< a controller is connected
   mapping::EnableState enable = mapping::EnableState::kNoController;
   bool link_up = false;  ///< the link is up and frames follow the controller
+  bool weapons_mode = false;  ///< EngineStatus::weapons_mode
 
   bool operator==(const FeedbackStatus&) const = default;
 };
