@@ -26,6 +26,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.enabled = r.engine.enable == mapping::EnableState::kEnabled && !r.shutting_down && !r.reloading;
     next.enable_text = r.reloading ? "reloading the settings" : enable_text(r.engine);
     next.layer = r.engine.layer;
+    next.weapons_mode = next.enabled && r.engine.weapons_mode;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
@@ -57,6 +58,11 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
+  }
+  if (before.weapons_mode != after.weapons_mode) {
+    const auto layer = after.layer.empty() ? "base" : after.layer;
+    if (after.weapons_mode) spdlog::warn("WEAPONS LAYER on ({}): an armed fire input fires", layer);
+    else spdlog::info("weapons layer off");
   }
 }
 
