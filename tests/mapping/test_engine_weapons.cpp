@@ -207,5 +207,32 @@ TEST(EngineWeapons, ToggledLayersEndWithTheDeadmanAndAnyStop) {
   EXPECT_EQ(engine.status().layer, "");
 }
 
+// The shipped layout: a stray left-stick click while driving is the camera
+// layer; weapons are live only while RB is held.
+TEST(EngineWeapons, OnTheShippedLayoutWeaponsAreLiveOnlyWhileRBIsHeld) {
+  Engine engine(hd1_mapping(), kWeapons);
+  input::InputState in;
+  start_enabled(engine, in);
+  apply_script(in, "50 axis lefty -32768\n60 button leftstick 1\n65 button leftstick 0\n");
+  engine.step(in, 80);
+  EXPECT_EQ(engine.status().layer, "camera");
+  EXPECT_FALSE(engine.status().weapons_mode);
+  apply_script(in, "90 axis lefty 0\n90 button leftstick 1\n95 button leftstick 0\n");
+  engine.step(in, 120);
+  apply_script(in, "130 button rightshoulder 1\n140 axis lefttrigger 32767\n");
+  engine.step(in, 160);
+  EXPECT_EQ(engine.status().layer, "weapons");
+  EXPECT_TRUE(engine.status().weapons_mode);
+  apply_script(in, "170 button a 1\n");
+  EXPECT_EQ(weapon_1(engine.step(in, 200)), 1);
+  apply_script(in, "210 button rightshoulder 0\n");
+  const auto f = protocol::read_signals(engine.step(in, 240));
+  EXPECT_EQ(engine.status().layer, "");
+  EXPECT_FALSE(engine.status().weapons_mode);
+  EXPECT_EQ(f[protocol::signal_id("weapon_1")], 0);
+  EXPECT_EQ(f[protocol::signal_id("rear_art_down")], 0);  // a, held across the change, waits
+  EXPECT_EQ(f[protocol::signal_id("fiber_takeup")], 0);   // and LT
+}
+
 }  // namespace
 }  // namespace andros::mapping
