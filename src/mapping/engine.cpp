@@ -34,6 +34,9 @@ Engine::Engine(ValidMapping mapping, EngineOptions options)
   slot_base_.push_back(0);
   for (int layer = -1; layer < static_cast<int>(mapping_->layers.size()); ++layer) {
     effective_.push_back(effective_bindings(*mapping_, layer));
+    weapons_layer_.push_back(std::any_of(effective_.back().begin(), effective_.back().end(), [this](BindingRef ref) {
+      return std::holds_alternative<WeaponBinding>(binding_at(*mapping_, ref).rule);
+    }));
     slots += layer < 0 ? mapping_->bindings.size() : mapping_->layers[static_cast<std::size_t>(layer)].bindings.size();
     slot_base_.push_back(slots);
   }
@@ -224,10 +227,13 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   } else if (input.connection() != connection_) {
     start_session(input, false);  // a new controller session: toggles start cleared
   }
-  if (!input.connected()) toggled_layer_ = -1;  // toggles are cleared below: not enabled
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
+  // Nothing is latched past the deadman: a toggled layer (a weapons layer above
+  // all) ends with it, as the toggles do below.
+  if (!enabled) toggled_layer_ = -1;
   update_layer(input, enabled);
+  status_.weapons_mode = enabled && options_.weapons && weapons_layer_[static_cast<std::size_t>(layer_ + 1)];
   rest_.update(input, layer_, enabled, seen_presses_);
   status_.held_back = rest_.held_back_inputs();
 

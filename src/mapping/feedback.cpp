@@ -7,6 +7,8 @@ std::string_view feedback_event_name(FeedbackEvent event) {
     case FeedbackEvent::kDeadmanRefused: return "deadman_refused";
     case FeedbackEvent::kLinkLost: return "link_lost";
     case FeedbackEvent::kDisabled: return "disabled";
+    case FeedbackEvent::kWeaponsOn: return "weapons_on";
+    case FeedbackEvent::kWeaponsOff: return "weapons_off";
     case FeedbackEvent::kEnabled: return "enabled";
     case FeedbackEvent::kControllerBack: return "controller_back";
   }
@@ -15,13 +17,17 @@ std::string_view feedback_event_name(FeedbackEvent event) {
 
 // Told apart by feel as well as by the light: three hard knocks for "no", one
 // long heavy rumble for the link, one light buzz up for enabled and one heavy
-// one down for disabled, two soft taps for "the controller is here".
+// one down for disabled, two soft taps for "the controller is here"; two long
+// hard pulses and yellow for "weapons live", three quick light taps for
+// "weapons off" (a green of its own: enabled, nothing to fire).
 input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
   using Rgb = std::array<std::uint8_t, 3>;
   switch (event) {
     case FeedbackEvent::kDeadmanRefused: return {1.0, 1.0, 80, 3, Rgb{255, 0, 0}};
     case FeedbackEvent::kLinkLost: return {1.0, 0.4, 600, 1, Rgb{255, 0, 255}};
     case FeedbackEvent::kDisabled: return {0.7, 0.0, 200, 1, Rgb{255, 140, 0}};
+    case FeedbackEvent::kWeaponsOn: return {1.0, 1.0, 150, 2, Rgb{255, 255, 0}};
+    case FeedbackEvent::kWeaponsOff: return {0.0, 1.0, 60, 3, Rgb{0, 255, 160}};
     case FeedbackEvent::kEnabled: return {0.0, 0.7, 200, 1, Rgb{0, 255, 0}};
     case FeedbackEvent::kControllerBack: return {0.3, 0.3, 60, 2, Rgb{0, 0, 255}};
   }

@@ -37,7 +37,8 @@ void read_feedback(const yaml::Reader& r, const YAML::Node& node, FeedbackTable&
     return;
   }
   if (!node.IsMap()) r.fail(node, "feedback is 'off' or a map of events to patterns");
-  r.expect_keys(node, {"deadman_refused", "link_lost", "disabled", "enabled", "controller_back"}, "feedback");
+  r.expect_keys(node, {"deadman_refused", "link_lost", "disabled", "weapons_on", "weapons_off", "enabled", "controller_back"},
+                "feedback");
   for (std::size_t i = 0; i < kFeedbackEventCount; ++i) {
     const auto event = static_cast<FeedbackEvent>(i);
     const auto n = node[std::string(feedback_event_name(event))];

@@ -37,7 +37,8 @@ void check_range(bool ok, const SourcePos& at, const std::string& what) {
   if (!ok) throw InputError(at, what + " is out of range");
 }
 
-void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
+// reserved: the deadman and the layer keys.
+void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const std::vector<InputUse>& reserved) {
   const auto& at = b.target_pos;
   const auto check_threshold = [&](double t) { check_range(t > 0.0 && t <= 1.0, b.pos, "threshold"); };
   std::visit(Overload{
@@ -53,6 +54,13 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman) {
                    if (*r.arm == r.input) throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
                    if (deadman && *r.arm == deadman->key) {
                      throw InputError(b.arm->pos, "'arm' must be a second button, not the deadman");
+                   }
+                   // A layer key that also arms would make one press enter the layer and arm it.
+                   for (const auto& key : reserved) {
+                     if (*r.arm == key.key) {
+                       throw InputError(b.arm->pos, "'arm' must be a second button, not the key of a layer (line " +
+                                                        std::to_string(key.pos.line) + ")");
+                     }
                    }
                  },
                  [&](const PairBinding& r) {
@@ -265,7 +273,7 @@ ValidMapping validate(Mapping m, bool require_robot) {
   std::map<protocol::SignalId, SourcePos> selector_signals;
   const auto check_bindings = [&](const std::vector<Binding>& list) {
     for (const auto& b : list) {
-      check_rule(b, m.deadman);
+      check_rule(b, m.deadman, reserved);
       if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) {
         std::set<protocol::SignalId> mine;
         for (const auto& p : s->positions) mine.insert(p.begin(), p.end());

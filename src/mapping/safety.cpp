@@ -42,6 +42,7 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
 RestRule::RestRule(const Mapping& mapping) {
   for (int layer = -1; layer < static_cast<int>(mapping.layers.size()); ++layer) {
     Readers& readers = readers_.emplace_back();
+    Arms& arms = arms_.emplace_back();
     for (const auto ref : effective_bindings(mapping, layer)) {
       const auto& b = binding_at(mapping, ref);
       // A button rests released whoever reads it; an axis rests where its binding sends nothing.
@@ -62,9 +63,11 @@ RestRule::RestRule(const Mapping& mapping) {
       }
       // An arming trigger counts as held past half way.
       if (b.arm) {
-        readers[b.arm->key].push_back(b.arm->key.is_button()
-                                          ? Reader{r.binding, Reader::Rest::kReleased, false, 0.0}
-                                          : Reader{r.binding, Reader::Rest::kBelow, false, kDefaultThreshold});
+        const auto arm = b.arm->key.is_button() ? Reader{r.binding, Reader::Rest::kReleased, false, 0.0}
+                                                : Reader{r.binding, Reader::Rest::kBelow, false, kDefaultThreshold};
+        readers[b.arm->key].push_back(arm);
+        arm_readers_.try_emplace(b.arm->key, std::vector{arm});
+        for (const auto& u : b.inputs) arms[b.arm->key].push_back(u.key);
       }
     }
   }
@@ -87,15 +90,27 @@ bool RestRule::at_rest(const input::InputState& input, input::InputKey key, cons
 }
 
 void RestRule::update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen) {
-  if (!enabled) {
+  if (enabled) {
+    hold_back(input, layer, seen);
+  } else {
     enabled_ = false;
     held_.clear();
-    return;
+    armed_.clear();
   }
+  arms_down_.clear();
+  for (const auto& [key, readers] : arm_readers_) {
+    if (key.is_button()) arm_presses_[key] = input.button(key).presses;
+    else if (!at_rest(input, key, readers)) arms_down_.insert(key);
+  }
+  arms_connection_ = input.connection();
+}
+
+void RestRule::hold_back(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen) {
   // Becoming enabled, also with a new controller between two frames, changes every input's meaning.
   const bool edge = !enabled_ || input.connection() != connection_;
   const auto& now = readers_[static_cast<std::size_t>(layer + 1)];
   const auto& before = readers_[static_cast<std::size_t>(layer_ + 1)];
+  const auto& arms = arms_[static_cast<std::size_t>(layer + 1)];
   const auto same_bindings = [](const std::vector<Reader>& a, const std::vector<Reader>& b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                       [](const Reader& x, const Reader& y) { return x.binding == y.binding; });
@@ -109,15 +124,48 @@ void RestRule::update(const input::InputState& input, int layer, bool enabled, s
     const bool rest = at_rest(input, key, readers);
     if (changed) {
       if (key.is_button()) seen[key] = presses;  // presses up to this frame meant something else
-      if (rest) held_.erase(key);
-      else held_[key] = presses;
+      // An arming input pressed in this very frame counts, as the deadman does: it arms, it fires nothing.
+      hold(input, key, rest || (arms.contains(key) && pressed_this_frame(input, key)));
     } else if (const auto h = held_.find(key); h != held_.end() && (rest || presses > h->second)) {
       held_.erase(h);  // released, or released and pressed again since it was held back
     }
   }
+  hold_back_fire_inputs(input, layer, seen);
   enabled_ = true;
   connection_ = input.connection();
   layer_ = layer;
+}
+
+// Arming changes what a fire input means: one held (or pressed) by the frame its
+// weapon becomes armed fired nothing then, and waits until it is released.
+void RestRule::hold_back_fire_inputs(const input::InputState& input, int layer,
+                                     std::map<input::InputKey, std::uint32_t>& seen) {
+  const auto& readers = readers_[static_cast<std::size_t>(layer + 1)];
+  std::set<input::InputKey> armed;
+  for (const auto& [arm, fires] : arms_[static_cast<std::size_t>(layer + 1)]) {
+    if (held_.contains(arm) || at_rest(input, arm, readers.at(arm))) continue;
+    armed.insert(arm);
+    if (armed_.contains(arm)) continue;
+    for (const auto fire : fires) {
+      if (fire.is_button()) seen[fire] = input.button(fire).presses;
+      hold(input, fire, at_rest(input, fire, readers.at(fire)));
+    }
+  }
+  armed_ = std::move(armed);
+}
+
+void RestRule::hold(const input::InputState& input, input::InputKey key, bool rest) {
+  if (rest) held_.erase(key);
+  else held_[key] = key.is_button() ? input.button(key).presses : 0;
+}
+
+// A button counts its presses (not one held when the controller appeared); a
+// trigger must have been below half way at the last frame, on the same controller.
+bool RestRule::pressed_this_frame(const input::InputState& input, input::InputKey arm) const {
+  const bool same_pad = input.connection() == arms_connection_;
+  if (!arm.is_button()) return same_pad && !arms_down_.contains(arm);
+  const auto last = arm_presses_.find(arm);
+  return input.button(arm).presses > (same_pad && last != arm_presses_.end() ? last->second : 0U);
 }
 
 std::vector<input::InputKey> RestRule::held_back_inputs() const {

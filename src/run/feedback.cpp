@@ -10,8 +10,10 @@ using mapping::FeedbackEvent;
 FeedbackStatus feedback_status(const TickReport& report) {
   // Enabled as the state machine says, never as the engine alone sees it: the
   // pad's light cannot say "enabled" while nothing reaches the vehicle.
+  // A weapons mode only while enabled, too.
   return {report.connected, report.engine.enable, report.enabled(),
-          report.link.state == link::LinkState::kUp && report.link.motion_allowed};
+          report.link.state == link::LinkState::kUp && report.link.motion_allowed,
+          report.enabled() && report.engine.weapons_mode};
 }
 
 std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
@@ -22,6 +24,8 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
   if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
   // A lost controller cannot be told anything: no "disabled" with it.
   if (before.enabled && !after.enabled && after.connected) events.push_back(FeedbackEvent::kDisabled);
+  if (after.weapons_mode && !before.weapons_mode) events.push_back(FeedbackEvent::kWeaponsOn);
+  if (before.weapons_mode && !after.weapons_mode && after.connected) events.push_back(FeedbackEvent::kWeaponsOff);
   if (after.enabled && !before.enabled) {
     events.push_back(FeedbackEvent::kEnabled);
   }

@@ -27,6 +27,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.enabled = r.enabled();
     next.enable_text = state_text(r);
     next.layer = r.engine.layer;
+    next.weapons_mode = next.enabled && r.engine.weapons_mode;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
@@ -58,6 +59,11 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
+  }
+  if (before.weapons_mode != after.weapons_mode) {
+    const auto layer = after.layer.empty() ? "base" : after.layer;
+    if (after.weapons_mode) spdlog::warn("WEAPONS LAYER on ({}): an armed fire input fires", layer);
+    else spdlog::info("weapons layer off");
   }
 }
 

@@ -12,7 +12,8 @@ namespace {
 
 using detail::fmt;
 
-constexpr std::string_view kWeapons = "WEAPONS ENABLED";
+constexpr std::string_view kWeapons = "WEAPONS ENABLED: weapon signals may be sent";
+constexpr std::string_view kWeaponsLayer = "WEAPONS LAYER";
 constexpr int kMinLogRows = 3;  ///< the full switch list only when it leaves the log this many rows
 
 /// "; at rest first: lefty" from the enabled text "enabled; at rest first: lefty".
@@ -52,6 +53,7 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
     }
   }
   if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);
+  if (s.weapons_mode) out.back().add("   ").add(" " + std::string(kWeaponsLayer) + " ", Style::kBanner);
   return out;
 }
 
@@ -102,7 +104,9 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
   Screen screen;
   if (s.weapons) {
-    std::string banner = std::string(kWeapons) + ": weapon signals may be sent";
+    // In a weapons mode the top line says so too: it is the one line every terminal shows.
+    const std::string banner =
+        s.weapons_mode ? std::string(kWeaponsLayer) + ": an armed fire input fires" : std::string(kWeapons);
     const auto pad = width > banner.size() ? width - banner.size() : 0;
     screen.pin(Line(std::string(pad / 2, ' ') + banner + std::string(pad - pad / 2, ' '), Style::kBanner));
   }

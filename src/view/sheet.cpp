@@ -167,8 +167,8 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
                   (m.deadman ? " (" + label(m.deadman->key) + ")" : std::string()) + " is held and the arming input (" +
                   list + ") is held.");
   }
-  out.push_back("Releasing the deadman switches toggles off. After the deadman press or a layer change, an input "
-                "with a new meaning acts only once seen at rest.");
+  out.push_back("Releasing the deadman switches toggles and toggled layers off. After the deadman press or a layer "
+                "change, an input with a new meaning acts only once seen at rest.");
   return out;
 }
 

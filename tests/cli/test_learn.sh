@@ -36,7 +36,7 @@ grep -q '^\[1/[0-9]*\] base layer, the deadman: press a button or pull a trigger
 grep -q '^  no controller: waiting for the first controller$' "$TMP/out" || fail "no word of the missing controller"
 grep -q '^  kept leftshoulder$' "$TMP/out" || fail "Enter did not keep the deadman: $(cat "$TMP/out")"
 grep -q '^  kept the rest of this layer$' "$TMP/out" || fail "s did not skip the layer: $(cat "$TMP/out")"
-grep -q "layer 'arm', the key of layer 'arm' (hold)" "$TMP/out" || fail "s did not go to the arm layer"
+grep -q "layer 'arm', the key of layer 'arm' (toggle)" "$TMP/out" || fail "s did not go to the arm layer"
 grep -q "^nothing changed: $TMP/mine.yaml not written$" "$TMP/out" || fail "$(cat "$TMP/out")"
 [[ ! -e $TMP/mine.yaml ]] || fail "learn wrote a file with nothing changed"
 

@@ -126,7 +126,7 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
     type("\r");
     until(session, "  kept paddle1\n");
     type("s");
-    until(session, "layer 'arm', the key of layer 'arm' (hold): press a button (Enter keeps rightshoulder)");
+    until(session, "layer 'arm', the key of layer 'arm' (toggle): press a button (Enter keeps rightstick)");
     type("w");
     while (session.step(5)) {
     }

@@ -48,8 +48,26 @@ armed="$DATA/replay/weapons_on_armed.events"
 expect_exit 0 "$BIN" replay "$armed" --mapping "$core" --format jsonl
 grep -q '"weapon_1":1' "$TMP/out" && fail "weapon_1 sent without --weapons"
 expect_exit 0 "$BIN" replay "$armed" --mapping "$core" --format jsonl --weapons
-# One frame: after the deadman is pressed again, b and the arm (held since) must be released first.
+# One frame: b, held when armed, is released and pressed again; after the deadman is pressed
+# again, b and the arm (held since) must be released first.
 [[ $(grep -c '"weapon_1":1' "$TMP/out") -eq 1 ]] || fail "weapon_1 with --weapons: $(grep -c '"weapon_1":1' "$TMP/out") frames"
+
+# weapon_1 at frame T (0 or 1) in $TMP/out (jsonl).
+weapon_at() { python3 -c 'import json, sys
+print(next(l["signals"]["weapon_1"] for l in map(json.loads, open(sys.argv[1])) if l["t"] == int(sys.argv[2])))' "$TMP/out" "$1"; }
+# A weapon in the base layer of a mapping with no layers (issue 15, case 5): LB at 10, RB at 20,
+# b at 30, all in the frame at 40. RB counts; b, pressed in that frame too, waits for a release.
+printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: weapon_1\n    button: b\n    arm: rightshoulder\n' >"$TMP/base_weapon.yaml"
+printf '0 connect\n10 button leftshoulder 1\n20 button rightshoulder 1\n30 button b 1\n90 button b 0\n130 button b 1\n200 end\n' >"$TMP/base_weapon.events"
+expect_exit 0 "$BIN" replay "$TMP/base_weapon.events" --mapping "$TMP/base_weapon.yaml" --format jsonl --weapons
+[[ "$(weapon_at 80) $(weapon_at 120) $(weapon_at 160) $(weapon_at 200)" == "0 0 1 1" ]] ||
+  fail "base-layer weapon_1 at 80 120 160 200: $(weapon_at 80) $(weapon_at 120) $(weapon_at 160) $(weapon_at 200)"
+# A toggled weapons layer (issue 15, case 4) ends with the deadman: with LB pressed again the
+# bridge is in the base layer, where b fires nothing, the arm pressed afresh or not.
+printf 'robot: HD1\ndeadman: leftshoulder\nlayers:\n  weapons:\n    toggle: y\n    bindings:\n      - signal: weapon_1\n        button: b\n        arm: rightshoulder\n' >"$TMP/toggled.yaml"
+printf '0 connect\n10 button leftshoulder 1\n20 button y 1\n25 button y 0\n50 button rightshoulder 1\n90 button b 1\n130 button leftshoulder 0\n170 button leftshoulder 1\n210 button b 0\n210 button rightshoulder 0\n230 button rightshoulder 1\n250 button b 1\n300 end\n' >"$TMP/toggled.events"
+expect_exit 0 "$BIN" replay "$TMP/toggled.events" --mapping "$TMP/toggled.yaml" --format jsonl --weapons
+[[ "$(weapon_at 120) $(weapon_at 280)" == "1 0" ]] || fail "toggled weapons layer at 120 280: $(weapon_at 120) $(weapon_at 280)"
 
 # Rates: frame times floor(k * 1000 / rate); at most 26.666 Hz (360 bits at 9600 baud).
 expect_exit 0 "$BIN" replay "$DATA/replay/rate_24hz.events" --mapping "$core" --rate 24

@@ -82,16 +82,17 @@ TEST(Engine, MovedEngineKeepsWorking) {
   EXPECT_EQ(engine.mapping().robot, "HD1");
 }
 
-// The issue's own case on the shipped layout: hold RB (arm layer), push the
-// left stick full and squeeze RT, release RB. Drive and fiber_unwind wait.
-TEST(Engine, ReleasingALayerWithTheStickHeldDoesNotMove) {
+// The issue's own case on the shipped layout: the arm layer on (right stick
+// click), push the left stick full and squeeze RT, the arm layer off. Drive and
+// fiber_unwind wait.
+TEST(Engine, LeavingALayerWithTheStickHeldDoesNotMove) {
   Engine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
-  start_enabled(engine, in, "20 button rightshoulder 1\n");
+  start_enabled(engine, in, "20 button rightstick 1\n25 button rightstick 0\n");
   apply_script(in, "50 axis lefty -32768\n50 axis righttrigger 32767\n");
   auto f = protocol::read_signals(engine.step(in, 80));
   EXPECT_EQ(f[protocol::signal_id("shoulder_ccw")], 1);
-  apply_script(in, "90 button rightshoulder 0\n");
+  apply_script(in, "90 button rightstick 1\n95 button rightstick 0\n");
   f = protocol::read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().layer, "");
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
@@ -115,14 +116,14 @@ TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
   apply_script(in, "50 button dpup 0\n55 button dpup 1\n60 button dpup 0\n");
   EXPECT_EQ(protocol::read_signals(engine.step(in, 80))[protocol::signal_id("front_art_up")], 1);
   // b tapped in the frame that switches the camera layer on (b: the light knob there): dropped.
-  apply_script(in, "90 button rightstick 1\n95 button rightstick 0\n100 button b 1\n105 button b 0\n");
+  apply_script(in, "90 button leftstick 1\n95 button leftstick 0\n100 button b 1\n105 button b 0\n");
   auto f = protocol::read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().layer, "camera");
   EXPECT_EQ(f[protocol::signal_id("light")], 0);
-  apply_script(in, "130 button rightstick 1\n135 button rightstick 0\n");
+  apply_script(in, "130 button leftstick 1\n135 button leftstick 0\n");
   engine.step(in, 160);
   // A tap of an input the change leaves alone (start: the speed selector in both layers) still counts.
-  apply_script(in, "170 button rightshoulder 1\n180 button start 1\n185 button start 0\n");
+  apply_script(in, "170 button rightstick 1\n175 button rightstick 0\n180 button start 1\n185 button start 0\n");
   f = protocol::read_signals(engine.step(in, 200));
   EXPECT_EQ(engine.status().layer, "arm");
   EXPECT_EQ(f[protocol::signal_id("speed_low")], 0);  // low -> medium

@@ -51,7 +51,9 @@ TEST(FeedbackLoader, KeysGivenReplaceTheDefaultsAndTheRestStay) {
                            "feedback:\n"
                            "  enabled: {high: 0.25, ms: 50, led: [1, 2, 3]}\n"
                            "  link_lost: off\n"
-                           "  disabled: {pulses: 2, led: off}\n");
+                           "  disabled: {pulses: 2, led: off}\n"
+                           "  weapons_on: {ms: 300}\n"
+                           "  weapons_off: off\n");
   auto enabled = default_feedback_pattern(E::kEnabled);
   enabled.high = 0.25;
   enabled.ms = 50;
@@ -63,6 +65,10 @@ TEST(FeedbackLoader, KeysGivenReplaceTheDefaultsAndTheRestStay) {
   disabled.led.reset();
   EXPECT_EQ(m.feedback[E::kDisabled], disabled);
   EXPECT_EQ(m.feedback[E::kDeadmanRefused], default_feedback_pattern(E::kDeadmanRefused));
+  auto weapons_on = default_feedback_pattern(E::kWeaponsOn);
+  weapons_on.ms = 300;
+  EXPECT_EQ(m.feedback[E::kWeaponsOn], weapons_on);
+  EXPECT_FALSE(m.feedback[E::kWeaponsOff].has_value());
 }
 
 TEST(FeedbackLoader, AFileThatExtendsKeepsTheBasesFeedbackAndMayChangeIt) {

@@ -33,7 +33,7 @@ TEST(LearnPlan, WalksTheDeadmanThenEachLayersKeyAndEveryInputOfEveryBinding) {
   EXPECT_EQ(plan.current(step_of(plan, "base layer, pt_left / pt_right")), "rightx left");
   EXPECT_EQ(plan.current(step_of(plan, "layer 'camera', light down")), "x");
   EXPECT_EQ(plan.current(step_of(plan, "layer 'weapons', weapon_1 arming input")), "lefttrigger");
-  const auto arm_key = step_of(plan, "layer 'arm', the key of layer 'arm' (hold)");
+  const auto arm_key = step_of(plan, "layer 'arm', the key of layer 'arm' (toggle)");
   EXPECT_EQ(plan.next_layer(up), arm_key);
   EXPECT_LT(step_of(plan, "layer 'arm', arm_speed"), step_of(plan, "layer 'camera', the key of layer 'camera' (toggle)"));
 }
@@ -57,7 +57,7 @@ TEST(LearnPlan, AnInputUsedInTheSameLayerIsRefusedAndNothingChanges) {
   EXPECT_EQ(r.kind, Kind::kRefused);
   EXPECT_EQ(r.message, "'b' is already used for selector inset_video next in the base layer");
   EXPECT_EQ(plan.assign(up, button("leftshoulder")).message, "'leftshoulder' is the deadman");
-  EXPECT_EQ(plan.assign(up, button("rightshoulder")).message, "'rightshoulder' is the key of layer 'arm' (hold)");
+  EXPECT_EQ(plan.assign(up, button("rightshoulder")).message, "'rightshoulder' is the key of layer 'weapons' (hold)");
   EXPECT_FALSE(plan.changed());
   // Taken once, an input is refused for the next binding of the layer too.
   ASSERT_EQ(plan.assign(up, button("paddle1")).kind, Kind::kChanged);

@@ -52,7 +52,7 @@ TEST(LearnWriter, ABindingThatKeepsAnInputOrItsByteNeedsNoUnbind) {
   ASSERT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_1 arming input"), button("paddle1")).kind, Kind::kChanged);
   const auto text = plan.extending_yaml(kHd1);
   EXPECT_EQ(text.find("unbind"), std::string::npos) << text;
-  EXPECT_NE(text.find("  \"camera\":\n    toggle: rightstick\n    bindings:\n"
+  EXPECT_NE(text.find("  \"camera\":\n    toggle: leftstick\n    bindings:\n"
                       "      - analog: light    # was b, x\n        increase: paddle2\n"),
             std::string::npos)
       << text;
@@ -64,10 +64,10 @@ TEST(LearnWriter, TheDeadmanAndALayerKeyAreWrittenWithTheirLayer) {
   LearnPlan plan(*load_mapping(kHd1));
   ASSERT_EQ(plan.assign(0, axis("righttrigger", false)).kind, Kind::kRefused);  // fiber_unwind reads it
   ASSERT_EQ(plan.assign(0, button("misc1")).kind, Kind::kChanged);
-  ASSERT_EQ(plan.assign(step_of(plan, "layer 'arm', the key of layer 'arm' (hold)"), button("paddle3")).kind, Kind::kChanged);
+  ASSERT_EQ(plan.assign(step_of(plan, "layer 'arm', the key of layer 'arm' (toggle)"), button("paddle3")).kind, Kind::kChanged);
   const auto text = plan.extending_yaml(kHd1);
   EXPECT_NE(text.find("deadman: misc1    # was leftshoulder\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("  \"arm\":\n    hold: paddle3    # was rightshoulder\n    bindings: []\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  \"arm\":\n    toggle: paddle3    # was rightstick\n    bindings: []\n"), std::string::npos) << text;
   testing::TempDir dir;
   const auto loaded = write_and_load(plan, dir);
   EXPECT_EQ(input::input_name(loaded.deadman->key), "misc1");

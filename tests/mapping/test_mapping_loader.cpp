@@ -83,6 +83,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"weapon toggle", kHead + "  - signal: laser\n    button: b\n    arm: a\n    toggle: true\n", 7, 5, "unknown key 'toggle' in a weapon binding"},
         BadMapping{"arm on a non-weapon", kHead + "  - signal: tool_on\n    button: b\n    arm: a\n", 4, 13, "'arm' is only for weapon signals"},
         BadMapping{"arm is the deadman", kHead + "  - signal: weapon_2\n    button: b\n    arm: leftshoulder\n", 6, 10, "not the deadman"},
+        BadMapping{"arm is a layer key", kHead + "  - signal: weapon_2\n    button: b\n    arm: y\nlayers:\n  w:\n    hold: y\n    bindings: []\n", 6, 10, "'arm' must be a second button, not the key of a layer (line 9)"},
         BadMapping{"arm fires something else", kHead + "  - signal: weapon_2\n    button: b\n    arm: a\n  - signal: tool_on\n    button: a\n", 6, 10, "arming input 'a' is also bound at line 8"},
         BadMapping{"deadman bound", kHead + "  - signal: tool_on\n    button: leftshoulder\n", 5, 13, "'leftshoulder' is the deadman or switches a layer"},
         BadMapping{"deadman on a stick", "robot: HD1\ndeadman: leftx\n", 2, 10, "deadman 'leftx' is not a button or a trigger"},

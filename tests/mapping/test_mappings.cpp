@@ -90,6 +90,21 @@ TEST(ShippedMappings, EverySignalIsReachableFromAStandardPad) {
   }
 }
 
+// Weapons are never latched (contract, section 5): a layer that holds a
+// weapon is a hold layer, and the base layer holds none.
+TEST(ShippedMappings, WeaponsAreOnlyInHeldLayers) {
+  const auto is_weapon = [](const Binding& b) { return std::holds_alternative<WeaponBinding>(b.rule); };
+  for (const auto& file : shipped_files()) {
+    const auto m = load_mapping_file(file);
+    EXPECT_FALSE(std::any_of(m.bindings.begin(), m.bindings.end(), is_weapon)) << file;
+    for (const auto& layer : m.layers) {
+      if (std::any_of(layer.bindings.begin(), layer.bindings.end(), is_weapon)) {
+        EXPECT_FALSE(layer.toggle) << file << ": layer " << layer.name;
+      }
+    }
+  }
+}
+
 TEST(ShippedMappings, EveryBindingCarriesAComment) {
   const std::regex binding_line(R"(^\s*- (signal|analog|selector):)");
   for (const auto& file : shipped_files()) {

@@ -20,6 +20,11 @@ FeedbackStatus link_down(FeedbackStatus s) {
   return s;
 }
 
+FeedbackStatus weapons(FeedbackStatus s) {
+  s.weapons_mode = true;
+  return s;
+}
+
 TEST(FeedbackEvents, EachChangeGivesItsEvent) {
   EXPECT_EQ(feedback_events(kIdle, kConnected), Events{E::kControllerBack});
   EXPECT_EQ(feedback_events(kConnected, kEnabled), Events{E::kEnabled});
@@ -60,6 +65,17 @@ TEST(FeedbackEvents, SeveralAtOnceComeMostImportantFirst) {
   EXPECT_EQ(feedback_events(link_down(kIdle), kEnabled), (Events{E::kEnabled, E::kControllerBack}));
 }
 
+TEST(FeedbackEvents, AWeaponsModeIsToldWhenItBeginsAndEnds) {
+  EXPECT_EQ(feedback_events(kEnabled, weapons(kEnabled)), Events{E::kWeaponsOn});
+  EXPECT_EQ(feedback_events(weapons(kEnabled), kEnabled), Events{E::kWeaponsOff});
+  EXPECT_TRUE(feedback_events(weapons(kEnabled), weapons(kEnabled)).empty());
+  // Enabled straight into a weapons layer: the weapons pattern, not the plain one.
+  EXPECT_EQ(feedback_events(kConnected, weapons(kEnabled)), (Events{E::kWeaponsOn, E::kEnabled}));
+  // The deadman released in one: "disabled" says it all; a lost controller cannot be told.
+  EXPECT_EQ(feedback_events(weapons(kEnabled), kConnected), (Events{E::kDisabled, E::kWeaponsOff}));
+  EXPECT_TRUE(feedback_events(weapons(kEnabled), kIdle).empty());
+}
+
 class RecordingInput final : public input::InputSource {
  public:
   void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
@@ -82,6 +98,19 @@ TEST(FeedbackNotifier, PlaysTheFirstEventThatHasAPattern) {
   FeedbackNotifier without_refused(table, input);
   EXPECT_EQ(without_refused.observe(kRefused), E::kControllerBack);
   EXPECT_EQ(input.played.back(), *table[E::kControllerBack]);
+}
+
+TEST(FeedbackNotifier, AWeaponsModePlaysItsOwnPatterns) {
+  RecordingInput input;
+  const auto table = mapping::default_feedback();
+  FeedbackNotifier notifier(table, input);
+  notifier.observe(kEnabled);
+  EXPECT_EQ(notifier.observe(weapons(kEnabled)), E::kWeaponsOn);
+  EXPECT_EQ(input.played.back(), *table[E::kWeaponsOn]);
+  EXPECT_EQ(notifier.observe(kEnabled), E::kWeaponsOff);
+  EXPECT_EQ(input.played.back(), *table[E::kWeaponsOff]);
+  EXPECT_NE(*table[E::kWeaponsOn], *table[E::kEnabled]);
+  EXPECT_NE(*table[E::kWeaponsOff], *table[E::kEnabled]);
 }
 
 TEST(FeedbackNotifier, AllOffPlaysNothing) {

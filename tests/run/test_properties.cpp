@@ -195,6 +195,9 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       if (sig.kind == protocol::SignalKind::kWeapon && (!weapons || !enabled)) {
         ASSERT_EQ(s[id], 0) << sig.name << ", " << where();
       }
+      if (sig.kind == protocol::SignalKind::kWeapon && s[id] != 0) {
+        ASSERT_TRUE(last.engine.weapons_mode) << sig.name << " outside a weapons mode, " << where();
+      }
       if (sig.is_bit() && s[id] != 0) ++coverage[id];
       if (enabled) continue;
       switch (sig.kind) {

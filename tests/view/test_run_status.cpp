@@ -1,9 +1,37 @@
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+
+#include <sstream>
 
 #include "andros/view/run_status.hpp"
 
 namespace andros::view {
 namespace {
+
+/// The log lines written while it lives, as "LEVEL: TEXT" (the default logger is restored after).
+class LogCapture {
+ public:
+  LogCapture() : previous_(spdlog::default_logger()) {
+    auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(out_);
+    sink->set_pattern("%l: %v");
+    spdlog::set_default_logger(std::make_shared<spdlog::logger>("capture", sink));
+  }
+  LogCapture(const LogCapture&) = delete;
+  LogCapture& operator=(const LogCapture&) = delete;
+  ~LogCapture() { spdlog::set_default_logger(previous_); }
+  [[nodiscard]] std::string text() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+  std::shared_ptr<spdlog::logger> previous_;
+};
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
 
 run::TickReport tick(std::int64_t t_ms) {
   run::TickReport r;
@@ -100,6 +128,32 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
     board.observe(r);
     EXPECT_FALSE(board.snapshot().enabled) << run::to_string(state);
   }
+}
+
+TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
+  const LogCapture log;
+  RunStatus initial;
+  initial.weapons = true;
+  RunStatusBoard board(initial);
+  auto r = tick(40);
+  r.engine.layer = "weapons";
+  r.engine.weapons_mode = true;
+  board.observe(r);
+  EXPECT_TRUE(board.snapshot().weapons_mode);
+  r.t_ms = 80;
+  board.observe(r);
+  board.observe(tick(120));  // the arm layer: no weapons
+  EXPECT_FALSE(board.snapshot().weapons_mode);
+  r.t_ms = 160;
+  board.observe(r);
+  EXPECT_TRUE(board.snapshot().weapons_mode);
+  r.t_ms = 200;
+  r.state = run::OpState::kStopping;  // the last step said so; a stop ends every weapons mode
+  board.observe(r);
+  EXPECT_FALSE(board.snapshot().weapons_mode);
+  const auto text = log.text();
+  EXPECT_EQ(count(text, "warning: WEAPONS LAYER on (weapons): an armed fire input fires\n"), 2U) << text;
+  EXPECT_EQ(count(text, "info: weapons layer off\n"), 1U) << text;
 }
 
 TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {

@@ -79,6 +79,25 @@ TEST(RunView, AtLeastTheBannerAndTheStateOnATinyTerminal) {
   EXPECT_TRUE(lines[1].starts_with("andros-bridge run")) << lines[1];
 }
 
+TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
+  RunStatus s = driving(true);
+  s.layer = "weapons";
+  s.weapons_mode = true;
+  for (const TermSize size : {TermSize{80, 24}, TermSize{30, 2}}) {
+    const auto lines = shown(s, size);
+    EXPECT_NE(lines[0].find("WEAPONS LAYER: an armed fire"), std::string::npos) << lines[0];
+  }
+  const auto lines = shown(s, {80, 24});
+  EXPECT_EQ(lines[2], "state       ENABLED   layer: weapons    WEAPONS LAYER ");
+  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  EXPECT_NE(text.find("\x1b[1;97;41m WEAPONS LAYER \x1b[0m"), std::string::npos) << text;
+  // Out of it, the run's banner again and no word of a layer with weapons.
+  s.weapons_mode = false;
+  const auto plain_lines = shown(s, {80, 24});
+  EXPECT_NE(plain_lines[0].find("WEAPONS ENABLED: weapon signals may be sent"), std::string::npos) << plain_lines[0];
+  EXPECT_EQ(plain_lines[2], "state       ENABLED   layer: weapons");
+}
+
 TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;

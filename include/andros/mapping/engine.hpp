@@ -37,7 +37,7 @@ class Engine {
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
-  /// history, the deadman needs a fresh press, toggles and layers are cleared.
+  /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off.
   void restart(const input::InputState& now);
 
   /// The neutral frame for the current analog/selector state (shutdown, link
@@ -73,6 +73,7 @@ class Engine {
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<input::InputKey> buttons_;                   ///< every button the mapping reads
+  std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
   // State carried from tick to tick.
   bool started_ = false;
   std::uint32_t connection_ = 0;

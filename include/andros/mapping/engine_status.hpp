@@ -25,6 +25,9 @@ struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;  ///< the active layer's name ("" for the base layer)
   std::vector<input::InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
+  /// Enabled, weapons enabled for the run, and the active layer has weapon
+  /// bindings: an armed fire input fires (what the banner and the pad announce).
+  bool weapons_mode = false;
 };
 
 }  // namespace andros::mapping

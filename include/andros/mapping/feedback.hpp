@@ -17,11 +17,13 @@ enum class FeedbackEvent : std::uint8_t {
   kDeadmanRefused,  ///< the deadman is held but not fresh (held at connect or start-up, or stuck)
   kLinkLost,        ///< the link to the vehicle went down
   kDisabled,        ///< was enabled, no longer is (controller still connected)
+  kWeaponsOn,       ///< a weapons mode began (EngineStatus::weapons_mode)
+  kWeaponsOff,      ///< a weapons mode ended, the bridge still enabled
   kEnabled,         ///< became enabled
   kControllerBack,  ///< the controller connected (at start-up or again)
 };
 
-inline constexpr std::size_t kFeedbackEventCount = 5;
+inline constexpr std::size_t kFeedbackEventCount = 7;
 
 /// The event's key in a mapping's `feedback:` section ("deadman_refused", ...).
 std::string_view feedback_event_name(FeedbackEvent event);

@@ -7,6 +7,7 @@
 #include <bitset>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -39,6 +40,11 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
 /// a button or arming input). Presses counted up to that frame are dropped; a
 /// press after it (released in between) acts. The deadman and the layer
 /// buttons are not held back: they change meanings, they do not move anything.
+///
+/// Weapons: a weapon becoming armed (its arming input held) changes what its
+/// fire input means too, so a fire input held at that frame waits as above. An
+/// arming input itself counts, like the deadman, when it is pressed in the
+/// frame of a change; one held since before the change waits until released.
 class RestRule {
  public:
   explicit RestRule(const Mapping& mapping);
@@ -64,13 +70,27 @@ class RestRule {
   };
   using Readers = std::map<input::InputKey, std::vector<Reader>>;
 
+  /// A layer's weapons by arming input: the fire inputs each arming input arms.
+  using Arms = std::map<input::InputKey, std::vector<input::InputKey>>;
+
   [[nodiscard]] static bool at_rest(const input::InputState& input, input::InputKey key, const std::vector<Reader>& readers);
+  void hold_back(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
+  void hold_back_fire_inputs(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
+  void hold(const input::InputState& input, input::InputKey key, bool rest);
+  [[nodiscard]] bool pressed_this_frame(const input::InputState& input, input::InputKey arm) const;
 
   std::vector<Readers> readers_;  ///< [layer + 1]: every input the layer's bindings read
+  std::vector<Arms> arms_;        ///< [layer + 1]
+  Readers arm_readers_;           ///< every arming input of any layer, read as its weapons read it
   std::map<input::InputKey, std::uint32_t> held_;  ///< held-back input -> its press count when held back
   bool enabled_ = false;
   std::uint32_t connection_ = 0;
   int layer_ = -1;
+  std::set<input::InputKey> armed_;      ///< arming inputs that armed their weapons at the last enabled frame
+  // The arming inputs at the last frame, enabled or not: the triggers held, the buttons' press counts.
+  std::set<input::InputKey> arms_down_;
+  std::map<input::InputKey, std::uint32_t> arm_presses_;
+  std::uint32_t arms_connection_ = 0;  ///< the controller session of that frame
 };
 
 }  // namespace andros::mapping

@@ -18,6 +18,7 @@ struct FeedbackStatus {
   mapping::EnableState enable = mapping::EnableState::kNoController;  ///< the engine's view of the deadman
   bool enabled = false;  ///< the operating state is "enabled": frames follow the controller
   bool link_up = false;  ///< the link is up and frames follow the controller
+  bool weapons_mode = false;  ///< EngineStatus::weapons_mode
 
   bool operator==(const FeedbackStatus&) const = default;
 };

@@ -52,6 +52,7 @@ struct RunStatus {
   bool enabled = false;          ///< state == kEnabled
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
+  bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
   bool shutting_down = false;
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
@@ -64,9 +65,10 @@ struct RunStatus {
 };
 
 /// `run`'s screen for a terminal of this size: pinned first (the WEAPONS
-/// banner when weapons are enabled, title and measured rate, state, link,
-/// controller, mapping file), then counters, switch groups and gauges while
-/// rows are left (docs/running.md, "What the operator sees").
+/// banner when weapons are enabled, saying WEAPONS LAYER in a weapons mode;
+/// title and measured rate, state, link, controller, mapping file), then
+/// counters, switch groups and gauges while rows are left (docs/running.md,
+/// "What the operator sees").
 Screen render_run_view(const RunStatus& status, TermSize size);
 
 /// `monitor`'s view of a port or capture: pinned source, rate (live),
