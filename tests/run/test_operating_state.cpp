@@ -2,7 +2,10 @@
 // reached by real events, and the rules the table must keep whatever its rows.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -162,6 +165,27 @@ TEST(OperatingState, StoppingIsTheEnd) {
     m.on(event);
     EXPECT_EQ(m.state(), S::kStopping) << to_string(event);
   }
+}
+
+TEST(OperatingState, TheDocsTableIsTheCodes) {
+  std::ifstream in(ANDROS_DOCS_DIR "/safety-states.md");
+  ASSERT_TRUE(in) << "docs/safety-states.md";
+  std::vector<std::string> documented;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("<!-- transition table")) inside = true;
+    if (line.starts_with("<!-- end of transition table")) inside = false;
+    if (inside && line.starts_with("| ") && !line.starts_with("| from")) documented.push_back(line);
+  }
+  std::vector<std::string> code;
+  for (const auto& row : OperatingState::table()) {
+    std::ostringstream out;
+    out << "| " << to_string(row.from) << " | " << to_string(row.event) << " | "
+        << (row.settle ? std::string("settled") : std::string(to_string(row.to))) << " | "
+        << (row.rebase ? "yes" : "no") << " |";
+    code.push_back(out.str());
+  }
+  EXPECT_EQ(documented, code);
 }
 
 TEST(OperatingState, EveryStateAndEventHasAName) {
