@@ -89,4 +89,5 @@ def main():
     print(summary("run (start, 4 frames, stop)", start, runs))
 
 
-main()
+if __name__ == "__main__":
+    main()

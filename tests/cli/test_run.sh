@@ -102,6 +102,13 @@ printf '0 connect\n100 button leftshoulder 1\n100 axis lefty -32768\n500 axis le
 expect_exit 0 "$BIN" run --input "$TMP/held.events"
 expect_stderr_matches "info: enabled; at rest first: lefty"
 
+# A port that does not exist: the deadman pressed and the stick pushed, but
+# nothing reaches the vehicle, so the state is "no link", never "enabled".
+printf '0 connect\n100 button leftshoulder 1\n300 axis lefty -32768\n600 end\n' >"$TMP/nolink.events"
+expect_exit 1 "$BIN" run --port "$TMP/no-such-port" --input "$TMP/nolink.events"
+expect_stderr_matches "info: no link: nothing reaches the vehicle"
+grep -q "info: enabled" "$TMP/err" && fail "enabled said while nothing reached the vehicle: $(cat "$TMP/err")"
+
 # SIGTERM mid-drive: neutral frames, drain, exit 0 (the harness bounds the wait).
 run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 10 -- \
   "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
