@@ -52,12 +52,8 @@ int ctrl_z(JobControlSignals& job) {
   return job.poll() == Event::kStopAsked && job.stop_signal() == SIGTSTP ? 0 : kAsked;
 }
 
-TEST(JobControlSignals, ACtrlZStopsTheProcessUntilItIsContinued) {
-  const pid_t pid = fork_child([](JobControlSignals& job) {
-    if (const int bad = ctrl_z(job)) return bad;
-    if (job.stop_process() != Stop::kStopped) return kOutcome;
-    return job.poll() == Event::kNone ? 0 : kLeftOver;  // the SIGCONT was answered by returning
-  });
+/// The child stops once, goes on at SIGCONT, and exits 0 without stopping again.
+void expect_stops_once_then_ends_well(pid_t pid) {
   ASSERT_GT(pid, 0);
   const int stopped = next_change(pid);
   ASSERT_TRUE(WIFSTOPPED(stopped)) << "ended without stopping, status " << stopped;
@@ -65,8 +61,18 @@ TEST(JobControlSignals, ACtrlZStopsTheProcessUntilItIsContinued) {
   ::kill(pid, SIGCONT);
   const int ended = next_change(pid);
   if (WIFSTOPPED(ended)) end_stopped(pid);
+  ASSERT_FALSE(WIFSTOPPED(ended)) << "stopped a second time";
   ASSERT_TRUE(WIFEXITED(ended)) << "status " << ended;
   EXPECT_EQ(WEXITSTATUS(ended), 0);
+}
+
+TEST(JobControlSignals, ACtrlZStopsTheProcessUntilItIsContinued) {
+  const pid_t pid = fork_child([](JobControlSignals& job) {
+    if (const int bad = ctrl_z(job)) return bad;
+    if (job.stop_process() != Stop::kStopped) return kOutcome;
+    return job.poll() == Event::kNone ? 0 : kLeftOver;  // the SIGCONT was answered by returning
+  });
+  expect_stops_once_then_ends_well(pid);
 }
 
 // `kill -TSTP; sleep 0.08; kill -CONT`: the SIGCONT lands during the neutral
@@ -94,15 +100,7 @@ TEST(JobControlSignals, ASecondCtrlZDuringTheNeutralFramesIsAnsweredByTheOneStop
     if (job.stop_process() != Stop::kStopped) return kOutcome;
     return job.poll() == Event::kNone ? 0 : kLeftOver;
   });
-  ASSERT_GT(pid, 0);
-  const int stopped = next_change(pid);
-  ASSERT_TRUE(WIFSTOPPED(stopped)) << "ended without stopping, status " << stopped;
-  ::kill(pid, SIGCONT);
-  const int ended = next_change(pid);
-  if (WIFSTOPPED(ended)) end_stopped(pid);
-  ASSERT_FALSE(WIFSTOPPED(ended)) << "stopped a second time";
-  ASSERT_TRUE(WIFEXITED(ended)) << "status " << ended;
-  EXPECT_EQ(WEXITSTATUS(ended), 0);
+  expect_stops_once_then_ends_well(pid);
 }
 
 // The last word counts: a Ctrl-Z after the SIGCONT asks for the stop again.
@@ -114,14 +112,7 @@ TEST(JobControlSignals, ACtrlZAfterTheSigcontStillStops) {
     if (job.stop_process() != Stop::kStopped) return kOutcome;
     return job.poll() == Event::kNone ? 0 : kLeftOver;
   });
-  ASSERT_GT(pid, 0);
-  const int stopped = next_change(pid);
-  ASSERT_TRUE(WIFSTOPPED(stopped)) << "ended without stopping, status " << stopped;
-  ::kill(pid, SIGCONT);
-  const int ended = next_change(pid);
-  if (WIFSTOPPED(ended)) end_stopped(pid);
-  ASSERT_TRUE(WIFEXITED(ended)) << "status " << ended;
-  EXPECT_EQ(WEXITSTATUS(ended), 0);
+  expect_stops_once_then_ends_well(pid);
 }
 
 }  // namespace
