@@ -9,7 +9,8 @@
 //
 // Seeds 1..ANDROS_SIM_SCRIPTS (10,000 unless the build says otherwise); the
 // environment picks other ranges: ANDROS_SIM_SEED_BASE=N (the first seed),
-// ANDROS_SIM_SCRIPTS=M (how many).
+// ANDROS_SIM_SCRIPTS=M (how many). ANDROS_SIM_MAX_REPORTED=K prints up to K
+// failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,12 +19,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "andros/base/error.hpp"
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
@@ -31,6 +29,7 @@
 #include "oracle/fault_script.hpp"
 #include "oracle/random.hpp"
 #include "oracle/safety_oracle.hpp"
+#include "oracle/simulation.hpp"
 
 #ifndef ANDROS_SIM_SCRIPTS
 #define ANDROS_SIM_SCRIPTS 10000
@@ -50,8 +49,8 @@ std::uint64_t from_environment(const char* name, std::uint64_t fallback) {
   return value;
 }
 
-// The mappings a simulation runs and reloads, each loaded once.
-class Library {
+// The mappings a simulation runs and reloads.
+class Library : public test::MappingCache {
  public:
   Library() {
     for (const auto robot : protocol::kRobotTypes) {
@@ -66,83 +65,21 @@ class Library {
     targets_.bad.push_back(ANDROS_TEST_DATA_DIR "/mappings/missing.yaml");
   }
 
-  /// The mapping in file, as replay's `reload` loads it; throws InputError for a bad one.
-  const mapping::ValidMapping& load(const std::string& file) {
-    auto it = loaded_.find(file);
-    if (it == loaded_.end()) {
-      try {
-        it = loaded_.emplace(file, Loaded{mapping::load_mapping(file), {}}).first;
-      } catch (const InputError& e) {
-        it = loaded_.emplace(file, Loaded{std::nullopt, e.what()}).first;
-      }
-    }
-    if (!it->second.mapping) throw InputError(it->second.error);
-    return *it->second.mapping;
-  }
-  /// The same, as the oracle asks: nullptr for a file that does not load.
-  const mapping::Mapping* find(const std::string& file) {
-    try {
-      return &*load(file);
-    } catch (const InputError&) {
-      return nullptr;
-    }
-  }
-
   [[nodiscard]] const std::vector<std::string>& shipped() const { return shipped_; }
   [[nodiscard]] const test::ReloadTargets& targets() const { return targets_; }
 
  private:
-  struct Loaded {
-    std::optional<mapping::ValidMapping> mapping;
-    std::string error;
-  };
   std::vector<std::string> shipped_;
   test::ReloadTargets targets_;
-  std::map<std::string, Loaded> loaded_;
 };
 
-std::string script_text(const std::vector<input::InputEvent>& script) {
-  std::string text;
-  for (const auto& e : script) text += input::format_event(e) + "\n";
-  return text;
-}
-
-struct Outcome {
-  std::string violation;  ///< empty: every frame kept the rules
-  test::OracleCoverage coverage;
-};
-
-Outcome simulate(Library& library, const std::string& mapping_file, const std::vector<input::InputEvent>& script,
-                 bool weapons, bool trace) {
-  const std::string text = script_text(script);
-  TextReader in(text, "simulation.events", kEventScriptLimits);
-  input::ScriptPlayer player(in);
-  const mapping::ValidMapping& valid = library.load(mapping_file);
-  test::SafetyOracle oracle(*valid, script, [&library](const std::string& f) { return library.find(f); },
-                            test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
-  ReplayOptions options{.engine = {weapons, kCode}};
-  options.load = [&library](const std::string& file) { return library.load(file); };
-  if (trace) {
-    options.observe = [](const TickReport& r) {
-      const auto s = protocol::read_signals(r.data);
-      std::printf("%6lld %-13s %s safety=%d drive=%d\n", static_cast<long long>(r.t_ms),
-                  std::string(to_string(r.state)).c_str(),
-                  !r.sent ? "not offered" : r.result == link::SendResult::kSent ? "delivered  " : "refused    ",
-                  s[protocol::signal_id("safety")], s[protocol::signal_id("drive")]);
-    };
-  }
-  Outcome out;
-  try {
-    replay(player, mapping::Engine(valid, options.engine), options, [&](std::int64_t t, const protocol::DataBytes& d) {
-      if (!out.violation.empty()) return;
-      if (auto v = oracle.frame(t, d); !v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
-    });
-  } catch (const std::exception& e) {
-    out.violation = std::string("replay threw: ") + e.what();
-  }
-  if (out.violation.empty()) out.violation = oracle.finish();
-  out.coverage = oracle.coverage();
-  return out;
+// ANDROS_SIM_TRACE=1: every tick, the loop's state and what became of its frame.
+void trace(const TickReport& r) {
+  const auto s = protocol::read_signals(r.data);
+  std::printf("%6lld %-13s %s safety=%d drive=%d\n", static_cast<long long>(r.t_ms),
+              std::string(to_string(r.state)).c_str(),
+              !r.sent ? "not offered" : r.result == link::SendResult::kSent ? "delivered  " : "refused    ",
+              s[protocol::signal_id("safety")], s[protocol::signal_id("drive")]);
 }
 
 /// What a failure prints: enough to play it again by hand.
@@ -150,19 +87,19 @@ std::string describe_failure(std::uint64_t seed, const std::string& mapping_file
                              const std::vector<input::InputEvent>& script, const std::string& violation) {
   const std::string name = "andros-sim-" + std::to_string(seed) + (weapons ? "-weapons" : "") + ".events";
   const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / name;
-  std::ofstream(saved) << script_text(script);
+  std::ofstream(saved) << test::script_text(script);
   return "seed " + std::to_string(seed) + ", " + mapping_file + (weapons ? ", --weapons" : "") + ": " + violation +
          "\nagain: ANDROS_SIM_SEED_BASE=" + std::to_string(seed) +
          " ANDROS_SIM_SCRIPTS=1 andros_simulation_tests, or\n"
          "       andros-bridge replay --mapping " + mapping_file + (weapons ? " --weapons" : "") +
-         " --code 5A " + saved.string() + "\nthe script:\n" + script_text(script);
+         " --code 5A " + saved.string() + "\nthe script:\n" + test::script_text(script);
 }
 
 TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   const std::uint64_t first = from_environment("ANDROS_SIM_SEED_BASE", 1);
   const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", ANDROS_SIM_SCRIPTS);
   const auto max_reported = from_environment("ANDROS_SIM_MAX_REPORTED", 5);  // failures printed before it gives up
-  const bool trace = from_environment("ANDROS_SIM_TRACE", 0) != 0;  // every tick: the loop's state and what it sent
+  const Bridge::Observer observe = from_environment("ANDROS_SIM_TRACE", 0) != 0 ? trace : [](const TickReport&) {};
   Library library;
   test::OracleCoverage coverage;
   std::uint64_t failures = 0;
@@ -171,7 +108,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
     const auto script = test::fault_script(rng, library.targets());
     const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
     for (const bool weapons : {false, true}) {
-      const Outcome out = simulate(library, mapping_file, script, weapons, trace);
+      const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
       coverage += out.coverage;
       if (!out.violation.empty()) {
         ADD_FAILURE() << describe_failure(seed, mapping_file, weapons, script, out.violation);
@@ -221,7 +158,7 @@ TEST(FaultSimulation, FoundScripts) {
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const auto script = input::parse_event_script(text, file.string());
     for (const bool weapons : {false, true}) {
-      const Outcome out = simulate(library, mapping_file, script, weapons, false);
+      const auto out = test::simulate(library, mapping_file, script, weapons, kCode);
       EXPECT_EQ(out.violation, "") << file.filename().string() << (weapons ? " with --weapons" : "");
     }
   }
