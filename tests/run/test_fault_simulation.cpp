@@ -15,10 +15,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -103,7 +105,8 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   Library library;
   test::OracleCoverage coverage;
   std::uint64_t failures = 0;
-  for (std::uint64_t seed = first; seed < first + count && failures < max_reported; ++seed) {
+  std::uint64_t seed = first;
+  for (; seed < first + count && failures < max_reported; ++seed) {
     test::Random rng(seed);
     const auto script = test::fault_script(rng, library.targets());
     const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
@@ -117,15 +120,16 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       }
     }
   }
-  std::printf("fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (after a fresh press following: ",
-              static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + count - 1),
-              static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion));
+  std::string after;
   for (std::size_t i = 0; i < coverage.motion_after.size(); ++i) {
-    if (coverage.motion_after[i] > 0) {
-      std::printf("%s %lld, ", to_string(static_cast<test::Ending>(i)), static_cast<long long>(coverage.motion_after[i]));
-    }
+    if (coverage.motion_after[i] == 0) continue;
+    after += (after.empty() ? "" : ", ") + std::string(to_string(static_cast<test::Ending>(i))) + " " +
+             std::to_string(coverage.motion_after[i]);
   }
-  std::printf("...), %lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames\n",
+  std::printf("fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
+              "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames\n",
+              static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
+              static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
               static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
               static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
