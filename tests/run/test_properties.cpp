@@ -17,28 +17,14 @@
 #include "andros/protocol/robots.hpp"
 #include "andros/run/replay.hpp"
 #include "oracle/centre_watch.hpp"
+#include "oracle/random.hpp"
 
 namespace andros::run {
 namespace {
 
 constexpr int kScripts = 1000;
 
-// A small generator of our own: the same numbers on every standard library.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ULL + 1) {}
-  std::uint32_t below(std::uint32_t n) {
-    state_ ^= state_ << 13;
-    state_ ^= state_ >> 7;
-    state_ ^= state_ << 17;
-    return static_cast<std::uint32_t>(state_ % n);
-  }
-
- private:
-  std::uint64_t state_;
-};
-
-std::vector<input::InputEvent> random_script(Random& rng) {
+std::vector<input::InputEvent> random_script(test::Random& rng) {
   using T = input::InputEvent::Type;
   const auto deadman = *input::parse_button_name("leftshoulder");
   std::vector<input::InputEvent> events;
@@ -219,7 +205,7 @@ TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
     mappings.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR})));
   }
   Coverage coverage{};
-  Random rng(20261122);
+  test::Random rng(20261122);
   for (int i = 0; i < kScripts; ++i) {
     const auto script = random_script(rng);
     for (const auto& m : mappings) {

@@ -1,0 +1,385 @@
+#pragma once
+// The fault simulation's oracle: contract section 5's safety rules and
+// docs/event-scripts.md's fault events, read straight off an event script and
+// the frames a replay delivered. It knows nothing of the engine, the Bridge or
+// the operating-state machine: from the script alone it says when the bridge
+// may be enabled (a fresh deadman press, made after the last event that ends
+// "enabled", held since, controller connected, link up, not suspended, not
+// stopping), and when frames may be delivered at all; from the mapping only
+// the deadman and the weapons' arming inputs. It is deliberately more
+// permissive than the engine where the engine has further rules (the rest
+// rule, layers, a press and a fault within one frame): it never says "may
+// not move" where the contract lets the bridge move, so a complaint is a
+// broken rule, not a difference of detail.
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "andros/input/events.hpp"
+#include "andros/mapping/model.hpp"
+#include "andros/protocol/frame.hpp"
+
+namespace andros::test {
+
+/// An event that ends "enabled": the last one is what a message names, and
+/// the last that is not a deadman release is what the coverage counts motion after.
+enum class Ending : std::uint8_t {
+  kStart, kConnect, kDisconnect, kRelease, kLinkDown, kLinkUp, kSuspend, kResume,
+  kReloadSame, kReloadGood, kReloadBad, kStop, kCount
+};
+
+inline const char* to_string(Ending e) {
+  constexpr const char* kNames[] = {"start",   "connect", "disconnect",  "deadman release", "link down",
+                                    "link up", "suspend", "resume",      "reload (same)",   "reload (good file)",
+                                    "reload (bad file)",  "stop"};
+  return kNames[static_cast<std::size_t>(e)];
+}
+
+/// What the frames reached, summed over scripts: a test asserts that each
+/// property was really exercised, not vacuously true.
+struct OracleCoverage {
+  std::int64_t frames = 0;
+  std::int64_t motion = 0;                              ///< frames with drive/pivot off centre or a motion bit
+  /// by the last interruption (an ending event other than a release) before the press that enabled
+  std::array<std::int64_t, static_cast<std::size_t>(Ending::kCount)> motion_after{};
+  std::int64_t weapons = 0;                             ///< frames with a weapon bit
+  std::int64_t stops_with_frames = 0;                   ///< stops that owed (and got) 3 neutral frames
+  std::int64_t suspend_frames = 0;                      ///< neutral frames of a suspend
+  std::int64_t reload_frames = 0;                       ///< neutral frames of a reload
+
+  OracleCoverage& operator+=(const OracleCoverage& o) {
+    frames += o.frames;
+    motion += o.motion;
+    for (std::size_t i = 0; i < motion_after.size(); ++i) motion_after[i] += o.motion_after[i];
+    weapons += o.weapons;
+    stops_with_frames += o.stops_with_frames;
+    suspend_frames += o.suspend_frames;
+    reload_frames += o.reload_frames;
+    return *this;
+  }
+};
+
+class SafetyOracle {
+ public:
+  /// A reload's FILE: the mapping it loads, or nullptr for one that does not.
+  using Lookup = std::function<const mapping::Mapping*(const std::string& file)>;
+
+  struct Options {
+    bool weapons = false;        ///< --weapons
+    std::uint8_t code = 0x01;    ///< --code
+    std::int64_t period_ms = 40; ///< 1000 / rate
+    int stop_frames = 3;         ///< contract section 5: at least 3 neutral frames on a stop
+    int stop_ticks = 8;          ///< the ticks a stop may take when the link refuses some (3 + 5 tries)
+  };
+
+  /// Drive and pivot in every neutral frame: the protocol's centre, whatever a mapping says.
+  static constexpr std::uint8_t kNeutralCentre = 128;
+
+  SafetyOracle(const mapping::Mapping& initial, std::vector<input::InputEvent> script, Lookup lookup, Options options)
+      : script_(std::move(script)), lookup_(std::move(lookup)), options_(options) {
+    add_possible(initial);
+    // The last frame is the first at or after the `end` (or the last event).
+    end_tick_ = script_.empty() ? 0 : tick_of(script_.back().t_ms);
+  }
+
+  /// Each delivered frame, in order: empty, or the rule it breaks.
+  std::string frame(std::int64_t t, const protocol::DataBytes& data) {
+    ++coverage_.frames;
+    if (t % options_.period_ms != 0) return "a frame off the " + std::to_string(options_.period_ms) + " ms grid";
+    if (t <= last_t_) return "frame times not increasing (previous " + std::to_string(last_t_) + ")";
+    if (auto missing = missing_before(t); !missing.empty()) return missing;
+    advance_to(t);
+    last_t_ = t;
+    const auto s = protocol::read_signals(data);
+    if (const auto errors = protocol::validation_errors(data); !errors.empty()) return "invalid frame: " + errors.front();
+    if (data[protocol::kCodeByte] != options_.code) return "byte 11 is not the code";
+
+    if (!link_up_) return "delivered while the link is down (script)";
+    // Once suspended, stopping or past the end, only the neutral frames still
+    // owed go out: 3 for each suspend, reload and stop, one sequence after the other.
+    const bool owed = owed_ > 0;
+    if (owed) --owed_;
+    if (stopped_) {
+      if (!owed) return "a frame after a stop's neutral frames";
+      if (t >= stop_tick_ && t < stop_tick_ + options_.stop_frames * options_.period_ms) ++stop_frames_on_time_;
+    } else if (suspended_) {
+      ++coverage_.suspend_frames;
+      if (!owed) return "delivered while suspended, after its neutral frames";
+    }
+    if (t > end_tick_ && !owed) return "a frame past the script's end";
+
+    // What must be neutral: not enabled, a reload's frames, a stop's, a suspend's, past the end.
+    const bool in_reload = reloading(t);
+    if (in_reload) {
+      ++reload_sent_;
+      ++coverage_.reload_frames;
+    }
+    std::string why;
+    if (!enabled()) why = "not enabled (" + not_enabled_reason() + ")";
+    if (in_reload) why = "a reload's neutral frame";
+    if (suspended_) why = "a suspend's neutral frame";
+    if (stopped_) why = "a stop's neutral frame";
+    if (t > end_tick_) why = "past the script's end";
+
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      const auto& sig = protocol::kSignals[i];
+      if (sig.kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
+      ++coverage_.weapons;
+      if (!options_.weapons) return std::string(sig.name) + " = 1 without --weapons";
+      if (!enabled()) return std::string(sig.name) + " = 1 while " + why;
+      if (!armed(static_cast<protocol::SignalId>(i))) return std::string(sig.name) + " = 1 without its arming input held";
+    }
+    const auto moving = motion(s);
+    if (moving) {
+      if (!why.empty()) return *moving + " while " + why;
+      ++coverage_.motion;
+      ++coverage_.motion_after[static_cast<std::size_t>(pressed_after_)];
+    }
+    return {};
+  }
+
+  /// After the replay: what the end lacks. A stop owes its neutral frames at
+  /// the tick that sees it and the next two, when the link is up for them.
+  std::string finish() {
+    if (auto missing = missing_before(end_tick_ + options_.period_ms); !missing.empty()) return missing;
+    advance_to(end_tick_);
+    if (!stopped_ || stop_tick_ > end_tick_) return {};
+    for (int i = 0; i < options_.stop_frames; ++i) {
+      if (!link_up_at(stop_tick_ + i * options_.period_ms)) return {};
+    }
+    ++coverage_.stops_with_frames;
+    if (stop_frames_on_time_ < options_.stop_frames) {
+      return "a stop at tick " + std::to_string(stop_tick_) + " with the link up got " +
+             std::to_string(stop_frames_on_time_) + " of its " + std::to_string(options_.stop_frames) +
+             " neutral frames at that tick and the next ones";
+    }
+    return {};
+  }
+
+  [[nodiscard]] const OracleCoverage& coverage() const { return coverage_; }
+
+ private:
+  [[nodiscard]] std::int64_t tick_of(std::int64_t t) const {
+    return (t + options_.period_ms - 1) / options_.period_ms * options_.period_ms;
+  }
+
+  void advance_to(std::int64_t t) {
+    while (next_ < script_.size() && script_[next_].t_ms <= t) apply(script_[next_++]);
+  }
+
+  // Every tick up to the script's end gets a frame while the link is up and
+  // nothing holds the loop (a suspend, a stop): none is lost on the way.
+  std::string missing_before(std::int64_t t) {
+    const std::int64_t first = last_t_ < 0 ? 0 : last_t_ + options_.period_ms;
+    for (std::int64_t u = first; u < t && u <= end_tick_; u += options_.period_ms) {
+      advance_to(u);
+      if (link_up_ && !suspended_ && !stopped_) {
+        return "no frame at t=" + std::to_string(u) + " (the link up, not suspended, not stopping)";
+      }
+    }
+    return {};
+  }
+
+  void add_possible(const mapping::Mapping& m) {
+    if (m.deadman) deadmen_.insert(m.deadman->key);
+    const auto weapons = [this](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule);
+        if (w != nullptr && w->arm) arms_[w->signal].insert(*w->arm);
+      }
+    };
+    weapons(m.bindings);
+    for (const auto& layer : m.layers) weapons(layer.bindings);
+  }
+
+  // Every event that ends "enabled": the press that enables must come after it.
+  void end_enabled(Ending why) {
+    fresh_.clear();
+    last_ending_ = why;
+    last_interruption_ = why;
+  }
+
+  void apply(const input::InputEvent& e) {
+    using T = input::InputEvent::Type;
+    if (e.type == T::kLinkDown || e.type == T::kLinkTaken) {
+      if (link_up_) end_enabled(Ending::kLinkDown);
+      link_up_ = false;
+      return;
+    }
+    if (e.type == T::kLinkUp) {
+      if (!link_up_) end_enabled(Ending::kLinkUp);  // a link that comes back is a new link
+      link_up_ = true;
+      return;
+    }
+    if (stopped_) return;  // nothing else is answered once a stop is in
+    switch (e.type) {
+      case T::kConnect:
+        end_enabled(Ending::kConnect);
+        connected_ = true;
+        connect_t_ = e.t_ms;
+        buttons_.clear();
+        axes_.clear();
+        break;
+      case T::kDisconnect:
+        end_enabled(Ending::kDisconnect);
+        connected_ = false;
+        buttons_.clear();
+        axes_.clear();
+        break;
+      case T::kButton: {
+        if (!connected_) break;  // a lost controller's stale events
+        const bool was = buttons_[e.key];
+        buttons_[e.key] = e.value != 0;
+        if (!deadmen_.contains(e.key)) break;
+        // Stamped with the connect's time: the state the pad had when it appeared, not a press.
+        if (e.value != 0 && !was && e.t_ms != connect_t_) {
+          fresh_.insert(e.key);
+          pressed_after_ = last_interruption_;
+        }
+        if (e.value == 0 && was) {
+          fresh_.erase(e.key);
+          last_ending_ = Ending::kRelease;
+        }
+        break;
+      }
+      case T::kAxis:
+        if (connected_) axes_[e.key] = e.value;
+        break;
+      case T::kSuspend:
+        end_enabled(Ending::kSuspend);
+        if (!suspended_) {
+          suspended_ = true;
+          owed_ += options_.stop_frames;
+        }
+        break;
+      case T::kResume:
+        end_enabled(Ending::kResume);
+        suspended_ = false;
+        break;
+      case T::kReload: {
+        const mapping::Mapping* loaded = e.name.empty() ? nullptr : lookup_(e.name);
+        end_enabled(e.name.empty() ? Ending::kReloadSame : loaded != nullptr ? Ending::kReloadGood : Ending::kReloadBad);
+        if (loaded != nullptr) add_possible(*loaded);
+        // Answered unless suspended or while another reload's frames go out.
+        const std::int64_t tick = tick_of(e.t_ms);
+        if (!suspended_ && !reloading(tick)) {
+          reload_tick_ = tick;
+          reload_sent_ = 0;
+          owed_ += options_.stop_frames;
+        }
+        break;
+      }
+      case T::kStop:
+        end_enabled(Ending::kStop);
+        stopped_ = true;
+        stop_tick_ = tick_of(e.t_ms);
+        owed_ += options_.stop_frames;
+        break;
+      default: break;  // hats: the generator sends none; `end`
+    }
+  }
+
+  // A reload sends its neutral frames from its tick on until the link took
+  // 3, or for as long as a stop may take when it refuses them.
+  [[nodiscard]] bool reloading(std::int64_t t) const {
+    return reload_tick_ && t >= *reload_tick_ && reload_sent_ < options_.stop_frames &&
+           t < *reload_tick_ + options_.stop_ticks * options_.period_ms;
+  }
+
+  [[nodiscard]] bool enabled() const {
+    if (!connected_ || !link_up_ || suspended_ || stopped_) return false;
+    return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return held(k); });
+  }
+
+  [[nodiscard]] std::string not_enabled_reason() const {
+    if (stopped_) return "stopping";
+    if (suspended_) return "suspended";
+    if (!link_up_) return "link down";
+    if (!connected_) return "no controller";
+    for (const auto k : deadmen_) {
+      if (held(k)) return "deadman held but not pressed since the last " + std::string(to_string(last_ending_));
+    }
+    return "deadman not held";
+  }
+
+  [[nodiscard]] bool held(input::InputKey key) const {
+    if (key.is_button()) {
+      const auto it = buttons_.find(key);
+      return it != buttons_.end() && it->second;
+    }
+    const auto it = axes_.find(key);
+    // The engine's threshold is 0.5 of the range; one step below it, to stay on the permissive side.
+    return it != axes_.end() && it->second >= 16383;
+  }
+
+  [[nodiscard]] bool armed(protocol::SignalId id) const {
+    const auto it = arms_.find(id);
+    if (it == arms_.end()) return false;
+    return std::any_of(it->second.begin(), it->second.end(), [this](input::InputKey k) { return held(k); });
+  }
+
+  // Motion: drive or pivot off centre, or any bit that is not selector-like (safety and drive_brake included).
+  [[nodiscard]] static std::optional<std::string> motion(const protocol::ControlState& s) {
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      const auto& sig = protocol::kSignals[i];
+      if (sig.kind == protocol::SignalKind::kCentred && s.values[i] != kNeutralCentre) {
+        return std::string(sig.name) + " = " + std::to_string(s.values[i]);
+      }
+      if (sig.is_bit() && sig.kind != protocol::SignalKind::kSelector && s.values[i] != 0) {
+        return std::string(sig.name) + " = 1";
+      }
+    }
+    return std::nullopt;
+  }
+
+  [[nodiscard]] bool link_up_at(std::int64_t t) const {
+    bool up = true;
+    for (const auto& e : script_) {
+      if (e.t_ms > t) break;
+      if (e.type == input::InputEvent::Type::kLinkUp) up = true;
+      if (e.type == input::InputEvent::Type::kLinkDown || e.type == input::InputEvent::Type::kLinkTaken) up = false;
+    }
+    return up;
+  }
+
+  std::vector<input::InputEvent> script_;
+  Lookup lookup_;
+  Options options_;
+  std::size_t next_ = 0;
+  std::int64_t end_tick_ = 0;
+  std::int64_t last_t_ = -1;
+
+  std::set<input::InputKey> deadmen_;  ///< every possible mapping's
+  std::map<protocol::SignalId, std::set<input::InputKey>> arms_;
+
+  bool connected_ = false;
+  std::int64_t connect_t_ = -1;
+  std::map<input::InputKey, bool> buttons_;
+  std::map<input::InputKey, int> axes_;
+  std::set<input::InputKey> fresh_;  ///< deadmen pressed since the last ending event
+  Ending last_ending_ = Ending::kStart;
+  Ending last_interruption_ = Ending::kStart;
+  Ending pressed_after_ = Ending::kStart;
+
+  bool link_up_ = true;  ///< replay's sink is there from the start
+  bool suspended_ = false;
+  std::optional<std::int64_t> reload_tick_;
+  int reload_sent_ = 0;  ///< its neutral frames delivered so far
+  bool stopped_ = false;
+  std::int64_t stop_tick_ = 0;
+  int owed_ = 0;  ///< neutral frames of suspends, reloads and a stop still to go out
+  int stop_frames_on_time_ = 0;
+
+  OracleCoverage coverage_;
+};
+
+}  // namespace andros::test

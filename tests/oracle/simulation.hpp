@@ -1,0 +1,98 @@
+#pragma once
+// One script of the fault simulation through replay (the run loop on a
+// virtual clock) and the oracle: what the property test
+// (tests/run/test_fault_simulation.cpp) does for each seed and the fuzz
+// target (fuzz/fuzz_simulation.cpp) for each input.
+
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "andros/base/error.hpp"
+#include "andros/base/text_file.hpp"
+#include "andros/input/events.hpp"
+#include "andros/input/script_player.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/replay.hpp"
+#include "oracle/safety_oracle.hpp"
+
+namespace andros::test {
+
+/// Mapping files, each loaded once, as replay's `reload FILE` and the oracle ask for them.
+class MappingCache {
+ public:
+  /// The mapping in file; throws InputError for one that does not load (each time).
+  const mapping::ValidMapping& load(const std::string& file) {
+    auto it = loaded_.find(file);
+    if (it == loaded_.end()) {
+      try {
+        it = loaded_.emplace(file, Loaded{mapping::load_mapping(file), {}}).first;
+      } catch (const InputError& e) {
+        it = loaded_.emplace(file, Loaded{std::nullopt, e.what()}).first;
+      }
+    }
+    if (!it->second.mapping) throw InputError(it->second.error);
+    return *it->second.mapping;
+  }
+  /// The same, as the oracle asks: nullptr for a file that does not load.
+  const mapping::Mapping* find(const std::string& file) {
+    try {
+      return &*load(file);
+    } catch (const InputError&) {
+      return nullptr;
+    }
+  }
+
+ private:
+  struct Loaded {
+    std::optional<mapping::ValidMapping> mapping;
+    std::string error;
+  };
+  std::map<std::string, Loaded> loaded_;
+};
+
+inline std::string script_text(const std::vector<input::InputEvent>& script) {
+  std::string text;
+  for (const auto& e : script) text += input::format_event(e) + "\n";
+  return text;
+}
+
+struct SimulationOutcome {
+  std::string violation;  ///< empty: every frame kept the rules
+  OracleCoverage coverage;
+};
+
+/// Replays script (as its text: what `andros-bridge replay` would read)
+/// through mapping_file and checks every delivered frame and the end.
+inline SimulationOutcome simulate(MappingCache& mappings, const std::string& mapping_file,
+                                  const std::vector<input::InputEvent>& script, bool weapons, std::uint8_t code,
+                                  const run::Bridge::Observer& observe = [](const run::TickReport&) {}) {
+  const std::string text = script_text(script);
+  TextReader in(text, "simulation.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  const mapping::ValidMapping& valid = mappings.load(mapping_file);
+  SafetyOracle oracle(*valid, script, [&mappings](const std::string& f) { return mappings.find(f); },
+                      SafetyOracle::Options{.weapons = weapons, .code = code});
+  run::ReplayOptions options{.engine = {weapons, code}};
+  options.load = [&mappings](const std::string& file) { return mappings.load(file); };
+  options.observe = observe;
+  SimulationOutcome out;
+  try {
+    run::replay(player, mapping::Engine(valid, options.engine), options,
+                [&](std::int64_t t, const protocol::DataBytes& data) {
+                  if (!out.violation.empty()) return;
+                  if (auto v = oracle.frame(t, data); !v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
+                });
+  } catch (const std::exception& e) {
+    out.violation = std::string("replay threw: ") + e.what();
+  }
+  if (out.violation.empty()) out.violation = oracle.finish();
+  out.coverage = oracle.coverage();
+  return out;
+}
+
+}  // namespace andros::test

@@ -1,0 +1,265 @@
+// Deterministic fault simulation (docs/testing.md): random event scripts with
+// faults (the controller lost and back, link flaps and take-overs, reloads
+// of good, bad and missing mappings, suspend and resume, a stop) through
+// replay, the run loop itself on a virtual clock, over every shipped mapping
+// with weapons off and on. Every delivered frame is checked by
+// tests/oracle/safety_oracle.hpp, which reads only the script and the frame
+// bytes. A failure prints the seed and the whole script, and writes it where
+// `andros-bridge replay` can play it again.
+//
+// Seeds 1..ANDROS_SIM_SCRIPTS (10,000 unless the build says otherwise); the
+// environment picks other ranges: ANDROS_SIM_SEED_BASE=N (the first seed),
+// ANDROS_SIM_SCRIPTS=M (how many). ANDROS_SIM_MAX_REPORTED=K prints up to K
+// failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "andros/input/events.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/protocol/robots.hpp"
+#include "andros/run/replay.hpp"
+#include "oracle/fault_script.hpp"
+#include "oracle/random.hpp"
+#include "oracle/safety_oracle.hpp"
+#include "oracle/simulation.hpp"
+
+#ifndef ANDROS_SIM_SCRIPTS
+#define ANDROS_SIM_SCRIPTS 10000
+#endif
+
+namespace andros::run {
+namespace {
+
+constexpr std::uint8_t kCode = 0x5A;
+
+std::uint64_t from_environment(const char* name, std::uint64_t fallback) {
+  const char* text = std::getenv(name);
+  if (text == nullptr || *text == '\0') return fallback;
+  char* end = nullptr;
+  const auto value = std::strtoull(text, &end, 10);
+  if (*end != '\0') throw std::invalid_argument(std::string(name) + "=" + text + ": not a whole number");
+  return value;
+}
+
+// The mappings a simulation runs and reloads.
+class Library : public test::MappingCache {
+ public:
+  Library() {
+    for (const auto robot : protocol::kRobotTypes) {
+      const auto file = mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR});
+      shipped_.push_back(file.string());
+      targets_.good.push_back(file.string());
+    }
+    // A layout whose weapons arm with RB, not LT, and one with another rest rule.
+    targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/core.yaml");
+    targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/rest.yaml");
+    targets_.bad.push_back(ANDROS_MAPPINGS_DIR "/common.yaml");  // a base: no robot, refused
+    targets_.bad.push_back(ANDROS_TEST_DATA_DIR "/mappings/missing.yaml");
+  }
+
+  [[nodiscard]] const std::vector<std::string>& shipped() const { return shipped_; }
+  [[nodiscard]] const test::ReloadTargets& targets() const { return targets_; }
+
+ private:
+  std::vector<std::string> shipped_;
+  test::ReloadTargets targets_;
+};
+
+// ANDROS_SIM_TRACE=1: every tick, the loop's state and what became of its frame.
+void trace(const TickReport& r) {
+  const auto s = protocol::read_signals(r.data);
+  std::printf("%6lld %-13s %s safety=%d drive=%d\n", static_cast<long long>(r.t_ms),
+              std::string(to_string(r.state)).c_str(),
+              !r.sent ? "not offered" : r.result == link::SendResult::kSent ? "delivered  " : "refused    ",
+              s[protocol::signal_id("safety")], s[protocol::signal_id("drive")]);
+}
+
+/// What a failure prints: enough to play it again by hand.
+std::string describe_failure(std::uint64_t seed, const std::string& mapping_file, bool weapons,
+                             const std::vector<input::InputEvent>& script, const std::string& violation) {
+  const std::string name = "andros-sim-" + std::to_string(seed) + (weapons ? "-weapons" : "") + ".events";
+  const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / name;
+  std::ofstream(saved) << test::script_text(script);
+  return "seed " + std::to_string(seed) + ", " + mapping_file + (weapons ? ", --weapons" : "") + ": " + violation +
+         "\nagain: ANDROS_SIM_SEED_BASE=" + std::to_string(seed) +
+         " ANDROS_SIM_SCRIPTS=1 andros_simulation_tests, or\n"
+         "       andros-bridge replay --mapping " + mapping_file + (weapons ? " --weapons" : "") +
+         " --code 5A " + saved.string() + "\nthe script:\n" + test::script_text(script);
+}
+
+TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
+  const std::uint64_t first = from_environment("ANDROS_SIM_SEED_BASE", 1);
+  const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", ANDROS_SIM_SCRIPTS);
+  const auto max_reported = from_environment("ANDROS_SIM_MAX_REPORTED", 5);  // failures printed before it gives up
+  const Bridge::Observer observe = from_environment("ANDROS_SIM_TRACE", 0) != 0 ? trace : [](const TickReport&) {};
+  Library library;
+  test::OracleCoverage coverage;
+  std::uint64_t failures = 0;
+  std::uint64_t seed = first;
+  for (; seed < first + count && failures < max_reported; ++seed) {
+    test::Random rng(seed);
+    const auto script = test::fault_script(rng, library.targets());
+    const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
+    for (const bool weapons : {false, true}) {
+      const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
+      coverage += out.coverage;
+      if (!out.violation.empty()) {
+        ADD_FAILURE() << describe_failure(seed, mapping_file, weapons, script, out.violation);
+        ++failures;
+        break;
+      }
+    }
+  }
+  std::string after;
+  for (std::size_t i = 0; i < coverage.motion_after.size(); ++i) {
+    if (coverage.motion_after[i] == 0) continue;
+    after += (after.empty() ? "" : ", ") + std::string(to_string(static_cast<test::Ending>(i))) + " " +
+             std::to_string(coverage.motion_after[i]);
+  }
+  std::printf("fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
+              "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames\n",
+              static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
+              static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
+              static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
+              static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames));
+  if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
+  // The scripts reach what the rules are about: motion again after each kind
+  // of fault (a fresh press after it), weapons, and the neutral frames owed.
+  using test::Ending;
+  for (const auto after : {Ending::kConnect, Ending::kLinkUp, Ending::kResume, Ending::kReloadSame, Ending::kReloadGood,
+                           Ending::kReloadBad}) {
+    EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
+  }
+  EXPECT_GT(coverage.weapons, 0);
+  EXPECT_GT(coverage.stops_with_frames, 0);
+  EXPECT_GT(coverage.suspend_frames, 0);
+  EXPECT_GT(coverage.reload_frames, 0);
+}
+
+// Scripts the simulation found (tests/data/simulation/): each broke a rule
+// once, and each header says what the frames must be.
+TEST(FaultSimulation, FoundScripts) {
+  Library library;
+  const std::string mapping_file = mapping::find_robot_mapping("HD1", {ANDROS_MAPPINGS_DIR}).string();
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(ANDROS_TEST_DATA_DIR "/simulation")) {
+    if (entry.path().extension() == ".events") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  for (const auto& file : files) {
+    std::ifstream in(file);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto script = input::parse_event_script(text, file.string());
+    for (const bool weapons : {false, true}) {
+      const auto out = test::simulate(library, mapping_file, script, weapons, kCode);
+      EXPECT_EQ(out.violation, "") << file.filename().string() << (weapons ? " with --weapons" : "");
+    }
+  }
+}
+
+// The oracle itself, on frames made by hand: each rule, broken once, is named.
+class OracleTest : public ::testing::Test {
+ protected:
+  OracleTest() : valid_(library_.load(mapping::find_robot_mapping("HD1", {ANDROS_MAPPINGS_DIR}).string())) {}
+
+  test::SafetyOracle oracle(const std::string& script, bool weapons = false) {
+    return test::SafetyOracle(*valid_, input::parse_event_script(script, "oracle.events"),
+                              [this](const std::string& f) { return library_.find(f); },
+                              test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
+  }
+  static protocol::DataBytes frame(std::initializer_list<std::pair<protocol::SignalId, int>> set = {}) {
+    protocol::ControlState s;
+    s[protocol::signal_id("drive")] = 128;
+    s[protocol::signal_id("pivot")] = 128;
+    for (const auto& [id, v] : set) s[id] = static_cast<std::uint8_t>(v);
+    return protocol::FrameBuilder(kCode).build(s);
+  }
+  static protocol::DataBytes moving() {
+    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive_brake"), 1},
+                  {protocol::signal_id("drive"), 255}});
+  }
+
+  Library library_;
+  const mapping::ValidMapping& valid_;
+};
+
+constexpr const char* kDriving = "0 connect\n20 button leftshoulder 1\n30 axis lefty -32768\n";
+
+TEST_F(OracleTest, AllowsMotionAfterAFreshPress) {
+  auto o = oracle(std::string(kDriving) + "70 end\n");
+  EXPECT_EQ(o.frame(0, frame()), "");
+  EXPECT_EQ(o.frame(40, moving()), "");
+  EXPECT_EQ(o.frame(80, moving()), "");
+  EXPECT_EQ(o.finish(), "");
+}
+
+TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldThroughALinkFlap) {
+  auto o = oracle(std::string(kDriving) + "100 link down\n110 link up\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
+  EXPECT_EQ(o.frame(120, moving()),
+            "safety = 1 while not enabled (deadman held but not pressed since the last link up)");
+}
+
+TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldAtConnect) {
+  auto o = oracle("0 connect\n0 button leftshoulder 1\n400 end\n");
+  EXPECT_NE(o.frame(0, moving()), "");
+}
+
+TEST_F(OracleTest, RefusesAFrameWhileTheLinkIsDown) {
+  auto o = oracle("0 connect\n30 link down\n400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  EXPECT_EQ(o.frame(40, frame()), "delivered while the link is down (script)");
+}
+
+TEST_F(OracleTest, RefusesAMissingFrame) {
+  auto o = oracle("0 connect\n400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  EXPECT_NE(o.frame(80, frame()).find("no frame at t=40"), std::string::npos);
+}
+
+TEST_F(OracleTest, RefusesFramesPastASuspendsNeutralOnes) {
+  auto o = oracle("0 connect\n100 suspend\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, frame()), "") << t;
+  EXPECT_EQ(o.frame(240, frame()), "delivered while suspended, after its neutral frames");
+}
+
+TEST_F(OracleTest, RefusesMotionDuringAReload) {
+  auto o = oracle(std::string(kDriving) + "100 reload\n110 button leftshoulder 0\n115 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
+  EXPECT_NE(o.frame(120, moving()).find("a reload's neutral frame"), std::string::npos);
+}
+
+TEST_F(OracleTest, WantsAStopsThreeNeutralFrames) {
+  auto o = oracle("0 connect\n100 stop\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(o.frame(t, frame()), "") << t;
+  EXPECT_NE(o.finish().find("got 2 of its 3"), std::string::npos);
+}
+
+TEST_F(OracleTest, RefusesWeaponsWithoutArmingOrWithoutTheOption) {
+  const auto fire = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("weapon_1"), 1}});
+  auto off = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n");
+  ASSERT_EQ(off.frame(0, frame()), "");
+  ASSERT_EQ(off.frame(40, frame()), "");
+  EXPECT_EQ(off.frame(80, fire), "weapon_1 = 1 without --weapons");
+  auto unarmed = oracle(std::string(kDriving) + "400 end\n", true);
+  ASSERT_EQ(unarmed.frame(0, frame()), "");
+  EXPECT_EQ(unarmed.frame(40, fire), "weapon_1 = 1 without its arming input held");
+  auto armed = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n", true);
+  ASSERT_EQ(armed.frame(0, frame()), "");
+  ASSERT_EQ(armed.frame(40, frame()), "");
+  EXPECT_EQ(armed.frame(80, fire), "");
+}
+
+}  // namespace
+}  // namespace andros::run
