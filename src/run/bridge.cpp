@@ -12,7 +12,9 @@ Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, lin
       link_(link),
       options_(options),
       schedule_(options.rate_millihertz),
-      machine_(link_up()) {}
+      machine_(link_up()) {
+  start_sequence();
+}
 
 void Bridge::run(const StopCheck& stop, const Observer& observe) {
   RunControl control;
@@ -25,14 +27,15 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
   tick_ = 0;
   skipped_ = 0;
   closed_ = false;
+  input_failed_ = false;
   try {
     while (tick(control, observe)) {
     }
   } catch (...) {
-    // A script's bad line: the neutral frames still go first.
-    if (!closed_) {
-      apply(OpEvent::kShutdown);
-      neutral_then_close(observe);
+    // A script's bad line: the neutral frames still go first, without the input.
+    input_failed_ = true;
+    apply(OpEvent::kShutdown);
+    while (tick(control, observe)) {
     }
     throw;
   }
@@ -41,39 +44,42 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
 bool Bridge::tick(const RunControl& control, const Observer& observe) {
   clock_.sleep_until(start_ + Nanos(schedule_.tick_ns(tick_)));
   const std::int64_t t_ms = schedule_.tick_ms(tick_);
-  if (machine_.state() == OpState::kStopping) {
-    neutral_then_close(observe);
-    return false;
-  }
-  // The input is read right after the tick's time: never older than the frame.
-  input_.pump(state_, t_ms);
-  on_request(control.poll(), control);
-  for (const auto& fault : state_.take_faults()) on_fault(fault, control);
-  if (state_.connected() != machine_.controller_up()) {
-    apply(state_.connected() ? OpEvent::kControllerUp : OpEvent::kControllerDown);
+  if (!input_failed_) {
+    // The input is read right after the tick's time: never older than the frame.
+    input_.pump(state_, t_ms);
+    on_request(control.poll(), control);
+    for (const auto& fault : state_.take_faults()) on_fault(fault, control);
+    if (state_.connected() != machine_.controller_up()) {
+      apply(state_.connected() ? OpEvent::kControllerUp : OpEvent::kControllerDown);
+    }
   }
 
   switch (machine_.state()) {
     case OpState::kStopping:
-      neutral_then_close(observe);
-      return false;
-    case OpState::kSuspended:
-      if (suspend_frames_due_) {
-        suspend(control, observe);
-        return true;
+      if (neutral_frame(observe)) {
+        close();
+        closed_ = true;
+        return false;
       }
-      // A script's suspend: nothing is sent until its resume.
-      observe(report(frames_.neutral(), link::SendResult::kDown, false));
+      break;
+    case OpState::kSuspended:
+      if (!suspend_frames_due_) {
+        // Suspended by a script: nothing is sent until its resume.
+        observe(report(frames_.neutral(), link::SendResult::kDown, false));
+      } else if (neutral_frame(observe)) {
+        close();
+        suspend_frames_due_ = false;
+        if (pause_after_suspend_) {
+          pause(control);
+          return true;
+        }
+        if (std::exchange(resume_pending_, false)) resumed(control);
+      }
       break;
     case OpState::kReloading:
-      if (send(frames_.neutral(), observe) == link::SendResult::kSent) ++reload_neutral_;
-      ++reload_ticks_;
-      if (reload_neutral_ >= options_.shutdown_frames ||
-          reload_ticks_ >= options_.shutdown_frames + options_.shutdown_extra_ticks) {
-        if (control.finish_reload()) {
-          apply(OpEvent::kReloadDone);
-          if (std::exchange(suspend_pending_, false)) begin_suspend();
-        }
+      if (neutral_frame(observe) && control.finish_reload()) {
+        apply(OpEvent::kReloadDone);
+        if (std::exchange(suspend_pending_, false)) begin_suspend();
       }
       break;
     default: {
@@ -89,7 +95,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     }
   }
   advance();
-  if (input_.finished(t_ms)) {
+  if (!input_failed_ && machine_.state() != OpState::kStopping && input_.finished(t_ms)) {
     if (!options_.neutral_tail_at_end) return false;
     apply(OpEvent::kShutdown);
   }
@@ -104,7 +110,7 @@ void Bridge::on_request(Request request, const RunControl& control) {
       pause_after_suspend_ = true;
       begin_suspend();
       break;
-    case Request::kResumed: apply(OpEvent::kResume); break;
+    case Request::kResumed: resume(control); break;
     case Request::kReload: begin_reload(control, ""); break;
   }
 }
@@ -112,21 +118,18 @@ void Bridge::on_request(Request request, const RunControl& control) {
 void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control) {
   using T = input::InputEvent::Type;
   switch (fault.type) {
-    case T::kLinkDown: link_.set_fault(link::FaultLink::Fault::kDown); break;
-    case T::kLinkTaken: link_.set_fault(link::FaultLink::Fault::kTaken); break;
+    case T::kLinkDown:
+    case T::kLinkTaken:
+      link_.set_fault(fault.type == T::kLinkTaken ? link::FaultLink::Fault::kTaken : link::FaultLink::Fault::kDown);
+      // Answered now: a link back before the next frame is still a new link.
+      apply(link_lost_event());
+      break;
     case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
     case T::kSuspend:
       pause_after_suspend_ = false;
       begin_suspend();
       break;
-    case T::kResume:
-      // Answered once the suspend's neutral frames are out.
-      if (suspend_frames_due_) {
-        resume_pending_ = true;
-      } else {
-        apply(OpEvent::kResume);
-      }
-      break;
+    case T::kResume: resume(control); break;
     case T::kReload: begin_reload(control, fault.name); break;
     case T::kStop: apply(OpEvent::kShutdown); break;
     default: break;
@@ -136,6 +139,11 @@ void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control)
 Effect Bridge::apply(OpEvent event) {
   const Effect effect = machine_.on(event);
   if (effect.rebase) frames_.restart(state_);
+  // Each of these begins with its own neutral frames.
+  const OpState now = machine_.state();
+  if (effect.changed && (now == OpState::kStopping || now == OpState::kSuspended || now == OpState::kReloading)) {
+    start_sequence();
+  }
   return effect;
 }
 
@@ -144,19 +152,44 @@ void Bridge::begin_suspend() {
     suspend_pending_ = true;  // after the reload's outcome
     return;
   }
+  if (machine_.state() == OpState::kSuspended) {
+    resume_pending_ = false;  // suspend, resume, suspend: the last word counts
+    return;
+  }
   if (apply(OpEvent::kSuspend).changed) suspend_frames_due_ = true;
+}
+
+void Bridge::resumed(const RunControl& control) {
+  apply(OpEvent::kResume);
+  if (auto mapping = std::exchange(reload_pending_, std::nullopt)) begin_reload(control, *mapping);
+}
+
+void Bridge::resume(const RunControl& control) {
+  if (suspend_pending_) {
+    suspend_pending_ = false;  // a suspend still waiting behind a reload: answered by this resume
+    return;
+  }
+  if (machine_.state() == OpState::kSuspended && suspend_frames_due_) {
+    resume_pending_ = true;  // answered once the suspend's neutral frames are out
+    return;
+  }
+  resumed(control);
 }
 
 void Bridge::begin_reload(const RunControl& control, const std::string& mapping) {
   // A second one while one runs is the control's to queue (the files read
-  // again); while suspended and while stopping it is ignored (no row).
+  // again); one while suspended waits for the resume; while stopping it is
+  // ignored (no row).
   if (machine_.state() == OpState::kReloading) {
+    start_sequence();  // the files read again: neutral frames from now on, as for the first
     control.begin_reload(mapping);
     return;
   }
+  if (machine_.state() == OpState::kSuspended) {
+    reload_pending_ = mapping;
+    return;
+  }
   if (!apply(OpEvent::kReloadBegin).changed) return;
-  reload_neutral_ = 0;
-  reload_ticks_ = 0;
   control.begin_reload(mapping);
 }
 
@@ -176,47 +209,41 @@ OpEvent Bridge::link_lost_event() const {
   return link_.fault() == link::FaultLink::Fault::kTaken ? OpEvent::kLinkTaken : OpEvent::kLinkDown;
 }
 
-void Bridge::neutral_then_close(const Observer& observe) {
-  const protocol::DataBytes neutral = frames_.neutral();
-  const protocol::Frame frame = protocol::encode(neutral);
-  int sent = 0;
+void Bridge::start_sequence() {
+  sequence_sent_ = 0;
+  sequence_ticks_ = 0;
+}
+
+bool Bridge::sequence_done() const {
   // A frame the link could not take this tick (busy, reconnecting) is tried
   // again on the next one, a few ticks at most, so that a stop stays short.
-  for (int i = 0; sent < options_.shutdown_frames &&
-                  i < options_.shutdown_frames + options_.shutdown_extra_ticks;
-       ++i) {
-    if (i > 0) {
-      advance();
-      clock_.sleep_until(start_ + Nanos(schedule_.tick_ns(tick_)));
-    }
-    skipped_ = 0;
-    const link::SendResult result = link_.send(frame, clock_.now().count());
-    if (result == link::SendResult::kSent) ++sent;
-    observe(report(neutral, result, true));
-  }
-  advance();
-  shutdown_report_.neutral_sent = sent;
+  return sequence_sent_ >= options_.shutdown_frames ||
+         sequence_ticks_ >= options_.shutdown_frames + options_.shutdown_extra_ticks;
+}
+
+bool Bridge::neutral_frame(const Observer& observe) {
+  if (send(frames_.neutral(), observe) == link::SendResult::kSent) ++sequence_sent_;
+  ++sequence_ticks_;
+  return sequence_done();
+}
+
+void Bridge::close() {
+  shutdown_report_.neutral_sent = sequence_sent_;
   shutdown_report_.neutral_wanted = options_.shutdown_frames;
   shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
-  closed_ = machine_.state() == OpState::kStopping;
   apply(OpEvent::kLinkDown);  // closed (in these states, only the condition changes)
 }
 
-void Bridge::suspend(const RunControl& control, const Observer& observe) {
-  neutral_then_close(observe);
-  suspend_frames_due_ = false;
-  if (pause_after_suspend_) {
-    control.pause();
-    // Go on at the first tick still to come: unlike a stall, this gap was asked for.
-    const std::int64_t elapsed = (clock_.now() - start_).count();
-    tick_ = std::max(tick_, schedule_.next_tick(-1, elapsed) + 1);
-    skipped_ = 0;
-    // What happened while the process was stopped is history too.
-    input_.pump(state_, elapsed / kNsPerMs);
-    apply(OpEvent::kResume);
-  } else if (std::exchange(resume_pending_, false)) {
-    apply(OpEvent::kResume);
-  }
+void Bridge::pause(const RunControl& control) {
+  control.pause();
+  // Go on at the first tick still to come: unlike a stall, this gap was asked for.
+  const std::int64_t elapsed = (clock_.now() - start_).count();
+  tick_ = std::max(tick_ + 1, schedule_.next_tick(-1, elapsed) + 1);
+  skipped_ = 0;
+  // What happened while the process was stopped is history too.
+  input_.pump(state_, elapsed / kNsPerMs);
+  resume_pending_ = false;
+  resumed(control);
 }
 
 void Bridge::advance() {

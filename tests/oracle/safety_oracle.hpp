@@ -263,15 +263,31 @@ class SafetyOracle {
         break;
       case T::kResume:
         end_enabled(Ending::kResume);
+        // A reload asked for while suspended is answered after the resume, as
+        // a SIGHUP to a stopped process is once it goes on.
+        if (suspended_ && reload_after_resume_) {
+          reload_tick_ = tick_of(e.t_ms);
+          reload_sent_ = 0;
+
+          owed_ += options_.stop_frames;
+        }
+        reload_after_resume_ = false;
         suspended_ = false;
         break;
       case T::kReload: {
         const mapping::Mapping* loaded = e.name.empty() ? nullptr : lookup_(e.name);
         end_enabled(e.name.empty() ? Ending::kReloadSame : loaded != nullptr ? Ending::kReloadGood : Ending::kReloadBad);
         if (loaded != nullptr) add_possible(*loaded);
-        // Answered unless suspended or while another reload's frames go out.
+        // Answered at once; while suspended, after the resume.
         const std::int64_t tick = tick_of(e.t_ms);
-        if (!suspended_ && !reloading(tick)) {
+        if (reloading(tick)) {
+          // The files read again: its neutral frames count afresh from here.
+          owed_ += reload_sent_;
+          reload_tick_ = tick;
+          reload_sent_ = 0;
+        } else if (suspended_) {
+          reload_after_resume_ = true;
+        } else {
           reload_tick_ = tick;
           reload_sent_ = 0;
           owed_ += options_.stop_frames;
@@ -374,6 +390,7 @@ class SafetyOracle {
   bool suspended_ = false;
   std::optional<std::int64_t> reload_tick_;
   int reload_sent_ = 0;  ///< its neutral frames delivered so far
+  bool reload_after_resume_ = false;  ///< a reload asked for while suspended
   bool stopped_ = false;
   std::int64_t stop_tick_ = 0;
   int owed_ = 0;  ///< neutral frames of suspends, reloads and a stop still to go out

@@ -181,9 +181,9 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
   RunControl control;
   control.poll = [&] {
     ++polls;
-    if (polls == 3) return Request::kSuspend;
-    if (polls == 6) return Request::kResumed;
-    return polls >= 8 ? Request::kStop : Request::kNone;
+    if (polls == 3) return Request::kSuspend;  // polled on every tick, the neutral ones too
+    if (polls == 8) return Request::kResumed;
+    return polls >= 10 ? Request::kStop : Request::kNone;
   };
   control.pause = [&] {
     ++paused;
@@ -218,8 +218,8 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
   control.poll = [&] {
     ++polls;
     if (polls == 3) return Request::kReload;
-    if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: the control queues it
-    return polls >= 9 ? Request::kStop : Request::kNone;
+    if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: read again, frames afresh
+    return polls >= 10 ? Request::kStop : Request::kNone;
   };
   control.pause = [] { FAIL() << "a reload is not a pause"; };
   control.begin_reload = [&](const std::string& mapping) { begun.push_back(mapping); };
@@ -233,12 +233,13 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
   on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
   EXPECT_EQ(begun, (std::vector<std::string>{"", ""}));
   EXPECT_EQ(on.frames.restarts - restarts_before, 1);
-  // Ticks 0, 1; the reload seen on tick 2: neutral frames on 2..6 (3 at least, then while it reads).
-  for (std::size_t i = 0; i < 7; ++i) EXPECT_EQ(ticks[i].reloading(), i >= 2) << "tick " << i;
+  // Ticks 0, 1; the reload seen on tick 2, again on 3: neutral frames from 2, at least 3
+  // from tick 3 (3, 4, 5), then while it reads (6, 7).
+  for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(ticks[i].reloading(), i >= 2) << "tick " << i;
   EXPECT_EQ(finish_calls, 3);
-  ASSERT_EQ(ticks.size(), 7u + 1u + 3u);
-  EXPECT_EQ(ticks[7].tick, ticks[6].tick + 1);  // without a gap
-  EXPECT_EQ(ticks[7].state, OpState::kNoController);
+  ASSERT_EQ(ticks.size(), 8u + 1u + 3u);
+  EXPECT_EQ(ticks[8].tick, ticks[7].tick + 1);  // without a gap
+  EXPECT_EQ(ticks[8].state, OpState::kNoController);
   for (const auto& r : ticks) EXPECT_EQ(r.data[7], 128);
 }
 

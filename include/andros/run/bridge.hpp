@@ -138,20 +138,28 @@ class Bridge {
   [[nodiscard]] const OperatingState& state() const { return machine_; }
 
  private:
-  /// One tick of the driving states or of a reload; false once the run ends.
+  /// One tick, whatever the state; false once the run has ended.
   bool tick(const RunControl& control, const Observer& observe);
   void on_request(Request request, const RunControl& control);
   void on_fault(const input::InputEvent& fault, const RunControl& control);
   /// The event through the machine; a rebase restarts the frame source from the input as it is.
   Effect apply(OpEvent event);
   void begin_suspend();
+  void resume(const RunControl& control);
+  /// The resume through the machine, then a reload asked for while suspended.
+  void resumed(const RunControl& control);
   void begin_reload(const RunControl& control, const std::string& mapping);
   /// Sends the frame, answers what the link did, reports.
   link::SendResult send(const protocol::DataBytes& data, const Observer& observe);
-  /// Neutral frames from the current tick on (left at the next one to
-  /// send), then the link drained and closed: a stop's and a suspend's.
-  void neutral_then_close(const Observer& observe);
-  void suspend(const RunControl& control, const Observer& observe);
+  /// A stop's, suspend's or reload's neutral frames: counted from start_sequence().
+  void start_sequence();
+  [[nodiscard]] bool sequence_done() const;
+  /// One neutral frame of the sequence; true once it is complete.
+  bool neutral_frame(const Observer& observe);
+  /// After a stop's or suspend's frames: the link drained and closed.
+  void close();
+  /// Job control: the process stops in control.pause(); afresh after it.
+  void pause(const RunControl& control);
   void advance();
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
@@ -170,13 +178,15 @@ class Bridge {
   Nanos start_{0};
   std::int64_t tick_ = 0;     ///< the tick to run next
   std::int64_t skipped_ = 0;
-  int reload_neutral_ = 0;     ///< neutral frames a reload has sent so far
-  int reload_ticks_ = 0;
+  int sequence_sent_ = 0;      ///< neutral frames of the current stop, suspend or reload the link took
+  int sequence_ticks_ = 0;     ///< and ticks it has had
   bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames
   bool suspend_frames_due_ = false;   ///< suspended, its neutral frames not sent yet
   bool suspend_pending_ = false;      ///< asked for during a reload
-  bool resume_pending_ = false;       ///< a script's resume seen before its suspend's frames went
+  bool resume_pending_ = false;
+  std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)       ///< a script's resume seen before its suspend's frames went
   bool closed_ = false;               ///< the run's last neutral frames are out
+  bool input_failed_ = false;         ///< the input threw: the stop's frames go without it
 };
 
 }  // namespace andros::run
