@@ -51,7 +51,8 @@ run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
   switch (job.poll()) {
     case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;
     case JobControlSignals::Event::kContinued:
-      // Stopped by a SIGSTOP the loop could not answer: no neutral frames went first.
+      // Continued during a Ctrl-Z's neutral frames (the loop then does not stop
+      // the process), or after a SIGSTOP the loop could not answer.
       spdlog::info("continued (SIGCONT): not enabled until the deadman is pressed again");
       return run::Request::kResumed;
     case JobControlSignals::Event::kNone: break;

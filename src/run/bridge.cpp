@@ -69,11 +69,13 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       } else if (neutral_frame(observe)) {
         close();
         suspend_frames_due_ = false;
-        if (pause_after_suspend_) {
+        if (std::exchange(resume_pending_, false)) {
+          // Continued (fg, SIGCONT, a script's resume) during the frames: no stop.
+          resumed(control);
+        } else if (pause_after_suspend_) {
           pause(control);
           return true;
         }
-        if (std::exchange(resume_pending_, false)) resumed(control);
       }
       break;
     case OpState::kReloading:

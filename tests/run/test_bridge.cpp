@@ -208,6 +208,27 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
   EXPECT_EQ(on.got.size(), 12u);
 }
 
+TEST(Bridge, AContinueDuringASuspendsNeutralFramesMeansNoPause) {
+  // kill -TSTP; sleep 0.08; kill -CONT: the SIGCONT comes before the process stopped itself.
+  OnSink on;
+  int polls = 0;
+  std::vector<TickReport> ticks;
+  RunControl control;
+  control.poll = [&] {
+    ++polls;
+    if (polls == 3) return Request::kSuspend;
+    if (polls == 4) return Request::kResumed;
+    return polls >= 8 ? Request::kStop : Request::kNone;
+  };
+  control.pause = [] { FAIL() << "stopped although continued before the stop"; };
+  on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
+  // Suspend frames on 2, 3, 4, then on without a gap: not enabled, ticks 5, 6, and the stop's 7, 8, 9.
+  ASSERT_EQ(ticks.size(), 10u);
+  for (std::size_t i = 0; i < ticks.size(); ++i) EXPECT_EQ(ticks[i].tick, static_cast<std::int64_t>(i));
+  EXPECT_EQ(ticks[4].state, OpState::kSuspended);
+  EXPECT_EQ(ticks[5].state, OpState::kNoController);
+}
+
 TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenStartsAfresh) {
   OnSink on;
   int polls = 0;
