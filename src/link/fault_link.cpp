@@ -3,7 +3,7 @@
 namespace andros::link {
 namespace {
 
-const std::string kDownText = "link down (event script)";
+const std::string kDownText = "held down by the event script";
 const std::string kTakenText = "taken by another program (event script)";
 const std::string kClosedText = "closed";
 

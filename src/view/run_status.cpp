@@ -92,7 +92,7 @@ std::string state_text(const run::TickReport& r) {
       if (r.engine.enable == mapping::EnableState::kEnabled) return "driving was interrupted: release and press the deadman again";
       return std::string(describe(r.engine.enable));
     case OpState::kEnabled: return enable_text(r.engine);
-    case OpState::kSuspended: return "neutral frames sent, link closed (job control)";
+    case OpState::kSuspended: return "neutral frames sent, link closed until resumed";
     case OpState::kReloading: return "neutral frames while the settings are read";
     case OpState::kStopping: return "sending neutral frames";
   }

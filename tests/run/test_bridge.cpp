@@ -277,7 +277,7 @@ TEST(Bridge, ALinkThatComesBackLandsInNotEnabledUntilAFreshPress) {
       {0, 128}, {40, 200}, {80, 200}, {200, 128}, {240, 128}, {280, 128}, {320, 200}, {360, 200}, {400, 200}};
   EXPECT_EQ(delivered, want);
   EXPECT_EQ(ticks[3].state, OpState::kNoLink);
-  EXPECT_EQ(ticks[3].link.detail, "link down (event script)");
+  EXPECT_EQ(ticks[3].link.detail, "held down by the event script");
   EXPECT_EQ(ticks[5].state, OpState::kNotEnabled);
 }
 
