@@ -9,6 +9,7 @@
 #include "andros/base/error.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
+#include "andros/cli/config.hpp"
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/frame_output.hpp"
@@ -57,16 +58,11 @@ void run_replay(const ReplayOptions& opt) {
                                                        : TextReader::open(opt.events, kEventScriptLimits));
 
   input::ScriptPlayer player(script);
-  mapping::Engine engine(std::move(mapping), mapping::EngineOptions{settings.weapons, settings.code});
-  // A script's `reload FILE` names FILE relative to the script's folder, as a user expects.
-  const std::filesystem::path script_dir =
-      opt.events == "-" ? std::filesystem::path() : std::filesystem::path(opt.events).parent_path();
   run::ReplayOptions replay_options{.rate_millihertz = settings.rate.millihertz,
                                     .engine = mapping::EngineOptions{settings.weapons, settings.code}};
-  replay_options.load = [&script_dir](const std::string& file) {
-    const std::filesystem::path p(file);
-    return mapping::load_mapping(p.is_absolute() ? p : script_dir / p);
-  };
+  mapping::Engine engine(std::move(mapping), replay_options.engine);
+  // A script's `reload FILE` names FILE relative to the script's folder.
+  replay_options.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.events, file)); };
   write_frames(settings, [&](std::ostream& out) {
     run::replay(player, std::move(engine), replay_options,
                 [&](std::int64_t t, const protocol::DataBytes& data) { protocol::write_frame(out, settings.format, t, data); });

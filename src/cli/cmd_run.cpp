@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +14,7 @@
 #include "andros/base/stop.hpp"
 #include "andros/base/text.hpp"
 #include "andros/cli/command_line.hpp"
+#include "andros/cli/config.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/link/sim_vehicle.hpp"
 #include "andros/link/tcp_link.hpp"
@@ -58,13 +58,6 @@ run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
     case JobControlSignals::Event::kNone: break;
   }
   return run::Request::kNone;
-}
-
-/// A script's `reload MAPPING` names it relative to the script's folder.
-std::string script_relative(const std::string& script, const std::string& mapping) {
-  const std::filesystem::path p(mapping);
-  if (p.is_absolute()) return mapping;
-  return (std::filesystem::path(script).parent_path() / p).lexically_normal().string();
 }
 
 /// The error line for neutral frames that did not reach the link.
@@ -161,7 +154,7 @@ int run_bridge(const RunOptions& opt) {
   control.poll = [&] { return poll_requests(stop, job); };
   control.pause = [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); };
   control.begin_reload = [&](const std::string& mapping) {
-    reload.begin(mapping.empty() ? "" : script_relative(config.input, mapping));
+    reload.begin(mapping.empty() ? "" : beside(config.input, mapping));
   };
   control.finish_reload = [&] { return reload.finish(); };
   bridge.run(control, [&](const run::TickReport& r) {

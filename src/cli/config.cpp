@@ -9,11 +9,9 @@
 namespace andros::cli {
 namespace {
 
-/// A path in the file relative to the file's own directory, as a user expects.
+/// A path in the file relative to the file's own directory; `input=sdl` is no path.
 std::string relative_to(const std::string& file_name, std::string_view value) {
-  const std::filesystem::path p(value);
-  if (p.is_absolute() || value == kSdlInput) return std::string(value);
-  return (std::filesystem::path(file_name).parent_path() / p).lexically_normal().string();
+  return value == kSdlInput ? std::string(value) : beside(file_name, value);
 }
 
 std::string known_keys() {
@@ -26,6 +24,12 @@ std::string known_keys() {
 }
 
 }  // namespace
+
+std::string beside(const std::string& file_name, std::string_view path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute()) return std::string(path);
+  return (std::filesystem::path(file_name).parent_path() / p).lexically_normal().string();
+}
 
 void parse_config(TextReader& in, Settings& settings) {
   const std::string& file_name = in.name();

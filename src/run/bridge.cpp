@@ -12,9 +12,7 @@ Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, lin
       link_(link),
       options_(options),
       schedule_(options.rate_millihertz),
-      machine_(link_up()) {
-  start_sequence();
-}
+      machine_(link_up()) {}
 
 void Bridge::run(const StopCheck& stop, const Observer& observe) {
   RunControl control;
@@ -26,7 +24,6 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
   start_ = clock_.now();
   tick_ = 0;
   skipped_ = 0;
-  closed_ = false;
   input_failed_ = false;
   try {
     while (tick(control, observe)) {
@@ -58,7 +55,6 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     case OpState::kStopping:
       if (neutral_frame(observe)) {
         close();
-        closed_ = true;
         return false;
       }
       break;

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "andros/base/text_file.hpp"
@@ -17,6 +18,11 @@ namespace andros::cli {
 /// the file's directory. An unknown key or bad value throws InputError at
 /// FILE:LINE:COL. The rate is checked against the baud by the merge.
 void parse_config(TextReader& in, Settings& settings);
+
+/// A path a file names (a config's `mapping`, an event script's `reload
+/// MAPPING`), relative to that file's own folder as a user expects; an
+/// absolute one as it is. For standard input ("-") the current folder.
+std::string beside(const std::string& file_name, std::string_view path);
 
 /// Which config files a read takes.
 enum class ConfigRead : std::uint8_t {

@@ -185,7 +185,6 @@ class Bridge {
   bool suspend_pending_ = false;      ///< asked for during a reload
   bool resume_pending_ = false;
   std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)       ///< a script's resume seen before its suspend's frames went
-  bool closed_ = false;               ///< the run's last neutral frames are out
   bool input_failed_ = false;         ///< the input threw: the stop's frames go without it
 };
 

@@ -25,9 +25,6 @@ using MappingLoader = std::function<mapping::ValidMapping(const std::string& fil
 struct ReplayOptions {
   std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;
   mapping::EngineOptions engine;
-  /// The end of the script ends on the last frame (the contract's replay); a
-  /// `stop` event always ends on the neutral frames of a stop.
-  bool neutral_tail_at_end = false;
   /// For `reload`: FILE, or the running mapping's file when the event names none.
   MappingLoader load = [](const std::string& file) -> mapping::ValidMapping {
     throw InputError("reload " + file + ": no mapping loader in this replay");
@@ -37,8 +34,9 @@ struct ReplayOptions {
 };
 
 /// Runs the loop from t = 0 through the first frame time >= the script's end
-/// (its `end`, or its last event), each frame reflecting every event with a
-/// time <= its own; frames the link did not take (a `link down`, a suspend)
+/// (its `end`, or its last event: no neutral tail, as the contract's replay
+/// has it; a `stop` event ends on a stop's neutral frames), each frame
+/// reflecting every event with a time <= its own; frames the link did not take (a `link down`, a suspend)
 /// are not delivered. Returns the count delivered.
 std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const ReplayOptions& options,
                     const FrameSink& sink);
