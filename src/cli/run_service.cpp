@@ -8,8 +8,8 @@ namespace andros::cli {
 
 std::string service_status_line(const view::RunStatus& s) {
   std::string state;
-  if (s.shutting_down) state = "stopping: neutral frames";
-  else if (s.enabled) state = s.enable_text;
+  if (s.shutting_down()) state = "stopping: neutral frames";
+  else if (s.enabled()) state = s.enable_text;
   else state = std::string(run::to_string(s.state)) + ": " + s.enable_text;
   std::string link = fmt::format("link {}: {}", s.link_name, link::to_string(s.link_state));
   if (!s.motion_allowed) link += " (neutral frames only: the server stalled)";

@@ -20,14 +20,12 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next = status_;
     next.t_ms = r.t_ms;
     next.sent = r.data;
-    next.shutting_down = r.shutting_down();
     next.connected = r.connected;
     if (next.connected) next.controller = r.controller.empty() ? "controller" : r.controller;
     next.state = r.state;
-    next.enabled = r.enabled();
     next.enable_text = state_text(r);
     next.layer = r.engine.layer;
-    next.weapons_mode = next.enabled && r.engine.weapons_mode;
+    next.weapons_mode = next.enabled() && r.engine.weapons_mode;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
@@ -41,8 +39,8 @@ void RunStatusBoard::observe(const run::TickReport& r) {
 }
 
 void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after) const {
-  if (after.shutting_down) {
-    if (!before.shutting_down) spdlog::info("stopping: sending neutral frames");
+  if (after.shutting_down()) {
+    if (!before.shutting_down()) spdlog::info("stopping: sending neutral frames");
     return;
   }
   if (before.motion_allowed != after.motion_allowed) {
@@ -54,7 +52,7 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     else spdlog::info("controller: none connected");
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
-    if (after.enabled) spdlog::info("{}", after.enable_text);
+    if (after.enabled()) spdlog::info("{}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {

@@ -41,15 +41,15 @@ std::vector<std::string> wrap(const std::string& text, std::size_t room) {
 std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
   constexpr std::string_view kLabel = "state       ";
   std::vector<Line> out;
-  if (s.enabled && !s.shutting_down) {
+  if (s.enabled()) {
     out.push_back(Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
   } else {
-    const auto text = s.shutting_down ? "SHUTTING DOWN: sending neutral frames" : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
+    const auto text = s.shutting_down() ? "SHUTTING DOWN: sending neutral frames" : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);
     const std::string indent(kLabel.size(), ' ');
     for (const auto& part : wrap(text, room)) {
       out.push_back(Line(out.empty() ? std::string(kLabel) : indent)
-                        .add(part, s.shutting_down ? Style::kWarn : Style::kAlert));
+                        .add(part, s.shutting_down() ? Style::kWarn : Style::kAlert));
     }
   }
   if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);

@@ -75,7 +75,7 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.t_ms, 40);
   EXPECT_TRUE(s.connected);
   EXPECT_EQ(s.controller, "pad");
-  EXPECT_TRUE(s.enabled);
+  EXPECT_TRUE(s.enabled());
   EXPECT_EQ(s.enable_text, "enabled");
   EXPECT_EQ(s.layer, "arm");
   EXPECT_EQ(s.link_state, link::LinkState::kUp);
@@ -97,8 +97,8 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   r.state = run::OpState::kStopping;  // the last step said enabled; shutting down is never enabled
   board.observe(r);
   s = board.snapshot();
-  EXPECT_TRUE(s.shutting_down);
-  EXPECT_FALSE(s.enabled);
+  EXPECT_TRUE(s.shutting_down());
+  EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "sending neutral frames");
 }
 
@@ -113,7 +113,7 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   r.link.detail = "No such file or directory";
   board.observe(r);
   auto s = board.snapshot();
-  EXPECT_FALSE(s.enabled);
+  EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.state, run::OpState::kNoLink);
   EXPECT_NE(s.enable_text.find("nothing reaches the vehicle (link No such file or directory)"), std::string::npos)
       << s.enable_text;
@@ -121,12 +121,12 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   r.state = run::OpState::kNotEnabled;
   board.observe(r);
   s = board.snapshot();
-  EXPECT_FALSE(s.enabled);
+  EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "driving was interrupted: release and press the deadman again");
   for (const auto state : {run::OpState::kSuspended, run::OpState::kReloading, run::OpState::kNoController}) {
     r.state = state;
     board.observe(r);
-    EXPECT_FALSE(board.snapshot().enabled) << run::to_string(state);
+    EXPECT_FALSE(board.snapshot().enabled()) << run::to_string(state);
   }
 }
 

@@ -22,7 +22,6 @@ RunStatus driving(bool weapons) {
   s.connected = true;
   s.controller = "Xbox 360 Controller";
   s.state = run::OpState::kEnabled;
-  s.enabled = true;
   s.enable_text = "enabled";
   s.layer = "arm";
   s.link_name = "/dev/andros-switchbox 9600 8N1";
@@ -101,7 +100,6 @@ TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
 TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;
-  s.enabled = false;
   s.enable_text = "deadman released";
   s.link_state = link::LinkState::kConnecting;
   s.link_detail = "gone";
@@ -123,7 +121,6 @@ TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
 TEST(RunView, TheHeadlineIsTheOperatingState) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNoLink;
-  s.enabled = false;
   s.enable_text = "nothing reaches the vehicle";
   EXPECT_EQ(shown(s, {80, 24})[1], "state       NO LINK: nothing reaches the vehicle   layer: arm");
   s.state = run::OpState::kReloading;
@@ -134,7 +131,6 @@ TEST(RunView, TheHeadlineIsTheOperatingState) {
 TEST(RunView, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;
-  s.enabled = false;
   s.enable_text = "deadman held since connect or start-up: release and press it again";
   const auto lines = shown(s, {80, 24});
   EXPECT_EQ(lines[1], "state       NOT ENABLED: deadman held since connect or start-up: release and");
@@ -144,7 +140,7 @@ TEST(RunView, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
 
 TEST(RunView, NoEscapesWithoutColour) {
   RunStatus s = driving(true);
-  s.shutting_down = true;
+  s.state = run::OpState::kStopping;
   const auto text = render_run_view(s, {80, 24}).render({80, 24}, false);
   EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
   EXPECT_NE(text.find("SHUTTING DOWN: sending neutral frames"), std::string::npos) << text;

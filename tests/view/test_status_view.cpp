@@ -85,7 +85,7 @@ TEST(StatusView, ANeutralFrameDrawsEmptyGaugesWhateverTheTrim) {
 
 TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
   RunStatus s;
-  s.enabled = true;
+  s.state = run::OpState::kEnabled;
   s.enable_text = "enabled";
   EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
   s.enable_text = "enabled; at rest first: lefty";

@@ -49,11 +49,9 @@ struct RunStatus {
   std::string controller;        ///< its name; empty when none is connected
   bool connected = false;
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
-  bool enabled = false;          ///< state == kEnabled
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
-  bool shutting_down = false;
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;
@@ -62,6 +60,9 @@ struct RunStatus {
   timing::TimingSummary sent_timing;     ///< frames handed to the link
   protocol::DataBytes sent{};              ///< the last frame computed
   std::optional<link::VehicleSnapshot> vehicle;  ///< the simulated vehicle's view
+
+  [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
+  [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }
 };
 
 /// `run`'s screen for a terminal of this size: pinned first (the WEAPONS
