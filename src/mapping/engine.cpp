@@ -1,6 +1,7 @@
 #include "andros/mapping/engine.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "andros/mapping/axis.hpp"
 #include "overload.hpp"
@@ -10,6 +11,10 @@ namespace {
 
 constexpr std::int64_t kMilli = 1000;
 constexpr std::int64_t kLevelMax = 255 * kMilli;
+/// For the enable timeout an axis has changed once it has moved this far
+/// (of -32768..32767) from where it was at the last change: a pad's noise
+/// does not keep the bridge enabled, a hand does.
+constexpr int kActivityBand = 1024;
 
 }  // namespace
 
@@ -19,6 +24,8 @@ std::string_view describe(EnableState state) {
     case EnableState::kNoController: return "no controller";
     case EnableState::kDeadmanReleased: return "deadman released";
     case EnableState::kDeadmanNotFresh: return "deadman held since connect or start-up: release and press it again";
+    case EnableState::kPanic: return "deadman squeezed past its panic point: release the trigger fully, then press it again";
+    case EnableState::kTimedOut: return "enable timeout (no input changed): release the deadman and press it again";
   }
   return "?";
 }
@@ -28,8 +35,18 @@ Engine::Engine(ValidMapping mapping, EngineOptions options)
   const auto note_button = [this](input::InputKey key) {
     if (key.is_button() && std::find(buttons_.begin(), buttons_.end(), key) == buttons_.end()) buttons_.push_back(key);
   };
-  if (mapping_->deadman) note_button(mapping_->deadman->key);
-  for (const auto& layer : mapping_->layers) note_button(layer.input.key);
+  const auto note_axis = [this](input::InputKey key) {
+    if (!key.is_button() && std::find(axes_.begin(), axes_.end(), key) == axes_.end()) axes_.push_back(key);
+  };
+  if (mapping_->deadman) {
+    note_button(mapping_->deadman->key);
+    note_axis(mapping_->deadman->key);
+  }
+  if (mapping_->estop) note_button(mapping_->estop->key);
+  for (const auto& layer : mapping_->layers) {
+    note_button(layer.input.key);
+    note_axis(layer.input.key);
+  }
   std::size_t slots = 0;
   slot_base_.push_back(0);
   for (int layer = -1; layer < static_cast<int>(mapping_->layers.size()); ++layer) {
@@ -44,8 +61,14 @@ Engine::Engine(ValidMapping mapping, EngineOptions options)
   selector_.assign(slots, 0);
   for (const auto ref : all_) {
     const auto& b = binding_at(*mapping_, ref);
-    for (const auto& u : b.inputs) note_button(u.key);
-    if (b.arm) note_button(b.arm->key);
+    for (const auto& u : b.inputs) {
+      note_button(u.key);
+      note_axis(u.key);
+    }
+    if (b.arm) {
+      note_button(b.arm->key);
+      note_axis(b.arm->key);
+    }
     if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) selector_[slot(ref)] = s->initial;
     const auto* knob = std::get_if<KnobBinding>(&b.rule);
     if (knob != nullptr && knob->initial && level_milli_[knob->analog] == 0) {
@@ -68,6 +91,11 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
   deadman_base_ = 0;
   toggled_layer_ = -1;
   clear_toggles();
+  panic_latched_ = false;
+  timed_out_ = false;
+  was_enabled_ = false;
+  // A stop pressed in a new session counts from its connect; at start-up the presses so far are history.
+  estop_seen_ = at_start_up && mapping_->estop ? input.button(mapping_->estop->key).presses : 0;
   if (at_start_up) {
     // Presses made before start-up are history: they neither act nor enable.
     for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
@@ -80,6 +108,58 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
 void Engine::restart(const input::InputState& now) {
   started_ = true;
   start_session(now, true);
+}
+
+bool Engine::stop_asked(const input::InputState& input) const {
+  if (!mapping_->estop || !input.connected()) return false;
+  const auto b = input.button(mapping_->estop->key);
+  const auto seen = input.connection() == connection_ ? estop_seen_ : 0U;
+  return b.down || b.presses > seen;
+}
+
+bool Engine::stop_let_go(const input::InputState& input) const {
+  if (!input.connected()) return false;
+  if (mapping_->estop && input.button(mapping_->estop->key).down) return false;
+  return !deadman_held(input);
+}
+
+bool Engine::panic(const input::InputState& input) {
+  if (!mapping_->deadman_panic || !mapping_->deadman || mapping_->deadman->key.is_button()) return false;
+  const double travel = normalise_axis(input.axis(mapping_->deadman->key));
+  if (travel >= *mapping_->deadman_panic) {
+    panic_latched_ = true;  // off at once; released and squeezed again to enable
+    deadman_released_seen_ = false;
+  } else if (panic_latched_ && travel < kDeadmanFullyReleased) {
+    panic_latched_ = false;  // fully released: the next squeeze to the middle is fresh
+    deadman_released_seen_ = true;
+  }
+  return panic_latched_;
+}
+
+void Engine::note_activity(const input::InputState& input, std::int64_t now_ms) {
+  bool changed = false;
+  for (const auto key : buttons_) {
+    const auto b = input.button(key);
+    auto& was = activity_buttons_[key];
+    if (b.down != was.down || b.presses != was.presses) changed = true;
+    was = b;
+  }
+  for (const auto key : axes_) {
+    const int v = input.axis(key);
+    auto [it, fresh] = activity_axes_.emplace(key, static_cast<std::int16_t>(v));
+    if (!fresh && std::abs(v - it->second) > kActivityBand) {
+      changed = true;
+      it->second = static_cast<std::int16_t>(v);
+    }
+  }
+  if (changed) last_activity_ms_ = now_ms;
+}
+
+void Engine::time_out(const input::InputState& input) {
+  timed_out_ = true;
+  // A press or squeeze that began before it is history: the next one enables.
+  if (mapping_->deadman) deadman_base_ = input.button(mapping_->deadman->key).presses;
+  deadman_released_seen_ = false;
 }
 
 // An input the rest rule holds back neither holds nor presses (the deadman and
@@ -106,10 +186,13 @@ EnableState Engine::enable_state(const input::InputState& input) {
   if (!input.connected() || !mapping_->deadman) return EnableState::kNoController;
   const auto key = mapping_->deadman->key;
   const bool down = deadman_held(input);
+  if (panic(input)) return EnableState::kPanic;
   if (!down) {
     deadman_released_seen_ = true;
+    timed_out_ = false;
     return EnableState::kDeadmanReleased;
   }
+  if (timed_out_) return EnableState::kTimedOut;
   // A button counts presses itself; a trigger must have been seen released.
   const bool fresh = key.is_button() ? input.button(key).presses > deadman_base_ : deadman_released_seen_;
   return fresh ? EnableState::kEnabled : EnableState::kDeadmanNotFresh;
@@ -228,7 +311,19 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
     start_session(input, false);  // a new controller session: toggles start cleared
   }
   status_.enable = enable_state(input);
-  const bool enabled = status_.enable == EnableState::kEnabled;
+  status_.stop_pressed = stop_asked(input);
+  if (mapping_->estop) estop_seen_ = input.button(mapping_->estop->key).presses;
+  note_activity(input, now_ms);
+  if (status_.enable == EnableState::kEnabled) {
+    if (!was_enabled_) last_activity_ms_ = now_ms;  // enabling is the first change
+    if (mapping_->enable_timeout_ms && now_ms - last_activity_ms_ >= *mapping_->enable_timeout_ms) {
+      time_out(input);
+      status_.enable = EnableState::kTimedOut;
+    }
+  }
+  // A stop button pressed in this step: nothing acts in it (the loop latches the stop).
+  const bool enabled = status_.enable == EnableState::kEnabled && !status_.stop_pressed;
+  was_enabled_ = enabled;
   // Nothing is latched past the deadman: a toggled layer (a weapons layer above
   // all) ends with it, as the toggles do below.
   if (!enabled) toggled_layer_ = -1;

@@ -4,8 +4,10 @@ namespace andros::mapping {
 
 std::string_view feedback_event_name(FeedbackEvent event) {
   switch (event) {
+    case FeedbackEvent::kStopped: return "stopped";
     case FeedbackEvent::kDeadmanRefused: return "deadman_refused";
     case FeedbackEvent::kLinkLost: return "link_lost";
+    case FeedbackEvent::kTimedOut: return "enable_timeout";
     case FeedbackEvent::kDisabled: return "disabled";
     case FeedbackEvent::kWeaponsOn: return "weapons_on";
     case FeedbackEvent::kWeaponsOff: return "weapons_off";
@@ -15,16 +17,20 @@ std::string_view feedback_event_name(FeedbackEvent event) {
   return "?";
 }
 
-// Told apart by feel as well as by the light: three hard knocks for "no", one
+// Told apart by feel as well as by the light: one long hard rumble of both
+// motors and red for "stopped", three hard knocks and red-orange for "no", one
 // long heavy rumble for the link, one light buzz up for enabled and one heavy
 // one down for disabled, two soft taps for "the controller is here"; two long
 // hard pulses and yellow for "weapons live", three quick light taps for
-// "weapons off" (a green of its own: enabled, nothing to fire).
+// "weapons off" (a green of its own: enabled, nothing to fire); two soft
+// pulses and amber for "timed out".
 input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
   using Rgb = std::array<std::uint8_t, 3>;
   switch (event) {
-    case FeedbackEvent::kDeadmanRefused: return {1.0, 1.0, 80, 3, Rgb{255, 0, 0}};
+    case FeedbackEvent::kStopped: return {1.0, 1.0, 550, 1, Rgb{255, 0, 0}};
+    case FeedbackEvent::kDeadmanRefused: return {1.0, 1.0, 80, 3, Rgb{255, 60, 0}};
     case FeedbackEvent::kLinkLost: return {1.0, 0.4, 600, 1, Rgb{255, 0, 255}};
+    case FeedbackEvent::kTimedOut: return {0.5, 0.5, 200, 2, Rgb{255, 200, 0}};
     case FeedbackEvent::kDisabled: return {0.7, 0.0, 200, 1, Rgb{255, 140, 0}};
     case FeedbackEvent::kWeaponsOn: return {1.0, 1.0, 150, 2, Rgb{255, 255, 0}};
     case FeedbackEvent::kWeaponsOff: return {0.0, 1.0, 60, 3, Rgb{0, 255, 160}};

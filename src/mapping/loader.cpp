@@ -230,7 +230,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   const Reader r(file.string());
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "brake", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "brake",
+                 "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -250,6 +251,20 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   }
   if (root["deadman"]) {
     m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
+  }
+  if (const auto p = root["deadman_panic"]) {
+    m.deadman_panic = r.number(p, kDeadmanPanicMin, 1.0, true, "deadman_panic");
+    if (*m.deadman_panic <= kDeadmanPanicMin) {
+      r.fail(p, "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
+    }
+    m.deadman_panic_pos = r.pos(p);
+  }
+  if (const auto e = root["estop"]) m.estop = use(r, e, r.button(e));
+  if (const auto t = root["enable_timeout"]; t && r.text(t, "enable_timeout") == "off") {
+    m.enable_timeout_ms.reset();  // a base's timeout switched off
+  } else if (t) {
+    const double seconds = r.number(t, kEnableTimeoutMinS, kEnableTimeoutMaxS, false, "enable_timeout");
+    m.enable_timeout_ms = static_cast<std::int64_t>(seconds * 1000.0 + 0.5);
   }
   if (const auto b = root["brake"]) {
     const auto mode = r.text(b, "brake");

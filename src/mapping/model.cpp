@@ -239,6 +239,45 @@ std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer) {
   return refs;
 }
 
+namespace {
+
+// The stop button is bound to nothing else: not the deadman, no layer's key,
+// no binding's input or arming input in any layer.
+void check_estop(const Mapping& m) {
+  if (!m.estop) return;
+  const auto key = m.estop->key;
+  const auto refuse = [&](const SourcePos& other, const std::string& what) {
+    throw InputError(m.estop->pos, "the stop button '" + input::input_name(key) + "' is already " + what + " (line " +
+                                       std::to_string(other.line) + "): a stop button is bound to nothing else");
+  };
+  if (!key.is_button()) throw InputError(m.estop->pos, "estop is a button (or a hat direction), not an axis");
+  if (m.deadman && m.deadman->key == key) refuse(m.deadman->pos, "the deadman");
+  for (const auto& layer : m.layers) {
+    if (layer.input.key == key) refuse(layer.input.pos, "the key of layer " + quote(layer.name));
+  }
+  for (const auto ref : all_bindings(m)) {
+    const auto& b = binding_at(m, ref);
+    for (const auto& u : b.inputs) {
+      if (u.key == key) refuse(u.pos, "bound");
+    }
+    if (b.arm && b.arm->key == key) refuse(b.arm->pos, "an arming input");
+  }
+}
+
+void check_deadman_panic(const Mapping& m) {
+  if (!m.deadman_panic) return;
+  if (!m.deadman || m.deadman->key.is_button()) {
+    throw InputError(m.deadman_panic_pos, "deadman_panic needs a trigger deadman (lefttrigger, righttrigger)" +
+                                              (m.deadman ? "; '" + input::input_name(m.deadman->key) + "' is a button"
+                                                         : std::string()));
+  }
+  if (*m.deadman_panic <= kDeadmanPanicMin || *m.deadman_panic >= 1.0) {
+    throw InputError(m.deadman_panic_pos, "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
+  }
+}
+
+}  // namespace
+
 void check_layer_name(std::set<std::string>& names, const Layer& layer) {
   if (!names.insert(layer.name).second) throw InputError(layer.pos, "layer " + quote(layer.name) + " given twice");
 }
@@ -293,6 +332,8 @@ ValidMapping validate(Mapping m, bool require_robot) {
   check_arms(m, -1);
   for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i));
   check_toggles(m);
+  check_estop(m);
+  check_deadman_panic(m);
   return ValidMapping(std::move(m));
 }
 

@@ -59,6 +59,8 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       }
       break;
     case OpState::kSuspended:
+      // A stop pressed now holds when the suspend ends (the latch only: no row here).
+      if (frames_.stop_asked(state_)) apply(OpEvent::kOperatorStop);
       if (!suspend_frames_due_) {
         // Suspended by a script: nothing is sent until its resume.
         observe(report(frames_.neutral(), link::SendResult::kDown, false));
@@ -74,7 +76,15 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
         }
       }
       break;
+    case OpState::kStopped:
+      // The engine is not stepped: nothing the hands do while stopped acts
+      // (a selector, a knob), and nothing held enables. Cleared on a later
+      // tick than the stop, by the hands letting go; then afresh.
+      if (frames_.stop_let_go(state_)) apply(OpEvent::kStopCleared);
+      send(frames_.neutral(), observe);
+      break;
     case OpState::kReloading:
+      if (frames_.stop_asked(state_)) apply(OpEvent::kOperatorStop);  // holds when the reload ends
       if (neutral_frame(observe) && control.finish_reload()) {
         apply(OpEvent::kReloadDone);
         if (std::exchange(suspend_pending_, false)) begin_suspend();
@@ -85,9 +95,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       engine_status_ = std::move(step.status);
       // A link known to be down (a fault, a stalled server) is so before the frame is chosen.
       if (machine_.link_up() && !link_up()) apply(link_lost_event());
-      const bool engine_enabled = engine_status_.enable == mapping::EnableState::kEnabled;
-      if (machine_.state() == OpState::kNotEnabled && engine_enabled) apply(OpEvent::kFreshPress);
-      if (machine_.state() == OpState::kEnabled && !engine_enabled) apply(OpEvent::kRelease);
+      answer_engine();
       send(machine_.motion_allowed() ? step.data : frames_.neutral(), observe);
       break;
     }
@@ -98,6 +106,20 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     apply(OpEvent::kShutdown);
   }
   return true;
+}
+
+void Bridge::answer_engine() {
+  using mapping::EnableState;
+  const auto& e = engine_status_;
+  // A stop button first: pressed this tick, this tick's frame is neutral.
+  if (e.stop_pressed) apply(OpEvent::kOperatorStop);
+  const bool engine_enabled = e.enable == EnableState::kEnabled;
+  if (machine_.state() == OpState::kNotEnabled && engine_enabled) apply(OpEvent::kFreshPress);
+  if (machine_.state() == OpState::kEnabled && !engine_enabled) {
+    apply(e.enable == EnableState::kPanic      ? OpEvent::kPanic
+          : e.enable == EnableState::kTimedOut ? OpEvent::kEnableTimeout
+                                               : OpEvent::kRelease);
+  }
 }
 
 void Bridge::on_request(Request request, const RunControl& control) {
@@ -135,8 +157,15 @@ void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control)
 }
 
 Effect Bridge::apply(OpEvent event) {
-  const Effect effect = machine_.on(event);
-  if (effect.rebase) frames_.restart(state_);
+  Effect effect = machine_.on(event);
+  if (effect.rebase) {
+    // A stop button pressed and not yet answered is answered before the
+    // rebase makes its press history (a clearing takes the presses made while stopped).
+    if (event != OpEvent::kStopCleared && frames_.stop_asked(state_)) {
+      effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
+    }
+    frames_.restart(state_);
+  }
   // Each of these begins with its own neutral frames.
   const OpState now = machine_.state();
   if (effect.changed && (now == OpState::kStopping || now == OpState::kSuspended || now == OpState::kReloading)) {

@@ -15,6 +15,8 @@ class EngineFrames final : public FrameSource {
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
   void restart(const input::InputState& now) override { engine_.restart(now); }
+  [[nodiscard]] bool stop_asked(const input::InputState& input) const override { return engine_.stop_asked(input); }
+  [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return engine_.stop_let_go(input); }
 
  private:
   mapping::Engine engine_;

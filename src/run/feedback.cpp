@@ -13,15 +13,19 @@ FeedbackStatus feedback_status(const TickReport& report) {
   // A weapons mode only while enabled, too.
   return {report.connected, report.engine.enable, report.enabled(),
           report.link.state == link::LinkState::kUp && report.link.motion_allowed,
-          report.enabled() && report.engine.weapons_mode};
+          report.enabled() && report.engine.weapons_mode, report.state == OpState::kStopped};
 }
 
 std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
   std::vector<FeedbackEvent> events;
+  if (after.stopped && !before.stopped) events.push_back(FeedbackEvent::kStopped);
   if (after.enable == EnableState::kDeadmanNotFresh && before.enable != EnableState::kDeadmanNotFresh) {
     events.push_back(FeedbackEvent::kDeadmanRefused);
   }
   if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
+  if (before.enabled && !after.enabled && after.enable == EnableState::kTimedOut) {
+    events.push_back(FeedbackEvent::kTimedOut);
+  }
   // A lost controller cannot be told anything: no "disabled" with it.
   if (before.enabled && !after.enabled && after.connected) events.push_back(FeedbackEvent::kDisabled);
   if (after.weapons_mode && !before.weapons_mode) events.push_back(FeedbackEvent::kWeaponsOn);

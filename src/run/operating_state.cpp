@@ -29,26 +29,40 @@ constexpr auto kTable = std::to_array<Transition>({
     // The deadman.
     row(S::kNotEnabled, E::kFreshPress, S::kEnabled),
     row(S::kEnabled, E::kRelease, S::kNotEnabled),
+    row(S::kEnabled, E::kPanic, S::kNotEnabled),
+    row(S::kEnabled, E::kEnableTimeout, S::kNotEnabled),
+    // The operator's stop: from any driving state, latched (it outlives the
+    // link, the controller, a reload and a suspend); cleared only with the
+    // stop buttons and the deadman released, and then not enabled, afresh.
+    row(S::kNoLink, E::kOperatorStop, S::kStopped),
+    row(S::kNoController, E::kOperatorStop, S::kStopped),
+    row(S::kNotEnabled, E::kOperatorStop, S::kStopped),
+    row(S::kEnabled, E::kOperatorStop, S::kStopped),
+    settle(S::kStopped, E::kStopCleared, true),
     // Reload, suspend, shutdown: from any driving state.
     row(S::kNoLink, E::kReloadBegin, S::kReloading),
     row(S::kNoController, E::kReloadBegin, S::kReloading),
     row(S::kNotEnabled, E::kReloadBegin, S::kReloading),
     row(S::kEnabled, E::kReloadBegin, S::kReloading),
+    row(S::kStopped, E::kReloadBegin, S::kReloading),
     settle(S::kReloading, E::kReloadDone, true),
     row(S::kNoLink, E::kSuspend, S::kSuspended),
     row(S::kNoController, E::kSuspend, S::kSuspended),
     row(S::kNotEnabled, E::kSuspend, S::kSuspended),
     row(S::kEnabled, E::kSuspend, S::kSuspended),
+    row(S::kStopped, E::kSuspend, S::kSuspended),
     settle(S::kSuspended, E::kResume, true),
     // Stopped behind the loop's back (SIGSTOP) and continued: afresh too.
     settle(S::kNoLink, E::kResume, true),
     settle(S::kNoController, E::kResume, true),
     settle(S::kNotEnabled, E::kResume, true),
     settle(S::kEnabled, E::kResume, true),
+    settle(S::kStopped, E::kResume, true),
     row(S::kNoLink, E::kShutdown, S::kStopping),
     row(S::kNoController, E::kShutdown, S::kStopping),
     row(S::kNotEnabled, E::kShutdown, S::kStopping),
     row(S::kEnabled, E::kShutdown, S::kStopping),
+    row(S::kStopped, E::kShutdown, S::kStopping),
     row(S::kSuspended, E::kShutdown, S::kStopping),
     row(S::kReloading, E::kShutdown, S::kStopping),
 });
@@ -60,6 +74,7 @@ OperatingState::OperatingState(bool link_up) : state_(S::kNoLink), link_up_(link
 std::span<const Transition> OperatingState::table() { return kTable; }
 
 OpState OperatingState::settled() const {
+  if (stop_latched_) return S::kStopped;
   if (!link_up_) return S::kNoLink;
   if (!controller_up_) return S::kNoController;
   return S::kNotEnabled;
@@ -73,6 +88,8 @@ Effect OperatingState::on(OpEvent event) {
     case E::kLinkTaken: link_up_ = false; break;
     case E::kControllerUp: controller_up_ = true; break;
     case E::kControllerDown: controller_up_ = false; break;
+    case E::kOperatorStop: stop_latched_ = stop_latched_ || state_ != S::kStopping; break;
+    case E::kStopCleared: stop_latched_ = false; break;
     default: break;
   }
   for (const auto& t : kTable) {
@@ -91,6 +108,7 @@ std::string_view to_string(OpState state) {
     case S::kNoController: return "no controller";
     case S::kNotEnabled: return "not enabled";
     case S::kEnabled: return "enabled";
+    case S::kStopped: return "stopped";
     case S::kSuspended: return "suspended";
     case S::kReloading: return "reloading";
     case S::kStopping: return "stopping";
@@ -107,6 +125,10 @@ std::string_view to_string(OpEvent event) {
     case E::kControllerDown: return "controller down";
     case E::kFreshPress: return "fresh deadman press";
     case E::kRelease: return "deadman released";
+    case E::kPanic: return "deadman squeezed past panic";
+    case E::kEnableTimeout: return "enable timeout";
+    case E::kOperatorStop: return "stop button";
+    case E::kStopCleared: return "stop cleared";
     case E::kReloadBegin: return "reload";
     case E::kReloadDone: return "reload done";
     case E::kSuspend: return "suspend";

@@ -58,6 +58,10 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
   }
+  if (after.state == run::OpState::kStopped && before.state != run::OpState::kStopped) {
+    spdlog::warn("STOP: stopped by the operator (a stop button): neutral frames until the stop button and the deadman "
+                 "are released and the deadman is pressed afresh");
+  }
   if (before.weapons_mode != after.weapons_mode) {
     const auto layer = after.layer.empty() ? "base" : after.layer;
     if (after.weapons_mode) spdlog::warn("WEAPONS LAYER on ({}): an armed fire input fires", layer);
@@ -90,6 +94,7 @@ std::string state_text(const run::TickReport& r) {
       if (r.engine.enable == mapping::EnableState::kEnabled) return "driving was interrupted: release and press the deadman again";
       return std::string(describe(r.engine.enable));
     case OpState::kEnabled: return enable_text(r.engine);
+    case OpState::kStopped: return std::string(kStoppedText);
     case OpState::kSuspended: return "neutral frames sent, link closed until resumed";
     case OpState::kReloading: return "neutral frames while the settings are read";
     case OpState::kStopping: return "sending neutral frames";

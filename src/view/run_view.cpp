@@ -14,6 +14,7 @@ using detail::fmt;
 
 constexpr std::string_view kWeapons = "WEAPONS ENABLED: weapon signals may be sent";
 constexpr std::string_view kWeaponsLayer = "WEAPONS LAYER";
+constexpr std::string_view kStopBanner = "STOP";
 constexpr int kMinLogRows = 3;  ///< the full switch list only when it leaves the log this many rows
 
 /// "; at rest first: lefty" from the enabled text "enabled; at rest first: lefty".
@@ -34,6 +35,12 @@ std::vector<std::string> wrap(const std::string& text, std::size_t room) {
     start = end + 1;
   }
   return out;
+}
+
+/// text centred in width.
+std::string centred(const std::string& text, std::size_t width) {
+  const auto pad = width > text.size() ? width - text.size() : 0;
+  return std::string(pad / 2, ' ') + text + std::string(pad - pad / 2, ' ');
 }
 
 /// The state, whole: why the robot is not enabled is what the operator must
@@ -107,9 +114,11 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
     // In a weapons mode the top line says so too: it is the one line every terminal shows.
     const std::string banner =
         s.weapons_mode ? std::string(kWeaponsLayer) + ": an armed fire input fires" : std::string(kWeapons);
-    const auto pad = width > banner.size() ? width - banner.size() : 0;
-    screen.pin(Line(std::string(pad / 2, ' ') + banner + std::string(pad - pad / 2, ' '), Style::kBanner));
+    screen.pin(Line(centred(banner, width), Style::kBanner));
   }
+  // Stopped by the operator: a red line across the top, above all else.
+  const bool stopped = s.state == run::OpState::kStopped;
+  if (stopped) screen.pin(Line(centred(std::string(kStopBanner) + ": stopped by the operator", width), Style::kBanner));
   screen.pin(Line("andros-bridge run", Style::kBold)
                  .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
                  .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
@@ -125,7 +134,7 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   const auto& frame = decoded ? *s.vehicle->last : s.sent;
   auto gauges = gauge_lines(frame, s.center);
   auto switches = switch_lines(frame, width, false);
-  const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4);
+  const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4) + (stopped ? 1 : 0);
   const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 1) - kMinLogRows;
   if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true);
   switches.insert(switches.begin(), Line(decoded ? "as the vehicle decodes it:" : "as sent:"));

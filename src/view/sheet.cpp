@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -167,6 +168,18 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
                   (m.deadman ? " (" + label(m.deadman->key) + ")" : std::string()) + " is held and the arming input (" +
                   list + ") is held.");
   }
+  if (m.estop) {
+    out.push_back("STOP: a press of " + label(m.estop->key) + " stops the vehicle and stays stopped until " +
+                  label(m.estop->key) + " and the deadman are released; then press the deadman afresh.");
+  }
+  if (m.enable_timeout_ms) {
+    char timeout[160];
+    std::snprintf(timeout, sizeof timeout,
+                  "Enable timeout: after %g s enabled with no input change the vehicle stops; release and press the "
+                  "deadman to go on.",
+                  static_cast<double>(*m.enable_timeout_ms) / 1000.0);
+    out.emplace_back(timeout);
+  }
   out.push_back("Releasing the deadman switches toggles and toggled layers off. After the deadman press or a layer "
                 "change, an input with a new meaning acts only once seen at rest.");
   return out;
@@ -174,9 +187,15 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
 
 void add_layer_keys(const mapping::Mapping& m, int panel, PanelBuilder& out) {
   if (m.deadman) {
-    out.add(m.deadman->key, SheetMark::kDeadman, "hold to enable motion",
-            m.deadman->key.is_button() ? "" : "past half way");
+    std::string detail = m.deadman->key.is_button() ? "" : "past half way";
+    if (m.deadman_panic) {
+      char panic[64];
+      std::snprintf(panic, sizeof panic, "; off past %.0f%% until fully released", *m.deadman_panic * 100.0);
+      detail += panic;
+    }
+    out.add(m.deadman->key, SheetMark::kDeadman, "hold to enable motion", detail);
   }
+  if (m.estop) out.add(m.estop->key, SheetMark::kStop, "stop (latched)");
   for (std::size_t i = 0; i < m.layers.size(); ++i) {
     const auto& layer = m.layers[i];
     const bool own = static_cast<int>(i) == panel;
@@ -201,6 +220,7 @@ std::string_view mark_name(SheetMark mark) {
   switch (mark) {
     case SheetMark::kPlain: return "";
     case SheetMark::kDeadman: return "DEADMAN";
+    case SheetMark::kStop: return "STOP";
     case SheetMark::kLayerKey: return "LAYER";
     case SheetMark::kArming: return "ARMING";
     case SheetMark::kWeapon: return "WEAPON";
@@ -216,6 +236,7 @@ Sheet build_sheet(const mapping::Mapping& m) {
   sheet.robot = m.robot.value_or("");
   sheet.file = std::filesystem::path(m.file).filename().string();
   sheet.deadman = m.deadman ? label(m.deadman->key) : "";
+  sheet.stop = m.estop ? label(m.estop->key) : "";
   for (int layer = -1; layer < static_cast<int>(m.layers.size()); ++layer) {
     PanelBuilder builder;
     add_layer_keys(m, layer, builder);

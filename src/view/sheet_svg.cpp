@@ -34,6 +34,7 @@ constexpr double kCharWidth = 0.56;     // of the font size: a little above the 
 std::string_view mark_colour(SheetMark mark) {
   switch (mark) {
     case SheetMark::kDeadman: return "#c62828";
+    case SheetMark::kStop: return "#d50000";
     case SheetMark::kLayerKey: return "#1565c0";
     case SheetMark::kArming: return "#e65100";
     case SheetMark::kWeapon: return "#b71c1c";
@@ -166,7 +167,7 @@ std::vector<Placement> place(const Sheet& sheet, double room, double& scale) {
 /// The marks in their colours, how to read grey labels and thresholds.
 std::string legend(double y) {
   std::string out = "<text x=\"0\" y=\"" + num(y) + "\" font-size=\"" + num(kNoteSize) + "\">";
-  for (const auto mark : {SheetMark::kDeadman, SheetMark::kLayerKey, SheetMark::kArming, SheetMark::kWeapon,
+  for (const auto mark : {SheetMark::kDeadman, SheetMark::kStop, SheetMark::kLayerKey, SheetMark::kArming, SheetMark::kWeapon,
                           SheetMark::kToggle, SheetMark::kKnob, SheetMark::kSelector}) {
     out += "<tspan font-weight=\"bold\" fill=\"" + std::string(mark_colour(mark)) + "\">" + std::string(mark_name(mark)) +
            "</tspan>   ";
@@ -198,8 +199,14 @@ std::string render_sheet_svg(const Sheet& sheet) {
          "fill=\"#555555\">" + xml_escape(sheet.file) + ", made by andros-bridge sheet</text>\n";
   if (!sheet.deadman.empty()) {
     out += "<text x=\"0\" y=\"11.5\" font-size=\"3\">Hold <tspan font-weight=\"bold\" fill=\"#c62828\">" +
-           xml_escape(sheet.deadman) + "</tspan> (the deadman) to move anything; after connecting, press it afresh. "
-           "Releasing it stops everything.</text>\n";
+           xml_escape(sheet.deadman) +
+           (sheet.stop.empty()
+                ? std::string("</tspan> (the deadman) to move anything; after connecting, press it afresh. "
+                              "Releasing it stops everything.")
+                : "</tspan> (the deadman) to move anything; press it afresh after connecting. "
+                  "<tspan font-weight=\"bold\" fill=\"#d50000\">" + xml_escape(sheet.stop) +
+                      "</tspan> = STOP (latched: see the notes).") +
+           "</text>\n";
   }
   const double x = (kPageWidth - kPageWidth * scale) / 2;
   for (std::size_t i = 0; i < sheet.panels.size(); ++i) {

@@ -17,11 +17,12 @@ namespace {
 using S = OpState;
 using E = OpEvent;
 
-constexpr std::array kStates = {S::kNoLink,    S::kNoController, S::kNotEnabled, S::kEnabled,
-                                S::kSuspended, S::kReloading,    S::kStopping};
-constexpr std::array kEvents = {E::kLinkUp,       E::kLinkDown,    E::kLinkTaken, E::kControllerUp,
-                                E::kControllerDown, E::kFreshPress, E::kRelease,   E::kReloadBegin,
-                                E::kReloadDone,   E::kSuspend,     E::kResume,    E::kShutdown};
+constexpr std::array kStates = {S::kNoLink,  S::kNoController, S::kNotEnabled, S::kEnabled,
+                                S::kStopped, S::kSuspended,    S::kReloading,  S::kStopping};
+constexpr std::array kEvents = {E::kLinkUp,       E::kLinkDown,       E::kLinkTaken,   E::kControllerUp,
+                                E::kControllerDown, E::kFreshPress,   E::kRelease,     E::kPanic,
+                                E::kEnableTimeout, E::kOperatorStop,  E::kStopCleared, E::kReloadBegin,
+                                E::kReloadDone,   E::kSuspend,        E::kResume,      E::kShutdown};
 
 /// The conditions a machine can be in while in `state`: link up or not, controller up or not.
 struct Start {
@@ -40,6 +41,7 @@ OperatingState reach(const Start& start) {
     case S::kNoController:
     case S::kNotEnabled: break;
     case S::kEnabled: m.on(E::kFreshPress); break;
+    case S::kStopped: m.on(E::kOperatorStop); break;
     case S::kSuspended: m.on(E::kSuspend); break;
     case S::kReloading: m.on(E::kReloadBegin); break;
     case S::kStopping: m.on(E::kShutdown); break;
@@ -52,7 +54,7 @@ std::vector<Start> starts() {
   std::vector<Start> out = {{S::kNoLink, false, false},     {S::kNoLink, false, true},
                             {S::kNoController, true, false}, {S::kNotEnabled, true, true},
                             {S::kEnabled, true, true}};
-  for (const auto s : {S::kSuspended, S::kReloading, S::kStopping}) {
+  for (const auto s : {S::kStopped, S::kSuspended, S::kReloading, S::kStopping}) {
     for (const bool link : {false, true}) {
       for (const bool pad : {false, true}) {
         // Enabled first where it can be, so that the stop, suspend or reload interrupts driving.
@@ -91,7 +93,9 @@ TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
       const bool pad = row.event == E::kControllerUp     ? true
                        : row.event == E::kControllerDown ? false
                                                          : start.controller;
-      const S want = row.settle ? settled(link, pad) : row.to;
+      // A stop latched before the row (or by it) still holds after it, unless the row clears it.
+      const bool latched = (start.state == S::kStopped || row.event == E::kOperatorStop) && row.event != E::kStopCleared;
+      const S want = row.settle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
       EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.changed, want != row.from);
@@ -144,8 +148,9 @@ TEST(OperatingState, TheOnlyWayIntoEnabledIsAFreshPressInNotEnabled) {
 
 TEST(OperatingState, WhateverInterruptsDrivingEndsEnabledAndComesBackThroughARebase) {
   // Each of these, from enabled, leaves a state that is not enabled.
-  for (const auto event : {E::kLinkDown, E::kLinkTaken, E::kControllerDown, E::kRelease, E::kReloadBegin,
-                           E::kSuspend, E::kResume, E::kShutdown}) {
+  for (const auto event : {E::kLinkDown, E::kLinkTaken, E::kControllerDown, E::kRelease, E::kPanic,
+                           E::kEnableTimeout, E::kOperatorStop, E::kReloadBegin, E::kSuspend, E::kResume,
+                           E::kShutdown}) {
     auto m = reach({S::kEnabled, true, true});
     m.on(event);
     EXPECT_FALSE(m.motion_allowed()) << to_string(event);
@@ -157,6 +162,45 @@ TEST(OperatingState, WhateverInterruptsDrivingEndsEnabledAndComesBackThroughAReb
     if (!row.settle) continue;
     EXPECT_EQ(row.rebase, row.event != E::kControllerUp) << to_string(row.from) << " + " << to_string(row.event);
   }
+}
+
+TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
+  // From every driving state, a stop button lands in stopped, and no sequence
+  // of two further events but the clearing and a shutdown leaves it for a
+  // state that may send anything: a suspend or a reload comes back to it.
+  for (const auto& start : starts()) {
+    if (start.state == S::kStopping) continue;
+    for (const auto first : kEvents) {
+      for (const auto second : kEvents) {
+        if (first == E::kStopCleared || second == E::kStopCleared) continue;
+        if (first == E::kShutdown || second == E::kShutdown) continue;
+        auto m = reach(start);
+        m.on(E::kOperatorStop);
+        EXPECT_TRUE(m.stop_latched());
+        m.on(first);
+        m.on(second);
+        EXPECT_FALSE(m.motion_allowed()) << to_string(start.state) << ": " << to_string(first) << ", " << to_string(second);
+        EXPECT_TRUE(m.stop_latched());
+        const S s = m.state();
+        EXPECT_TRUE(s == S::kStopped || s == S::kSuspended || s == S::kReloading) << to_string(s);
+      }
+    }
+  }
+  // Suspended or reloading when the stop came: it is there when they end.
+  for (const auto& [begin, end] : {std::pair{E::kSuspend, E::kResume}, std::pair{E::kReloadBegin, E::kReloadDone}}) {
+    auto m = reach({S::kEnabled, true, true});
+    m.on(begin);
+    m.on(E::kOperatorStop);
+    m.on(end);
+    EXPECT_EQ(m.state(), S::kStopped) << to_string(begin);
+  }
+  // Cleared: not enabled, rebased; a fresh press is still needed.
+  auto m = reach({S::kEnabled, true, true});
+  m.on(E::kOperatorStop);
+  const Effect cleared = m.on(E::kStopCleared);
+  EXPECT_EQ(m.state(), S::kNotEnabled);
+  EXPECT_TRUE(cleared.rebase);
+  EXPECT_FALSE(m.stop_latched());
 }
 
 TEST(OperatingState, StoppingIsTheEnd) {

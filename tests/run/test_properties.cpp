@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -67,28 +68,49 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
 }
 
 // Contract section 5's `enabled`, read straight off the events: connected,
-// deadman down, and pressed (0 -> 1) after the connect, not at its instant.
+// deadman down, and pressed (0 -> 1) after the connect, not at its instant;
+// and not stopped by the operator: the stop button (docs/mapping.md, "Stop")
+// pressed or held latches at a frame, which clears at a later frame once the
+// pad is there with the stop button and the deadman up, and a press from then
+// on is fresh.
 class EnabledOracle {
  public:
-  explicit EnabledOracle(input::InputKey deadman) : deadman_(deadman) {}
+  EnabledOracle(input::InputKey deadman, std::optional<input::InputKey> estop) : deadman_(deadman), estop_(estop) {}
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     if (e.type == T::kConnect) {
       connected_ = true;
       connect_t_ = e.t_ms;
-      down_ = fresh_ = false;
+      // A new session: a stop tapped in the old one since the last frame went with it (docs/mapping.md, "Stop").
+      down_ = fresh_ = stop_down_ = stop_pressed_ = false;
     } else if (e.type == T::kDisconnect) {
-      connected_ = down_ = fresh_ = false;
+      connected_ = down_ = fresh_ = stop_down_ = false;
     } else if (connected_ && e.type == T::kButton && e.key == deadman_) {
       if (e.value == 1 && !down_ && e.t_ms != connect_t_) fresh_ = true;
       down_ = e.value == 1;
+    } else if (connected_ && e.type == T::kButton && e.key == estop_) {
+      if (e.value == 1 && !stop_down_ && e.t_ms != connect_t_) stop_pressed_ = true;
+      stop_down_ = e.value == 1;
     }
   }
-  [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_; }
+  /// At each frame, after its events.
+  void frame() {
+    if (connected_ && (stop_pressed_ || stop_down_) && !stopped_) {
+      stopped_ = true;
+    } else if (stopped_ && connected_ && !stop_down_ && !down_) {
+      stopped_ = false;
+      fresh_ = false;
+    }
+    stop_pressed_ = false;
+  }
+  [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_ && !stopped_; }
+  [[nodiscard]] bool stopped() const { return stopped_; }
 
  private:
   input::InputKey deadman_;
+  std::optional<input::InputKey> estop_;
   bool connected_ = false, down_ = false, fresh_ = false;
+  bool stop_down_ = false, stop_pressed_ = false, stopped_ = false;
   std::int64_t connect_t_ = -1;
 };
 
@@ -137,6 +159,8 @@ class CentreOracle {
 
 using Coverage = std::array<int, protocol::kSignalCount>;
 
+int stops = 0;  ///< frames in "stopped by the operator", over all scripts
+
 void check_script(const mapping::ValidMapping& valid, const std::vector<input::InputEvent>& script, bool weapons,
                   Coverage& coverage) {
   const mapping::Mapping& mapping = *valid;
@@ -145,7 +169,8 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
   TextReader in(text, "random.events", kEventScriptLimits);
   input::ScriptPlayer player(in);
   mapping::Engine engine(valid, mapping::EngineOptions{weapons, 0x5A});
-  EnabledOracle oracle(mapping.deadman->key);
+  EnabledOracle oracle(mapping.deadman->key,
+                       mapping.estop ? std::optional<input::InputKey>(mapping.estop->key) : std::nullopt);
   CentreOracle centre(mapping);
   std::size_t next_event = 0;
   protocol::ControlState previous = protocol::read_signals(engine.neutral());
@@ -157,12 +182,14 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       oracle.apply(script[next_event]);
       centre.apply(script[next_event]);
     }
+    oracle.frame();
     const auto s = protocol::read_signals(data);
     const bool enabled = oracle.enabled();
     const auto where = [&] { return "t=" + std::to_string(t) + " in\n" + text; };
     ASSERT_TRUE(protocol::validation_errors(data).empty()) << where();
     ASSERT_EQ(data[protocol::kCodeByte], 0x5A);
-    ASSERT_EQ(last.engine.enable == mapping::EnableState::kEnabled, enabled) << where();
+    ASSERT_EQ(last.enabled(), enabled) << where();
+    ASSERT_EQ(last.state == OpState::kStopped, oracle.stopped()) << where();
     ASSERT_EQ(s[protocol::signal_id("safety")], enabled ? 1 : 0) << where();
     for (const auto id : {protocol::signal_id("drive"), protocol::signal_id("pivot")}) {
       if (centre.must_centre(id, last.engine.layer, enabled)) {
@@ -172,6 +199,7 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       }
     }
     centre.end_frame(enabled);
+    stops += oracle.stopped() ? 1 : 0;
     for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
       const auto id = static_cast<protocol::SignalId>(i);
       const auto& sig = protocol::kSignals[i];
@@ -219,6 +247,7 @@ TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
        {"drive_brake", "drive", "pivot", "front_art_up", "pt_left", "shoulder_cw", "focus_up", "weapon_1", "laser"}) {
     EXPECT_GT(coverage[*protocol::find_signal(name)], 0) << name << " never sent";
   }
+  EXPECT_GT(stops, 0) << "no script pressed the stop button";
 }
 
 }  // namespace

@@ -40,6 +40,15 @@ class Engine {
   /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off.
   void restart(const input::InputState& now);
 
+  /// Whether a stop button was pressed since the last step or is held, without
+  /// taking the press (for the ticks on which the loop does not step: a
+  /// reload's, a suspend's neutral frames; and before a restart, which makes
+  /// every press history).
+  [[nodiscard]] bool stop_asked(const input::InputState& input) const;
+  /// Stopped by the operator, the hands have let go: a controller there, no
+  /// stop button and not the deadman held (the latch may clear).
+  [[nodiscard]] bool stop_let_go(const input::InputState& input) const;
+
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
   /// 128 (never the mapping's `center:` trim).
@@ -56,6 +65,12 @@ class Engine {
   [[nodiscard]] std::uint32_t new_presses(const input::InputState& input, input::InputKey key) const;
   [[nodiscard]] bool deadman_held(const input::InputState& input) const;
   [[nodiscard]] EnableState enable_state(const input::InputState& input);
+  /// The panic position of a trigger deadman: true while it is latched off.
+  [[nodiscard]] bool panic(const input::InputState& input);
+  /// Notes whether any input the mapping reads changed since the last change (the enable timeout).
+  void note_activity(const input::InputState& input, std::int64_t now_ms);
+  /// The enable timeout has run out: not enabled until the deadman is released and pressed again.
+  void time_out(const input::InputState& input);
   void update_layer(const input::InputState& input, bool enabled);
   void apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
              std::bitset<protocol::kSignalCount>& armed);
@@ -73,6 +88,7 @@ class Engine {
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<input::InputKey> buttons_;                   ///< every button the mapping reads
+  std::vector<input::InputKey> axes_;                      ///< every axis the mapping reads
   std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
   // State carried from tick to tick.
   bool started_ = false;
@@ -80,6 +96,13 @@ class Engine {
   std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
   std::uint32_t deadman_base_ = 0;       ///< deadman presses that are not fresh
   bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
+  bool panic_latched_ = false;           ///< squeezed past the panic point, not yet fully released
+  bool timed_out_ = false;               ///< the enable timeout ran out, the deadman not yet released
+  bool was_enabled_ = false;             ///< at the last step
+  std::uint32_t estop_seen_ = 0;         ///< stop-button presses already acted on
+  std::int64_t last_activity_ms_ = 0;    ///< the last step that saw an input change
+  std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that step
+  std::map<input::InputKey, std::int16_t> activity_axes_;
   int layer_ = -1;                       ///< active layer, -1 = base
   int toggled_layer_ = -1;               ///< layer switched on by a toggle button
   std::bitset<protocol::kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it

@@ -17,6 +17,8 @@ enum class EnableState : std::uint8_t {
   kNoController,     ///< no controller connected
   kDeadmanReleased,  ///< the deadman is not held
   kDeadmanNotFresh,  ///< held since connect or start-up: release and press again
+  kPanic,            ///< the trigger deadman squeezed past `deadman_panic`: off until fully released
+  kTimedOut,         ///< `enable_timeout` passed with no input change: release and press again
 };
 
 std::string_view describe(EnableState state);
@@ -28,6 +30,9 @@ struct EngineStatus {
   /// Enabled, weapons enabled for the run, and the active layer has weapon
   /// bindings: an armed fire input fires (what the banner and the pad announce).
   bool weapons_mode = false;
+  /// A stop button (the mapping's `estop`) was pressed since the last step or
+  /// is held: the run loop latches "stopped by the operator".
+  bool stop_pressed = false;
 };
 
 }  // namespace andros::mapping

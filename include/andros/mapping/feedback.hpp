@@ -14,8 +14,10 @@ namespace andros::mapping {
 /// What the operator is told through the controller, most important first:
 /// when several happen in one tick, the first with a pattern plays.
 enum class FeedbackEvent : std::uint8_t {
+  kStopped,         ///< stopped by the operator (a stop button)
   kDeadmanRefused,  ///< the deadman is held but not fresh (held at connect or start-up, or stuck)
   kLinkLost,        ///< the link to the vehicle went down
+  kTimedOut,        ///< the enable timeout ended "enabled"
   kDisabled,        ///< was enabled, no longer is (controller still connected)
   kWeaponsOn,       ///< a weapons mode began (EngineStatus::weapons_mode)
   kWeaponsOff,      ///< a weapons mode ended, the bridge still enabled
@@ -23,7 +25,7 @@ enum class FeedbackEvent : std::uint8_t {
   kControllerBack,  ///< the controller connected (at start-up or again)
 };
 
-inline constexpr std::size_t kFeedbackEventCount = 7;
+inline constexpr std::size_t kFeedbackEventCount = 9;
 
 /// The event's key in a mapping's `feedback:` section ("deadman_refused", ...).
 std::string_view feedback_event_name(FeedbackEvent event);

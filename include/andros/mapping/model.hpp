@@ -31,6 +31,14 @@ inline constexpr std::uint8_t kDefaultByte12 = 0x00;
 inline constexpr std::uint8_t kDefaultBattery = 0xCC;
 inline constexpr double kDefaultThreshold = 0.5;
 inline constexpr int kMaxKnobRate = 25500;  ///< units per second: 0 to 255 in 10 ms
+/// `deadman_panic:` lies above the trigger deadman's press point and below
+/// full travel (docs/mapping.md, "Three-position trigger").
+inline constexpr double kDeadmanPanicMin = kDefaultThreshold;
+/// After a panic the trigger counts as fully released below this travel.
+inline constexpr double kDeadmanFullyReleased = 0.1;
+/// `enable_timeout:` in seconds: at least one frame period, at most an hour.
+inline constexpr double kEnableTimeoutMinS = 1.0;
+inline constexpr double kEnableTimeoutMaxS = 3600.0;
 
 /// How a stick or trigger value becomes a number in [-1, 1] (docs/mapping.md).
 struct AxisShape {
@@ -138,6 +146,17 @@ struct Mapping {
   std::uint8_t byte12 = kDefaultByte12;
   std::uint8_t battery = kDefaultBattery;
   std::optional<InputUse> deadman;
+  /// The operator's latching stop button (`estop:`): its press stops the
+  /// vehicle until it and the deadman are released and the deadman is pressed
+  /// afresh. Bound to nothing else in any layer.
+  std::optional<InputUse> estop;
+  /// A trigger deadman squeezed to this fraction or past it is off, and stays
+  /// off until fully released (`deadman_panic:`); none: no panic position.
+  std::optional<double> deadman_panic;
+  SourcePos deadman_panic_pos;
+  /// Enabled with no change of any input the mapping reads for this long ends
+  /// "enabled" (`enable_timeout:`, in ms here); none: no timeout.
+  std::optional<std::int64_t> enable_timeout_ms;
   BrakeMode brake = BrakeMode::kEnabled;
   FeedbackTable feedback = default_feedback();  ///< rumble and light per event
   std::vector<Binding> bindings;  ///< the base layer

@@ -43,6 +43,12 @@ class FrameSource {
   /// Starts afresh from the input as it is now: every press it has counted
   /// is history, and the deadman needs a fresh press after it.
   virtual void restart(const input::InputState& now) = 0;
+  /// A stop button pressed since the last step or held, the press not taken
+  /// (read on the ticks that do not step: a reload's, a suspend's frames).
+  [[nodiscard]] virtual bool stop_asked(const input::InputState& /*input*/) const { return false; }
+  /// Stopped by the operator: the hands have let go (a controller there, no
+  /// stop button and not the deadman held), so the stop may clear.
+  [[nodiscard]] virtual bool stop_let_go(const input::InputState& /*input*/) const { return true; }
 };
 
 /// What one tick did, for the status view and the log. Values only, copied by
@@ -149,6 +155,8 @@ class Bridge {
   /// The resume through the machine, then a reload asked for while suspended.
   void resumed(const RunControl& control);
   void begin_reload(const RunControl& control, const std::string& mapping);
+  /// After the engine's step: a stop button, the panic, the timeout, the deadman through the machine.
+  void answer_engine();
   /// Sends the frame, answers what the link did, reports.
   link::SendResult send(const protocol::DataBytes& data, const Observer& observe);
   /// A stop's, suspend's or reload's neutral frames: counted from start_sequence().
@@ -184,7 +192,7 @@ class Bridge {
   bool suspend_frames_due_ = false;   ///< suspended, its neutral frames not sent yet
   bool suspend_pending_ = false;      ///< asked for during a reload
   bool resume_pending_ = false;
-  std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)       ///< a script's resume seen before its suspend's frames went
+  std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)
   bool input_failed_ = false;         ///< the input threw: the stop's frames go without it
 };
 

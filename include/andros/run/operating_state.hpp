@@ -6,8 +6,11 @@
 /// link lost, regained or taken, the controller lost, a reload, a suspend or
 /// a resume) lands in a state that is not kEnabled, and the way back from
 /// each passes through kNotEnabled with the engine rebased, so that a press
-/// made before it is history. What the screen, the log, the pad's light and
-/// the service status say is read from this state.
+/// made before it is history. A stop by the operator (the stop button, the
+/// supervisor's stop) latches: it outlives every other event and ends only
+/// when the stop button and the deadman have been released (kStopCleared),
+/// and then through kNotEnabled too. What the screen, the log, the pad's
+/// light and the service status say is read from this state.
 
 #include <cstdint>
 #include <span>
@@ -20,6 +23,7 @@ enum class OpState : std::uint8_t {
   kNoController,  ///< the link is up, no controller
   kNotEnabled,    ///< needs a fresh deadman press, inputs at rest
   kEnabled,       ///< frames follow the controller
+  kStopped,       ///< stopped by the operator: latched, neutral until kStopCleared
   kSuspended,     ///< job control: neutral frames sent, link closed, waiting to go on
   kReloading,     ///< neutral frames while the settings are read again
   kStopping,      ///< the run ends: neutral frames, drain, close
@@ -33,6 +37,10 @@ enum class OpEvent : std::uint8_t {
   kControllerDown,  ///< the controller was lost
   kFreshPress,      ///< the engine saw a fresh deadman press (it holds back inputs not at rest)
   kRelease,         ///< the engine is no longer enabled (deadman released)
+  kPanic,           ///< the trigger deadman squeezed past `deadman_panic`: off until fully released
+  kEnableTimeout,   ///< enabled with no input change for `enable_timeout`
+  kOperatorStop,    ///< a stop button pressed (`estop`, the supervisor's `stop`): latches
+  kStopCleared,     ///< stopped, and now the stop buttons and the deadman are all released
   kReloadBegin,     ///< SIGHUP, or a script's `reload`
   kReloadDone,      ///< the reload's outcome is in (applied or refused)
   kSuspend,         ///< Ctrl-Z, or a script's `suspend`
@@ -49,8 +57,9 @@ struct Effect {
 };
 
 /// One row of the transition table: in `from`, `event` leads to `to`.
-/// kSettle as a target: the first of kNoLink, kNoController, kNotEnabled
-/// whose condition holds (link down; no controller; otherwise).
+/// settle: the target is the first of kStopped, kNoLink, kNoController,
+/// kNotEnabled whose condition holds (a stop latched; link down; no
+/// controller; otherwise).
 struct Transition {
   OpState from;
   OpEvent event;
@@ -68,9 +77,14 @@ class OperatingState {
   [[nodiscard]] bool motion_allowed() const { return state_ == OpState::kEnabled; }
   [[nodiscard]] bool link_up() const { return link_up_; }
   [[nodiscard]] bool controller_up() const { return controller_up_; }
+  /// A stop by the operator is latched (the state is kStopped, or will be
+  /// once a suspend or reload under way settles).
+  [[nodiscard]] bool stop_latched() const { return stop_latched_; }
 
   /// Applies one event. An event with no row for the current state changes
-  /// nothing but the link and controller conditions it reports.
+  /// nothing but the conditions it reports: the link, the controller, and the
+  /// stop latch (kOperatorStop latches it in every state but kStopping,
+  /// kStopCleared clears it).
   Effect on(OpEvent event);
 
   /// The whole table, for docs and tests.
@@ -82,6 +96,7 @@ class OperatingState {
   OpState state_;
   bool link_up_;
   bool controller_up_ = false;
+  bool stop_latched_ = false;
 };
 
 std::string_view to_string(OpState state);

@@ -17,6 +17,7 @@ namespace andros::view {
 enum class SheetMark : std::uint8_t {
   kPlain,     ///< a momentary switch or an analog axis: no mark
   kDeadman,   ///< the enabling button
+  kStop,      ///< the latching stop button (`estop`)
   kLayerKey,  ///< holds or toggles a layer
   kArming,    ///< held with a weapon button to fire it
   kWeapon,    ///< fires only with --weapons, the deadman and the arming input
@@ -49,6 +50,7 @@ struct Sheet {
   std::string robot;  ///< "HD1", or "" for a base mapping
   std::string file;   ///< the mapping's file name, without its directory
   std::string deadman;  ///< the deadman input as an operator names it ("LB")
+  std::string stop;     ///< the stop button as an operator names it, or "" when none
   bool pad = true;    ///< every input is one the pad drawing shows; else list panels
   std::vector<SheetPanel> panels;
   std::vector<std::string> notes;  ///< selectors' positions, knobs, the weapons rule
