@@ -110,10 +110,11 @@ void Engine::restart(const input::InputState& now) {
   start_session(now, true);
 }
 
-bool Engine::stop_asked(const input::InputState& input) const {
+bool Engine::take_stop(const input::InputState& input) {
   if (!mapping_->estop || !input.connected()) return false;
   const auto b = input.button(mapping_->estop->key);
   const auto seen = input.connection() == connection_ ? estop_seen_ : 0U;
+  if (input.connection() == connection_) estop_seen_ = b.presses;
   return b.down || b.presses > seen;
 }
 
@@ -311,8 +312,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
     start_session(input, false);  // a new controller session: toggles start cleared
   }
   status_.enable = enable_state(input);
-  status_.stop_pressed = stop_asked(input);
-  if (mapping_->estop) estop_seen_ = input.button(mapping_->estop->key).presses;
+  status_.stop_pressed = take_stop(input);
   note_activity(input, now_ms);
   if (status_.enable == EnableState::kEnabled) {
     if (!was_enabled_) last_activity_ms_ = now_ms;  // enabling is the first change

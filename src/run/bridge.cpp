@@ -23,6 +23,7 @@ void Bridge::run(const StopCheck& stop, const Observer& observe) {
 void Bridge::run(const RunControl& control, const Observer& observe) {
   start_ = clock_.now();
   tick_ = 0;
+  latched_tick_ = -1;
   skipped_ = 0;
   input_failed_ = false;
   try {
@@ -60,7 +61,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       break;
     case OpState::kSuspended:
       // A stop pressed now holds when the suspend ends (the latch only: no row here).
-      if (frames_.stop_asked(state_)) apply(OpEvent::kOperatorStop);
+      if (frames_.take_stop(state_)) apply(OpEvent::kOperatorStop);
       if (!suspend_frames_due_) {
         // Suspended by a script: nothing is sent until its resume.
         observe(report(frames_.neutral(), link::SendResult::kDown, false));
@@ -79,12 +80,15 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     case OpState::kStopped:
       // The engine is not stepped: nothing the hands do while stopped acts
       // (a selector, a knob), and nothing held enables. Cleared on a later
-      // tick than the stop, by the hands letting go; then afresh.
-      if (frames_.stop_let_go(state_)) apply(OpEvent::kStopCleared);
+      // tick than the stop, by the hands letting go; a press of a stop
+      // button while stopped is the same stop, and the wait starts again.
+      if (!frames_.take_stop(state_) && latched_tick_ < tick_ && frames_.stop_let_go(state_)) {
+        apply(OpEvent::kStopCleared);
+      }
       send(frames_.neutral(), observe);
       break;
     case OpState::kReloading:
-      if (frames_.stop_asked(state_)) apply(OpEvent::kOperatorStop);  // holds when the reload ends
+      if (frames_.take_stop(state_)) apply(OpEvent::kOperatorStop);  // holds when the reload ends
       if (neutral_frame(observe) && control.finish_reload()) {
         apply(OpEvent::kReloadDone);
         if (std::exchange(suspend_pending_, false)) begin_suspend();
@@ -157,11 +161,13 @@ void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control)
 }
 
 Effect Bridge::apply(OpEvent event) {
+  if (event == OpEvent::kOperatorStop) latched_tick_ = tick_;
   Effect effect = machine_.on(event);
   if (effect.rebase) {
     // A stop button pressed and not yet answered is answered before the
     // rebase makes its press history (a clearing takes the presses made while stopped).
-    if (event != OpEvent::kStopCleared && frames_.stop_asked(state_)) {
+    if (event != OpEvent::kStopCleared && frames_.take_stop(state_)) {
+      latched_tick_ = tick_;
       effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
     }
     frames_.restart(state_);

@@ -15,7 +15,7 @@ class EngineFrames final : public FrameSource {
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
   void restart(const input::InputState& now) override { engine_.restart(now); }
-  [[nodiscard]] bool stop_asked(const input::InputState& input) const override { return engine_.stop_asked(input); }
+  bool take_stop(const input::InputState& input) override { return engine_.take_stop(input); }
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return engine_.stop_let_go(input); }
 
  private:

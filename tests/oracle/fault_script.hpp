@@ -6,7 +6,9 @@
 // layers RB and the stick clicks, LT arming) driving, and around them what
 // goes wrong: the controller lost and back, the link lost, taken and back
 // (often within one frame), Ctrl-Z and fg, reloads of good, bad and missing
-// mapping files, a stop. The deadman is often held through a fault, and
+// mapping files, a stop; and the operator's stop button, squeezes of the
+// trigger (a deadman on some mappings) past half way and all the way, and
+// long pauses with nothing changing. The deadman is often held through a fault, and
 // often released and pressed again after one, and now and then a weapon is
 // fired, so that both what must not move and what may move are reached.
 
@@ -80,9 +82,15 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     }
   };
   const auto rearm = [&] {  // the operator lets go of the deadman and presses it again, stick forward
-    if (held) add(T::kButton, deadman, 0);
-    wait();
-    add(T::kButton, deadman, 1);
+    if (pick.below(3) == 0) {  // a trigger deadman (some mappings): released, squeezed to the middle
+      add(T::kAxis, arm, 0);
+      wait();
+      add(T::kAxis, arm, 20000);
+    } else {
+      if (held) add(T::kButton, deadman, 0);
+      wait();
+      add(T::kButton, deadman, 1);
+    }
     t += pick.below(50);
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
@@ -130,7 +138,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
                                        : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(20)) {
+      switch (pick.below(22)) {
         case 0:
         case 1:
         case 2:
@@ -163,6 +171,13 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           after_stop = static_cast<int>(pick.below(4)) + 1;  // what follows a stop is never answered
           break;
         case 16: fire(); break;
+        case 17:  // the stop button, tapped or held a while
+          add(T::kButton, button("guide"), 1);
+          t += pick.below(2) == 0 ? 0 : pick.below(300);
+          add(T::kButton, button("guide"), 0);
+          break;
+        case 18:
+        case 19: t += 900 + pick.below(1200); break;  // nothing changes for a while (an enable timeout)
         default: rearm(); break;
       }
     }

@@ -5,8 +5,10 @@
 // the operating-state machine: from the script alone it says when the bridge
 // may be enabled (a fresh deadman press, made after the last event that ends
 // "enabled", held since, controller connected, link up, not suspended, not
-// stopping), and when frames may be delivered at all; from the mapping only
-// the deadman and the weapons' arming inputs. It is deliberately more
+// stopping, not stopped by the operator's stop button, not past the panic
+// point of a three-position trigger, not timed out), and when frames may be
+// delivered at all; from the mapping only the deadman, the stop button, the
+// panic point, the enable timeout and the weapons' arming inputs. It is deliberately more
 // permissive than the engine where the engine has further rules (the rest
 // rule, layers, a press and a fault within one frame): it never says "may
 // not move" where the contract lets the bridge move, so a complaint is a
@@ -14,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -34,13 +37,13 @@ namespace andros::test {
 /// the last that is not a deadman release is what the coverage counts motion after.
 enum class Ending : std::uint8_t {
   kStart, kConnect, kDisconnect, kRelease, kLinkDown, kLinkUp, kSuspend, kResume,
-  kReloadSame, kReloadGood, kReloadBad, kStop, kCount
+  kReloadSame, kReloadGood, kReloadBad, kStop, kStopButton, kPanic, kTimeout, kCount
 };
 
 inline const char* to_string(Ending e) {
   constexpr const char* kNames[] = {"start",   "connect", "disconnect",  "deadman release", "link down",
                                     "link up", "suspend", "resume",      "reload (same)",   "reload (good file)",
-                                    "reload (bad file)",  "stop"};
+                                    "reload (bad file)",  "stop",    "stop button", "panic squeeze",   "enable timeout"};
   return kNames[static_cast<std::size_t>(e)];
 }
 
@@ -55,6 +58,9 @@ struct OracleCoverage {
   std::int64_t stops_with_frames = 0;                   ///< stops that owed (and got) 3 neutral frames
   std::int64_t suspend_frames = 0;                      ///< neutral frames of a suspend
   std::int64_t reload_frames = 0;                       ///< neutral frames of a reload
+  std::int64_t stop_latches = 0;                        ///< stops by a stop button
+  std::int64_t panics = 0;                              ///< squeezes past the panic point
+  std::int64_t timeouts = 0;                            ///< enable timeouts that ended motion
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
     frames += o.frames;
@@ -64,6 +70,9 @@ struct OracleCoverage {
     stops_with_frames += o.stops_with_frames;
     suspend_frames += o.suspend_frames;
     reload_frames += o.reload_frames;
+    stop_latches += o.stop_latches;
+    panics += o.panics;
+    timeouts += o.timeouts;
     return *this;
   }
 };
@@ -98,6 +107,7 @@ class SafetyOracle {
     if (t <= last_t_) return "frame times not increasing (previous " + std::to_string(last_t_) + ")";
     if (auto missing = missing_before(t); !missing.empty()) return missing;
     advance_to(t);
+    at_tick(t);
     last_t_ = t;
     const auto s = protocol::read_signals(data);
     if (const auto errors = protocol::validation_errors(data); !errors.empty()) return "invalid frame: " + errors.front();
@@ -182,6 +192,7 @@ class SafetyOracle {
     const std::int64_t first = last_t_ < 0 ? 0 : last_t_ + options_.period_ms;
     for (std::int64_t u = first; u < t && u <= end_tick_; u += options_.period_ms) {
       advance_to(u);
+      at_tick(u);
       if (link_up_ && !suspended_ && !stopped_) {
         return "no frame at t=" + std::to_string(u) + " (the link up, not suspended, not stopping)";
       }
@@ -189,7 +200,69 @@ class SafetyOracle {
     return {};
   }
 
+  // What every tick of the loop reads, once its events are in. The stop
+  // button: a press since the last tick latches (but one made just before a
+  // new controller session: the loop cannot see it); the latch clears at a
+  // later tick with the pad there and the stop button and every deadman up,
+  // where the loop can be in "stopped" (not suspended or reloading) and no
+  // stop button was pressed since the last tick (a press while stopped is the
+  // same stop, and the wait starts again). The panic point and the
+  // timeout end "enabled" at a tick (a squeeze past the point and back between
+  // two ticks is not seen; the timeout runs from the tick of the last change
+  // of any input). The panic's "fully released" is the replay tests' to check:
+  // here a fresh squeeze from below the press point is enough (permissive).
+  void at_tick(std::int64_t t) {
+    if (stop_latched_) {
+      const bool can_clear = t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
+                             !(estop_ && held(*estop_)) &&
+                             std::none_of(common_deadmen_.begin(), common_deadmen_.end(),
+                                          [this](input::InputKey k) { return down(k); });
+      if (can_clear) stop_latched_ = false;
+    } else if (stop_pending_) {
+      stop_latched_ = true;
+      latch_tick_ = t;
+      ++coverage_.stop_latches;
+      end_enabled(Ending::kStopButton);
+    }
+    stop_pending_ = false;
+    if (panic_ && enabled()) {
+      for (const auto k : deadmen_) {
+        const auto it = axes_.find(k);
+        if (!k.is_button() && it != axes_.end() && it->second >= *panic_) {
+          ++coverage_.panics;
+          end_enabled(Ending::kPanic);
+          break;
+        }
+      }
+    }
+    if (timeout_ms_ && enabled() && t - tick_of(last_change_) >= *timeout_ms_) {
+      ++coverage_.timeouts;
+      end_enabled(Ending::kTimeout);
+    }
+  }
+
   void add_possible(const mapping::Mapping& m) {
+    // Permissive over every mapping the script may have loaded: a stop button
+    // only when all have that one, a panic point and a timeout only when all
+    // have one (the most lenient of them).
+    const std::optional<input::InputKey> estop = m.estop ? std::optional(m.estop->key) : std::nullopt;
+    estop_ = first_mapping_ || estop_ == estop ? estop : std::nullopt;
+    const auto lenient = [this](auto& have, auto value) {
+      if (!value || (!first_mapping_ && !have)) have.reset();
+      else have = have && !first_mapping_ ? std::max(*have, *value) : *value;
+    };
+    lenient(timeout_ms_, m.enable_timeout_ms);
+    std::optional<int> panic;
+    if (m.deadman_panic) panic = static_cast<int>(std::ceil(*m.deadman_panic * 32767.0));
+    lenient(panic_, panic);
+    std::set<input::InputKey> mine;
+    if (m.deadman) mine.insert(m.deadman->key);
+    if (first_mapping_) {
+      common_deadmen_ = mine;
+    } else {
+      std::erase_if(common_deadmen_, [&mine](input::InputKey k) { return !mine.contains(k); });
+    }
+    first_mapping_ = false;
     if (m.deadman) deadmen_.insert(m.deadman->key);
     const auto weapons = [this](const std::vector<mapping::Binding>& bindings) {
       for (const auto& b : bindings) {
@@ -228,10 +301,13 @@ class SafetyOracle {
         connect_t_ = e.t_ms;
         buttons_.clear();
         axes_.clear();
+        stop_pending_ = false;  // a stop tapped on the old session since the last tick went with it
+        last_change_ = e.t_ms;
         break;
       case T::kDisconnect:
         end_enabled(Ending::kDisconnect);
         connected_ = false;
+        stop_pending_ = false;  // a stop tapped since the last tick went with the controller
         buttons_.clear();
         axes_.clear();
         break;
@@ -239,25 +315,26 @@ class SafetyOracle {
         if (!connected_) break;  // a lost controller's stale events
         const bool was = buttons_[e.key];
         buttons_[e.key] = e.value != 0;
-        if (!deadmen_.contains(e.key)) break;
+        if (was != (e.value != 0)) last_change_ = e.t_ms;
         // Stamped with the connect's time: the state the pad had when it appeared, not a press.
-        if (e.value != 0 && !was && e.t_ms != connect_t_) {
-          fresh_.insert(e.key);
-          pressed_after_ = last_interruption_;
-        }
-        if (e.value == 0 && was) {
-          fresh_.erase(e.key);
-          last_ending_ = Ending::kRelease;
-        }
+        if (e.key == estop_ && e.value != 0 && !was && e.t_ms != connect_t_) stop_pending_ = true;
+        if (deadmen_.contains(e.key)) deadman_moved(e.key, was, e.value != 0, e.t_ms);
         break;
       }
-      case T::kAxis:
-        if (connected_) axes_[e.key] = e.value;
+      case T::kAxis: {
+        if (!connected_) break;
+        const bool was = down(e.key);
+        if (axes_[e.key] != e.value) last_change_ = e.t_ms;
+        axes_[e.key] = e.value;
+        if (deadmen_.contains(e.key)) deadman_moved(e.key, was, down(e.key), e.t_ms);
         break;
+      }
       case T::kSuspend:
         end_enabled(Ending::kSuspend);
         if (!suspended_) {
           suspended_ = true;
+          // (One asked for during a reload waits for it: its frames' tick is not known here.)
+          suspend_tick_ = reloading(tick_of(e.t_ms)) ? std::nullopt : std::optional(tick_of(e.t_ms));
           owed_ += options_.stop_frames;
         }
         break;
@@ -287,6 +364,12 @@ class SafetyOracle {
           reload_sent_ = 0;
         } else if (suspended_) {
           reload_after_resume_ = true;
+        } else if (suspend_tick_ && tick < *suspend_tick_ + options_.stop_frames * options_.period_ms) {
+          // Resumed, but the suspend's neutral frames still go out: the loop
+          // answers the resume after them, and the reload after the resume.
+          reload_tick_ = *suspend_tick_ + options_.stop_frames * options_.period_ms;
+          reload_sent_ = 0;
+          owed_ += options_.stop_frames;
         } else {
           reload_tick_ = tick;
           reload_sent_ = 0;
@@ -311,13 +394,33 @@ class SafetyOracle {
            t < *reload_tick_ + options_.stop_ticks * options_.period_ms;
   }
 
+  // A deadman pressed or released (button) or moved across its press point (trigger).
+  void deadman_moved(input::InputKey key, bool was, bool now, std::int64_t t) {
+    if (now && !was && t != connect_t_ && !stop_latched_) {
+      fresh_.insert(key);
+      pressed_after_ = last_interruption_;
+    }
+    if (!now && was) {
+      fresh_.erase(key);
+      last_ending_ = Ending::kRelease;
+    }
+  }
+
   [[nodiscard]] bool enabled() const {
-    if (!connected_ || !link_up_ || suspended_ || stopped_) return false;
-    return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return held(k); });
+    if (!connected_ || !link_up_ || suspended_ || stopped_ || stop_latched_) return false;
+    return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return down(k); });
+  }
+
+  // A deadman down as the engine reads it: a button held, a trigger at half its travel (16384 of 32767) or past.
+  [[nodiscard]] bool down(input::InputKey key) const {
+    if (key.is_button()) return held(key);
+    const auto it = axes_.find(key);
+    return it != axes_.end() && it->second >= kTriggerPressed;
   }
 
   [[nodiscard]] std::string not_enabled_reason() const {
     if (stopped_) return "stopping";
+    if (stop_latched_) return "stopped by the stop button";
     if (suspended_) return "suspended";
     if (!link_up_) return "link down";
     if (!connected_) return "no controller";
@@ -375,7 +478,19 @@ class SafetyOracle {
   std::int64_t last_t_ = -1;
 
   std::set<input::InputKey> deadmen_;  ///< every possible mapping's
+  std::set<input::InputKey> common_deadmen_;  ///< the deadmen every possible mapping has (the stop's clearing)
   std::map<protocol::SignalId, std::set<input::InputKey>> arms_;
+
+  static constexpr int kTriggerPressed = 16384;  ///< 0.5 of 32767, as the engine rounds it
+
+  std::optional<input::InputKey> estop_;  ///< the stop button every possible mapping has
+  std::optional<std::int64_t> timeout_ms_;
+  std::optional<int> panic_;              ///< the raw trigger value of the panic point
+  bool first_mapping_ = true;
+  bool stop_pending_ = false;  ///< pressed since the last tick
+  bool stop_latched_ = false;
+  std::int64_t latch_tick_ = 0;
+  std::int64_t last_change_ = 0;  ///< the last event that changed an input
 
   bool connected_ = false;
   std::int64_t connect_t_ = -1;
@@ -388,6 +503,7 @@ class SafetyOracle {
 
   bool link_up_ = true;  ///< replay's sink is there from the start
   bool suspended_ = false;
+  std::optional<std::int64_t> suspend_tick_;  ///< the tick of the last suspend's first neutral frame
   std::optional<std::int64_t> reload_tick_;
   int reload_sent_ = 0;  ///< its neutral frames delivered so far
   bool reload_after_resume_ = false;  ///< a reload asked for while suspended

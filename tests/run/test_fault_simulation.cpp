@@ -60,6 +60,9 @@ class Library : public test::MappingCache {
       shipped_.push_back(file.string());
       targets_.good.push_back(file.string());
     }
+    // Issue 16's safety keys (a three-position trigger deadman, a stop button, an enable timeout).
+    shipped_.push_back(ANDROS_TEST_DATA_DIR "/mappings/safety.yaml");
+    targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/safety.yaml");
     // A layout whose weapons arm with RB, not LT, and one with another rest rule.
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/core.yaml");
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/rest.yaml");
@@ -127,11 +130,14 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
              std::to_string(coverage.motion_after[i]);
   }
   std::printf("fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
-              "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames\n",
+              "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
+              "%lld stop-button latches, %lld panic squeezes, %lld enable timeouts\n",
               static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
               static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
               static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
-              static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames));
+              static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
+              static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.panics),
+              static_cast<long long>(coverage.timeouts));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -144,6 +150,12 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.stops_with_frames, 0);
   EXPECT_GT(coverage.suspend_frames, 0);
   EXPECT_GT(coverage.reload_frames, 0);
+  EXPECT_GT(coverage.stop_latches, 0);
+  EXPECT_GT(coverage.panics, 0);
+  EXPECT_GT(coverage.timeouts, 0);
+  for (const auto after : {Ending::kStopButton, Ending::kPanic, Ending::kTimeout}) {
+    EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
+  }
 }
 
 // Scripts the simulation found (tests/data/simulation/): each broke a rule

@@ -40,11 +40,11 @@ class Engine {
   /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off.
   void restart(const input::InputState& now);
 
-  /// Whether a stop button was pressed since the last step or is held, without
-  /// taking the press (for the ticks on which the loop does not step: a
-  /// reload's, a suspend's neutral frames; and before a restart, which makes
-  /// every press history).
-  [[nodiscard]] bool stop_asked(const input::InputState& input) const;
+  /// Whether a stop button was pressed since the last step (or the last call)
+  /// or is held, taking the press (for the ticks on which the loop does not
+  /// step: stopped, a reload's, a suspend's neutral frames; and before a
+  /// restart, which makes every press history).
+  bool take_stop(const input::InputState& input);
   /// Stopped by the operator, the hands have let go: a controller there, no
   /// stop button and not the deadman held (the latch may clear).
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const;

@@ -43,9 +43,10 @@ class FrameSource {
   /// Starts afresh from the input as it is now: every press it has counted
   /// is history, and the deadman needs a fresh press after it.
   virtual void restart(const input::InputState& now) = 0;
-  /// A stop button pressed since the last step or held, the press not taken
-  /// (read on the ticks that do not step: a reload's, a suspend's frames).
-  [[nodiscard]] virtual bool stop_asked(const input::InputState& /*input*/) const { return false; }
+  /// A stop button pressed since the last step (or the last call) or held;
+  /// the press is taken (for the ticks that do not step: stopped, a reload's
+  /// and a suspend's frames; and before a rebase makes it history).
+  virtual bool take_stop(const input::InputState& /*input*/) { return false; }
   /// Stopped by the operator: the hands have let go (a controller there, no
   /// stop button and not the deadman held), so the stop may clear.
   [[nodiscard]] virtual bool stop_let_go(const input::InputState& /*input*/) const { return true; }
@@ -186,6 +187,7 @@ class Bridge {
   Nanos start_{0};
   std::int64_t tick_ = 0;     ///< the tick to run next
   std::int64_t skipped_ = 0;
+  std::int64_t latched_tick_ = -1;  ///< the tick of the last stop button answered: a stop clears on a later one
   int sequence_sent_ = 0;      ///< neutral frames of the current stop, suspend or reload the link took
   int sequence_ticks_ = 0;     ///< and ticks it has had
   bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames

@@ -22,7 +22,7 @@ class ReloadableFrames final : public FrameSource {
   Step step(const input::InputState& input, std::int64_t now_ms) override { return inner_->step(input, now_ms); }
   [[nodiscard]] protocol::DataBytes neutral() const override { return inner_->neutral(); }
   void restart(const input::InputState& now) override { inner_->restart(now); }
-  [[nodiscard]] bool stop_asked(const input::InputState& input) const override { return inner_->stop_asked(input); }
+  bool take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return inner_->stop_let_go(input); }
 
  private:
