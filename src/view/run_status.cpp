@@ -53,14 +53,11 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
+    else if (after.state == run::OpState::kStopped) spdlog::warn("STOP: stopped by the operator: {}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
-  }
-  if (after.state == run::OpState::kStopped && before.state != run::OpState::kStopped) {
-    spdlog::warn("STOP: stopped by the operator (a stop button): neutral frames until the stop button and the deadman "
-                 "are released and the deadman is pressed afresh");
   }
   if (before.weapons_mode != after.weapons_mode) {
     const auto layer = after.layer.empty() ? "base" : after.layer;

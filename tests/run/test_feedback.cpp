@@ -33,6 +33,26 @@ TEST(FeedbackEvents, EachChangeGivesItsEvent) {
   EXPECT_EQ(feedback_events(kEnabled, link_down(kEnabled)), Events{E::kLinkLost});
 }
 
+TEST(FeedbackEvents, AStopAndATimeoutHaveTheirOwn) {
+  // Stopped by the operator from driving: the stop first, before "disabled".
+  TickReport r;
+  r.connected = true;
+  r.link.state = link::LinkState::kUp;
+  r.link.motion_allowed = true;
+  r.engine.enable = EnableState::kEnabled;
+  r.state = OpState::kStopped;
+  const auto stopped = feedback_status(r);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_EQ(feedback_events(kEnabled, stopped).front(), E::kStopped);
+  EXPECT_TRUE(feedback_events(stopped, stopped).empty());
+  // The timeout: its own event, before "disabled".
+  r.state = OpState::kNotEnabled;
+  r.engine.enable = EnableState::kTimedOut;
+  EXPECT_EQ(feedback_events(kEnabled, feedback_status(r)), (Events{E::kTimedOut, E::kDisabled}));
+  // Their patterns are the stop's red and a light of their own.
+  EXPECT_EQ(mapping::default_feedback_pattern(E::kStopped).led, (std::array<std::uint8_t, 3>{255, 0, 0}));
+}
+
 TEST(FeedbackStatus, EnabledIsTheOperatingStatesNotTheEngines) {
   // The engine saw a fresh press, but nothing reaches the vehicle: the light stays off.
   TickReport r;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "andros/view/run_status.hpp"
 #include "andros/view/status_view.hpp"
 
 namespace andros::view {
@@ -116,6 +117,24 @@ TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   EXPECT_NE(ok.find("\x1b[1;32mENABLED\x1b[0m"), std::string::npos) << ok;
   EXPECT_NE(ok.find("\x1b[1;32mup\x1b[0m"), std::string::npos) << ok;
   EXPECT_NE(ok.find("\x1b[1;97;41m"), std::string::npos) << ok;
+}
+
+TEST(RunView, StoppedByTheOperatorIsARedLineAboveAll) {
+  RunStatus s = driving(false);
+  s.state = run::OpState::kStopped;
+  s.enable_text = std::string(kStoppedText);
+  s.layer.clear();
+  const auto lines = shown(s, {80, 24});
+  EXPECT_EQ(lines[0], "                         STOP: stopped by the operator                          ");
+  EXPECT_TRUE(lines[1].starts_with("andros-bridge run")) << lines[1];
+  EXPECT_EQ(lines[2], "state       STOPPED: release the stop button and the deadman, then press the");
+  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  EXPECT_NE(text.find("\x1b[1;97;41m                         STOP"), std::string::npos) << text;
+  // On a tiny terminal the stop is what stays.
+  EXPECT_NE(shown(s, {30, 2})[0].find("STOP"), std::string::npos);
+  // Not stopped: no such line.
+  s.state = run::OpState::kNotEnabled;
+  EXPECT_EQ(shown(s, {80, 24})[0].find("STOP"), std::string::npos);
 }
 
 TEST(RunView, TheHeadlineIsTheOperatingState) {

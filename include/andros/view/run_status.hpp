@@ -43,7 +43,7 @@ std::string enable_text(const mapping::EngineStatus& status);
 
 /// What "stopped by the operator" asks of the operator (the state line and the banner).
 inline constexpr std::string_view kStoppedText =
-    "stopped by the operator: release the stop button and the deadman, then press the deadman afresh";
+    "release the stop button and the deadman, then press the deadman afresh";
 
 /// The operating state in words for the screen, the log and the service
 /// status: why nothing moves, or (enabled) what the engine still holds back.
