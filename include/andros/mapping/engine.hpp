@@ -37,7 +37,8 @@ class Engine {
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
-  /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off.
+  /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off,
+  /// and the speed level is the mapping's initial one.
   void restart(const input::InputState& now);
 
   /// The neutral frame for the current analog/selector state (shutdown, link
@@ -57,6 +58,9 @@ class Engine {
   [[nodiscard]] bool deadman_held(const input::InputState& input) const;
   [[nodiscard]] EnableState enable_state(const input::InputState& input);
   void update_layer(const input::InputState& input, bool enabled);
+  /// The speed buttons' presses (enabled only); a new level holds drive and pivot's sticks back.
+  void update_speed(const input::InputState& input);
+  void set_speed(std::size_t index);
   void apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
              std::bitset<protocol::kSignalCount>& armed);
   [[nodiscard]] std::size_t slot(BindingRef ref) const;
@@ -84,6 +88,7 @@ class Engine {
   int toggled_layer_ = -1;               ///< layer switched on by a toggle button
   std::bitset<protocol::kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
   RestRule rest_;
+  std::size_t speed_ = 0;                ///< index into the mapping's speed levels
   std::vector<int> selector_;            ///< per binding slot: a selector's position
   std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;

@@ -19,6 +19,7 @@ struct FeedbackStatus {
   bool enabled = false;  ///< the operating state is "enabled": frames follow the controller
   bool link_up = false;  ///< the link is up and frames follow the controller
   bool weapons_mode = false;  ///< EngineStatus::weapons_mode
+  std::size_t speed_level = 0;  ///< EngineStatus::speed's index
 
   bool operator==(const FeedbackStatus&) const = default;
 };
