@@ -144,18 +144,17 @@ void Engine::update_layer(const input::InputState& input, bool enabled) {
 }
 
 void Engine::set_speed(std::size_t index) {
-  speed_ = index;
   status_.speed = {index, mapping_->scale.levels.size(), mapping_->scale.levels[index]};
 }
 
 void Engine::update_speed(const input::InputState& input) {
   const auto& scale = mapping_->scale;
   const auto count = scale.levels.size();
-  auto level = speed_;
+  auto level = status_.speed.index;
   // Up wraps from the fastest to the slowest (a wrap only ever slows); down stops at the slowest.
   if (scale.up) level = (level + new_presses(input, scale.up->key)) % count;
   if (scale.down) level -= std::min<std::size_t>(level, new_presses(input, scale.down->key));
-  if (level == speed_) return;
+  if (level == status_.speed.index) return;
   set_speed(level);
   // A change of level is a change of meaning: a stick off rest waits until seen at rest.
   rest_.rescale(input, layer_);

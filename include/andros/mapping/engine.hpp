@@ -88,7 +88,6 @@ class Engine {
   int toggled_layer_ = -1;               ///< layer switched on by a toggle button
   std::bitset<protocol::kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
   RestRule rest_;
-  std::size_t speed_ = 0;                ///< index into the mapping's speed levels
   std::vector<int> selector_;            ///< per binding slot: a selector's position
   std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;
