@@ -47,6 +47,9 @@ Engine::Engine(ValidMapping mapping, EngineOptions options)
     note_button(layer.input.key);
     note_axis(layer.input.key);
   }
+  if (mapping_->scale.up) note_button(mapping_->scale.up->key);
+  if (mapping_->scale.down) note_button(mapping_->scale.down->key);
+  set_speed(mapping_->scale.initial);
   std::size_t slots = 0;
   slot_base_.push_back(0);
   for (int layer = -1; layer < static_cast<int>(mapping_->layers.size()); ++layer) {
@@ -96,6 +99,9 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
   was_enabled_ = false;
   // A stop pressed in a new session counts from its connect; at start-up the presses so far are history.
   estop_seen_ = at_start_up && mapping_->estop ? input.button(mapping_->estop->key).presses : 0;
+  // A new pad (another operator, perhaps) and a restart begin at the initial
+  // level, never at one chosen before; a deadman release keeps it.
+  set_speed(mapping_->scale.initial);
   if (at_start_up) {
     // Presses made before start-up are history: they neither act nor enable.
     for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
@@ -221,6 +227,23 @@ void Engine::update_layer(const input::InputState& input, bool enabled) {
   status_.layer = layer_ < 0 ? "" : mapping_->layers[static_cast<std::size_t>(layer_)].name;
 }
 
+void Engine::set_speed(std::size_t index) {
+  status_.speed = {index, mapping_->scale.levels.size(), mapping_->scale.levels[index]};
+}
+
+void Engine::update_speed(const input::InputState& input) {
+  const auto& scale = mapping_->scale;
+  const auto count = scale.levels.size();
+  auto level = status_.speed.index;
+  // Up wraps from the fastest to the slowest (a wrap only ever slows); down stops at the slowest.
+  if (scale.up) level = (level + new_presses(input, scale.up->key)) % count;
+  if (scale.down) level -= std::min<std::size_t>(level, new_presses(input, scale.down->key));
+  if (level == status_.speed.index) return;
+  set_speed(level);
+  // A change of level is a change of meaning: a stick off rest waits until seen at rest.
+  rest_.rescale(input, layer_);
+}
+
 protocol::ControlState Engine::resting_state() const {
   protocol::ControlState s;
   s[protocol::signal_id("pivot")] = static_cast<std::uint8_t>(mapping_->center);
@@ -271,7 +294,7 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    if (rest_.held_back(b.axis)) return;  // drive/pivot stay at centre, a level keeps its value
                    const double z = shape_axis(normalise_axis(input.axis(b.axis)), b.shape);
                    if (protocol::info(b.analog).kind == protocol::SignalKind::kCentred) {
-                     out[b.analog] = centred_byte(z, mapping_->center);
+                     out[b.analog] = centred_byte(z * status_.speed.value, mapping_->center);
                    } else {
                      out[b.analog] = level_byte(z);
                      level_milli_[b.analog] = out[b.analog] * kMilli;
@@ -330,6 +353,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   update_layer(input, enabled);
   status_.weapons_mode = enabled && options_.weapons && weapons_layer_[static_cast<std::size_t>(layer_ + 1)];
   rest_.update(input, layer_, enabled, seen_presses_);
+  if (enabled) update_speed(input);
   status_.held_back = rest_.held_back_inputs();
 
   protocol::ControlState state = resting_state();

@@ -13,6 +13,7 @@ std::string_view feedback_event_name(FeedbackEvent event) {
     case FeedbackEvent::kWeaponsOff: return "weapons_off";
     case FeedbackEvent::kEnabled: return "enabled";
     case FeedbackEvent::kControllerBack: return "controller_back";
+    case FeedbackEvent::kSpeedLevel: return "speed_level";
   }
   return "?";
 }
@@ -23,7 +24,8 @@ std::string_view feedback_event_name(FeedbackEvent event) {
 // one down for disabled, two soft taps for "the controller is here"; two long
 // hard pulses and yellow for "weapons live", three quick light taps for
 // "weapons off" (a green of its own: enabled, nothing to fire); two soft
-// pulses and amber for "timed out".
+// pulses and amber for "timed out"; quick firm pulses, one per level (five
+// in 540 ms), and no change of light for a speed level (the light still says enabled).
 input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
   using Rgb = std::array<std::uint8_t, 3>;
   switch (event) {
@@ -36,8 +38,15 @@ input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
     case FeedbackEvent::kWeaponsOff: return {0.0, 1.0, 60, 3, Rgb{0, 255, 160}};
     case FeedbackEvent::kEnabled: return {0.0, 0.7, 200, 1, Rgb{0, 255, 0}};
     case FeedbackEvent::kControllerBack: return {0.3, 0.3, 60, 2, Rgb{0, 0, 255}};
+    case FeedbackEvent::kSpeedLevel: return {0.5, 1.0, 60, 1, std::nullopt};
   }
   return {};
+}
+
+input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern, std::size_t speed_level) {
+  auto out = pattern;
+  if (event == FeedbackEvent::kSpeedLevel) out.pulses = static_cast<int>(speed_level) + 1;
+  return out;
 }
 
 FeedbackTable default_feedback() {

@@ -37,7 +37,8 @@ void read_feedback(const yaml::Reader& r, const YAML::Node& node, FeedbackTable&
     return;
   }
   if (!node.IsMap()) r.fail(node, "feedback is 'off' or a map of events to patterns");
-  r.expect_keys(node, {"deadman_refused", "link_lost", "disabled", "weapons_on", "weapons_off", "enabled", "controller_back"},
+  r.expect_keys(node, {"deadman_refused", "link_lost", "disabled", "weapons_on", "weapons_off", "enabled", "controller_back",
+                      "speed_level"},
                 "feedback");
   for (std::size_t i = 0; i < kFeedbackEventCount; ++i) {
     const auto event = static_cast<FeedbackEvent>(i);
@@ -47,6 +48,9 @@ void read_feedback(const yaml::Reader& r, const YAML::Node& node, FeedbackTable&
     if (is_off(n)) {
       pattern.reset();
       continue;
+    }
+    if (event == FeedbackEvent::kSpeedLevel && n.IsMap() && n["pulses"]) {
+      r.fail(n["pulses"], "speed_level plays one pulse per level (level 3: three pulses); it takes no 'pulses'");
     }
     // Keys left out keep the pattern in force (the base file's, or the built-in one).
     if (!pattern) pattern = default_feedback_pattern(event);

@@ -28,6 +28,43 @@ int read_center(const Reader& r, const YAML::Node& node) {
 
 InputUse use(const Reader& r, const YAML::Node& node, input::InputKey key) { return InputUse{key, r.pos(node)}; }
 
+/// `scale: {button: B, down: B, levels: [...], initial: L}` (docs/mapping.md, `scale`).
+SpeedScale read_scale(const Reader& r, const YAML::Node& n) {
+  r.expect_keys(n, {"button", "down", "levels", "initial"}, "scale");
+  if (!n["levels"]) r.fail(n, "scale needs 'levels': a list of fractions of full speed, such as [0.25, 0.5, 1.0]");
+  SpeedScale s;
+  s.pos = r.pos(n);
+  const auto levels = n["levels"];
+  r.expect_list(levels, "levels");
+  if (levels.size() == 0) r.fail(levels, "levels lists at least one fraction of full speed");
+  if (levels.size() > kMaxSpeedLevels) {
+    r.fail(levels, "at most " + std::to_string(kMaxSpeedLevels) + " levels (a change is counted out in as many rumble pulses)");
+  }
+  s.levels.clear();
+  for (const auto& l : levels) {
+    const double v = r.number(l, 0.0, 1.0, false, "a level");
+    if (v <= 0.0) r.fail(l, "a level is a fraction of full speed above 0, not " + r.text(l, "a level"));
+    if (!s.levels.empty() && v <= s.levels.back()) {
+      r.fail(l, "levels go from the slowest to the fastest: " + r.text(l, "a level") + " is not above the one before it");
+    }
+    s.levels.push_back(v);
+  }
+  if (n["button"]) s.up = use(r, n["button"], r.button(n["button"]));
+  if (n["down"]) {
+    if (!s.up) r.fail(n, "scale has 'down' but no 'button' to step up");
+    s.down = use(r, n["down"], r.button(n["down"]));
+  }
+  if (s.levels.size() > 1 && !s.up) r.fail(n, "scale with more than one level needs 'button': the button that steps through them");
+  if (s.levels.size() == 1 && s.up) r.fail(n["button"], "scale has one level: there is nothing for 'button' to step to");
+  if (const auto i = n["initial"]) {
+    const double v = r.number(i, 0.0, 1.0, false, "initial");
+    const auto it = std::find(s.levels.begin(), s.levels.end(), v);
+    if (it == s.levels.end()) r.fail(i, "initial " + r.text(i, "initial") + " is not one of the levels");
+    s.initial = static_cast<std::size_t>(it - s.levels.begin());
+  }
+  return s;
+}
+
 void read_axis_extras(const Reader& r, const YAML::Node& n, bool& invert, double* threshold) {
   if (n["invert"]) invert = r.boolean(n["invert"], "invert");
   if (threshold != nullptr && n["threshold"]) *threshold = r.number(n["threshold"], 0.0, 1.0, false, "threshold");
@@ -231,7 +268,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
                 {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "brake",
-                 "feedback", "bindings", "layers"},
+                 "scale", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -272,6 +309,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
     else if (mode == "moving") m.brake = BrakeMode::kMoving;
     else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
   }
+  if (const auto s = root["scale"]) m.scale = read_scale(r, s);
   if (root["feedback"]) read_feedback(r, root["feedback"], m.feedback);
   if (root["bindings"]) {
     auto list = read_bindings(r, root["bindings"]);

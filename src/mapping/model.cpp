@@ -174,6 +174,52 @@ void check_toggles(const Mapping& m) {
   }
 }
 
+// Speed levels: fractions in (0, 1], slowest first; their buttons step the
+// level in every layer, so nothing else may read them anywhere.
+void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
+  const auto& s = m.scale;
+  if (s.levels.empty() || s.levels.size() > kMaxSpeedLevels) {
+    throw InputError(s.pos, "scale has 1.." + std::to_string(kMaxSpeedLevels) + " levels");
+  }
+  for (std::size_t i = 0; i < s.levels.size(); ++i) {
+    check_range(s.levels[i] > 0.0 && s.levels[i] <= 1.0, s.pos, "speed level");
+    if (i > 0 && s.levels[i] <= s.levels[i - 1]) throw InputError(s.pos, "speed levels go from the slowest to the fastest");
+  }
+  check_range(s.initial < s.levels.size(), s.pos, "initial speed level");
+  if ((s.levels.size() > 1) != s.up.has_value()) {
+    throw InputError(s.pos, "scale has a 'button' exactly when it has more than one level");
+  }
+  if (s.down && !s.up) throw InputError(s.down->pos, "scale has 'down' but no 'button' to step up");
+  if (s.up && s.down && s.up->key == s.down->key) throw InputError(s.down->pos, "'down' must be a different button from 'button'");
+  for (const auto& key : {s.up, s.down}) {
+    if (!key) continue;
+    const auto name = "'" + input::input_name(key->key) + "'";
+    if (m.estop && m.estop->key == key->key) {
+      throw InputError(key->pos, name + " is the stop button (line " + std::to_string(m.estop->pos.line) +
+                                     "); it cannot also step the speed level");
+    }
+    for (const auto& r : reserved) {
+      if (r.key == key->key) {
+        throw InputError(key->pos, name + " is the deadman or switches a layer (line " + std::to_string(r.pos.line) +
+                                       "); it cannot also step the speed level");
+      }
+    }
+    for (const auto ref : all_bindings(m)) {
+      const auto& b = binding_at(m, ref);
+      for (const auto& u : b.inputs) {
+        if (u.key == key->key) {
+          throw InputError(key->pos, name + " steps the speed level in every layer; it is also bound at line " +
+                                         std::to_string(u.pos.line) + (u.pos.file == key->pos.file ? "" : " of " + u.pos.file));
+        }
+      }
+      if (b.arm && b.arm->key == key->key) {
+        throw InputError(key->pos, name + " steps the speed level in every layer; it also arms a weapon at line " +
+                                       std::to_string(b.arm->pos.line) + (b.arm->pos.file == key->pos.file ? "" : " of " + b.arm->pos.file));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::string center_out_of_band(std::string_view value) {
@@ -334,6 +380,7 @@ ValidMapping validate(Mapping m, bool require_robot) {
   check_toggles(m);
   check_estop(m);
   check_deadman_panic(m);
+  check_scale(m, reserved);
   return ValidMapping(std::move(m));
 }
 

@@ -70,6 +70,12 @@ RestRule::RestRule(const Mapping& mapping) {
         for (const auto& u : b.inputs) arms[b.arm->key].push_back(u.key);
       }
     }
+    // The speed buttons mean the same in every layer (no binding: layer -2).
+    std::size_t n = 0;
+    for (const auto& key : {mapping.scale.up, mapping.scale.down}) {
+      if (key) readers[key->key].push_back(Reader{{-2, n}, Reader::Rest::kReleased, false, 0.0});
+      ++n;
+    }
   }
 }
 
@@ -152,6 +158,14 @@ void RestRule::hold_back_fire_inputs(const input::InputState& input, int layer,
     }
   }
   armed_ = std::move(armed);
+}
+
+void RestRule::rescale(const input::InputState& input, int layer) {
+  for (const auto& [key, readers] : readers_[static_cast<std::size_t>(layer + 1)]) {
+    const bool drives = std::any_of(readers.begin(), readers.end(),
+                                    [](const Reader& r) { return r.rest == Reader::Rest::kInsideDeadzone; });
+    if (drives) hold(input, key, at_rest(input, key, readers));
+  }
 }
 
 void RestRule::hold(const input::InputState& input, input::InputKey key, bool rest) {

@@ -13,7 +13,8 @@ FeedbackStatus feedback_status(const TickReport& report) {
   // A weapons mode only while enabled, too.
   return {report.connected, report.engine.enable, report.enabled(),
           report.link.state == link::LinkState::kUp && report.link.motion_allowed,
-          report.enabled() && report.engine.weapons_mode, report.state == OpState::kStopped};
+          report.enabled() && report.engine.weapons_mode, report.state == OpState::kStopped,
+          report.engine.speed.index};
 }
 
 std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
@@ -34,6 +35,10 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
     events.push_back(FeedbackEvent::kEnabled);
   }
   if (after.connected && !before.connected) events.push_back(FeedbackEvent::kControllerBack);
+  // A press of a speed button, or a restart or a new pad back at the initial level.
+  if (before.connected && after.connected && before.speed_level != after.speed_level) {
+    events.push_back(FeedbackEvent::kSpeedLevel);
+  }
   return events;
 }
 
@@ -42,7 +47,7 @@ std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& sta
   last_ = status;
   const auto it = std::find_if(events.begin(), events.end(), [this](FeedbackEvent e) { return table_[e].has_value(); });
   if (it == events.end()) return std::nullopt;
-  input_.feedback(*table_[*it]);
+  input_.feedback(mapping::feedback_pattern(*it, *table_[*it], status.speed_level));
   return *it;
 }
 

@@ -26,6 +26,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.enable_text = state_text(r);
     next.layer = r.engine.layer;
     next.weapons_mode = next.enabled() && r.engine.weapons_mode;
+    next.speed = r.engine.speed;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
@@ -58,6 +59,9 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (!first_tick_ && before.layer != after.layer) {
     spdlog::info("layer: {}", after.layer.empty() ? "base" : after.layer);
+  }
+  if (shows_speed(after.speed) && (first_tick_ || before.speed != after.speed)) {
+    spdlog::info("speed level {}", speed_text(after.speed));
   }
   if (before.weapons_mode != after.weapons_mode) {
     const auto layer = after.layer.empty() ? "base" : after.layer;

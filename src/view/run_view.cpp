@@ -60,6 +60,12 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
     }
   }
   if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);
+  if (shows_speed(s.speed)) {
+    const auto speed = "speed " + speed_text(s.speed);
+    if (out.back().width() + 3 + speed.size() > width) out.emplace_back(std::string(kLabel.size(), ' '));
+    else out.back().add("   ");
+    out.back().add(speed, Style::kBold);
+  }
   if (s.weapons_mode) out.back().add("   ").add(" " + std::string(kWeaponsLayer) + " ", Style::kBanner);
   return out;
 }

@@ -56,6 +56,13 @@ std::string percent(double fraction) {
   return std::to_string(static_cast<int>(std::lround(fraction * 100))) + "%";
 }
 
+/// A fraction as a percentage to three significant figures: "25%", "12.5%".
+std::string exact_percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g%%", fraction * 100);
+  return buf;
+}
+
 std::string past(double threshold) {
   return threshold == mapping::kDefaultThreshold ? "" : "past " + percent(threshold);
 }
@@ -144,6 +151,35 @@ std::string where(const mapping::Mapping& m, int layer) {
   return layer < 0 ? "" : " (" + m.layers.at(static_cast<std::size_t>(layer)).name + " layer)";
 }
 
+std::string speed_levels(const mapping::SpeedScale& scale) {
+  std::string out;
+  for (const auto level : scale.levels) out += (out.empty() ? "" : " > ") + exact_percent(level);
+  return out;
+}
+
+/// The speed levels, and how they differ from the vehicle's speed range.
+std::string speed_note(const mapping::Mapping& m) {
+  const auto& s = m.scale;
+  std::string out = "Speed levels (drive and pivot), " + label(s.up->key) + " steps up" +
+                    (s.down ? ", " + label(s.down->key) + " down" : std::string(", after the fastest back to the slowest")) +
+                    ": " + speed_levels(s) + " of the stick's travel from rest; starts at " +
+                    exact_percent(s.levels.at(s.initial)) +
+                    ", again after the controller is lost or driving was interrupted; kept while the deadman is "
+                    "released. A stick held when the level changes waits until it is back at rest.";
+  const auto refs = mapping::all_bindings(m);
+  const bool range = std::any_of(refs.begin(), refs.end(), [&](mapping::BindingRef ref) {
+    const auto* sel = std::get_if<mapping::SelectorBinding>(&mapping::binding_at(m, ref).rule);
+    if (sel == nullptr) return false;
+    return std::any_of(sel->positions.begin(), sel->positions.end(), [](const auto& p) {
+      return std::any_of(p.begin(), p.end(), [](protocol::SignalId id) {
+        return id == protocol::signal_id("speed_low") || id == protocol::signal_id("speed_high");
+      });
+    });
+  });
+  if (range) out += " Not the speed_low/speed_high selector: that sets the vehicle's own speed range; the level scales the stick within it.";
+  return out;
+}
+
 std::vector<std::string> notes(const mapping::Mapping& m) {
   std::vector<std::string> out;
   std::set<std::string> arms;
@@ -160,6 +196,10 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
     } else if (const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule); w != nullptr && w->arm) {
       arms.insert(label(*w->arm));
     }
+  }
+  if (m.scale.up) out.push_back(speed_note(m));
+  else if (m.scale.levels.front() != 1.0) {
+    out.push_back("Drive and pivot move " + exact_percent(m.scale.levels.front()) + " of the stick's travel from rest (scale).");
   }
   if (!arms.empty()) {
     std::string list;
@@ -203,6 +243,10 @@ void add_layer_keys(const mapping::Mapping& m, int panel, PanelBuilder& out) {
                                     : (own ? "held: " + layer.name + " layer" : "hold: " + layer.name + " layer");
     out.add(layer.input.key, SheetMark::kLayerKey, what);
   }
+  // The speed buttons step the level in every layer.
+  const auto& scale = m.scale;
+  if (scale.up) out.add(scale.up->key, SheetMark::kSpeed, "speed level up", scale.down ? "" : "then back to the slowest");
+  if (scale.down) out.add(scale.down->key, SheetMark::kSpeed, "speed level down");
 }
 
 bool drawable(const Sheet& sheet) {
@@ -227,6 +271,7 @@ std::string_view mark_name(SheetMark mark) {
     case SheetMark::kToggle: return "TOGGLE";
     case SheetMark::kKnob: return "KNOB";
     case SheetMark::kSelector: return "SELECTOR";
+    case SheetMark::kSpeed: return "SPEED";
   }
   return "";
 }
@@ -253,6 +298,7 @@ Sheet build_sheet(const mapping::Mapping& m) {
   }
   sheet.notes = notes(m);
   sheet.pad = drawable(sheet);
+  sheet.speed = m.scale.up.has_value();
   return sheet;
 }
 

@@ -41,6 +41,7 @@ std::string_view mark_colour(SheetMark mark) {
     case SheetMark::kToggle: return "#6a1b9a";
     case SheetMark::kKnob: return "#00695c";
     case SheetMark::kSelector: return "#2e7d32";
+    case SheetMark::kSpeed: return "#4e342e";
     case SheetMark::kPlain: break;
   }
   return "#222222";
@@ -165,10 +166,10 @@ std::vector<Placement> place(const Sheet& sheet, double room, double& scale) {
 }
 
 /// The marks in their colours, how to read grey labels and thresholds.
-std::string legend(double y) {
+std::string legend(const Sheet& sheet, double y) {
   std::string out = "<text x=\"0\" y=\"" + num(y) + "\" font-size=\"" + num(kNoteSize) + "\">";
-  for (const auto mark : {SheetMark::kDeadman, SheetMark::kStop, SheetMark::kLayerKey, SheetMark::kArming, SheetMark::kWeapon,
-                          SheetMark::kToggle, SheetMark::kKnob, SheetMark::kSelector}) {
+  for (const auto mark : kLegendMarks) {
+    if (mark == SheetMark::kSpeed && !sheet.speed) continue;
     out += "<tspan font-weight=\"bold\" fill=\"" + std::string(mark_colour(mark)) + "\">" + std::string(mark_name(mark)) +
            "</tspan>   ";
   }
@@ -216,7 +217,7 @@ std::string render_sheet_svg(const Sheet& sheet) {
            "</g>\n";
   }
   double y = kPageHeight - footer + kNoteRow;
-  out += legend(y) + "\n";
+  out += legend(sheet, y) + "\n";
   y += kNoteRow;
   for (const auto& line : notes) {
     y += kNoteRow;

@@ -45,8 +45,10 @@ std::string render_sheet_text(const Sheet& sheet) {
   }
   out += "\nNOTES\n";
   auto notes = sheet.notes;
-  notes.emplace_back("Marks: DEADMAN enables motion, STOP stops until released with the deadman, LAYER switches layers, ARMING is held to fire a WEAPON, TOGGLE "
-                     "flips on each press, KNOB moves a level while held, SELECTOR steps a rotary switch. [base]: "
+  notes.emplace_back("Marks: DEADMAN enables motion, STOP stops until released with the deadman, LAYER switches "
+                     "layers, ARMING is held to fire a WEAPON, TOGGLE flips on each press, KNOB moves a level while "
+                     "held, SELECTOR steps a rotary switch" +
+                     std::string(sheet.speed ? ", SPEED steps the speed level" : "") + ". [base]: "
                      "a base binding the layer keeps. Stick and trigger switches act past half way unless a figure "
                      "is given.");
   for (const auto& note : notes) {

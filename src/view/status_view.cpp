@@ -43,6 +43,12 @@ std::uint8_t byte_of(const protocol::DataBytes& data, std::string_view signal) {
 
 }  // namespace
 
+std::string speed_text(const mapping::SpeedLevel& speed) {
+  return fmt("%zu/%zu (%.3g%%)", speed.index + 1, speed.count, speed.value * 100);
+}
+
+bool shows_speed(const mapping::SpeedLevel& speed) { return speed.count > 1 || speed.value != 1.0; }
+
 const std::vector<SignalGroup>& signal_groups() {
   static const std::vector<SignalGroup> groups = {
       {"drive", ids({"safety", "drive_brake", "speed_high", "speed_low", "front_art_up",

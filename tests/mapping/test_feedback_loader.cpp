@@ -30,9 +30,13 @@ TEST(FeedbackLoader, WithoutTheSectionEveryEventHasItsDefaultPattern) {
 
 TEST(FeedbackLoader, TheDefaultsAreDistinctAndShort) {
   for (std::size_t i = 0; i < kFeedbackEventCount; ++i) {
-    const auto a = default_feedback_pattern(static_cast<E>(i));
-    EXPECT_LE(a.ms * (2 * a.pulses - 1), 600) << feedback_event_name(static_cast<E>(i));
-    EXPECT_TRUE(a.led.has_value());
+    const auto e = static_cast<E>(i);
+    const auto a = default_feedback_pattern(e);
+    // A speed level plays one pulse per level, up to the most levels a mapping may have.
+    const int pulses = e == E::kSpeedLevel ? static_cast<int>(kMaxSpeedLevels) : a.pulses;
+    EXPECT_LE(a.ms * (2 * pulses - 1), 600) << feedback_event_name(e);
+    // Each light says a state; a speed level changes none (the light stays as the state set it).
+    EXPECT_EQ(a.led.has_value(), e != E::kSpeedLevel) << feedback_event_name(e);
     for (std::size_t j = i + 1; j < kFeedbackEventCount; ++j) {
       const auto b = default_feedback_pattern(static_cast<E>(j));
       EXPECT_NE(a.led, b.led) << i << " " << j;

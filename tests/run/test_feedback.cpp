@@ -25,6 +25,11 @@ FeedbackStatus weapons(FeedbackStatus s) {
   return s;
 }
 
+FeedbackStatus level(FeedbackStatus s, std::size_t index) {
+  s.speed_level = index;
+  return s;
+}
+
 TEST(FeedbackEvents, EachChangeGivesItsEvent) {
   EXPECT_EQ(feedback_events(kIdle, kConnected), Events{E::kControllerBack});
   EXPECT_EQ(feedback_events(kConnected, kEnabled), Events{E::kEnabled});
@@ -131,6 +136,32 @@ TEST(FeedbackNotifier, AWeaponsModePlaysItsOwnPatterns) {
   EXPECT_EQ(input.played.back(), *table[E::kWeaponsOff]);
   EXPECT_NE(*table[E::kWeaponsOn], *table[E::kEnabled]);
   EXPECT_NE(*table[E::kWeaponsOff], *table[E::kEnabled]);
+}
+
+TEST(FeedbackEvents, ASpeedLevelChangeIsToldWhileThePadStays) {
+  EXPECT_EQ(feedback_events(kEnabled, level(kEnabled, 1)), Events{E::kSpeedLevel});
+  EXPECT_EQ(feedback_events(level(kEnabled, 2), kEnabled), Events{E::kSpeedLevel});  // up past the fastest, or a restart
+  EXPECT_EQ(feedback_events(level(kEnabled, 2), level(kConnected, 0)), (Events{E::kDisabled, E::kSpeedLevel}));
+  EXPECT_TRUE(feedback_events(level(kEnabled, 2), kIdle).empty());                            // a lost pad: told nothing
+  EXPECT_EQ(feedback_events(level(kIdle, 2), kConnected), Events{E::kControllerBack});  // a new pad: its own event
+}
+
+TEST(FeedbackNotifier, ASpeedLevelIsCountedOutInPulses) {
+  RecordingInput input;
+  auto table = mapping::default_feedback();
+  FeedbackNotifier notifier(table, input);
+  notifier.observe(kEnabled);
+  for (const std::size_t index : {1U, 2U, 0U}) {
+    EXPECT_EQ(notifier.observe(level(kEnabled, index)), E::kSpeedLevel);
+    auto expected = *table[E::kSpeedLevel];
+    expected.pulses = static_cast<int>(index) + 1;  // level n: n pulses
+    EXPECT_EQ(input.played.back(), expected);
+  }
+  EXPECT_FALSE(table[E::kSpeedLevel]->led);  // the light keeps saying "enabled"
+  table[E::kSpeedLevel].reset();
+  FeedbackNotifier off(table, input);
+  off.observe(kEnabled);
+  EXPECT_EQ(off.observe(level(kEnabled, 1)), std::nullopt);
 }
 
 TEST(FeedbackNotifier, AllOffPlaysNothing) {

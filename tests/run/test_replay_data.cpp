@@ -68,7 +68,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"toggle_held_across_layer", "rest.yaml"},
         Case{"two_toggles_one_signal", "rest.yaml"},
         // Neutral is the protocol's: a center trim moves only the enabled rest.
-        Case{"center_trim", "trim.yaml"}),
+        Case{"center_trim", "trim.yaml"},
+        // Speed levels: exact scaling, a held stick held back at a change, the level's life.
+        Case{"speed_levels", "speed.yaml"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -156,6 +156,31 @@ TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
   EXPECT_EQ(count(text, "info: weapons layer off\n"), 1U) << text;
 }
 
+TEST(RunStatusBoard, TheSpeedLevelIsShownAndLoggedAtTheStartAndOnEachChange) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  auto r = tick(40);
+  r.engine.speed = {0, 3, 0.25};
+  board.observe(r);
+  EXPECT_EQ(board.snapshot().speed, (mapping::SpeedLevel{0, 3, 0.25}));
+  r.t_ms = 80;
+  board.observe(r);
+  r.engine.speed = {1, 3, 0.5};
+  r.t_ms = 120;
+  board.observe(r);
+  EXPECT_EQ(board.snapshot().speed, (mapping::SpeedLevel{1, 3, 0.5}));
+  const auto text = log.text();
+  EXPECT_EQ(count(text, "info: speed level 1/3 (25%)\n"), 1U) << text;
+  EXPECT_EQ(count(text, "info: speed level 2/3 (50%)\n"), 1U) << text;
+}
+
+TEST(RunStatusBoard, NoSpeedLevelsNoWordOfThem) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  board.observe(tick(40));
+  EXPECT_EQ(log.text().find("speed"), std::string::npos) << log.text();
+}
+
 TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {
   RunStatus initial;
   initial.robot = "HD1";

@@ -98,6 +98,25 @@ TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
   EXPECT_EQ(plain_lines[2], "state       ENABLED   layer: weapons");
 }
 
+TEST(RunView, TheSpeedLevelIsOnTheStateLineWhenTheMappingHasLevels) {
+  RunStatus s = driving(false);
+  EXPECT_EQ(shown(s, {80, 24})[1], "state       ENABLED   layer: arm");  // the default, one level of 100%: not said
+  s.speed = {1, 3, 0.5};
+  EXPECT_EQ(shown(s, {80, 24})[1], "state       ENABLED   layer: arm   speed 2/3 (50%)");
+  s.speed = {0, 1, 0.125};  // one level below full speed: said too
+  EXPECT_EQ(shown(s, {80, 24})[1], "state       ENABLED   layer: arm   speed 1/1 (12.5%)");
+  // Not enabled, a long reason: after it, or on a line of its own rather than cut.
+  s.state = run::OpState::kNotEnabled;
+  s.enable_text = "deadman held since connect or start-up: release and press it again";
+  s.speed = {2, 3, 1.0};
+  EXPECT_EQ(shown(s, {80, 24})[2], "            press it again   layer: arm   speed 3/3 (100%)");
+  const auto narrow = shown(s, {40, 24});
+  const auto link = std::find_if(narrow.begin(), narrow.end(), [](const auto& l) { return l.starts_with("link"); });
+  ASSERT_NE(link, narrow.begin());
+  EXPECT_EQ(*(link - 1), "            speed 3/3 (100%)");
+  for (const auto& line : narrow) EXPECT_LE(line.size(), 40U) << line;
+}
+
 TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;

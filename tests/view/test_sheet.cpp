@@ -86,6 +86,59 @@ TEST(Sheet, NotesGiveSelectorPositionsKnobsAndTheWeaponsRule) {
                   "(left stick click) is held."));
 }
 
+// The shipped layout with speed levels on the one button it leaves free in every layer.
+Sheet speed_sheet(const std::string& scale) {
+  const testing::TempDir dir;
+  return build_sheet(*mapping::load_mapping(
+      dir.write("speed.yaml", "robot: HD1\ndeadman: leftshoulder\nbindings:\n  - {analog: drive, axis: lefty}\n"
+                              "  - {selector: speed, next: start, positions: [[speed_low], [], [speed_high]]}\n"
+                              "layers:\n  arm:\n    hold: rightshoulder\n    bindings:\n      - {analog: pivot, axis: leftx}\n"
+                              "scale: " + scale + "\n")));
+}
+
+std::string note_starting(const Sheet& sheet, std::string_view start) {
+  const auto it = std::find_if(sheet.notes.begin(), sheet.notes.end(), [&](const std::string& n) { return n.starts_with(start); });
+  return it == sheet.notes.end() ? "no such note" : *it;
+}
+
+TEST(Sheet, TheSpeedButtonsAreInEveryPanelAndTheLevelsInTheNotes) {
+  const auto s = speed_sheet("{button: guide, levels: [0.25, 0.5, 1.0]}");
+  EXPECT_TRUE(s.pad);
+  EXPECT_TRUE(s.speed);
+  for (std::size_t panel = 0; panel < s.panels.size(); ++panel) {
+    expect_entry(s, panel, "Guide", SheetMark::kSpeed, "speed level up", "then back to the slowest");
+  }
+  EXPECT_EQ(note_starting(s, "Speed levels"),
+            "Speed levels (drive and pivot), Guide steps up, after the fastest back to the slowest: 25% > 50% > 100% "
+            "of the stick's travel from rest; starts at 25%, again after the controller is lost or driving was "
+            "interrupted; kept while the deadman is released. A stick held when the level changes waits until it is "
+            "back at rest. Not the speed_low/speed_high selector: that sets the vehicle's own speed range; the level "
+            "scales the stick within it.");
+  std::string text = render_sheet_text(s);  // the notes wrapped: read as one line
+  for (std::size_t at; (at = text.find("\n  ")) != std::string::npos;) text.replace(at, 3, " ");
+  EXPECT_NE(text.find("SPEED steps the speed level"), std::string::npos);
+  EXPECT_NE(render_sheet_svg(s).find("\">SPEED</tspan>"), std::string::npos);
+
+  const auto two = speed_sheet("{button: guide, down: misc1, levels: [0.3, 0.6, 1], initial: 0.6}");
+  expect_entry(two, 0, "Guide", SheetMark::kSpeed, "speed level up");
+  EXPECT_EQ(note_starting(two, "Speed levels").substr(0, 111),
+            "Speed levels (drive and pivot), Guide steps up, Misc down: 30% > 60% > 100% of the stick's travel from "
+            "rest; st");
+  EXPECT_NE(note_starting(two, "Speed levels").find("starts at 60%,"), std::string::npos);
+  EXPECT_FALSE(two.pad) << "Misc is not on the drawing";
+
+  const auto capped = speed_sheet("{levels: [0.5]}");
+  EXPECT_FALSE(capped.speed);
+  EXPECT_EQ(note_starting(capped, "Drive and pivot"), "Drive and pivot move 50% of the stick's travel from rest (scale).");
+}
+
+TEST(Sheet, WithoutSpeedLevelsNoWordOfThem) {
+  const auto s = build_sheet(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"));
+  EXPECT_FALSE(s.speed);
+  EXPECT_EQ(render_sheet_svg(s).find("SPEED"), std::string::npos);
+  EXPECT_EQ(render_sheet_text(s).find("SPEED"), std::string::npos);
+}
+
 TEST(Sheet, PlainJoystickGetsListPanels) {
   const auto s = build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/joystick.yaml"));
   EXPECT_FALSE(s.pad);

@@ -37,7 +37,8 @@ class Engine {
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
-  /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off.
+  /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off,
+  /// and the speed level is the mapping's initial one.
   void restart(const input::InputState& now);
 
   /// Whether a stop button was pressed since the last step (or the last call)
@@ -72,6 +73,9 @@ class Engine {
   /// The enable timeout has run out: not enabled until the deadman is released and pressed again.
   void time_out(const input::InputState& input);
   void update_layer(const input::InputState& input, bool enabled);
+  /// The speed buttons' presses (enabled only); a new level holds drive and pivot's sticks back.
+  void update_speed(const input::InputState& input);
+  void set_speed(std::size_t index);
   void apply(const input::InputState& input, BindingRef ref, std::int64_t dt_ms, protocol::ControlState& out,
              std::bitset<protocol::kSignalCount>& armed);
   [[nodiscard]] std::size_t slot(BindingRef ref) const;

@@ -2,6 +2,7 @@
 /// The engine's state after a step, as a plain value: what the run loop
 /// reports and the operator's view and log show.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -23,6 +24,16 @@ enum class EnableState : std::uint8_t {
 
 std::string_view describe(EnableState state);
 
+/// The speed level in force (the mapping's `scale:`): drive and pivot move
+/// `value` times their distance from rest.
+struct SpeedLevel {
+  std::size_t index = 0;  ///< 0 = the slowest
+  std::size_t count = 1;  ///< the mapping's levels (1 without `scale:`)
+  double value = 1.0;     ///< the fraction of full speed
+
+  bool operator==(const SpeedLevel&) const = default;
+};
+
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;  ///< the active layer's name ("" for the base layer)
@@ -33,6 +44,7 @@ struct EngineStatus {
   /// A stop button (the mapping's `estop`) was pressed since the last step or
   /// is held: the run loop latches "stopped by the operator".
   bool stop_pressed = false;
+  SpeedLevel speed;
 };
 
 }  // namespace andros::mapping

@@ -23,9 +23,10 @@ enum class FeedbackEvent : std::uint8_t {
   kWeaponsOff,      ///< a weapons mode ended, the bridge still enabled
   kEnabled,         ///< became enabled
   kControllerBack,  ///< the controller connected (at start-up or again)
+  kSpeedLevel,      ///< the speed level changed: as many pulses as the new level's number
 };
 
-inline constexpr std::size_t kFeedbackEventCount = 9;
+inline constexpr std::size_t kFeedbackEventCount = 10;
 
 /// The event's key in a mapping's `feedback:` section ("deadman_refused", ...).
 std::string_view feedback_event_name(FeedbackEvent event);
@@ -41,6 +42,10 @@ struct FeedbackTable {
     return patterns[static_cast<std::size_t>(event)];
   }
 };
+
+/// The pattern an event plays now: its table pattern, except that
+/// kSpeedLevel pulses once per level up to `speed_level` (0 = the slowest).
+input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern, std::size_t speed_level);
 
 /// The built-in pattern of an event (what a mapping without `feedback:` plays).
 input::FeedbackPattern default_feedback_pattern(FeedbackEvent event);

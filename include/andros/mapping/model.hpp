@@ -131,6 +131,20 @@ struct Layer {
   std::vector<Binding> bindings;
 };
 
+/// At most this many speed levels: a change of level is counted out in as
+/// many rumble pulses as the level's number (docs/mapping.md, `scale`).
+inline constexpr std::size_t kMaxSpeedLevels = static_cast<std::size_t>(input::kMaxFeedbackPulses);
+
+/// Speed levels (`scale:`): while enabled, drive and pivot move `level` times
+/// their distance from rest. Absent from a mapping: the one level 1.0.
+struct SpeedScale {
+  std::vector<double> levels{1.0};  ///< fractions in (0, 1], strictly increasing
+  std::size_t initial = 0;          ///< the level a controller session and a restart begin at
+  std::optional<InputUse> up;       ///< steps up; after the highest, back to the lowest
+  std::optional<InputUse> down;     ///< steps down; stops at the lowest
+  SourcePos pos;                    ///< where `scale:` is
+};
+
 /// When drive_brake is 1 (it is always 0 while not enabled).
 enum class BrakeMode : std::uint8_t {
   kEnabled,  ///< released whenever the engine is enabled (the default)
@@ -158,6 +172,7 @@ struct Mapping {
   /// "enabled" (`enable_timeout:`, in ms here); none: no timeout.
   std::optional<std::int64_t> enable_timeout_ms;
   BrakeMode brake = BrakeMode::kEnabled;
+  SpeedScale scale;
   FeedbackTable feedback = default_feedback();  ///< rumble and light per event
   std::vector<Binding> bindings;  ///< the base layer
   std::vector<Layer> layers;

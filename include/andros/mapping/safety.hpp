@@ -41,6 +41,10 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
 /// press after it (released in between) acts. The deadman and the layer
 /// buttons are not held back: they change meanings, they do not move anything.
 ///
+/// Speed levels: a new level changes what drive and pivot's sticks mean, so
+/// rescale() holds back each one off rest as above. The speed buttons are read
+/// in every layer: held when the bridge becomes enabled, they wait too.
+///
 /// Weapons: a weapon becoming armed (its arming input held) changes what its
 /// fire input means too, so a fire input held at that frame waits as above. An
 /// arming input itself counts, like the deadman, when it is pressed in the
@@ -53,6 +57,10 @@ class RestRule {
   /// are known and before any binding reads the input. Drops the presses of
   /// each input whose meaning changed by moving its `seen` count up to now.
   void update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen);
+
+  /// After the speed level changed (enabled, after update()): every axis
+  /// driving drive or pivot in `layer` that is not at rest is held back.
+  void rescale(const input::InputState& input, int layer);
 
   /// True while `key` may not act: its meaning changed and it has not been at rest since.
   [[nodiscard]] bool held_back(input::InputKey key) const { return held_.contains(key); }

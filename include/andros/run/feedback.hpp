@@ -20,6 +20,7 @@ struct FeedbackStatus {
   bool link_up = false;  ///< the link is up and frames follow the controller
   bool weapons_mode = false;  ///< EngineStatus::weapons_mode
   bool stopped = false;  ///< the operating state is "stopped by the operator"
+  std::size_t speed_level = 0;  ///< EngineStatus::speed's index
 
   bool operator==(const FeedbackStatus&) const = default;
 };

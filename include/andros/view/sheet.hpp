@@ -3,6 +3,7 @@
 /// mapping, as a printable SVG drawing of the pad or as plain text tables.
 /// Built from the loaded mapping only, so it cannot drift from it.
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,10 +25,16 @@ enum class SheetMark : std::uint8_t {
   kToggle,    ///< each press flips the signal
   kKnob,      ///< moves a level while held
   kSelector,  ///< steps a rotary switch
+  kSpeed,     ///< steps the speed level of drive and pivot
 };
 
 /// The word the sheet prints for a mark ("" for kPlain).
 std::string_view mark_name(SheetMark mark);
+
+/// The marks the legend explains, in its order.
+inline constexpr std::array kLegendMarks = {SheetMark::kDeadman, SheetMark::kStop, SheetMark::kLayerKey, SheetMark::kArming,
+                                            SheetMark::kWeapon,  SheetMark::kToggle,   SheetMark::kKnob,
+                                            SheetMark::kSelector, SheetMark::kSpeed};
 
 /// One input's meaning in one layer.
 struct SheetEntry {
@@ -52,6 +59,7 @@ struct Sheet {
   std::string deadman;  ///< the deadman input as an operator names it ("LB")
   std::string stop;     ///< the stop button as an operator names it, or "" when none
   bool pad = true;    ///< every input is one the pad drawing shows; else list panels
+  bool speed = false; ///< the mapping has speed levels (the SPEED mark is used)
   std::vector<SheetPanel> panels;
   std::vector<std::string> notes;  ///< selectors' positions, knobs, the weapons rule
 };

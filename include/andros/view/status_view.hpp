@@ -11,6 +11,7 @@
 
 #include "andros/link/link_status.hpp"
 #include "andros/link/vehicle_snapshot.hpp"
+#include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/operating_state.hpp"
@@ -52,6 +53,7 @@ struct RunStatus {
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
+  mapping::SpeedLevel speed;     ///< the speed level (the mapping's `scale:`)
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;
@@ -64,6 +66,13 @@ struct RunStatus {
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }
 };
+
+/// A speed level as the screen and the log give it: "2/3 (50%)".
+std::string speed_text(const mapping::SpeedLevel& speed);
+
+/// Whether a mapping's speed levels are worth showing: anything but the
+/// default, one level of 1.0.
+bool shows_speed(const mapping::SpeedLevel& speed);
 
 /// `run`'s screen for a terminal of this size: pinned first (the WEAPONS
 /// banner when weapons are enabled, saying WEAPONS LAYER in a weapons mode;
