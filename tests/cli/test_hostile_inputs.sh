@@ -87,7 +87,9 @@ expect_error "andros-bridge: error: EVENTS is required (see --help)" "$BIN" repl
 expect_error "--format: error: format 'xml' is not one of hex, raw, jsonl" "$BIN" replay ok.events --format xml
 expect_error "andros-bridge: error: replay: give --robot or --mapping, not both" "$BIN" replay ok.events --robot hd1 --mapping x.yaml
 expect_error "andros-bridge: error: frame encode: expected 32 hex digits (16 data bytes), got 2 characters" "$BIN" frame encode 12
-expect_error "/nonexistent/dir/x.events: error: cannot create: No such file or directory" "$BIN" record --output /nonexistent/dir/x.events
+# An output that cannot be made is exit 1 as for every command's --output (docs/running.md, Output files).
+expect_exit 1 "$BIN" record --output /nonexistent/dir/x.events
+expect_stderr_matches "^andros-bridge: error: cannot open '/nonexistent/dir/x.events' for writing: No such file or directory$"
 # Empty values, a device that is not a terminal, directories (each once fell back, retried for ever or exited 1).
 expect_error "--mapping: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --mapping "" --input ok.events
 expect_error "--config: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --config "" --input ok.events
