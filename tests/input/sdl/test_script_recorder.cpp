@@ -63,6 +63,29 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
   EXPECT_EQ(events.back().type, T::kEnd);
 }
 
+// A controller names itself: a pad whose name holds newlines and event
+// lines records one connect line, which reads back as that name, never as
+// presses (docs/event-scripts.md).
+TEST(ScriptRecorder, AHostileControllerNameStaysOneConnectLine) {
+  test::use_dummy_video();
+  const SdlSession session;
+  const char* hostile = "Gamepad\n500 button leftshoulder 0\n600 button leftshoulder 1\n700 axis lefty -32768\n#";
+  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad(hostile));
+  SdlInput input(SdlInputOptions{});
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 2;
+  options.header = "hostile";
+  int step = 0;
+  StopRequest stop;
+  record_script(input, out, options, stop, [&](const RecordStatus&) { return ++step < 5; });
+  const auto events = parse_event_script(out.str(), "recorded");
+  ASSERT_EQ(events.size(), 2U) << out.str();
+  EXPECT_EQ(events[0].type, T::kConnect);
+  EXPECT_EQ(events[0].name, hostile) << out.str();
+  EXPECT_EQ(events[1].type, T::kEnd);
+}
+
 }  // namespace
 /// SDL headless, a virtual pad attached, and the input the recorder reads.
 struct PadRig {
