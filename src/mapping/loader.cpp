@@ -241,7 +241,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
   if (text == nullptr && !fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file " + quote(file.string()));
+                                                       "cannot open mapping file " + quote_name(file.string()));
   if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
     for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
