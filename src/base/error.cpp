@@ -3,39 +3,19 @@
 #include "andros/base/text.hpp"
 
 namespace andros {
-namespace {
-
-bool printable(char c) { return c >= 0x20 && c < 0x7F; }
-
-void append_escaped(std::string& out, unsigned char c) { out += "\\x" + hex_byte(c); }
-
-std::string escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    if (printable(c)) out += c;
-    else append_escaped(out, static_cast<unsigned char>(c));
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string quote(std::string_view text) {
-  std::string out = "'";
-  for (const char c : text.substr(0, kMaxQuoted)) {
-    if (c == '\\') out += "\\\\";
-    else if (printable(c)) out += c;
-    else append_escaped(out, static_cast<unsigned char>(c));
-  }
-  out += '\'';
+  std::string out = "'" + printable_text(text.substr(0, kMaxQuoted)) + "'";
   if (text.size() > kMaxQuoted) out += "... (" + std::to_string(text.size()) + " bytes)";
   return out;
 }
 
+std::string quote_name(std::string_view name) { return "'" + printable_text(name) + "'"; }
+
 std::string format_error(const SourcePos& pos, const std::string& message, std::string_view severity) {
   std::string out;
   if (!pos.file.empty()) {
-    out += escaped(pos.file);
+    out += printable_line(pos.file);
     if (pos.line > 0) {
       out += ':' + std::to_string(pos.line);
       if (pos.column > 0) out += ':' + std::to_string(pos.column);
@@ -44,7 +24,7 @@ std::string format_error(const SourcePos& pos, const std::string& message, std::
   }
   out += severity;
   out += ": ";
-  out += escaped(message);
+  out += printable_line(message);
   return out;
 }
 

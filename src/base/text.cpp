@@ -4,6 +4,120 @@
 #include <string>
 
 namespace andros {
+namespace {
+
+/// Characters that print nothing or reorder what follows: C1 controls, the
+/// soft hyphen, zero-width and bidirectional marks, line and paragraph
+/// separators, invisible operators, the BOM, interlinear annotations, tags,
+/// and the noncharacters.
+bool invisible(char32_t c) {
+  return (c >= 0x80 && c <= 0x9F) || c == 0xAD || c == 0x061C || c == 0x180E || (c >= 0x200B && c <= 0x200F) ||
+         (c >= 0x2028 && c <= 0x202E) || (c >= 0x2060 && c <= 0x206F) || c == 0xFEFF || (c >= 0xFFF9 && c <= 0xFFFB) ||
+         (c >= 0xFDD0 && c <= 0xFDEF) || (c & 0xFFFE) == 0xFFFE || (c >= 0xE0000 && c <= 0xE007F);
+}
+
+/// The length of the valid UTF-8 sequence at the start of text (2..4), its
+/// code point in c; 0 when it is not one (a stray continuation byte, an
+/// overlong form, a surrogate, past U+10FFFF, cut short).
+std::size_t utf8_sequence(std::string_view text, char32_t& c) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned lead = byte(0);
+  std::size_t n = 0;
+  char32_t min = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    n = 2;
+    c = lead & 0x1FU;
+    min = 0x80;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    n = 3;
+    c = lead & 0x0FU;
+    min = 0x800;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    n = 4;
+    c = lead & 0x07U;
+    min = 0x10000;
+  } else {
+    return 0;
+  }
+  if (text.size() < n) return 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if ((byte(i) & 0xC0U) != 0x80U) return 0;
+    c = (c << 6U) | (byte(i) & 0x3FU);
+  }
+  if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return 0;
+  return n;
+}
+
+std::string escape(std::string_view text, bool backslash) {
+  std::string out;
+  out.reserve(text.size());
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\\' && backslash) {
+      out += "\\\\";
+    } else if (u >= 0x20 && u < 0x7F) {
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (u >= 0x80) {
+      char32_t code = 0;
+      const std::size_t n = utf8_sequence(text.substr(i), code);
+      if (n == 0) {
+        out += "\\x" + hex_byte(u);
+      } else {
+        for (std::size_t k = 0; k < n; ++k) {
+          if (invisible(code)) out += "\\x" + hex_byte(static_cast<std::uint8_t>(text[i + k]));
+          else out += text[i + k];
+        }
+        i += n;
+        continue;
+      }
+    } else {
+      out += "\\x" + hex_byte(u);
+    }
+    ++i;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string printable_text(std::string_view text) { return escape(text, true); }
+
+std::string printable_line(std::string_view text) { return escape(text, false); }
+
+bool is_printable_line(std::string_view text) { return printable_line(text) == text; }
+
+std::string unescape_text(std::string_view text, const SourcePos& pos) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\\') {
+      out += text[i];
+      continue;
+    }
+    const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    if (next == '\\') out += '\\';
+    else if (next == 'n') out += '\n';
+    else if (next == 'r') out += '\r';
+    else if (next == 't') out += '\t';
+    else if (next == 'x' && i + 3 < text.size() && hex_value(text[i + 2]) >= 0 && hex_value(text[i + 3]) >= 0) {
+      out += static_cast<char>(hex_value(text[i + 2]) * 16 + hex_value(text[i + 3]));
+      i += 2;
+    } else {
+      SourcePos at = pos;
+      if (at.column > 0) at.column += static_cast<int>(i);
+      throw InputError(at, "unknown escape " + quote(text.substr(i, 2)) + " (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
+    }
+    ++i;
+  }
+  return out;
+}
 
 std::string_view trim(std::string_view text) {
   constexpr std::string_view kBlanks = " \t\r";

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 #include "andros/input/sdl_input.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
@@ -24,7 +25,8 @@ int run_controllers(const ControllersOptions& opt) {
                                    {"name", c.name},
                                    {"guid", c.guid},
                                    {"type", c.game_controller ? "controller" : "joystick"}};
-      std::printf("%s\n", line.dump().c_str());
+      // A name is bytes from the device: invalid UTF-8 becomes U+FFFD rather than ending the list.
+      std::printf("%s\n", line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     }
     return kExitOk;
   }
@@ -35,7 +37,7 @@ int run_controllers(const ControllersOptions& opt) {
   std::printf("%-5s  %-10s  %-32s  %s\n", "INDEX", "TYPE", "GUID", "NAME");
   for (const auto& c : list) {
     std::printf("%-5d  %-10s  %-32s  %s\n", c.index, c.game_controller ? "controller" : "joystick",
-                c.guid.c_str(), c.name.c_str());
+                printable_text(c.guid).c_str(), printable_text(c.name).c_str());
   }
   return kExitOk;
 }

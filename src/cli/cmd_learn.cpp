@@ -2,7 +2,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include "andros/base/error.hpp"
@@ -15,36 +14,19 @@
 namespace andros::cli {
 namespace {
 
-namespace fs = std::filesystem;
-
 struct LearnCommandOptions {
   std::string robot;
   std::string mapping;
   std::string output;
+  bool force = false;
   input::SdlInputOptions sdl;
 };
 
-/// The output may not be the mapping learned from nor a file it extends: it
-/// would extend itself.
-void check_output(const mapping::Mapping& base, const fs::path& output) {
-  std::error_code ec;
-  if (fs::is_directory(output, ec)) throw InputError(SourcePos{"--output"}, quote(output.string()) + " is a directory");
-  const auto folder = fs::absolute(output).parent_path();
-  if (!fs::is_directory(folder, ec)) throw InputError(SourcePos{"--output"}, "no folder " + quote(folder.string()));
-  const auto canonical = fs::weakly_canonical(fs::absolute(output)).string();
-  for (const auto& file : base.chain) {
-    if (file == canonical) {
-      throw InputError(SourcePos{"--output"}, quote(output.string()) +
-                                                  " is the mapping learned from or a file it extends: write to another file");
-    }
-  }
-}
-
 int run_learn(const LearnCommandOptions& opt) {
   if (opt.robot.empty() == opt.mapping.empty()) throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
+  if (opt.output == "-") throw InputError(SourcePos{"--output"}, "learn writes a file (its dialogue is on standard output)");
   auto base = mapping::load_chosen_mapping(opt.mapping, opt.robot);
-  const fs::path base_file = base->file;  // the file loaded: the one given, or the robot's found on the search path
-  check_output(*base, opt.output);
+  const auto target = learn_target(*base, opt.output, opt.force);  // checked before the operator does any work
   StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
   input::LiveGestures pad(opt.sdl);
   mapping::LearnPlan plan(*base);
@@ -63,7 +45,8 @@ int run_learn(const LearnCommandOptions& opt) {
     std::printf("nothing changed: %s not written\n", opt.output.c_str());
     return kExitOk;
   }
-  write_learned(plan, base_file, opt.output);
+  const auto text = plan.extending_yaml(target.extends, target.over);
+  write_learned_or_show(plan, text, opt.output, stdout);  // on failure the YAML on stdout, the reason on stderr
   std::printf("wrote %s; try it with 'andros-bridge check %s'\n", opt.output.c_str(), opt.output.c_str());
   return kExitOk;
 }
@@ -79,15 +62,22 @@ void add_learn_command(CLI::App& app, int& exit_code) {
       "and takes the next button, stick push or trigger pull on the controller. Enter keeps\n"
       "the input, s skips the rest of the layer, b goes back, w writes now, q (or Ctrl-C)\n"
       "quits without writing. An input already used in the same layer is refused. Writes a\n"
-      "mapping that extends the one learned from with only what changed, loaded and\n"
-      "checked before it replaces --output. See docs/mapping.md (Changing buttons with learn).\n"
+      "mapping that extends the one learned from with only what changed (extends: ROBOT\n"
+      "for a robot's mapping), loaded and checked before it is written; if it cannot be\n"
+      "written, it is printed instead. See docs/mapping.md (Changing buttons with learn).\n"
       "Exit: 0 written or nothing changed, 1 quit, 2 bad options or mapping.");
   cmd->add_option("--robot", opt->robot, "the robot whose mapping to learn from (as 'run --robot' finds it)")
       ->type_name("NAME");
   cmd->add_option("--mapping", opt->mapping, "the mapping file to learn from")->type_name("FILE");
-  cmd->add_option("--output,-o", opt->output, "the mapping file to write (replaced if it exists)")
+  cmd->add_option("--output,-o", opt->output,
+                  "the mapping file to write; its missing folders are made. An existing FILE\n"
+                  "is refused unless --force")
       ->type_name("FILE")
       ->required();
+  cmd->add_flag("--force", opt->force,
+                "replace an existing --output FILE (only once the new file is written whole;\n"
+                "its mode kept). FILE may be the mapping learned from: the new file then\n"
+                "extends what FILE extended, so learn can be run again on its own output");
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_learn(*opt); });
 }

@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
-#include <fstream>
-#include <iostream>
 #include <memory>
+#include <ostream>
 
 #include "andros/base/error.hpp"
+#include "andros/base/output_file.hpp"
 #include "andros/base/stop.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
@@ -36,12 +36,8 @@ std::string utc_now() {
 
 int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) {
   const std::string& output = settings.script_output;
-  std::ofstream file;
-  if (output != "-") {
-    file.open(output, std::ios::out | std::ios::trunc);
-    if (!file) throw InputError(SourcePos{output}, std::string("cannot create: ") + std::strerror(errno));
-  }
-  std::ostream& out = output == "-" ? std::cout : file;
+  OutputFile file(output, nullptr, OutputFile::NewFile::kAsWritten);  // a killed recording keeps what it saw
+  std::ostream& out = file.stream();
 
   input::RecordOptions rec;
   rec.period_ms = 1000 / settings.read_rate_hz;
@@ -60,9 +56,14 @@ int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) 
     if (progress && s.t_ms - last_progress_ms >= 500) show_progress(s);
     return out.good();  // a full disk ends it: nothing more would be kept
   };
-  const auto ended = input::record_script(input, out, rec, stop, keep_going);
-  out.flush();
-  if (!out) throw RuntimeError((output == "-" ? std::string("standard output") : output) + ": write error");
+  input::RecordStatus ended;
+  try {
+    ended = input::record_script(input, out, rec, stop, keep_going);
+  } catch (const RuntimeError&) {
+    file.check();  // the write's own reason (a full disk) first
+    throw;
+  }
+  file.commit();
   if (progress) {
     show_progress(ended);
     std::fputc('\n', stderr);

@@ -1,12 +1,11 @@
 // `andros-bridge replay`: an event script through a mapping on a virtual clock.
-#include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iostream>
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/base/output_file.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
@@ -24,26 +23,13 @@ struct ReplayOptions {
   std::unique_ptr<CommandLine> settings;  ///< the settings table's flags
 };
 
-/// Frames to FILE, or to stdout. A replay that fails after FILE was created
-/// removes it, so that no partial output is mistaken for a whole one.
+/// Frames to FILE, or to stdout. FILE is replaced only by a whole replay:
+/// one that fails leaves it as it was, so that no partial output is mistaken
+/// for a whole one.
 void write_frames(const Settings& opt, const std::function<void(std::ostream&)>& body) {
-  if (opt.output.empty()) {
-    body(std::cout);
-    std::cout.flush();
-    if (!std::cout) throw RuntimeError("stdout: write error");
-    return;
-  }
-  std::ofstream file(opt.output, std::ios::binary | std::ios::trunc);
-  if (!file) throw RuntimeError(opt.output + ": cannot open for writing");
-  try {
-    body(file);
-    file.close();
-    if (!file) throw RuntimeError(opt.output + ": write error");
-  } catch (...) {
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(opt.output, ec)) std::filesystem::remove(opt.output, ec);
-    throw;
-  }
+  OutputFile out(opt.output.empty() ? "-" : opt.output);
+  body(out.stream());
+  out.commit();
 }
 
 void run_replay(const ReplayOptions& opt) {

@@ -1,11 +1,9 @@
 // `andros-bridge sheet`: the cheat sheet of a mapping, as SVG or text.
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/base/output_file.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
 #include "andros/view/sheet.hpp"
@@ -21,30 +19,13 @@ struct SheetOptions {
   std::string output;
 };
 
-/// The whole sheet is made before FILE is opened; a failed write removes it.
-void write_sheet(const std::string& output, const std::string& sheet) {
-  if (output.empty()) {
-    if (std::fwrite(sheet.data(), 1, sheet.size(), stdout) != sheet.size()) throw RuntimeError("stdout: write error");
-    return;
-  }
-  std::ofstream file(output, std::ios::binary | std::ios::trunc);
-  if (!file) throw RuntimeError(output + ": cannot open for writing");
-  file << sheet;
-  file.close();
-  if (!file) {
-    std::error_code ec;
-    std::filesystem::remove(output, ec);
-    throw RuntimeError(output + ": write error");
-  }
-}
-
 void run_sheet(const SheetOptions& opt) {
   if (!opt.robot.empty() && !opt.mapping.empty()) throw InputError("sheet: give --robot or --mapping, not both");
   const auto format = view::parse_sheet_format(opt.format, SourcePos{"--format"});
   const auto mapping = mapping::load_chosen_mapping(opt.mapping, opt.robot.empty() ? protocol::kDefaultRobot : opt.robot);
   const auto sheet = view::build_sheet(*mapping);
-  write_sheet(opt.output, format == view::SheetFormat::kSvg ? view::render_sheet_svg(sheet)
-                                                             : view::render_sheet_text(sheet));
+  const auto text = format == view::SheetFormat::kSvg ? view::render_sheet_svg(sheet) : view::render_sheet_text(sheet);
+  write_output_file(opt.output.empty() ? "-" : opt.output, text);  // made whole before FILE is opened
 }
 
 }  // namespace
@@ -63,7 +44,10 @@ void add_sheet_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--format", opt->format, "svg (a printable page) or text (tables for a terminal)")
       ->type_name("svg|text")
       ->default_str("svg");
-  cmd->add_option("--output", opt->output, "write to FILE instead of standard output");
+  cmd->add_option("--output", opt->output,
+                  "write to FILE instead of standard output (- is standard output); a failed\n"
+                  "write leaves FILE as it was (docs/running.md, Output files)")
+      ->type_name("FILE");
   cmd->callback([opt, &exit_code] {
     run_sheet(*opt);
     exit_code = kExitOk;

@@ -1,15 +1,13 @@
 #include "andros/cli/learn_session.hpp"
 
-#include <fcntl.h>
 #include <poll.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
 
 #include "andros/base/error.hpp"
-#include "andros/base/write_fully.hpp"
+#include "andros/base/output_file.hpp"
+#include "andros/base/text.hpp"
 #include "andros/mapping/loader.hpp"
 
 namespace andros::cli {
@@ -95,7 +93,7 @@ void LearnSession::go_to(std::size_t index) {
 void LearnSession::report_controller() {
   if (pad_.connected() && pad_.connection() != connection_) {
     connection_ = pad_.connection();
-    say("  controller: " + pad_.name());
+    say("  controller: " + printable_text(pad_.name()));
   } else if (!pad_.connected() && (told_connected_ || connection_ == 0)) {
     if (told_connected_ || !told_waiting_) say("  no controller: waiting for " + pad_.selection());
     told_waiting_ = true;
@@ -145,38 +143,89 @@ bool LearnSession::answer(const input::Gesture& gesture) {
   return end_ == End::kRunning;
 }
 
-std::string extends_path(const fs::path& base, const fs::path& output) {
-  const auto from = fs::weakly_canonical(fs::absolute(output)).parent_path();
-  const auto to = fs::weakly_canonical(fs::absolute(base));
-  const auto a = std::next(from.begin());
-  const auto b = std::next(to.begin());
-  const bool shared = a != from.end() && b != to.end() && *a == *b;
-  return shared ? fs::relative(to, from).string() : to.string();
+namespace {
+
+fs::path canonical_of(const fs::path& path) {
+  std::error_code ec;
+  return fs::weakly_canonical(fs::absolute(path), ec);
 }
 
-void write_learned(const mapping::LearnPlan& plan, const fs::path& base, const fs::path& output) {
-  const auto text = plan.extending_yaml(extends_path(base, output));
+/// The robot's mapping as `extends: ROBOT` finds it from output: the first
+/// on the search path other than output itself; empty when none is.
+fs::path robot_mapping_past(const std::string& robot, const fs::path& output) {
+  const auto file = to_lower(robot) + ".yaml";
+  for (const auto& dir : mapping::mapping_search_path()) {
+    std::error_code ec;
+    if (!fs::is_regular_file(dir / file, ec)) continue;
+    const auto found = canonical_of(dir / file);
+    if (found != output) return found;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string extends_name(const fs::path& file, const std::optional<std::string>& robot, const fs::path& output) {
+  const auto canonical = canonical_of(file);
+  if (robot && robot_mapping_past(*robot, canonical_of(output)) == canonical) return to_lower(*robot);
+  return canonical.string();
+}
+
+LearnTarget learn_target(const mapping::Mapping& base, const fs::path& output, bool force) {
+  const SourcePos at{"--output"};
+  std::error_code ec;
+  if (fs::is_directory(output, ec)) throw InputError(at, quote_name(output.string()) + " is a folder");
+  auto folder = fs::absolute(output).parent_path();
+  while (!fs::exists(folder, ec) && folder.has_relative_path()) folder = folder.parent_path();
+  if (!fs::is_directory(folder, ec)) throw InputError(at, quote_name(folder.string()) + " is not a folder");
+  const bool exists = fs::exists(fs::symlink_status(output, ec));
+  if (exists && !force) {
+    throw InputError(at, quote_name(output.string()) +
+                             " exists: give --force to replace it (it is replaced only once the new file is written whole)");
+  }
+  const auto canonical = canonical_of(output);
+  const auto& chain = base.chain;
+  for (std::size_t i = 1; i < chain.size(); ++i) {
+    if (fs::path(chain[i]) == canonical) {
+      throw InputError(at, quote_name(output.string()) +
+                               " is a file the mapping learned from extends: it would extend itself; write to another file");
+    }
+  }
+  fs::path over = chain.empty() ? fs::path(base.file) : fs::path(chain.front());
+  if (over == canonical) {
+    // Learning again from one's own output: the new file extends what it extended.
+    over = chain.size() > 1 ? fs::path(chain[1]) : robot_mapping_past(base.robot.value_or(""), canonical);
+    if (over.empty()) {
+      throw InputError(at, quote_name(output.string()) + " is the mapping learned from and extends nothing: no robot mapping " +
+                               "for it to extend on the search path; write to another file");
+    }
+    return LearnTarget{*mapping::load_mapping(over), extends_name(over, base.robot, output)};
+  }
+  return LearnTarget{base, extends_name(over, base.robot, output)};
+}
+
+void write_learned(const mapping::LearnPlan& plan, const std::string& text, const fs::path& output) {
+  // Read as output itself: its errors name output, and `extends: ROBOT` passes over output as it will.
+  if (!plan.matches(*mapping::load_mapping_text(text, output))) {
+    throw RuntimeError("cannot write " + quote_name(output.string()) +
+                       ": the file made does not read back as learned (a bug): nothing written");
+  }
   const auto folder = fs::absolute(output).parent_path();
-  std::string tmp = (folder / ("." + output.filename().string() + ".XXXXXX")).string();
-  const int fd = mkstemp(tmp.data());
-  if (fd < 0) throw RuntimeError(output.string() + ": cannot create a temporary file: " + std::strerror(errno));
-  bool open = true;
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec) && !fs::create_directories(folder, ec) && ec) {
+    throw RuntimeError("cannot make the folder " + quote_name(folder.string()) + ": " + ec.message());
+  }
+  write_output_file(output.string(), text);
+}
+
+void write_learned_or_show(const mapping::LearnPlan& plan, const std::string& text, const fs::path& output,
+                           std::FILE* out) {
   try {
-    const mode_t mask = umask(0);  // mkstemp makes 0600: give the file the mode a new file gets
-    umask(mask);
-    const int error = write_fully(fd, text);
-    if (error != 0 || fchmod(fd, 0666 & ~mask) != 0 || fsync(fd) != 0) {
-      throw RuntimeError(output.string() + ": write error: " + std::strerror(error != 0 ? error : errno));
-    }
-    open = false;
-    if (close(fd) != 0) throw RuntimeError(output.string() + ": write error: " + std::strerror(errno));
-    if (!plan.matches(*mapping::load_mapping(tmp))) {
-      throw RuntimeError(output.string() + ": the file made does not read back as learned (a bug): nothing written");
-    }
-    if (std::rename(tmp.c_str(), output.c_str()) != 0) throw RuntimeError(output.string() + ": " + std::strerror(errno));
-  } catch (...) {
-    if (open) close(fd);
-    unlink(tmp.c_str());
+    write_learned(plan, text, output);
+  } catch (const std::exception&) {
+    std::fprintf(out, "%s not written; the learned mapping, to keep:\n%s", printable_text(output.string()).c_str(),
+                 text.c_str());
+    std::fflush(out);
     throw;
   }
 }

@@ -92,11 +92,13 @@ const std::array<Setting, 14> kTable = {{
      [](const Settings& s) { return std::string(protocol::kReplayFormatNames[static_cast<std::size_t>(s.format)]); },
      false},
     {"", "--output", "FILE", kReplay,
-     "write to FILE instead of standard output (created only once every input is checked; removed again if the "
-     "replay fails)",
+     "write to FILE instead of standard output (- is standard output); FILE is replaced only once every input "
+     "is checked and the whole replay written: a failure leaves it as it was",
      nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.output = std::string(t); },
      [](const Settings& s) { return s.output; }, false},
-    {"", "--output,-o", "FILE", kRecord, "the script file, or - for standard output", nullptr,
+    {"", "--output,-o", "FILE", kRecord, "the script file, or - for standard output; a new FILE grows as events come, an existing one is "
+     "replaced when the recording ends (and kept if it fails)",
+     nullptr,
      [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
      [](const Settings& s) { return s.script_output; }, false},
 }};

@@ -32,6 +32,18 @@ constexpr std::array<std::pair<std::string_view, int>, 9> kHatValues = {{
     {"rightup", 3}, {"rightdown", 6}, {"leftup", 9}, {"leftdown", 12},
 }};
 
+/// A controller's name as a `connect` line holds it: printable_text() (a
+/// newline in a device's name never starts another event), and `#`, which
+/// would start a comment, and a space at either end, which the reader trims,
+/// as \x23 and \x20.
+std::string script_name(std::string_view name) {
+  std::string out;
+  for (const char c : printable_text(name)) out += c == '#' ? std::string("\\x23") : std::string(1, c);
+  if (out.starts_with(' ')) out.replace(0, 1, "\\x20");
+  if (out.ends_with(' ')) out.replace(out.size() - 1, 1, "\\x20");
+  return out;
+}
+
 }  // namespace
 
 std::optional<InputEvent> EventReader::next() {
@@ -71,10 +83,16 @@ std::optional<InputEvent> EventReader::next() {
     if (kind.text == "connect") {
       ev.type = T::kConnect;
       if (tokens.size() > 2) {
-        ev.name = std::string(line.substr(static_cast<std::size_t>(tokens[2].column - 1)));
-        while (!ev.name.empty() && (ev.name.back() == ' ' || ev.name.back() == '\t' || ev.name.back() == '\r')) {
-          ev.name.pop_back();
+        // The name as format_event writes it: one line of printable text, escaped (docs/event-scripts.md).
+        auto written = std::string(line.substr(static_cast<std::size_t>(tokens[2].column - 1)));
+        while (!written.empty() && (written.back() == ' ' || written.back() == '\t' || written.back() == '\r')) {
+          written.pop_back();
         }
+        if (!is_printable_line(written)) {
+          throw fail(tokens[2], "controller name " + quote(written) +
+                                    " is not one line of printable text (a control byte or invalid UTF-8 is written \\xNN)");
+        }
+        ev.name = unescape_text(written, at(tokens[2]));
         if (ev.name.size() > kMaxControllerNameBytes) {
           throw fail(tokens[2], "controller name longer than " + std::to_string(kMaxControllerNameBytes) + " bytes");
         }
@@ -179,7 +197,7 @@ std::string format_event(const InputEvent& event) {
   };
   switch (event.type) {
     case T::kConnect:
-      out += event.name.empty() ? "connect" : pad("connect") + event.name.substr(0, kMaxControllerNameBytes);
+      out += event.name.empty() ? "connect" : pad("connect") + script_name(event.name.substr(0, kMaxControllerNameBytes));
       break;
     case T::kDisconnect: out += "disconnect"; break;
     case T::kEnd: out += "end"; break;

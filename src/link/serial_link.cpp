@@ -36,7 +36,7 @@ std::string held_by(const PortHolder& holder, std::string_view how) {
 [[noreturn]] void refuse_held_port(const std::string& path, const SourcePos& pos, std::string_view how) {
   const PortHolder holder = find_port_holder(path);
   const char* why = holder.program == kBridgeProgram ? "a second bridge is refused" : "the bridge will not share it";
-  throw InputError(pos, "serial port " + quote(path) + " is in use by " + held_by(holder, how) + ": " + why);
+  throw InputError(pos, "serial port " + quote_name(path) + " is in use by " + held_by(holder, how) + ": " + why);
 }
 
 }  // namespace
@@ -45,14 +45,14 @@ void check_serial_port(const std::string& path, const SourcePos& pos) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
     if (errno == ENOENT) return;  // not plugged in yet: the link waits for it
-    throw InputError(pos, "serial port " + quote(path) + ": " + std::strerror(errno));
+    throw InputError(pos, "serial port " + quote_name(path) + ": " + std::strerror(errno));
   }
   if (!S_ISCHR(st.st_mode)) {
     const char* what = S_ISDIR(st.st_mode) ? "a directory" : S_ISREG(st.st_mode) ? "a regular file" : "not a device";
-    throw InputError(pos, "serial port " + quote(path) + " is not a serial device (" + what + ")");
+    throw InputError(pos, "serial port " + quote_name(path) + " is not a serial device (" + what + ")");
   }
   if (::access(path.c_str(), R_OK | W_OK) != 0 && errno == EACCES) {
-    throw InputError(pos, "serial port " + quote(path) +
+    throw InputError(pos, "serial port " + quote_name(path) +
                               ": permission denied (join the dialout group, or install the udev rules: "
                               "docs/running.md)");
   }
@@ -64,7 +64,7 @@ void check_serial_port(const std::string& path, const SourcePos& pos) {
   }
   // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
   if (isatty(fd.get()) == 0) {
-    throw InputError(pos, "serial port " + quote(path) +
+    throw InputError(pos, "serial port " + quote_name(path) +
                               " is not a serial device (a character device that is not a terminal)");
   }
   // Held by another bridge, or another program: waiting for it would hand the

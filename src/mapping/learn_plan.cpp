@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "andros/base/text.hpp"
 #include "andros/mapping/learn.hpp"
 #include "overload.hpp"
 
@@ -81,7 +82,7 @@ std::string target(const Mapping& m, const LearnStep& s) {
   if (s.role == Role::kDeadman) return "the deadman";
   if (s.role == Role::kLayerKey) {
     const auto& layer = m.layers.at(static_cast<std::size_t>(s.layer));
-    return "the key of layer '" + layer.name + (layer.toggle ? "' (toggle)" : "' (hold)");
+    return "the key of layer " + quote_name(layer.name) + (layer.toggle ? " (toggle)" : " (hold)");
   }
   const auto& b = binding_of(m, s);
   return std::visit(Overload{
@@ -90,13 +91,13 @@ std::string target(const Mapping& m, const LearnStep& s) {
                         [&](const PairBinding& r) { return name_of(r.signals[0]) + " / " + name_of(r.signals[1]); },
                         [&](const AxisBinding& r) { return name_of(r.analog); },
                         [&](const KnobBinding& r) { return name_of(r.analog) + (s.slot == 0 ? " up" : " down"); },
-                        [&](const SelectorBinding& r) { return "selector " + r.name + (s.slot == 0 ? " next" : " prev"); },
+                        [&](const SelectorBinding& r) { return "selector " + printable_text(r.name) + (s.slot == 0 ? " next" : " prev"); },
                     },
                     b.rule);
 }
 
 std::string layer_name(const Mapping& m, int layer) {
-  return layer < 0 ? "base layer" : "layer '" + m.layers.at(static_cast<std::size_t>(layer)).name + "'";
+  return layer < 0 ? "base layer" : "layer " + quote_name(m.layers.at(static_cast<std::size_t>(layer)).name);
 }
 
 // "lefty up", "rightx left", "lefttrigger", "axis 2 -"; a button's name.

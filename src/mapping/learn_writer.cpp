@@ -3,6 +3,7 @@
 #include <charconv>
 #include <set>
 
+#include "andros/base/text.hpp"
 #include "andros/mapping/learn.hpp"
 #include "merge.hpp"
 #include "overload.hpp"
@@ -19,15 +20,41 @@ std::string number(double value) {
   return ec == std::errc() ? std::string(text, end) : std::to_string(value);
 }
 
-// A YAML double-quoted scalar: safe for any path or name.
+// A YAML double-quoted scalar that reads back as the same bytes, whatever a
+// name or path holds: a quote and a backslash escaped, a control character (a
+// newline in a layer's name, ESC, DEL, a C1 control) as \xNN or \u00NN, which
+// YAML may not hold raw; the rest as it is.
 std::string quoted(std::string_view text) {
   std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto next = i + 1 < text.size() ? static_cast<unsigned char>(text[i + 1]) : 0U;
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c < 0x20 || c == 0x7F) {
+      out += "\\x" + hex_byte(c);
+    } else if (c == 0xC2 && next >= 0x80 && next <= 0x9F) {
+      out += "\\u00" + hex_byte(static_cast<std::uint8_t>(next));
+      ++i;
+    } else {
+      out += static_cast<char>(c);
+    }
   }
   return out + "\"";
 }
+
+// The binding's first line ("signal: front_art_up", "analog: drive"): what it does.
+std::string what_of(const Binding& b) {
+  const auto text = binding_yaml(b, "");
+  return text.substr(0, text.find('\n'));
+}
+
+bool same_target(const Binding& a, const Binding& b) { return what_of(a) == what_of(b); }
 
 std::string axis_extras(bool invert, std::optional<double> threshold) {
   std::string out;
@@ -83,34 +110,77 @@ std::string inputs_of(const Binding& b) {
   return out;
 }
 
-// One layer's list in the extending file: the changed bindings, and an
-// unbind for each old binding that no new one replaces by the loader's rule.
+// One layer's list in the extending file: what makes base's list the
+// learned one under the loader's rule (merge_bindings). The two are compared
+// as sets of bindings, not by position: base may be another file than the one
+// learned from (learn writing over its own output extends what that extended).
+// A binding not in learned is replaced by a new one it conflicts with, or
+// dropped by an unbind of its input; a kept binding that a new binding or an
+// unbind would drop by the way is written again, unchanged.
 std::string list_yaml(const std::vector<Binding>& base, const std::vector<Binding>& learned, std::string_view indent) {
-  std::set<std::size_t> emitted;
-  std::vector<Binding> news;
-  for (std::size_t i = 0; i < base.size(); ++i) {
-    if (binding_yaml(base[i], "") != binding_yaml(learned[i], "")) emitted.insert(i);
+  const auto text = [](const Binding& b) { return binding_yaml(b, ""); };
+  std::multiset<std::string> base_texts;
+  std::multiset<std::string> learned_texts;
+  for (const auto& b : base) base_texts.insert(text(b));
+  for (const auto& b : learned) learned_texts.insert(text(b));
+  const auto take = [&](std::multiset<std::string>& set, const std::string& t) {
+    const auto it = set.find(t);
+    if (it == set.end()) return false;
+    set.erase(it);
+    return true;
+  };
+  std::vector<bool> emit(learned.size(), false);  // new, or written again
+  std::vector<bool> kept(base.size(), false);     // base bindings learned has unchanged
+  {
+    auto remaining = base_texts;
+    for (std::size_t i = 0; i < learned.size(); ++i) emit[i] = !take(remaining, text(learned[i]));
+    auto unmatched = learned_texts;
+    for (std::size_t i = 0; i < base.size(); ++i) kept[i] = take(unmatched, text(base[i]));
   }
-  for (const auto i : emitted) news.push_back(learned[i]);
   std::vector<Unbind> unbinds;
-  for (const auto i : emitted) {
-    const bool replaced = std::any_of(news.begin(), news.end(), [&](const Binding& b) { return bindings_conflict(base[i], b); });
-    if (!replaced) unbinds.push_back(Unbind{input::input_name(base[i].inputs.at(0).key), {}});
-  }
-  // An unbind of a number drops the joystick button and axis of that number:
-  // a binding it drops by the way is written again, unchanged.
+  const auto emitted_conflict = [&](const Binding& old) {
+    for (std::size_t i = 0; i < learned.size(); ++i) {
+      if (emit[i] && bindings_conflict(old, learned[i])) return true;
+    }
+    return false;
+  };
   for (std::size_t i = 0; i < base.size(); ++i) {
-    if (std::any_of(unbinds.begin(), unbinds.end(), [&](const Unbind& u) { return unbind_matches(u, base[i]); })) {
-      emitted.insert(i);
+    if (kept[i] || emitted_conflict(base[i])) continue;
+    const auto name = input::input_name(base[i].inputs.at(0).key);
+    if (std::none_of(unbinds.begin(), unbinds.end(), [&](const Unbind& u) { return u.name == name; })) {
+      unbinds.push_back(Unbind{name, {}});
+    }
+  }
+  // A kept binding dropped by an unbind or a written binding is written again,
+  // which may drop another: until nothing changes.
+  for (bool again = true; again;) {
+    again = false;
+    for (std::size_t i = 0; i < base.size(); ++i) {
+      if (!kept[i]) continue;
+      const bool dropped = emitted_conflict(base[i]) ||
+                           std::any_of(unbinds.begin(), unbinds.end(), [&](const Unbind& u) { return unbind_matches(u, base[i]); });
+      if (!dropped) continue;
+      for (std::size_t j = 0; j < learned.size(); ++j) {
+        if (!emit[j] && text(learned[j]) == text(base[i])) {
+          emit[j] = true;
+          again = true;
+          break;
+        }
+      }
     }
   }
   std::string out;
   for (const auto& u : unbinds) out += std::string(indent) + "- unbind: " + u.name + "\n";
-  for (const auto i : emitted) {
+  for (std::size_t i = 0; i < learned.size(); ++i) {
+    if (!emit[i]) continue;
     auto item = binding_yaml(learned[i], indent);
     const auto eol = item.find('\n');
-    const bool same = binding_yaml(base[i], "") == binding_yaml(learned[i], "");
-    item.insert(eol, same ? "    # unchanged" : "    # was " + inputs_of(base[i]));
+    std::string note = "    # new";
+    if (base_texts.count(text(learned[i])) > 0) note = "    # unchanged";
+    for (std::size_t j = 0; j < base.size() && note == "    # new"; ++j) {
+      if (!kept[j] && same_target(base[j], learned[i])) note = "    # was " + inputs_of(base[j]);
+    }
+    item.insert(eol, note);
     out += item;
   }
   return out;
@@ -137,26 +207,33 @@ std::string binding_yaml(const Binding& binding, std::string_view indent) {
   return out;
 }
 
-std::string LearnPlan::extending_yaml(std::string_view extends) const {
+std::string LearnPlan::extending_yaml(std::string_view extends) const { return extending_yaml(extends, base_); }
+
+std::string LearnPlan::extending_yaml(std::string_view extends, const Mapping& over) const {
   std::string out = "# Written by andros-bridge learn: only what changed from the mapping it extends.\n";
   out += "robot: " + learned_.robot.value_or("") + "\n";
   out += "extends: " + quoted(extends) + "\n";
-  if (learned_.deadman && base_.deadman) {
-    const auto before = input::input_name(base_.deadman->key);
+  if (learned_.center != over.center) out += "center: " + std::to_string(learned_.center) + "\n";
+  if (learned_.brake != over.brake) out += std::string("brake: ") + (learned_.brake == BrakeMode::kMoving ? "moving" : "enabled") + "\n";
+  if (learned_.deadman && over.deadman) {
+    const auto before = input::input_name(over.deadman->key);
     const auto now = input::input_name(learned_.deadman->key);
     if (before != now) out += "deadman: " + now + was(before, now) + "\n";
   }
-  const auto base_list = list_yaml(base_.bindings, learned_.bindings, "  ");
+  const auto base_list = list_yaml(over.bindings, learned_.bindings, "  ");
   if (!base_list.empty()) out += "bindings:\n" + base_list;
   std::string layers;
-  for (std::size_t l = 0; l < learned_.layers.size(); ++l) {
-    const auto& before = base_.layers[l];
-    const auto& now = learned_.layers[l];
-    const auto list = list_yaml(before.bindings, now.bindings, "      ");
-    const auto key_before = input::input_name(before.input.key);
+  for (const auto& now : learned_.layers) {
+    const auto it = std::find_if(over.layers.begin(), over.layers.end(), [&](const Layer& l) { return l.name == now.name; });
+    static const std::vector<Binding> kNone;
+    const auto& before_list = it == over.layers.end() ? kNone : it->bindings;
+    const auto list = list_yaml(before_list, now.bindings, "      ");
     const auto key_now = input::input_name(now.input.key);
-    if (list.empty() && key_before == key_now) continue;
-    layers += "  " + quoted(now.name) + ":\n    " + (now.toggle ? "toggle: " : "hold: ") + key_now + was(key_before, key_now) + "\n";
+    const auto key_before = it == over.layers.end() ? std::string() : input::input_name(it->input.key);
+    const bool same_kind = it != over.layers.end() && it->toggle == now.toggle;
+    if (list.empty() && key_before == key_now && same_kind) continue;
+    layers += "  " + quoted(now.name) + ":\n    " + (now.toggle ? "toggle: " : "hold: ") + key_now +
+              (key_before.empty() ? "" : was(key_before, key_now)) + "\n";
     layers += list.empty() ? "    bindings: []\n" : "    bindings:\n" + list;
   }
   if (!layers.empty()) out += "layers:\n" + layers;

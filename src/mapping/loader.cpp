@@ -4,6 +4,7 @@
 #include <limits>
 #include <set>
 
+#include "andros/base/text.hpp"
 #include "andros/protocol/robots.hpp"
 #include "feedback_reader.hpp"
 #include "merge.hpp"
@@ -239,7 +240,25 @@ struct Chain {
   std::size_t node_budget = yaml::kMaxNodes;
 };
 
-Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from);
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text = nullptr);
+
+/// `extends: ROBOT` (a robot's name, no folder): that robot's mapping as
+/// `--robot` finds it, passing over the files of this chain, so that
+/// ~/.config/andros-bridge/mappings/hd1.yaml may extend the shipped hd1.yaml.
+fs::path robot_base(const Reader& r, const YAML::Node& node, std::string_view robot, const Chain& chain) {
+  const auto file = to_lower(*protocol::canonical_robot(robot)) + ".yaml";
+  std::string looked;
+  for (const auto& dir : mapping_search_path()) {
+    std::error_code ec;
+    const auto candidate = dir / file;
+    if (!fs::is_regular_file(candidate, ec)) continue;
+    if (std::find(chain.files.begin(), chain.files.end(), fs::weakly_canonical(candidate, ec)) != chain.files.end()) continue;
+    return candidate;
+  }
+  for (const auto& dir : mapping_search_path()) looked += (looked.empty() ? "" : ", ") + dir.string();
+  r.fail(node, "'extends: " + std::string(robot) + "': no " + file + " other than this file on the mapping search path (" +
+                   looked + ")");
+}
 
 void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
   if (chain.files.size() >= kMaxExtendsChain) {
@@ -247,24 +266,26 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
                      " of the chain from '" + chain.files.front().filename().string() + "' (at most " +
                      std::to_string(kMaxExtendsChain) + " files)");
   }
-  const auto base_path = file.parent_path() / r.text(node, "extends");
+  const auto name = r.text(node, "extends");
+  const bool robot = name.find('/') == std::string::npos && protocol::canonical_robot(name).has_value();
+  const auto base_path = robot ? robot_base(r, node, name, chain) : file.parent_path() / name;
   // The base's values stand unless this file sets them; its robot does not carry over.
   out = read_file(base_path, chain, r.pos(node));
   out.robot.reset();
 }
 
-Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
+Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text) {
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
-  if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file " + quote(file.string()));
+  if (text == nullptr && !fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
+                                                       "cannot open mapping file " + quote_name(file.string()));
   if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
     for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
     throw InputError(from, "'extends' makes a cycle: " + loop + canonical.filename().string());
   }
   chain.files.push_back(canonical);
-  const Reader r(file.string());
+  const Reader r(file.string(), text);
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
                 {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "brake",
@@ -346,5 +367,10 @@ Mapping load_mapping_file(const fs::path& file) {
 }
 
 ValidMapping load_mapping(const fs::path& file) { return validate(load_mapping_file(file), true); }
+
+ValidMapping load_mapping_text(const std::string& text, const fs::path& file) {
+  Chain chain;
+  return validate(read_file(file, chain, SourcePos{}, &text), true);
+}
 
 }  // namespace andros::mapping

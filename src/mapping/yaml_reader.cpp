@@ -114,7 +114,7 @@ std::optional<YAML::Mark> second_document(const std::string& text) {
 }  // namespace
 
 YAML::Node Reader::load_document(std::size_t& budget) const {
-  const std::string text = read_text_file(file_, kMappingLimits);
+  const std::string text = text_ != nullptr ? *text_ : read_text_file(file_, kMappingLimits);
   YAML::Node document;
   std::optional<YAML::Mark> second;
   try {

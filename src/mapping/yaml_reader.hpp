@@ -22,6 +22,9 @@ inline constexpr std::size_t kMaxNodes = 100'000;
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
+  /// Reads text as the contents of file (which need not exist): `learn`
+  /// checks what it is about to write under the name it will have.
+  Reader(std::string file, const std::string* text) : file_(std::move(file)), text_(text) {}
 
   /// The file's one YAML document (a null node for an empty file), its nodes
   /// taken from budget. A second document, or more nodes than budget holds,
@@ -55,6 +58,7 @@ class Reader {
 
  private:
   std::string file_;
+  const std::string* text_ = nullptr;
 };
 
 }  // namespace andros::mapping::yaml

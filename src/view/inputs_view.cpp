@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "andros/base/text.hpp"
 #include "andros/mapping/axis.hpp"
 #include "format.hpp"
 
@@ -95,7 +96,8 @@ std::string bar(InputKey key, std::int16_t value) {
 }
 
 std::string device_text(const input::DeviceLayout& d) {
-  return d.name + " (" + (d.game_controller ? "game controller" : "joystick") + ", GUID " + d.guid + ")";
+  return printable_text(d.name) + " (" + (d.game_controller ? "game controller" : "joystick") + ", GUID " +
+         printable_text(d.guid) + ")";
 }
 
 void append_axis(std::string& out, const input::InputState& state, InputKey key, const AxisUses& uses) {
@@ -128,7 +130,7 @@ AxisUses axis_uses(const mapping::Mapping& mapping) {
   for (const auto ref : mapping::all_bindings(mapping)) {
     auto use = read_by(mapping::binding_at(mapping, ref).rule);
     if (!use) continue;
-    if (ref.layer >= 0) use->second.layer = mapping.layers[static_cast<std::size_t>(ref.layer)].name;
+    if (ref.layer >= 0) use->second.layer = printable_text(mapping.layers[static_cast<std::size_t>(ref.layer)].name);
     uses.emplace(use->first, use->second);  // the first reader wins
   }
   return uses;
@@ -144,7 +146,7 @@ std::string format_input_change(const input::InputEvent& e, const AxisUses& uses
   using T = input::InputEvent::Type;
   const std::string t = std::to_string(e.t_ms) + " ";
   switch (e.type) {
-    case T::kConnect: return t + "connect " + (layout ? device_text(*layout) : e.name);
+    case T::kConnect: return t + "connect " + (layout ? device_text(*layout) : printable_text(e.name));
     case T::kDisconnect: return t + "disconnect";
     case T::kButton: return t + "button " + input_label(e.key) + (e.value != 0 ? " down" : " up");
     case T::kAxis: {
@@ -164,8 +166,8 @@ std::string render_inputs_screen(const input::InputState& state, const std::opti
   std::string out = heading + "\n";
   if (!layout || !state.connected()) return fit(out + "controller: none connected, waiting\n");
   // The GUID apart: a long name must not push it off the screen.
-  out += "controller: " + layout->name + (layout->game_controller ? " (game controller)" : " (joystick)") +
-         "\n  GUID " + layout->guid + "\n\nbuttons (* held)\n";
+  out += "controller: " + printable_text(layout->name) + (layout->game_controller ? " (game controller)" : " (joystick)") +
+         "\n  GUID " + printable_text(layout->guid) + "\n\nbuttons (* held)\n";
   int column = 0;
   for (const auto key : layout->buttons) {
     out += fmt(" %c%3u %-13s", state.button(key).down ? '*' : ' ', static_cast<unsigned>(key.index),

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "andros/base/clock.hpp"
+#include "andros/base/text.hpp"
 
 namespace andros::view {
 namespace {
@@ -21,7 +22,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.t_ms = r.t_ms;
     next.sent = r.data;
     next.connected = r.connected;
-    if (next.connected) next.controller = r.controller.empty() ? "controller" : r.controller;
+    if (next.connected) next.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
     next.state = r.state;
     next.enable_text = state_text(r);
     next.layer = r.engine.layer;

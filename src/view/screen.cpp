@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "andros/base/text.hpp"
+
 namespace andros::view {
 namespace {
 
@@ -54,11 +56,8 @@ void cut(const Line& line, std::size_t width, Out out) {
 
 Line& Line::add(std::string text, Style style) {
   // A control character would move the cursor: a name from a controller or
-  // a file is shown, never obeyed.
-  for (auto& c : text) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  }
-  pieces_.push_back(Piece{std::move(text), style});
+  // a file is shown, never obeyed (escaped as everywhere: base/text.hpp).
+  pieces_.push_back(Piece{printable_line(text), style});
   return *this;
 }
 

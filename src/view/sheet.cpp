@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 
+#include "andros/base/text.hpp"
 #include "sheet_layout.hpp"
 
 namespace andros::view {
@@ -276,10 +277,32 @@ std::string_view mark_name(SheetMark mark) {
   return "";
 }
 
-Sheet build_sheet(const mapping::Mapping& m) {
+namespace {
+
+/// The mapping with the names its file gives (layers, selectors) as the
+/// sheet shows them: escaped (base/text.hpp), so that a name holding a
+/// newline or ESC is shown, never obeyed, on a terminal or in the SVG.
+mapping::Mapping shown_names(mapping::Mapping m) {
+  const auto escape = [](std::vector<mapping::Binding>& list) {
+    for (auto& b : list) {
+      if (auto* s = std::get_if<mapping::SelectorBinding>(&b.rule)) s->name = printable_text(s->name);
+    }
+  };
+  escape(m.bindings);
+  for (auto& layer : m.layers) {
+    layer.name = printable_text(layer.name);
+    escape(layer.bindings);
+  }
+  return m;
+}
+
+}  // namespace
+
+Sheet build_sheet(const mapping::Mapping& from_file) {
+  const auto m = shown_names(from_file);
   Sheet sheet;
   sheet.robot = m.robot.value_or("");
-  sheet.file = std::filesystem::path(m.file).filename().string();
+  sheet.file = printable_text(std::filesystem::path(m.file).filename().string());
   sheet.deadman = m.deadman ? label(m.deadman->key) : "";
   sheet.stop = m.estop ? label(m.estop->key) : "";
   for (int layer = -1; layer < static_cast<int>(m.layers.size()); ++layer) {

@@ -52,6 +52,43 @@ TEST(Text, ToIntegerTakesTheWholeTextOrNothing) {
   EXPECT_FALSE(to_integer("3c"));  // decimal unless asked
 }
 
+TEST(Text, PrintableTextKeepsPrintableUtf8AndEscapesTheRest) {
+  EXPECT_EQ(printable_text("Xbox Wireless Controller"), "Xbox Wireless Controller");
+  EXPECT_EQ(printable_text("Manette caf\xC3\xA9 \xE2\x80\x93 \xE6\x97\xA5\xF0\x9F\x8E\xAE"),
+            "Manette caf\xC3\xA9 \xE2\x80\x93 \xE6\x97\xA5\xF0\x9F\x8E\xAE");  // é, en dash, a CJK, an emoji
+  EXPECT_EQ(printable_text("Gamepad\n500 button a 1\r\t#"), "Gamepad\\n500 button a 1\\r\\t#");
+  EXPECT_EQ(printable_text(std::string("a\0b", 3)), "a\\x00b");
+  EXPECT_EQ(printable_text("\x1B[2J\x1B]0;title\x07"), "\\x1B[2J\\x1B]0;title\\x07");
+  EXPECT_EQ(printable_text("\x7F"), "\\x7F");
+  EXPECT_EQ(printable_text("back\\slash"), "back\\\\slash");
+  EXPECT_EQ(printable_text("\xC2\x9B" "2J"), "\\xC2\\x9B2J");                   // C1 CSI
+  EXPECT_EQ(printable_text("\xEF\xBB\xBFpad"), "\\xEF\\xBB\\xBFpad");            // BOM
+  EXPECT_EQ(printable_text("a\xE2\x80\xAE" "z"), "a\\xE2\\x80\\xAEz");              // right-to-left override
+  EXPECT_EQ(printable_text("a\xE2\x80\xA8" "z"), "a\\xE2\\x80\\xA8z");              // line separator
+  EXPECT_EQ(printable_text("\xFF\xC3(\xE2\x82"), "\\xFF\\xC3(\\xE2\\x82");       // invalid, cut short
+  EXPECT_EQ(printable_text("\xC0\xAF\xED\xA0\x80"), "\\xC0\\xAF\\xED\\xA0\\x80");  // overlong, surrogate
+  EXPECT_EQ(printable_line("C:\\pad\n"), "C:\\pad\\n");  // a backslash kept, the newline not
+}
+
+TEST(Text, UnescapeTextGivesBackTheBytes) {
+  for (const std::string& raw : {std::string("Gamepad\n500 button leftshoulder 0\n#"), std::string("a\0b\x1B\\", 6),
+                                std::string("\xFF\xEF\xBB\xBFok \xC3\xA9")}) {
+    EXPECT_EQ(unescape_text(printable_text(raw), SourcePos{}), raw);
+  }
+  EXPECT_EQ(unescape_text("\\x41\\x6a", SourcePos{}), "Aj");
+  EXPECT_EQ(input_error_text([] { unescape_text("ab\\q", SourcePos{"x.events", 3, 10}); }),
+            "x.events:3:12: error: unknown escape '\\\\q' (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
+  EXPECT_NE(input_error_text([] { unescape_text("\\x4", SourcePos{}); }), "no error");
+  EXPECT_NE(input_error_text([] { unescape_text("end\\", SourcePos{}); }), "no error");
+}
+
+TEST(Text, QuoteNameNeverCutsWhileQuoteCutsAPieceOfInput) {
+  const std::string path = "/dev/serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0-and-more-to-tell-them-apart";
+  EXPECT_EQ(quote_name(path), "'" + path + "'");
+  EXPECT_EQ(quote(path), "'" + path.substr(0, kMaxQuoted) + "'... (" + std::to_string(path.size()) + " bytes)");
+  EXPECT_EQ(quote_name("a\nb\x1B"), "'a\\nb\\x1B'");
+}
+
 TEST(Text, ParseCodeTakesOneOrTwoHexDigits) {
   EXPECT_EQ(parse_code("01", SourcePos{}), 0x01);
   EXPECT_EQ(parse_code("3C", SourcePos{}), 0x3C);

@@ -87,7 +87,9 @@ expect_error "andros-bridge: error: EVENTS is required (see --help)" "$BIN" repl
 expect_error "--format: error: format 'xml' is not one of hex, raw, jsonl" "$BIN" replay ok.events --format xml
 expect_error "andros-bridge: error: replay: give --robot or --mapping, not both" "$BIN" replay ok.events --robot hd1 --mapping x.yaml
 expect_error "andros-bridge: error: frame encode: expected 32 hex digits (16 data bytes), got 2 characters" "$BIN" frame encode 12
-expect_error "/nonexistent/dir/x.events: error: cannot create: No such file or directory" "$BIN" record --output /nonexistent/dir/x.events
+# An output that cannot be made is exit 1 as for every command's --output (docs/running.md, Output files).
+expect_exit 1 "$BIN" record --output /nonexistent/dir/x.events
+expect_stderr_matches "^andros-bridge: error: cannot open '/nonexistent/dir/x.events' for writing: No such file or directory$"
 # Empty values, a device that is not a terminal, directories (each once fell back, retried for ever or exited 1).
 expect_error "--mapping: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --mapping "" --input ok.events
 expect_error "--config: error: empty value (give one, or leave the option out)" timeout 20 "$BIN" run --config "" --input ok.events
@@ -126,6 +128,18 @@ expect_error "nul.yaml:4:13: error: unknown signal 'tool\\x00on' (expected one o
 w bom_robot.yaml 'robot: \xEF\xBB\xBFHD1\ndeadman: a\n'
 expect_error "bom_robot.yaml:1:8: error: unknown robot '\\xEF\\xBB\\xBFHD1' (expected F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)" "$BIN" check bom_robot.yaml
 expect_error "--robot: error: unknown robot '\\xEF\\xBB\\xBFhd1' (one of F6A, VA1, WOLVERINE, HD1, PROWLER, RAV, RONS)" "$BIN" run --robot $'\xEF\xBB\xBFhd1' --input ok.events
+
+# A controller's name is one line of printable text: as record writes a name
+# holding event lines (escaped), it is one connect line and nothing enables;
+# a raw control byte in a name is refused.
+printf '0 connect Gamepad\\n500 button leftshoulder 0\\n600 button leftshoulder 1\\n700 axis lefty -32768\\n\\x23\n1000 end\n' >hostile_name.events
+printf '0 connect pad\n1000 end\n' >plain.events
+expect_exit 0 "$BIN" replay hostile_name.events
+cp "$TMP/out" hostile.frames
+expect_exit 0 "$BIN" replay plain.events
+cmp -s "$TMP/out" hostile.frames || fail "a controller's name changed the frames: $(diff "$TMP/out" hostile.frames | head -3)"
+printf '0 connect pad\0name\n100 end\n' >nul_name.events
+expect_error "nul_name.events:1:11: error: controller name 'pad\\x00name' is not one line of printable text (a control byte or invalid UTF-8 is written \\xNN)" "$BIN" replay nul_name.events
 
 # Output that cannot be written (a full disk) is exit 1 with one line, not a silent exit 0.
 expect_full() {

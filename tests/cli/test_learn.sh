@@ -13,15 +13,51 @@ expect_exit 2 "$BIN" learn --output "$TMP/mine.yaml"
 expect_stderr_matches "give --robot NAME or --mapping FILE"
 expect_exit 2 "$BIN" learn --robot hd1 --mapping "$MAPPINGS/hd1.yaml" --output "$TMP/mine.yaml"
 expect_exit 2 "$BIN" learn --robot hd1
-expect_exit 2 "$BIN" learn --robot hd1 --output "$TMP/no/such/folder/mine.yaml"
-expect_stderr_matches "^--output: error: no folder"
+expect_exit 2 "$BIN" learn --robot hd1 --output -
+expect_stderr_matches "^--output: error: learn writes a file"
+printf 'x' >"$TMP/afile"
+expect_exit 2 "$BIN" learn --robot hd1 --output "$TMP/afile/mine.yaml"
+expect_stderr_matches "^--output: error: '$TMP/afile' is not a folder$"
 
-# The output may not be the file learned from, nor one it extends.
+# A missing folder is made when the file is written: the session starts (q quits it).
+printf 'q\n' | "$BIN" learn --robot hd1 --output "$TMP/no/such/folder/mine.yaml" >"$TMP/out" 2>"$TMP/err"
+code=$?
+[[ $code -eq 1 ]] || fail "learn to a missing folder exited $code: $(cat "$TMP/err")"
+grep -q '^\[1/' "$TMP/out" || fail "learn to a missing folder did not start: $(cat "$TMP/out" "$TMP/err")"
+
+# The documented output on a fresh account (HOME empty): the session starts.
+mkdir -p "$TMP/home"
+user_hd1="$TMP/home/.config/andros-bridge/mappings/hd1.yaml"
+printf 'q\n' | env -u XDG_CONFIG_HOME HOME="$TMP/home" "$BIN" learn --robot hd1 --output "$user_hd1" >"$TMP/out" 2>"$TMP/err"
+code=$?
+[[ $code -eq 1 ]] || fail "learn on a fresh account exited $code: $(cat "$TMP/err")"
+grep -q '^\[1/' "$TMP/out" || fail "learn on a fresh account did not start: $(cat "$TMP/out" "$TMP/err")"
+
+# The second run on its own output: refused without --force, started with it.
+mkdir -p "$(dirname "$user_hd1")"
+printf 'robot: HD1\nextends: hd1\ndeadman: paddle1\n' >"$user_hd1"
+run_cmd env -u XDG_CONFIG_HOME HOME="$TMP/home" "$BIN" learn --robot hd1 --output "$user_hd1"
+[[ $code -eq 2 ]] || fail "learn over its own output without --force exited $code"
+expect_stderr_matches "^--output: error: '$user_hd1' exists: give --force to replace it"
+printf 'q\n' | env -u XDG_CONFIG_HOME HOME="$TMP/home" "$BIN" learn --robot hd1 --output "$user_hd1" --force >"$TMP/out" 2>"$TMP/err"
+code=$?
+[[ $code -eq 1 ]] || fail "learn over its own output with --force exited $code: $(cat "$TMP/err")"
+grep -q 'Enter keeps paddle1' "$TMP/out" || fail "the second run does not start from the first's buttons: $(head -3 "$TMP/out")"
+
+# An existing file is refused unless --force; a file the mapping extends even with it.
+printf "an operator's notes\n" >"$TMP/notes.txt"
+expect_exit 2 "$BIN" learn --robot hd1 --output "$TMP/notes.txt"
+expect_stderr_matches "exists: give --force"
+[[ $(cat "$TMP/notes.txt") == "an operator's notes" ]] || fail "learn touched an existing file"
 cp "$MAPPINGS/hd1.yaml" "$MAPPINGS/common.yaml" "$TMP/"
-expect_exit 2 "$BIN" learn --mapping "$TMP/hd1.yaml" --output "$TMP/hd1.yaml"
-expect_stderr_matches "is the mapping learned from or a file it extends"
-expect_exit 2 "$BIN" learn --mapping "$TMP/hd1.yaml" --output "$TMP/common.yaml"
+expect_exit 2 "$BIN" learn --mapping "$TMP/hd1.yaml" --output "$TMP/common.yaml" --force
+expect_stderr_matches "is a file the mapping learned from extends: it would extend itself"
 cmp -s "$TMP/common.yaml" "$MAPPINGS/common.yaml" || fail "learn touched the base it refused to write"
+# A long name is never cut in an error.
+long="$TMP/$(printf 'x%.0s' $(seq 100))-the-end"
+mkdir -p "$long" && printf 'x' >"$long/mine.yaml"
+expect_exit 2 "$BIN" learn --robot hd1 --output "$long/mine.yaml"
+expect_stderr_matches "'$long/mine.yaml' exists"
 
 printf 'robot: HD1\ndeadman: leftshoulder\nbindings:\n  - signal: tool_on\n    butten: a\n' >"$TMP/bad.yaml"
 expect_exit 2 "$BIN" learn --mapping "$TMP/bad.yaml" --output "$TMP/mine.yaml"

@@ -134,7 +134,7 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
   }
   expect_terminal_restored();
 
-  write_learned(plan, kHd1, output);
+  write_learned(plan, plan.extending_yaml(extends_name(kHd1, "HD1", output), plan.base()), output);
   const auto loaded = *mapping::load_mapping(output);
   EXPECT_TRUE(plan.matches(loaded));
   std::stringstream text;

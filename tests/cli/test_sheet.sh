@@ -90,7 +90,7 @@ expect_exit 2 "$BIN" sheet --mapping "$TMP/bad.yaml" --output "$TMP/bad.svg"
 expect_stderr_matches "bad.yaml:4:13: error: unknown signal"
 [[ -e "$TMP/bad.svg" ]] && fail "--output created for a bad mapping"
 expect_exit 1 "$BIN" sheet --robot hd1 --output "$TMP/no/such/dir/x.svg"
-expect_stderr_matches "cannot open for writing"
+expect_stderr_matches "cannot open '$TMP/no/such/dir/x.svg' for writing: No such file or directory$"
 expect_exit 0 "$BIN" sheet --help
 grep -q "A4 or Letter" "$TMP/out" || fail "--help does not say what the page fits"
 

@@ -89,6 +89,45 @@ INSTANTIATE_TEST_SUITE_P(
                   "time 86400001 ms is past 24 h (86400000 ms), the longest an event script may last"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
+// A controller names itself (its USB descriptors): a name holding newlines
+// written by `record` stays one connect line and reads back as the same bytes.
+TEST(EventScript, AControllerNameIsOneLineOfPrintableText) {
+  const std::string hostile = "Gamepad\n500 button leftshoulder 0\n600 button leftshoulder 1\n700 axis lefty -32768\n#";
+  InputEvent connect;
+  connect.type = T::kConnect;
+  connect.name = hostile;
+  const auto line = format_event(connect);
+  EXPECT_EQ(line, "0       connect     Gamepad\\n500 button leftshoulder 0\\n600 button leftshoulder 1\\n700 axis lefty "
+                  "-32768\\n\\x23");
+  const auto events = parse_event_script(line + "\n900 end\n", "recorded.events");
+  ASSERT_EQ(events.size(), 2U);
+  EXPECT_EQ(events[0].name, hostile);
+  EXPECT_EQ(events[1].type, T::kEnd);
+
+  for (const std::string& name : {std::string("pad\0\x1B[2J\\ \xFF", 10), std::string("Manette \xC3\xA9 #2")}) {
+    connect.name = name;
+    EXPECT_EQ(parse_event_script(format_event(connect) + "\n", "x.events").at(0).name, name) << format_event(connect);
+  }
+}
+
+TEST(EventScript, AControllerNameWithARawControlByteIsRefused) {
+  const auto error = [](const std::string& script) {
+    try {
+      parse_event_script(script, "x.events");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error(std::string("0 connect pad\0name\n", 19)),
+            "x.events:1:11: error: controller name 'pad\\x00name' is not one line of printable text (a control byte or "
+            "invalid UTF-8 is written \\xNN)");
+  EXPECT_NE(error("0 connect \x1B[31mred\n").find("is not one line of printable text"), std::string::npos);
+  EXPECT_EQ(error("0 connect pad\\q\n"),
+            "x.events:1:14: error: unknown escape '\\\\q' (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
+  EXPECT_EQ(parse_event_script("0 connect pad\\x00name\n", "x.events").at(0).name, std::string("pad\0name", 8));
+}
+
 TEST(EventScript, LastsAtMostADay) {
   EXPECT_EQ(parse_event_script("0 connect\n86400000 end\n", "day.events").back().t_ms, kMaxScriptMs);
 }

@@ -128,6 +128,19 @@ TEST(InputsView, TheScreenShowsEveryInputOfThePad) {
   }
 }
 
+// A controller names itself: its name is shown escaped, never obeyed.
+TEST(InputsView, AControllersNameReachesTheTerminalEscaped) {
+  InputsBoard board(core_uses(), "h");
+  auto layout = pad_layout();
+  layout.name = "Evil\x1B[2J\nPad";
+  const auto lines = board.update({event(0, T::kConnect, {}, 0, layout.name)}, layout);
+  ASSERT_EQ(lines.size(), 1U);
+  EXPECT_NE(lines[0].find("connect Evil\\x1B[2J\\nPad (game controller"), std::string::npos) << lines[0];
+  const auto screen = board.compose();
+  EXPECT_NE(screen.find("controller: Evil\\x1B[2J\\nPad (game controller)\n"), std::string::npos) << screen;
+  EXPECT_EQ(screen.find('\x1B'), std::string::npos);
+}
+
 TEST(InputsView, TheScreenShowsAJoysticksNumberedInputsAndHats) {
   InputsBoard board({}, "h");
   input::DeviceLayout stick{"Stick", "0300bbbb", false, {}, {}, 1};

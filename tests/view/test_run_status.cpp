@@ -83,6 +83,11 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.link.sent, 7u);
   EXPECT_EQ(s.sent[3], 0x5A);
 
+  auto evil = tick(60);
+  evil.controller = "Gamepad\n\x1B[2J";  // a controller names itself: shown and logged escaped
+  board.observe(evil);
+  EXPECT_EQ(board.snapshot().controller, "Gamepad\\n\\x1B[2J");
+
   auto r = tick(80);
   r.controller.clear();  // a controller without a name
   r.link.motion_allowed = false;

@@ -182,6 +182,22 @@ TEST(Sheet, SvgIsOnePageAndEscapesNames) {
   EXPECT_EQ(svg.find("a&<b>"), std::string::npos);
 }
 
+TEST(Sheet, NamesFromTheFileAreShownEscaped) {
+  testing::TempDir dir;
+  const auto file = dir.write("odd.yaml",
+                              "robot: HD1\ndeadman: a\nbindings:\n  - selector: \"cam\\e[31m\"\n    next: x\n"
+                              "    positions: [[main_video_2], [main_video_3]]\nlayers:\n  \"two\\nlines\\e]0;t\\a\":\n"
+                              "    hold: b\n    bindings: []\n");
+  const auto text = render_sheet_text(build_sheet(*mapping::load_mapping(file)));
+  EXPECT_NE(text.find("TWO\\NLINES\\X1B]0;T\\X07 LAYER: while B is held\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("hold: two\\nlines\\x1B]0;t\\x07 layer"), std::string::npos) << text;
+  EXPECT_NE(text.find("cam\\x1B[31m selector: next"), std::string::npos) << text;
+  EXPECT_EQ(text.find('\x1B'), std::string::npos);
+  EXPECT_EQ(text.find('\a'), std::string::npos);
+  const auto svg = render_sheet_svg(build_sheet(*mapping::load_mapping(file)));
+  EXPECT_EQ(svg.find('\x1B'), std::string::npos);
+}
+
 TEST(Sheet, FormatIsSvgOrText) {
   EXPECT_EQ(parse_sheet_format("svg", {}), SheetFormat::kSvg);
   EXPECT_EQ(parse_sheet_format("text", {}), SheetFormat::kText);

@@ -42,17 +42,25 @@ class RuntimeError : public std::runtime_error {
 };
 
 /// Formats `FILE:LINE:COL: error: WHAT` (or another severity word, such as
-/// `warning`), leaving out the unknown parts. Any byte outside printable ASCII
-/// is shown as \xNN, so that the line stays one line and is printed whole (a
-/// NUL would end it).
+/// `warning`), leaving out the unknown parts. The line is made one line of
+/// printable text (printable_line() of base/text.hpp: a control byte, ESC, a
+/// NUL that would end it, invalid UTF-8 as \xNN), so that it is printed whole
+/// and nothing in it reaches the terminal raw.
 std::string format_error(const SourcePos& pos, const std::string& message, std::string_view severity = "error");
 
 /// How many bytes of a piece of input quote() shows before it cuts it short.
 inline constexpr std::size_t kMaxQuoted = 64;
 
-/// A piece of user input as an error shows it: in single quotes, printable
-/// ASCII as is, a backslash doubled, any other byte as \xNN (a NUL, a UTF-8
-/// BOM: \xEF\xBB\xBF), and at most kMaxQuoted bytes, then `...` and the length.
+/// A piece of user input as an error shows it: in single quotes, escaped by
+/// printable_text() (base/text.hpp: printable UTF-8 as is, a backslash
+/// doubled, a newline as \n, any other control byte or invalid UTF-8 as \xNN,
+/// a NUL or a UTF-8 BOM: \xEF\xBB\xBF), and at most kMaxQuoted bytes, then
+/// `...` and the length.
 std::string quote(std::string_view text);
+
+/// A name (a file's, a serial port's, a controller's, a layer's) as an error
+/// shows it: as quote(), but never cut, since the end of a path is the part
+/// that tells two apart.
+std::string quote_name(std::string_view name);
 
 }  // namespace andros

@@ -33,6 +33,28 @@ std::string hex_byte(std::uint8_t value);
 /// does not fit.
 std::optional<long long> to_integer(std::string_view text, int base = 10);
 
+/// Text from outside (a controller's name from its USB descriptors, a file
+/// name, a mapping's layer name) as one line of printable text, the one way
+/// such text is written anywhere (terminal, log, event script, sheet): valid
+/// printable UTF-8 as it is; a backslash as \\; newline, carriage return and
+/// tab as \n, \r, \t; every other byte of a control character (NUL, ESC,
+/// DEL, C1), of an invisible or bidirectional formatting character (U+200B..
+/// U+200F, U+202A..U+202E, U+2066..U+2069, U+FEFF...) and of invalid UTF-8
+/// as \xNN. unescape_text() gives the bytes back.
+std::string printable_text(std::string_view text);
+
+/// As printable_text(), but a backslash stays as it is: for a line made of
+/// pieces already escaped (an error message with quoted names in it).
+std::string printable_line(std::string_view text);
+
+/// True when printable_line(text) == text: nothing in text would be escaped.
+bool is_printable_line(std::string_view text);
+
+/// The bytes printable_text() was made from: \\, \n, \r, \t and \xNN
+/// decoded. Throws InputError at pos (its column moved to the backslash) for
+/// any other escape.
+std::string unescape_text(std::string_view text, const SourcePos& pos);
+
 /// The dip-switch code: one or two hex digits, an optional 0x prefix ("01",
 /// "3C", "0x3c"). Throws InputError at pos.
 std::uint8_t parse_code(std::string_view text, const SourcePos& pos);

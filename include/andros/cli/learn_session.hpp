@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "andros/input/live_gestures.hpp"
@@ -73,13 +74,39 @@ class LearnSession {
   bool told_waiting_ = false;
 };
 
-/// The path the written file names in `extends:`: relative to the output's
-/// folder when the two share a folder other than the root, else absolute.
-std::string extends_path(const std::filesystem::path& base, const std::filesystem::path& output);
+/// What `learn --output FILE` writes over and extends.
+struct LearnTarget {
+  mapping::Mapping over;  ///< the mapping the written file extends: its bindings are what the file changes
+  std::string extends;    ///< how `extends:` names it (extends_name)
+};
 
-/// Writes the plan's extending file to output atomically (a temporary file
-/// in the same folder, renamed), after loading it with the real loader and
-/// checking that it reads back as learned; on any failure nothing is written.
-void write_learned(const mapping::LearnPlan& plan, const std::filesystem::path& base, const std::filesystem::path& output);
+/// Checks FILE and chooses what the written file extends, before the
+/// session starts (an InputError at --output): FILE is not a folder, its
+/// nearest existing folder is a folder; an existing FILE only with force.
+/// Learning from FILE itself (the second run on one's own output) writes a
+/// file that extends what FILE extended (or, for a file that extends
+/// nothing, the robot's mapping the search path finds past FILE); a FILE
+/// that the mapping learned from extends is refused (it would extend itself).
+LearnTarget learn_target(const mapping::Mapping& base, const std::filesystem::path& output, bool force);
+
+/// How the written file names the file it extends: the robot in lower case
+/// (`extends: hd1`, docs/mapping.md) when the mapping search path, with
+/// output itself passed over, finds that very file for the robot, so that
+/// the file keeps working when copied elsewhere; else the file's absolute path.
+std::string extends_name(const std::filesystem::path& file, const std::optional<std::string>& robot,
+                         const std::filesystem::path& output);
+
+/// Writes text, the plan's extending file, to output (base/output_file.hpp:
+/// whole or not at all, a link followed, the mode kept), after loading it
+/// under output's own name with the real loader and checking that it reads
+/// back as learned; makes output's missing folders. On any failure nothing
+/// is written and the error names output.
+void write_learned(const mapping::LearnPlan& plan, const std::string& text, const std::filesystem::path& output);
+
+/// write_learned(); when it fails, the session is not lost: text goes to out
+/// ("FILE not written; the learned mapping, to keep:" and the YAML) before
+/// the error is thrown on.
+void write_learned_or_show(const mapping::LearnPlan& plan, const std::string& text, const std::filesystem::path& output,
+                           std::FILE* out);
 
 }  // namespace andros::cli

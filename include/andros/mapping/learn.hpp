@@ -70,6 +70,11 @@ class LearnPlan {
   /// changed bindings, each with an `unbind:` for its old input when the
   /// new binding does not replace the old one by itself.
   [[nodiscard]] std::string extending_yaml(std::string_view extends) const;
+  /// The same, extending another mapping than the base: `over`, the file
+  /// `extends` names (learn writing over the file it learned from extends
+  /// what that file extended). Bindings are compared as sets, so over's lists
+  /// need not line up with the base's.
+  [[nodiscard]] std::string extending_yaml(std::string_view extends, const Mapping& over) const;
 
   /// True when loaded (the written file, read back) has the learned inputs:
   /// the same deadman, layer keys, and bindings in every layer.

@@ -18,6 +18,11 @@ Mapping load_mapping_file(const std::filesystem::path& file);
 /// validates it; it must name a robot.
 ValidMapping load_mapping(const std::filesystem::path& file);
 
+/// Reads text as the mapping file `file` would be read (its errors name
+/// file, its `extends:` is found from there), and validates it; file need
+/// not exist. For `learn`, which checks a file before it writes it.
+ValidMapping load_mapping_text(const std::string& text, const std::filesystem::path& file);
+
 /// Where `--robot NAME` looks, in order: $XDG_CONFIG_HOME/andros-bridge/mappings
 /// (default ~/.config/...), the source tree's mappings/ when it exists (not
 /// in a package's build), bin/../share/andros-bridge/mappings beside the

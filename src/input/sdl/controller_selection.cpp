@@ -51,8 +51,8 @@ std::string ControllerSelection::describe() const {
   switch (by_) {
     case By::kFirst: return "the first controller";
     case By::kIndex: return "controller " + std::to_string(index_);
-    case By::kGuid: return "the controller with GUID " + text_;
-    case By::kName: return "a controller named like '" + text_ + "'";
+    case By::kGuid: return "the controller with GUID " + printable_text(text_);
+    case By::kName: return "a controller named like " + quote_name(text_);
   }
   return {};
 }

@@ -6,6 +6,8 @@
 #include <array>
 #include <optional>
 
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 #include "controller_selection.hpp"
 #include "feedback_player.hpp"
 #include "sdl_device.hpp"
@@ -82,10 +84,10 @@ void SdlInput::Impl::connect_chosen(std::int64_t now_ms) {
     if (!selection.matches(i)) continue;
     device = SdlDevice::open(i);
     if (!device) {
-      spdlog::warn("cannot open controller {} '{}': {}", i, device_name(i), SDL_GetError());
+      spdlog::warn("cannot open controller {} {}: {}", i, quote_name(device_name(i)), SDL_GetError());
       continue;
     }
-    spdlog::info("controller connected: {} ({}, {})", device->name(), device->guid(),
+    spdlog::info("controller connected: {} ({}, {})", printable_text(device->name()), printable_text(device->guid()),
                  device->is_game_controller() ? "game controller" : "joystick");
     waiting_logged = false;
     connect_t = now_ms;
@@ -109,7 +111,7 @@ void SdlInput::Impl::connect_chosen(std::int64_t now_ms) {
 }
 
 void SdlInput::Impl::lose(std::int64_t now_ms) {
-  spdlog::warn("controller lost: {}", device->name());
+  spdlog::warn("controller lost: {}", printable_text(device->name()));
   device.reset();
   feedback.cancel();
   // SDL releases a removed device's buttons and recentres its axes just

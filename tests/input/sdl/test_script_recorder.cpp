@@ -70,9 +70,28 @@ struct PadRig {
     DummyVideo() { test::use_dummy_video(); }
   } video;
   SdlSession session;
-  std::unique_ptr<VirtualDevice> pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Test Pad"));
+  std::unique_ptr<VirtualDevice> pad;
   SdlInput input{SdlInputOptions{}};
+
+  explicit PadRig(const char* name = "Test Pad") : pad(std::make_unique<VirtualDevice>(VirtualDevice::pad(name))) {}
 };
+
+// A controller names itself: a pad whose name holds newlines and event
+// lines records one connect line, which reads back as that name, never as
+// presses (docs/event-scripts.md).
+TEST(ScriptRecorder, AHostileControllerNameStaysOneConnectLine) {
+  const char* hostile = "Gamepad\n500 button leftshoulder 0\n600 button leftshoulder 1\n700 axis lefty -32768\n#";
+  PadRig rig(hostile);
+  std::ostringstream out;
+  StopRequest stop;
+  int calls = 0;
+  record_script(rig.input, out, RecordOptions{}, stop, [&](const RecordStatus&) { return ++calls < 3; });
+  const auto events = parse_event_script(out.str(), "recorded");
+  ASSERT_EQ(events.size(), 2U) << out.str();
+  EXPECT_EQ(events[0].type, T::kConnect);
+  EXPECT_EQ(events[0].name, hostile) << out.str();
+  EXPECT_EQ(events[1].type, T::kEnd);
+}
 
 // A recording ends by itself at its longest (a day for `record`, so that
 // replay and run take what it wrote; 100 ms here), with its `end` no later.
