@@ -23,6 +23,16 @@ std::string_view describe(EnableState state) {
   return "?";
 }
 
+std::string_view describe(ConsentState state) {
+  switch (state) {
+    case ConsentState::kNotAsked: return "not asked";
+    case ConsentState::kReleased: return "released";
+    case ConsentState::kHeldBack: return "held since before: release and press it again";
+    case ConsentState::kGiven: return "given";
+  }
+  return "?";
+}
+
 Engine::Engine(ValidMapping mapping, EngineOptions options)
     : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(*mapping_) {
   const auto note_button = [this](input::InputKey key) {
@@ -63,6 +73,7 @@ void Engine::clear_toggles() { toggled_.reset(); }
 
 void Engine::start_session(const input::InputState& input, bool at_start_up) {
   connection_ = input.connection();
+  supervisor_connection_ = input.supervisor().connection();
   seen_presses_.clear();
   deadman_released_seen_ = false;
   deadman_base_ = 0;
@@ -173,7 +184,8 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    }
                  },
                  [&](const WeaponBinding& b) {
-                   const bool arm = b.arm && held(input, *b.arm);
+                   // Two people: the operator's arming input and the supervisor's consent, if asked for.
+                   const bool arm = b.arm && held(input, *b.arm) && rest_.consent();
                    if (arm) armed.set(b.signal);
                    if (arm && active(b.input)) out[b.signal] = 1;
                  },
@@ -219,6 +231,25 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
              binding.rule);
 }
 
+void Engine::read_stops(const input::InputState& input) {
+  status_.stop_pressed = false;
+  status_.stop_held = false;
+  status_.supervisor_stop = false;
+  if (mapping_->supervisor) {
+    // Counted per controller session, never consumed by a restart: a tap between two ticks is never lost.
+    const auto& pad = input.supervisor();
+    if (pad.connection() != stop_connection_) {
+      stop_connection_ = pad.connection();
+      stop_presses_ = 0;
+    }
+    const auto stop = pad.button(mapping_->supervisor->stop.key);
+    status_.supervisor_stop = stop.down;
+    status_.stop_pressed = stop.down || stop.presses > stop_presses_;
+    status_.stop_held = stop.down;
+    stop_presses_ = stop.presses;
+  }
+}
+
 protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t now_ms) {
   if (!started_) {
     started_ = true;
@@ -226,7 +257,11 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
     last_ms_ = now_ms;
   } else if (input.connection() != connection_) {
     start_session(input, false);  // a new controller session: toggles start cleared
+  } else if (input.supervisor().connection() != supervisor_connection_) {
+    // The supervisor's controller new or back: afresh, as after any stop (the deadman held through it is history).
+    start_session(input, true);
   }
+  read_stops(input);
   status_.enable = enable_state(input);
   const bool enabled = status_.enable == EnableState::kEnabled;
   // Nothing is latched past the deadman: a toggled layer (a weapons layer above
@@ -238,7 +273,8 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   status_.held_back = rest_.held_back_inputs();
 
   protocol::ControlState state = resting_state();
-  SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake};
+  status_.consent = rest_.consent_state();
+  SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake, rest_.consent()};
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);

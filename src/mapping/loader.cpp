@@ -196,6 +196,17 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, B
   return layer;
 }
 
+SupervisorButtons read_supervisor(const Reader& r, const YAML::Node& n) {
+  r.expect_map(n, "the supervisor section");
+  r.expect_keys(n, {"stop", "weapons_consent"}, "the supervisor section");
+  if (!n["stop"]) r.fail(n, "the supervisor section needs 'stop: BUTTON': the supervisor's stop button");
+  SupervisorButtons s;
+  s.pos = r.pos(n);
+  s.stop = use(r, n["stop"], r.button(n["stop"]));
+  if (n["weapons_consent"]) s.weapons_consent = use(r, n["weapons_consent"], r.button(n["weapons_consent"]));
+  return s;
+}
+
 /// The files being read, outermost first, and the YAML nodes they may still hold.
 struct Chain {
   std::vector<fs::path> files;
@@ -230,7 +241,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   const Reader r(file.string());
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "brake", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "supervisor", "brake", "feedback", "bindings",
+                 "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -251,6 +263,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   if (root["deadman"]) {
     m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
   }
+  if (const auto sup = root["supervisor"]) m.supervisor = read_supervisor(r, sup);
   if (const auto b = root["brake"]) {
     const auto mode = r.text(b, "brake");
     if (mode == "enabled") m.brake = BrakeMode::kEnabled;

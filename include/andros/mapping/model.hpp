@@ -129,6 +129,14 @@ enum class BrakeMode : std::uint8_t {
   kMoving,   ///< released only while drive or pivot is off centre
 };
 
+/// The supervisor's controller (`supervisor:`, docs/mapping.md): buttons
+/// read on the second pad (`run --supervisor`), never on the operator's.
+struct SupervisorButtons {
+  SourcePos pos;                            ///< the section
+  InputUse stop;                            ///< latches the stop, as the operator's `estop` does
+  std::optional<InputUse> weapons_consent;  ///< with it, a weapon fires only while it is held too
+};
+
 struct Mapping {
   std::string file;                  ///< the file it was loaded from
   std::vector<std::string> chain;    ///< the files read, canonical: this one, then each it extends
@@ -138,6 +146,7 @@ struct Mapping {
   std::uint8_t byte12 = kDefaultByte12;
   std::uint8_t battery = kDefaultBattery;
   std::optional<InputUse> deadman;
+  std::optional<SupervisorButtons> supervisor;
   BrakeMode brake = BrakeMode::kEnabled;
   FeedbackTable feedback = default_feedback();  ///< rumble and light per event
   std::vector<Binding> bindings;  ///< the base layer
