@@ -68,7 +68,11 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"toggle_held_across_layer", "rest.yaml"},
         Case{"two_toggles_one_signal", "rest.yaml"},
         // Neutral is the protocol's: a center trim moves only the enabled rest.
-        Case{"center_trim", "trim.yaml"}),
+        Case{"center_trim", "trim.yaml"},
+        // The supervisor's controller: its loss, its absence at the start, its weapons consent.
+        Case{"supervisor_loss", "core.yaml"},
+        Case{"supervisor_late", "core.yaml"},
+        Case{"supervisor_consent", "supervisor.yaml", true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
