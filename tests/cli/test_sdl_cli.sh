@@ -48,6 +48,18 @@ for sig in TERM INT; do
   grep -Eq '^[0-9]+ +end$' "$out" || fail "SIG$sig: no end line in $(cat "$out")"
 done
 
+# With an event script as the input, the script's own supervisor lines count: --supervisor is not read, and says so.
+printf '0 connect\n40 end\n' >"$TMP/short.events"
+expect_exit 0 "$BIN" run --supervisor 1 --input "$TMP/short.events"
+expect_stderr_matches "warning: supervisor 1 not read: the event script $TMP/short.events is the input"
+# A mapping's supervisor: buttons with no supervisor's controller to read them.
+expect_exit 0 "$BIN" run --mapping "$DATA/mappings/supervisor.yaml" --input "$TMP/short.events"
+expect_stderr_matches "warning: the mapping's supervisor: buttons have no controller to read \(no --supervisor\)"
+printf '0 connect\n0 supervisor connect\n40 end\n' >"$TMP/both.events"
+expect_exit 0 "$BIN" run --mapping "$DATA/mappings/supervisor.yaml" --input "$TMP/both.events"
+grep -q "buttons have no controller" "$TMP/err" && fail "warned with a script that has a supervisor: $(cat "$TMP/err")"
+grep -q "supervisor's controller: controller" "$TMP/err" || fail "the supervisor's controller not logged: $(cat "$TMP/err")"
+
 # A supervisor named but not attached: the recording says so at 0, so that replay keeps it.
 out=$TMP/rec_sup.txt
 "$BIN" record --supervisor 'no such pad' --output "$out" 2>"$TMP/err" &
