@@ -17,6 +17,13 @@ using test::VirtualDevice;
 
 constexpr InputKey kA{InputKind::kPadButton, SDL_CONTROLLER_BUTTON_A};
 
+SdlInputOptions chosen(const std::string& controller, const std::string& controller_db = "") {
+  SdlInputOptions o;
+  o.controller = controller;
+  o.controller_db = controller_db;
+  return o;
+}
+
 class SdlSelectionTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { test::use_dummy_video(); }
@@ -27,7 +34,7 @@ class SdlSelectionTest : public ::testing::Test {
   void expect_only_beta_counts(const std::function<std::string(const VirtualDevice& beta)>& choose) {
     auto alpha = VirtualDevice::pad("Alpha Pad", 10);
     auto beta = VirtualDevice::pad("Beta Pad", 11);
-    SdlInput input(SdlInputOptions{.controller = choose(beta)});
+    SdlInput input(chosen(choose(beta)));
     tick(input);
     ASSERT_TRUE(state_.connected());
     EXPECT_EQ(state_.name(), "Beta Pad");
@@ -70,7 +77,7 @@ TEST_F(SdlSelectionTest, DefaultIsTheFirstDevice) {
 
 TEST_F(SdlSelectionTest, NoMatchWaitsAndAMatchingDeviceConnectsLater) {
   auto alpha = VirtualDevice::pad("Alpha Pad", 10);
-  SdlInput input(SdlInputOptions{.controller = "gamma"});
+  SdlInput input(chosen("gamma"));
   tick(input);
   EXPECT_FALSE(state_.connected());
   auto gamma = VirtualDevice::pad("Gamma Pad", 12);
@@ -186,7 +193,7 @@ TEST_F(SupervisorSelectionTest, TheSameChoiceForBothIsRefusedWhereTheSupervisorW
 
 TEST(SdlOptions, AnIndexOutOfRangeIsBadInput) {
   test::use_dummy_video();
-  EXPECT_THROW(SdlInput(SdlInputOptions{.controller = "256"}), InputError);
+  EXPECT_THROW(SdlInput(chosen("256")), InputError);
 }
 
 class ControllerDbTest : public SdlSelectionTest {
@@ -200,7 +207,7 @@ class ControllerDbTest : public SdlSelectionTest {
 
 TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
   try {
-    SdlInput input(SdlInputOptions{.controller_db = "/nonexistent/db.txt"});
+    SdlInput input(chosen("", "/nonexistent/db.txt"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.pos().file, "/nonexistent/db.txt");
@@ -210,7 +217,7 @@ TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
 TEST_F(ControllerDbTest, ABadMappingLineIsBadInputAtItsLine) {
   write("# a comment\n\nnot a mapping at all\n");
   try {
-    SdlInput input(SdlInputOptions{.controller_db = path_});
+    SdlInput input(chosen("", path_));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.pos().line, 3);
@@ -222,7 +229,7 @@ TEST_F(ControllerDbTest, AMappingTurnsAPlainJoystickIntoAGameController) {
   write("# other platforms' lines are skipped\n" + stick.guid() +
         ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Windows,\n" + stick.guid() +
         ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Linux,\n");
-  SdlInput input(SdlInputOptions{.controller_db = path_});
+  SdlInput input(chosen("", path_));
   tick(input);
   EXPECT_EQ(state_.name(), "Mapped Stick");
   stick.button(4, true);
