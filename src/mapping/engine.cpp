@@ -23,16 +23,6 @@ std::string_view describe(EnableState state) {
   return "?";
 }
 
-std::string_view describe(ConsentState state) {
-  switch (state) {
-    case ConsentState::kNotAsked: return "not asked";
-    case ConsentState::kReleased: return "released";
-    case ConsentState::kHeldBack: return "held since before: release and press it again";
-    case ConsentState::kGiven: return "given";
-  }
-  return "?";
-}
-
 Engine::Engine(ValidMapping mapping, EngineOptions options)
     : mapping_(std::move(mapping)), options_(options), builder_(options.code), rest_(*mapping_) {
   const auto note_button = [this](input::InputKey key) {

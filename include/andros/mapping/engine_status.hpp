@@ -29,8 +29,6 @@ enum class ConsentState : std::uint8_t {
   kGiven,     ///< held and counting: an armed fire input fires
 };
 
-std::string_view describe(ConsentState state);
-
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;  ///< the active layer's name ("" for the base layer)
