@@ -42,15 +42,18 @@ int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) 
   input::RecordOptions rec;
   rec.period_ms = 1000 / settings.read_rate_hz;
   rec.header = "andros-bridge " + std::string(kVersion) + " record, started " + utc_now() +
-               "\ncontroller: " + input.selection() + "\nt_ms    event       arguments";
+               "\ncontroller: " + input.selection() +
+               (input.supervised() ? "\nsupervisor: " + input.supervisor_selection() : std::string()) +
+               "\nt_ms    event       arguments";
 
   const bool progress = isatty(STDERR_FILENO) == 1;
   std::int64_t last_progress_ms = -1000;
   const auto show_progress = [&](const input::RecordStatus& s) {
     last_progress_ms = s.t_ms;
-    std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s (Ctrl-C ends)\033[K",
+    std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s%s (Ctrl-C ends)\033[K",
                  static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
-                 s.connected ? "connected" : "not connected");
+                 s.connected ? "connected" : "not connected",
+                 !input.supervised() ? "" : s.supervisor_connected ? ", supervisor connected" : ", supervisor not connected");
   };
   const auto keep_going = [&](const input::RecordStatus& s) {
     if (progress && s.t_ms - last_progress_ms >= 500) show_progress(s);
@@ -80,7 +83,10 @@ int run_record(const RecordCommandOptions& opt) {
   StopRequest stop(kRecordStopSignals);
   try {
     // SDL first (bad selection or mapping file: exit 2 before any file is made).
-    input::SdlInput input(opt.sdl, [&stop] { return stop.requested(); });
+    input::SdlInputOptions sdl = opt.sdl;
+    sdl.supervisor = settings.supervisor;
+    sdl.supervisor_pos = settings.supervisor_pos;
+    input::SdlInput input(sdl, [&stop] { return stop.requested(); });
     return record(settings, input, stop);
   } catch (const ReadStopped&) {
     std::fprintf(stderr, "stopped (SIG%s) while reading the controller database, before recording\n",

@@ -103,14 +103,26 @@ int run_bridge(const RunOptions& opt) {
   JobControlSignals job;
   EngineSetup engine = load_engine(config);
   ReloadableFrames frames(std::move(engine.frames));
+  input::SdlInputOptions sdl = opt.sdl;
+  sdl.supervisor = config.supervisor;
+  sdl.supervisor_pos = config.supervisor_pos;
   std::unique_ptr<input::InputSource> input;
   try {
-    input = make_input_source(config.input, opt.sdl, [&stop] { return stop.requested(); });
+    input = make_input_source(config.input, sdl, [&stop] { return stop.requested(); });
   } catch (const ReadStopped&) {
     // Nothing has been sent: there is no frame to neutralise, and the stop was asked for.
     spdlog::info("stopped (SIG{}) while reading the input, before the first frame",
                  sigabbrev_np(stop.signal_number()));
     return kExitOk;
+  }
+  if (!config.supervisor.empty() && config.input != kSdlInput) {
+    spdlog::warn("supervisor {} not read: the event script {} is the input ('T supervisor EVENT' lines are its "
+                 "supervisor's controller)",
+                 config.supervisor, config.input);
+  }
+  if (engine.supervisor_buttons && !input->supervised()) {
+    spdlog::warn("the mapping's supervisor: buttons have no controller to read (no --supervisor): its stop "
+                 "cannot be pressed, and weapons that need its consent never fire");
   }
   std::unique_ptr<link::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);

@@ -20,6 +20,7 @@ EngineSetup load_engine(const Settings& settings) {
   setup.mapping_file = mapping->file;
   setup.center = mapping->center;
   setup.feedback = mapping->feedback;
+  setup.supervisor_buttons = mapping->supervisor.has_value();
   setup.frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   return setup;
@@ -37,6 +38,7 @@ std::string needs_restart(const Settings& running, const Settings& fresh) {
   note("rate", fmt::format("{:g}", static_cast<double>(running.rate.millihertz) / 1000.0),
        fmt::format("{:g}", static_cast<double>(fresh.rate.millihertz) / 1000.0));
   note("input", running.input, fresh.input);
+  note("supervisor", running.supervisor, fresh.supervisor);
   if (changed.empty()) return {};
   return changed + ": a reload changes the robot, mapping and weapons only; restart the bridge for these";
 }

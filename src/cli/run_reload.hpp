@@ -30,6 +30,7 @@ struct EngineSetup {
   std::string mapping_file;  ///< the file loaded
   int center = 128;          ///< drive and pivot's rest value (for the gauges)
   mapping::FeedbackTable feedback;
+  bool supervisor_buttons = false;  ///< the mapping has a `supervisor:` section
 };
 
 /// Loads the mapping the settings name and builds its engine. Throws
@@ -39,8 +40,8 @@ EngineSetup load_engine(const Settings& settings);
 using run::ReloadableFrames;
 
 /// A reload changes the mapping (robot, mapping) and weapons. The port, baud,
-/// code, rate and input are the link's and the clock's: changing them needs a
-/// restart. Returns what changed among those ("" for nothing), for the refusal.
+/// code, rate, input and supervisor are the link's, the clock's and the
+/// controllers': changing them needs a restart. Returns what changed among those ("" for nothing), for the refusal.
 std::string needs_restart(const Settings& running, const Settings& fresh);
 
 /// What a reload read: fresh settings and the engine they make, or why the

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "andros/base/text.hpp"
+#include "andros/input/snapshot.hpp"
 
 namespace andros::cli {
 namespace {
@@ -28,9 +29,19 @@ std::string rate_detail() {
          std::to_string(protocol::kSwitchboxBaud) + " baud";
 }
 
+void parse_supervisor(std::string_view t, const SourcePos& p, Settings& s) {
+  const std::string text(trim(t));
+  if (text.empty()) throw InputError(p, "the supervisor's controller needs an INDEX, a NAME or a GUID");
+  if (text.find_first_not_of("0123456789") == std::string::npos) {
+    (void)parse_integer(text, 0, input::kMaxJoystickIndex, "controller index", p);
+  }
+  s.supervisor = text;
+  s.supervisor_pos = p;
+}
+
 // The rows, in the legacy file's key order (its four keys, then the bridge's),
 // then the settings that only a flag sets.
-const std::array<Setting, 14> kTable = {{
+const std::array<Setting, 16> kTable = {{
     {"", "--config", "FILE", kRun,
      "the config file (key=value, docs/running.md); default: "
      "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf, then /etc/andros-bridge/andros-bridge.conf, if present",
@@ -75,6 +86,10 @@ const std::array<Setting, 14> kTable = {{
      "sdl: the live controller; FILE: an event script (docs/event-scripts.md) played in real time", nullptr,
      [](std::string_view t, const SourcePos&, Settings& s) { s.input = std::string(t); },
      [](const Settings& s) { return s.input; }, true},
+    {"supervisor", "--supervisor", "INDEX|NAME|GUID", kRun,
+     "a second controller, the supervisor's, chosen as --controller chooses (never the same one): its stop and "
+     "weapons consent are the mapping's 'supervisor:' buttons, and driving needs it connected too. Default: none",
+     nullptr, parse_supervisor, [](const Settings& s) { return s.supervisor; }, false},
     {"", "--code", "HEX", kMonitor, "also count frames whose byte 11 differs from this code as invalid", nullptr,
      [](std::string_view t, const SourcePos& p, Settings& s) { s.expected_code = parse_code(t, p); },
      [](const Settings& s) { return s.expected_code ? code_text(*s.expected_code) : std::string(); }, false},
@@ -101,6 +116,10 @@ const std::array<Setting, 14> kTable = {{
      nullptr,
      [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
      [](const Settings& s) { return s.script_output; }, false},
+    {"", "--supervisor", "INDEX|NAME|GUID", kRecord,
+     "record a second controller too, the supervisor's, chosen as --controller chooses (never the same one): "
+     "its events are written 'T supervisor EVENT'",
+     nullptr, parse_supervisor, [](const Settings& s) { return s.supervisor; }, false},
 }};
 
 }  // namespace

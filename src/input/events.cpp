@@ -27,6 +27,13 @@ std::vector<Token> split(std::string_view line) {
   return tokens;
 }
 
+constexpr std::string_view kSupervisorWord = "supervisor";
+
+/// The events a controller makes: the ones `supervisor` may come before.
+bool is_pad_event(std::string_view word) {
+  return word == "connect" || word == "disconnect" || word == "button" || word == "axis" || word == "hat";
+}
+
 constexpr std::array<std::pair<std::string_view, int>, 9> kHatValues = {{
     {"centered", 0}, {"up", 1}, {"right", 2}, {"down", 4}, {"left", 8},
     {"rightup", 3}, {"rightdown", 6}, {"leftup", 9}, {"leftdown", 12},
@@ -72,29 +79,42 @@ std::optional<InputEvent> EventReader::next() {
                                 std::to_string(last_t_) + " ms)");
     }
     if (tokens.size() < 2) throw fail(tokens[0], "missing event after the time");
-    const auto& kind = tokens[1];
+    // `T supervisor EVENT ARGS`: the supervisor's controller; the event's words follow.
+    std::size_t first = 1;
+    if (tokens[1].text == kSupervisorWord) {
+      ev.pad = Pad::kSupervisor;
+      first = 2;
+      if (tokens.size() < 3) throw fail(tokens[1], "missing event after 'supervisor'");
+    }
+    const auto& kind = tokens[first];
+    // The event's own words: arg(1) is the first after its name.
+    const auto arg = [&](std::size_t i) -> const Token& { return tokens[first + i]; };
     const auto want_args = [&](std::size_t n, const char* usage) {
-      if (tokens.size() != n + 2) {
-        const auto& where = tokens.size() > n + 2 ? tokens[n + 2] : kind;
+      if (tokens.size() != first + n + 1) {
+        const auto& where = tokens.size() > first + n + 1 ? arg(n + 1) : kind;
         throw fail(where, std::string("expected '") + usage + "'");
       }
     };
+    if (ev.pad == Pad::kSupervisor && !is_pad_event(kind.text)) {
+      throw fail(kind, "'supervisor' takes connect, disconnect, button, axis or hat, not " + quote(kind.text) +
+                           ": the other events are the run's, not a controller's");
+    }
 
     if (kind.text == "connect") {
       ev.type = T::kConnect;
-      if (tokens.size() > 2) {
+      if (tokens.size() > first + 1) {
         // The name as format_event writes it: one line of printable text, escaped (docs/event-scripts.md).
-        auto written = std::string(line.substr(static_cast<std::size_t>(tokens[2].column - 1)));
+        auto written = std::string(line.substr(static_cast<std::size_t>(arg(1).column - 1)));
         while (!written.empty() && (written.back() == ' ' || written.back() == '\t' || written.back() == '\r')) {
           written.pop_back();
         }
         if (!is_printable_line(written)) {
-          throw fail(tokens[2], "controller name " + quote(written) +
+          throw fail(arg(1), "controller name " + quote(written) +
                                     " is not one line of printable text (a control byte or invalid UTF-8 is written \\xNN)");
         }
-        ev.name = unescape_text(written, at(tokens[2]));
+        ev.name = unescape_text(written, at(arg(1)));
         if (ev.name.size() > kMaxControllerNameBytes) {
-          throw fail(tokens[2], "controller name longer than " + std::to_string(kMaxControllerNameBytes) + " bytes");
+          throw fail(arg(1), "controller name longer than " + std::to_string(kMaxControllerNameBytes) + " bytes");
         }
       }
     } else if (kind.text == "disconnect") {
@@ -107,35 +127,35 @@ std::optional<InputEvent> EventReader::next() {
     } else if (kind.text == "button") {
       want_args(2, "button NAME 0|1");
       ev.type = T::kButton;
-      const auto key = parse_button_name(tokens[2].text);
+      const auto key = parse_button_name(arg(1).text);
       if (!key || key->kind == InputKind::kHat) {
-        throw fail(tokens[2], "unknown button " + quote(tokens[2].text));
+        throw fail(arg(1), "unknown button " + quote(arg(1).text));
       }
       ev.key = *key;
-      ev.value = static_cast<int>(parse_integer(tokens[3].text, 0, 1, "button value", at(tokens[3])));
+      ev.value = static_cast<int>(parse_integer(arg(2).text, 0, 1, "button value", at(arg(2))));
     } else if (kind.text == "axis") {
       want_args(2, "axis NAME VALUE");
       ev.type = T::kAxis;
-      const auto key = parse_axis_name(tokens[2].text);
-      if (!key) throw fail(tokens[2], "unknown axis " + quote(tokens[2].text));
+      const auto key = parse_axis_name(arg(1).text);
+      if (!key) throw fail(arg(1), "unknown axis " + quote(arg(1).text));
       ev.key = *key;
-      ev.value = static_cast<int>(parse_integer(tokens[3].text, -32768, 32767, "axis value", at(tokens[3])));
+      ev.value = static_cast<int>(parse_integer(arg(2).text, -32768, 32767, "axis value", at(arg(2))));
     } else if (kind.text == "hat") {
       want_args(2, "hat N centered|up|down|left|right|leftup|leftdown|rightup|rightdown");
       ev.type = T::kHat;
-      const auto hat = parse_integer(tokens[2].text, 0, kMaxJoystickIndex / 4, "hat number", at(tokens[2]));
+      const auto hat = parse_integer(arg(1).text, 0, kMaxJoystickIndex / 4, "hat number", at(arg(1)));
       ev.key = InputKey{InputKind::kHat, static_cast<std::uint16_t>(hat * 4)};
       bool found = false;
       for (const auto& [name, mask] : kHatValues) {
-        if (name == tokens[3].text) {
+        if (name == arg(2).text) {
           ev.value = mask;
           found = true;
         }
       }
-      if (!found) throw fail(tokens[3], "unknown hat position " + quote(tokens[3].text));
+      if (!found) throw fail(arg(2), "unknown hat position " + quote(arg(2).text));
     } else if (kind.text == "link") {
       want_args(1, "link down|up|taken");
-      const auto& what = tokens[2].text;
+      const auto& what = arg(1).text;
       if (what == "down") {
         ev.type = T::kLinkDown;
       } else if (what == "up") {
@@ -143,7 +163,7 @@ std::optional<InputEvent> EventReader::next() {
       } else if (what == "taken") {
         ev.type = T::kLinkTaken;
       } else {
-        throw fail(tokens[2], "unknown link event " + quote(what) + " (expected down, up or taken)");
+        throw fail(arg(1), "unknown link event " + quote(what) + " (expected down, up or taken)");
       }
     } else if (kind.text == "suspend") {
       want_args(0, "suspend");
@@ -155,13 +175,13 @@ std::optional<InputEvent> EventReader::next() {
       want_args(0, "stop");
       ev.type = T::kStop;
     } else if (kind.text == "reload") {
-      if (tokens.size() > 3) throw fail(tokens[3], "expected 'reload [MAPPING]'");
+      if (tokens.size() > first + 2) throw fail(arg(2), "expected 'reload [MAPPING]'");
       ev.type = T::kReload;
-      if (tokens.size() == 3) ev.name = std::string(tokens[2].text);
+      if (tokens.size() == first + 2) ev.name = std::string(arg(1).text);
     } else {
       throw fail(kind, "unknown event " + quote(kind.text) +
                            " (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, "
-                           "reload or stop)");
+                           "reload, stop or supervisor)");
     }
     last_t_ = ev.t_ms;
     return ev;
@@ -186,11 +206,31 @@ TextReader checked_event_script(TextReader text) {
   return text;
 }
 
+bool addresses_supervisor(TextReader& text) {
+  bool found = false;
+  try {
+    while (const auto raw = text.next_line()) {
+      std::string_view line = *raw;
+      if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      const auto tokens = split(line);
+      if (tokens.size() >= 2 && tokens[1].text == kSupervisorWord) {
+        found = true;
+        break;
+      }
+    }
+  } catch (const InputError&) {
+    // A line over the limits: the script fails there when it is played.
+  }
+  text.rewind();
+  return found;
+}
+
 std::string format_event(const InputEvent& event) {
   using T = InputEvent::Type;
   char head[32];
   std::snprintf(head, sizeof head, "%-7lld ", static_cast<long long>(event.t_ms));
   std::string out = head;
+  if (event.pad == Pad::kSupervisor) out += std::string(kSupervisorWord) + ' ';
   const auto pad = [](std::string word) {
     word.resize(std::max<std::size_t>(word.size(), 11), ' ');
     return word + ' ';

@@ -2,6 +2,9 @@
 
 namespace andros::input {
 
+ScriptPlayer::ScriptPlayer(TextReader& text)
+    : reader_(text), supervised_(text.can_rewind() && text.line_number() == 0 && addresses_supervisor(text)) {}
+
 void ScriptPlayer::advance_to(std::int64_t t_ms, InputState& state) {
   while (!exhausted_) {
     if (!pending_) {

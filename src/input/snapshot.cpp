@@ -55,18 +55,22 @@ std::string input_name(InputKey key) {
   return "?";
 }
 
-void InputState::set_button(InputKey key, bool down, bool initial) {
+void PadState::set_button(InputKey key, bool down, bool initial) {
   auto& b = buttons_[key];
   if (down && !b.down && !initial) ++b.presses;
   b.down = down;
 }
 
 void InputState::apply(const InputEvent& event) {
-  using T = InputEvent::Type;
   if (event.is_fault()) {
     faults_.push_back(event);
     return;
   }
+  (event.pad == Pad::kSupervisor ? supervisor_pad_ : operator_pad_).apply(event);
+}
+
+void PadState::apply(const InputEvent& event) {
+  using T = InputEvent::Type;
   if (event.type == T::kConnect) {
     // A new session: nothing carries over from the last one.
     connected_ = true;
@@ -99,17 +103,17 @@ void InputState::apply(const InputEvent& event) {
   }
 }
 
-ButtonState InputState::button(InputKey key) const {
+ButtonState PadState::button(InputKey key) const {
   const auto it = buttons_.find(key);
   return it == buttons_.end() ? ButtonState{} : it->second;
 }
 
-std::int16_t InputState::axis(InputKey key) const {
+std::int16_t PadState::axis(InputKey key) const {
   const auto it = axes_.find(key);
   return it == axes_.end() ? std::int16_t{0} : it->second;
 }
 
-int InputState::hat(int hat_index) const {
+int PadState::hat(int hat_index) const {
   int mask = 0;
   for (int dir = 0; dir < 4; ++dir) {
     if (button(InputKey{InputKind::kHat, static_cast<std::uint16_t>(hat_index * 4 + dir)}).down) {

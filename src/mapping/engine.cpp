@@ -89,6 +89,7 @@ void Engine::clear_toggles() { toggled_.reset(); }
 
 void Engine::start_session(const input::InputState& input, bool at_start_up) {
   connection_ = input.connection();
+  supervisor_connection_ = input.supervisor().connection();
   seen_presses_.clear();
   deadman_released_seen_ = false;
   deadman_base_ = 0;
@@ -117,16 +118,31 @@ void Engine::restart(const input::InputState& now) {
 }
 
 bool Engine::take_stop(const input::InputState& input) {
-  if (!mapping_->estop || !input.connected()) return false;
-  const auto b = input.button(mapping_->estop->key);
-  const auto seen = input.connection() == connection_ ? estop_seen_ : 0U;
-  if (input.connection() == connection_) estop_seen_ = b.presses;
-  return b.down || b.presses > seen;
+  bool stop = false;
+  if (mapping_->estop && input.connected()) {
+    const auto b = input.button(mapping_->estop->key);
+    const auto seen = input.connection() == connection_ ? estop_seen_ : 0U;
+    if (input.connection() == connection_) estop_seen_ = b.presses;
+    stop = b.down || b.presses > seen;
+  }
+  if (mapping_->supervisor && input.supervisor().connected()) {
+    // The supervisor's presses are counted per its controller's session.
+    const auto& pad = input.supervisor();
+    if (pad.connection() != stop_connection_) {
+      stop_connection_ = pad.connection();
+      stop_presses_ = 0;
+    }
+    const auto b = pad.button(mapping_->supervisor->stop.key);
+    stop = stop || b.down || b.presses > stop_presses_;
+    stop_presses_ = b.presses;
+  }
+  return stop;
 }
 
 bool Engine::stop_let_go(const input::InputState& input) const {
   if (!input.connected()) return false;
   if (mapping_->estop && input.button(mapping_->estop->key).down) return false;
+  if (mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down) return false;
   return !deadman_held(input);
 }
 
@@ -280,7 +296,8 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    }
                  },
                  [&](const WeaponBinding& b) {
-                   const bool arm = b.arm && held(input, *b.arm);
+                   // Two people: the operator's arming input and the supervisor's consent, if asked for.
+                   const bool arm = b.arm && held(input, *b.arm) && rest_.consent();
                    if (arm) armed.set(b.signal);
                    if (arm && active(b.input)) out[b.signal] = 1;
                  },
@@ -326,6 +343,13 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
              binding.rule);
 }
 
+void Engine::read_stops(const input::InputState& input) {
+  status_.supervisor_stop = mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down;
+  status_.stop_held = status_.supervisor_stop ||
+                      (mapping_->estop && input.connected() && input.button(mapping_->estop->key).down);
+  status_.stop_pressed = take_stop(input);
+}
+
 protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t now_ms) {
   if (!started_) {
     started_ = true;
@@ -333,9 +357,12 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
     last_ms_ = now_ms;
   } else if (input.connection() != connection_) {
     start_session(input, false);  // a new controller session: toggles start cleared
+  } else if (input.supervisor().connection() != supervisor_connection_) {
+    // The supervisor's controller new or back: afresh, as after any stop (the deadman held through it is history).
+    start_session(input, true);
   }
   status_.enable = enable_state(input);
-  status_.stop_pressed = take_stop(input);
+  read_stops(input);
   note_activity(input, now_ms);
   if (status_.enable == EnableState::kEnabled) {
     if (!was_enabled_) last_activity_ms_ = now_ms;  // enabling is the first change
@@ -357,7 +384,8 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   status_.held_back = rest_.held_back_inputs();
 
   protocol::ControlState state = resting_state();
-  SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake};
+  status_.consent = rest_.consent_state();
+  SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake, rest_.consent()};
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(layer_ + 1)]) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);

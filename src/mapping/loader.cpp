@@ -234,6 +234,17 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, B
   return layer;
 }
 
+SupervisorButtons read_supervisor(const Reader& r, const YAML::Node& n) {
+  r.expect_map(n, "the supervisor section");
+  r.expect_keys(n, {"stop", "weapons_consent"}, "the supervisor section");
+  if (!n["stop"]) r.fail(n, "the supervisor section needs 'stop: BUTTON': the supervisor's stop button");
+  SupervisorButtons s;
+  s.pos = r.pos(n);
+  s.stop = use(r, n["stop"], r.button(n["stop"]));
+  if (n["weapons_consent"]) s.weapons_consent = use(r, n["weapons_consent"], r.button(n["weapons_consent"]));
+  return s;
+}
+
 /// The files being read, outermost first, and the YAML nodes they may still hold.
 struct Chain {
   std::vector<fs::path> files;
@@ -288,8 +299,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   const Reader r(file.string(), text);
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "brake",
-                 "scale", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "supervisor",
+                 "brake", "scale", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -324,6 +335,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
     const double seconds = r.number(t, kEnableTimeoutMinS, kEnableTimeoutMaxS, false, "enable_timeout");
     m.enable_timeout_ms = static_cast<std::int64_t>(seconds * 1000.0 + 0.5);
   }
+  if (const auto sup = root["supervisor"]) m.supervisor = read_supervisor(r, sup);
   if (const auto b = root["brake"]) {
     const auto mode = r.text(b, "brake");
     if (mode == "enabled") m.brake = BrakeMode::kEnabled;

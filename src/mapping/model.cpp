@@ -355,6 +355,11 @@ ValidMapping validate(Mapping m, bool require_robot) {
     check_layer_name(names, layer);
     reserved.push_back(layer.input);
   }
+  if (m.supervisor && m.supervisor->weapons_consent && m.supervisor->weapons_consent->key == m.supervisor->stop.key) {
+    throw InputError(m.supervisor->weapons_consent->pos, "the supervisor's 'weapons_consent' must be a different button "
+                                                         "from its 'stop' (line " +
+                                                             std::to_string(m.supervisor->stop.pos.line) + ")");
+  }
   std::map<protocol::SignalId, SourcePos> selector_signals;
   const auto check_bindings = [&](const std::vector<Binding>& list) {
     for (const auto& b : list) {

@@ -16,7 +16,7 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
         if (!ctx.enabled) v = 0;
         break;
       case protocol::SignalKind::kWeapon:
-        if (!ctx.enabled || !ctx.weapons || !ctx.armed[i]) v = 0;
+        if (!ctx.enabled || !ctx.weapons || !ctx.armed[i] || !ctx.consent) v = 0;
         break;
       case protocol::SignalKind::kCentred:
         if (!ctx.enabled) v = protocol::kNeutralCentre;  // never the mapping's trim
@@ -40,9 +40,14 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
 }
 
 RestRule::RestRule(const Mapping& mapping) {
+  if (mapping.supervisor && mapping.supervisor->weapons_consent) {
+    consent_key_ = mapping.supervisor->weapons_consent->key;
+    consent_ = ConsentState::kReleased;
+  }
   for (int layer = -1; layer < static_cast<int>(mapping.layers.size()); ++layer) {
     Readers& readers = readers_.emplace_back();
     Arms& arms = arms_.emplace_back();
+    auto& weapons = weapons_.emplace_back();
     for (const auto ref : effective_bindings(mapping, layer)) {
       const auto& b = binding_at(mapping, ref);
       // A button rests released whoever reads it; an axis rests where its binding sends nothing.
@@ -58,6 +63,7 @@ RestRule::RestRule(const Mapping& mapping) {
                      [](const auto&) {},
                  },
                  b.rule);
+      if (std::holds_alternative<WeaponBinding>(b.rule)) weapons.push_back(r.binding);
       for (const auto& u : b.inputs) {
         readers[u.key].push_back(u.key.is_button() ? Reader{r.binding, Reader::Rest::kReleased, false, 0.0} : r);
       }
@@ -96,6 +102,7 @@ bool RestRule::at_rest(const input::InputState& input, input::InputKey key, cons
 }
 
 void RestRule::update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen) {
+  update_consent(input, layer, enabled);  // before hold_back: it reads the last frame's enabled_, connection_, layer_
   if (enabled) {
     hold_back(input, layer, seen);
   } else {
@@ -149,7 +156,8 @@ void RestRule::hold_back_fire_inputs(const input::InputState& input, int layer,
   const auto& readers = readers_[static_cast<std::size_t>(layer + 1)];
   std::set<input::InputKey> armed;
   for (const auto& [arm, fires] : arms_[static_cast<std::size_t>(layer + 1)]) {
-    if (held_.contains(arm) || at_rest(input, arm, readers.at(arm))) continue;
+    // The supervisor's consent is part of arming: a fire input held when it comes waits too.
+    if (!consent() || held_.contains(arm) || at_rest(input, arm, readers.at(arm))) continue;
     armed.insert(arm);
     if (armed_.contains(arm)) continue;
     for (const auto fire : fires) {
@@ -166,6 +174,31 @@ void RestRule::rescale(const input::InputState& input, int layer) {
                                     [](const Reader& r) { return r.rest == Reader::Rest::kInsideDeadzone; });
     if (drives) hold(input, key, at_rest(input, key, readers));
   }
+}
+
+void RestRule::update_consent(const input::InputState& input, int layer, bool enabled) {
+  if (!consent_key_) return;
+  const auto& pad = input.supervisor();
+  const auto now = pad.button(*consent_key_);  // released, no presses, while it is not connected
+  const bool same_pad = pad.connection() == consent_connection_;
+  const auto& weapons = weapons_[static_cast<std::size_t>(layer + 1)];
+  const bool meant = enabled && !weapons.empty();
+  bool held_back = consent_ == ConsentState::kHeldBack;
+  if (!meant) {
+    held_back = false;
+  } else if (!consent_meant_ || !same_pad || input.connection() != connection_ ||
+             weapons != weapons_[static_cast<std::size_t>(layer_ + 1)]) {
+    // A new meaning: pressed in this very frame it counts, held since before it waits.
+    const bool pressed_now = now.presses > (same_pad ? consent_presses_ : 0U);
+    held_back = now.down && !pressed_now;
+    consent_hold_presses_ = now.presses;
+  } else if (held_back && (!now.down || now.presses > consent_hold_presses_)) {
+    held_back = false;  // released, or released and pressed again since
+  }
+  consent_ = held_back ? ConsentState::kHeldBack : now.down ? ConsentState::kGiven : ConsentState::kReleased;
+  consent_meant_ = meant;
+  consent_presses_ = now.presses;
+  consent_connection_ = pad.connection();
 }
 
 void RestRule::hold(const input::InputState& input, input::InputKey key, bool rest) {

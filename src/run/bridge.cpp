@@ -47,8 +47,10 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     input_.pump(state_, t_ms);
     on_request(control.poll(), control);
     for (const auto& fault : state_.take_faults()) on_fault(fault, control);
-    if (state_.connected() != machine_.controller_up()) {
-      apply(state_.connected() ? OpEvent::kControllerUp : OpEvent::kControllerDown);
+    // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
+    const bool controllers_up = state_.connected() && (!input_.supervised() || state_.supervisor().connected());
+    if (controllers_up != machine_.controller_up()) {
+      apply(controllers_up ? OpEvent::kControllerUp : OpEvent::kControllerDown);
     }
   }
 
@@ -296,6 +298,9 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.state = machine_.state();
   r.connected = state_.connected();
   r.controller = state_.name();
+  r.supervised = input_.supervised();
+  r.supervisor_connected = state_.supervisor().connected();
+  r.supervisor = state_.supervisor().name();
   r.engine = engine_status_;
   r.link = link_.status();
   return r;

@@ -14,6 +14,7 @@ class PlayerInput final : public input::InputSource {
   explicit PlayerInput(input::ScriptPlayer& player) : player_(player) {}
   void pump(input::InputState& state, std::int64_t now_ms) override { player_.advance_to(now_ms, state); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_.finished_at(now_ms); }
+  [[nodiscard]] bool supervised() const override { return player_.supervised(); }
 
  private:
   input::ScriptPlayer& player_;

@@ -23,6 +23,11 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.sent = r.data;
     next.connected = r.connected;
     if (next.connected) next.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
+    next.supervised = r.supervised;
+    next.supervisor_connected = r.supervisor_connected;
+    if (next.supervisor_connected) next.supervisor = r.supervisor.empty() ? "controller" : printable_text(r.supervisor);
+    next.supervisor_stop = r.supervisor_connected && r.engine.supervisor_stop;
+    next.consent = r.engine.consent;
     next.state = r.state;
     next.enable_text = state_text(r);
     next.layer = r.engine.layer;
@@ -52,6 +57,10 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   if (first_tick_ || before.connected != after.connected) {
     if (after.connected) spdlog::info("controller: {}", after.controller);
     else spdlog::info("controller: none connected");
+  }
+  if (after.supervised && (first_tick_ || before.supervisor_connected != after.supervisor_connected)) {
+    if (after.supervisor_connected) spdlog::info("supervisor's controller: {}", after.supervisor);
+    else spdlog::warn("supervisor's controller: none connected: nothing moves without it");
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
@@ -90,7 +99,11 @@ std::string state_text(const run::TickReport& r) {
     case OpState::kNoLink:
       return "nothing reaches the vehicle (link " + (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
              "); once it is up, press the deadman afresh";
-    case OpState::kNoController: return "connect a controller, then press the deadman";
+    case OpState::kNoController:
+      if (r.connected && r.supervised && !r.supervisor_connected) {
+        return "connect the supervisor's controller, then press the deadman afresh";
+      }
+      return "connect a controller, then press the deadman";
     case OpState::kNotEnabled:
       // The engine saw the deadman held, but driving was interrupted since (link, reload, resume).
       if (r.engine.enable == mapping::EnableState::kEnabled) return "driving was interrupted: release and press the deadman again";

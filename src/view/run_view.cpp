@@ -84,6 +84,21 @@ Line controller_line(const RunStatus& s) {
   return s.input == "controller" ? line : line.add("  (script " + s.input + ")");
 }
 
+/// The supervisor's controller: its name, and what it holds that matters.
+Line supervisor_line(const RunStatus& s) {
+  Line line("supervisor  ");
+  if (!s.supervisor_connected) return line.add("none connected: nothing moves without it", Style::kAlert);
+  line.add(s.supervisor, Style::kBold);
+  if (s.supervisor_stop) line.add("  ").add(" STOP HELD ", Style::kBanner);
+  switch (s.consent) {
+    case mapping::ConsentState::kNotAsked: break;
+    case mapping::ConsentState::kReleased: line.add("  consent: not given"); break;
+    case mapping::ConsentState::kHeldBack: line.add("  consent: release and press again", Style::kWarn); break;
+    case mapping::ConsentState::kGiven: line.add("  consent: GIVEN", Style::kGood); break;
+  }
+  return line;
+}
+
 /// The file's path, its start left out when it is too long: the name matters most.
 Line mapping_line(const std::string& file, std::size_t width) {
   constexpr std::string_view kLabel = "mapping     ";
@@ -133,6 +148,7 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   for (const auto& line : state) screen.pin(line);
   screen.pin(link_line(s));
   screen.pin(controller_line(s));
+  if (s.supervised) screen.pin(supervisor_line(s));
   screen.pin(mapping_line(s.mapping_file, width));
 
   auto counters = counter_lines(s);
@@ -140,7 +156,7 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   const auto& frame = decoded ? *s.vehicle->last : s.sent;
   auto gauges = gauge_lines(frame, s.center);
   auto switches = switch_lines(frame, width, false);
-  const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4) + (stopped ? 1 : 0);
+  const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4) + (stopped ? 1 : 0) + (s.supervised ? 1 : 0);
   const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 1) - kMinLogRows;
   if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true);
   switches.insert(switches.begin(), Line(decoded ? "as the vehicle decodes it:" : "as sent:"));

@@ -205,9 +205,20 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   if (!arms.empty()) {
     std::string list;
     for (const auto& a : arms) list += (list.empty() ? "" : " or ") + a;
+    const bool consent = m.supervisor && m.supervisor->weapons_consent;
     out.push_back("Weapons fire only when the run has --weapons, the deadman" +
                   (m.deadman ? " (" + label(m.deadman->key) + ")" : std::string()) + " is held and the arming input (" +
-                  list + ") is held.");
+                  list + ") is held" + (consent ? ", and the supervisor holds its consent." : "."));
+  }
+  if (m.supervisor) {
+    // On the second controller: not drawn on the operator's pad, said here.
+    std::string text = "Supervisor's controller (run --supervisor): " + label(m.supervisor->stop.key) +
+                       " stops (latched until released, then the deadman pressed afresh)";
+    if (m.supervisor->weapons_consent) {
+      text += "; " + label(m.supervisor->weapons_consent->key) +
+              " held is the weapons consent (a two-person rule: pressed after the weapons became possible)";
+    }
+    out.push_back(text + ". Losing either controller stops motion.");
   }
   if (m.estop) {
     out.push_back("STOP: a press of " + label(m.estop->key) + " stops the vehicle and stays stopped until " +

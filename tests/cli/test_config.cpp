@@ -59,14 +59,23 @@ TEST(Config, ReadsTheBridgesOwnKeys) {
   EXPECT_EQ(parse("mapping=/abs/m.yaml\n").mapping, "/abs/m.yaml");
 }
 
+TEST(Config, TheSupervisorsControllerIsKeptWithWhereItWasSet) {
+  const auto c = parse("robot=HD1\nsupervisor = Pad B\n");
+  EXPECT_EQ(c.supervisor, "Pad B");
+  EXPECT_EQ(c.supervisor_pos.line, 2);
+  EXPECT_EQ(c.supervisor_pos.column, 14);
+  EXPECT_EQ(parse("robot=HD1\n").supervisor, "");  // none by default
+}
+
 TEST(Config, BadLinesNameFileAndLine) {
   EXPECT_EQ(error_of("# c\nbaudrate=9601\n"),
             "dir/test.conf:2:10: error: baud 9601 is not one of 9600, 19200, 38400, 57600, 115200");
   EXPECT_EQ(error_of("speed=3\n"),
             "dir/test.conf:1:1: error: unknown key 'speed' (known: baudrate, serialport, robot, code, "
-            "rate, mapping, weapons, input)");
+            "rate, mapping, weapons, input, supervisor)");
   EXPECT_NE(error_of("\n\nrobot=R2D2\n").find("dir/test.conf:3:7: error: unknown robot 'R2D2'"),
             std::string::npos);
+  EXPECT_EQ(error_of("supervisor = 256\n"), "dir/test.conf:1:14: error: controller index 256 is out of range 0..255");
   EXPECT_NE(error_of("code=XYZ\n").find("dir/test.conf:1:6: error: code 'XYZ'"), std::string::npos);
   EXPECT_NE(error_of("just words\n").find("dir/test.conf:1:1: error: expected key=value"),
             std::string::npos);

@@ -22,7 +22,7 @@ head='robot: HD1\ndeadman: leftshoulder\nbindings:\n'
 w syntax.yaml "$head"'  - signal: tool_on\n    button: [a\n'
 expect_error "syntax.yaml:6:1: error: YAML syntax: end of sequence flow not found" "$BIN" check syntax.yaml
 w unknown_key.yaml 'robot: HD1\ndeadman: leftshoulder\ncentre: 128\n'
-expect_error "unknown_key.yaml:3:1: error: unknown key 'centre' in a mapping file (expected robot, extends, center, constants, deadman, brake, feedback, bindings, layers)" "$BIN" check unknown_key.yaml
+expect_error "unknown_key.yaml:3:1: error: unknown key 'centre' in a mapping file (expected robot, extends, center, constants, deadman, supervisor, brake, feedback, bindings, layers)" "$BIN" check unknown_key.yaml
 w unknown_signal.yaml "$head"'  - signal: front_art_upp\n    button: a\n'
 expect_error "unknown_signal.yaml:4:13: error: unknown signal 'front_art_upp' (expected one of: $("$BIN" frame signals --json | sed 's/^{"name":"\([^"]*\)".*/\1/' | tr '\n' ' ' | sed 's/ $//'))" "$BIN" check unknown_signal.yaml
 w unknown_input.yaml "$head"'  - signal: tool_on\n    button: trigger\n'
@@ -42,7 +42,7 @@ expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.y
 
 # Event scripts.
 w unknown_event.events '0 connect\n10 jump\n'
-expect_error "unknown_event.events:2:4: error: unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay unknown_event.events --robot hd1
+expect_error "unknown_event.events:2:4: error: unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)" "$BIN" replay unknown_event.events --robot hd1
 w backwards.events '0 connect\n100 button a 1\n50 button a 0\n'
 expect_error "backwards.events:3:1: error: time 50 ms goes backwards (previous event at 100 ms)" "$BIN" replay backwards.events --robot hd1
 w button.events '0 connect\n1 button trigger 1\n'
@@ -63,7 +63,7 @@ expect_error "code.conf:1:6: error: code '1FF' is not a byte in hex (one or two 
 w twice.conf 'weapons=disabled\nrobot=hd1\n  Weapons=enabled\n'  # never "last wins"
 expect_error "twice.conf:3:3: error: key 'weapons' given twice (first at line 1)" "$BIN" run --config twice.conf --input ok.events
 w key.conf 'serialprot=/dev/ttyUSB0\n'
-expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config key.conf --input ok.events
+expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor)" "$BIN" run --config key.conf --input ok.events
 w noeq.conf 'baudrate 9600\n'
 expect_error "noeq.conf:1:1: error: expected key=value, got 'baudrate 9600'" "$BIN" run --config noeq.conf --input ok.events
 w rate.conf 'rate=-1920099999999999980\n'
@@ -118,11 +118,11 @@ expect_error "bomb.yaml:7:9: error: the mapping is too large: more than 100000 Y
 
 # User text in an error is quoted: printable ASCII as is, other bytes (a NUL, a BOM) as \xNN, long text cut short.
 printf '0 conn\0ect\n' >nul.events
-expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay nul.events
+expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)" "$BIN" replay nul.events
 printf '0 %s\n' "$(printf 'x%.0s' $(seq 100))" >long.events
-expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)" "$BIN" replay long.events
+expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)" "$BIN" replay long.events
 printf '\xEF\xBB\xBFbaudrate=9600\n' >bom.conf
-expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input)" "$BIN" run --config bom.conf --input ok.events
+expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor)" "$BIN" run --config bom.conf --input ok.events
 w nul.yaml "$head"'  - signal: "tool\\0on"\n    button: a\n'
 expect_error "nul.yaml:4:13: error: unknown signal 'tool\\x00on' (expected one of: $("$BIN" frame signals --json | sed 's/^{"name":"\([^"]*\)".*/\1/' | tr '\n' ' ' | sed 's/ $//'))" "$BIN" check nul.yaml
 w bom_robot.yaml 'robot: \xEF\xBB\xBFHD1\ndeadman: a\n'

@@ -44,6 +44,7 @@ std::string sample(const Setting& row) {
   if (flag == "--rate") return "12.5";
   if (flag == "--weapons") return "enabled";
   if (flag == "--format") return "jsonl";
+  if (flag == "--supervisor") return "2";
   return "/abs/file";  // --config, --mapping, --input, --output
 }
 
@@ -59,7 +60,7 @@ TEST(Settings, EveryKeyedRowReadsTheSameFromTheFileAndTheFlag) {
     EXPECT_EQ(row.show(file), row.show(cli)) << row.key;
     EXPECT_NE(row.show(file), row.show(Settings{})) << row.key << ": the sample is the default";
   }
-  EXPECT_EQ(keyed, 8);  // the legacy four and rate, mapping, weapons, input
+  EXPECT_EQ(keyed, 9);  // the legacy four and rate, mapping, weapons, input, supervisor
 }
 
 TEST(Settings, EveryRowTakesBackWhatItShows) {

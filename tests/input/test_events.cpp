@@ -67,7 +67,7 @@ TEST_P(EventScriptErrors, NameFileLineAndColumn) {
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, EventScriptErrors,
     ::testing::Values(
-        BadScript{"0 connect\n10 jump\n", 2, 4, "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload or stop)"},
+        BadScript{"0 connect\n10 jump\n", 2, 4, "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)"},
         BadScript{"0 connect\n10 link sideways\n", 2, 9, "unknown link event 'sideways' (expected down, up or taken)"},
         BadScript{"0 connect\n10 link\n", 2, 4, "expected 'link down|up|taken'"},
         BadScript{"0 connect\n10 suspend now\n", 2, 12, "expected 'suspend'"},
@@ -85,6 +85,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{"0 end\n5 connect\n", 2, 1, "event after 'end'"},
         BadScript{"0 end now\n", 1, 7, "expected 'end'"},
         BadScript{"12\n", 1, 1, "missing event after the time"},
+        BadScript{"0 supervisor stop\n", 1, 14,
+                  "'supervisor' takes connect, disconnect, button, axis or hat, not 'stop': the other events are "
+                  "the run's, not a controller's"},
+        BadScript{"0 supervisor end\n", 1, 14,
+                  "'supervisor' takes connect, disconnect, button, axis or hat, not 'end': the other events are "
+                  "the run's, not a controller's"},
+        BadScript{"0 supervisor\n", 1, 3, "missing event after 'supervisor'"},
+        BadScript{"0 supervisor button a\n", 1, 14, "expected 'button NAME 0|1'"},
+        BadScript{"0 supervisor button a 1 1\n", 1, 25, "expected 'button NAME 0|1'"},
+        BadScript{"0 supervisor axis leftx 40000\n", 1, 25, "axis value 40000 is out of range -32768..32767"},
         BadScript{"0 connect\n86400001 end\n", 2, 1,
                   "time 86400001 ms is past 24 h (86400000 ms), the longest an event script may last"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
@@ -126,6 +136,58 @@ TEST(EventScript, AControllerNameWithARawControlByteIsRefused) {
   EXPECT_EQ(error("0 connect pad\\q\n"),
             "x.events:1:14: error: unknown escape '\\\\q' (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
   EXPECT_EQ(parse_event_script("0 connect pad\\x00name\n", "x.events").at(0).name, std::string("pad\0name", 8));
+}
+
+// `T supervisor EVENT`: the same events, for the supervisor's controller.
+TEST(EventScript, SupervisorLinesAddressTheSecondController) {
+  const auto events = parse_event_script(
+      "0 connect Pad A\n"
+      "0 supervisor connect Pad B  # the supervisor's\n"
+      "10 supervisor button guide 1\n"
+      "20 supervisor axis lefttrigger 32767\n"
+      "30 supervisor hat 0 up\n"
+      "40 button guide 1\n"
+      "50 supervisor disconnect\n",
+      "s.events");
+  ASSERT_EQ(events.size(), 7U);
+  EXPECT_EQ(events[0].pad, Pad::kOperator);
+  EXPECT_EQ(events[1].pad, Pad::kSupervisor);
+  EXPECT_EQ(events[1].type, T::kConnect);
+  EXPECT_EQ(events[1].name, "Pad B");
+  EXPECT_EQ(events[2].type, T::kButton);
+  EXPECT_EQ(events[2].key, *parse_button_name("guide"));
+  EXPECT_EQ(events[2].pad, Pad::kSupervisor);
+  EXPECT_EQ(events[3].type, T::kAxis);
+  EXPECT_EQ(events[3].value, 32767);
+  EXPECT_EQ(events[4].type, T::kHat);
+  EXPECT_EQ(events[4].pad, Pad::kSupervisor);
+  EXPECT_EQ(events[5].pad, Pad::kOperator);
+  EXPECT_EQ(events[6].type, T::kDisconnect);
+  EXPECT_EQ(events[6].pad, Pad::kSupervisor);
+}
+
+TEST(EventScript, SupervisorLinesFormatAndReadBack) {
+  const std::string text =
+      "0       supervisor connect     Pad B\n"
+      "10      supervisor button      guide 1\n"
+      "20      supervisor axis        lefty -32768\n"
+      "30      supervisor hat         0 up\n"
+      "40      supervisor disconnect\n"
+      "50      supervisor connect\n";
+  std::string again;
+  for (const auto& e : parse_event_script(text, "f")) again += format_event(e) + "\n";
+  EXPECT_EQ(again, text);
+}
+
+TEST(EventScript, AScriptAddressingTheSupervisorSaysSo) {
+  TextReader with("0 connect\n# 5 supervisor connect: a comment is not a line\n100 supervisor connect\n200 end\n",
+                  "w.events", kEventScriptLimits);
+  EXPECT_TRUE(addresses_supervisor(with));
+  EXPECT_EQ(with.line_number(), 0);  // rewound
+  EXPECT_EQ(*with.next_line(), "0 connect");
+  TextReader without("0 connect\n# 5 supervisor connect\n100 button a 1\n", "n.events", kEventScriptLimits);
+  EXPECT_FALSE(addresses_supervisor(without));
+  EXPECT_EQ(without.line_number(), 0);
 }
 
 TEST(EventScript, LastsAtMostADay) {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "andros/base/error.hpp"
+#include "andros/input/events.hpp"
 #include "andros/input/script_player.hpp"
 
 namespace andros::input {
@@ -49,6 +50,53 @@ INSTANTIATE_TEST_SUITE_P(Cases, ScriptEnding,
                                            Ending{"0 connect\n80 end\n", 80},
                                            Ending{"0 connect\n81 end\n", 120},
                                            Ending{"0 end\n", 0}));
+
+// A supervisor's line anywhere configures one for the whole run, from its start.
+TEST(ScriptPlayer, ASupervisorLineAnywhereMakesTheScriptSupervised) {
+  TextReader with("0 connect\n100 button a 1\n5000 supervisor connect Pad B\n", "s.events", kEventScriptLimits);
+  ScriptPlayer supervised(with);
+  EXPECT_TRUE(supervised.supervised());
+  InputState s;
+  supervised.advance_to(100, s);  // the scan rewound: the first line plays
+  EXPECT_TRUE(s.connected());
+  EXPECT_TRUE(s.button(*parse_button_name("a")).down);
+  EXPECT_FALSE(s.supervisor().connected());
+  supervised.advance_to(5000, s);
+  EXPECT_TRUE(s.supervisor().connected());
+  EXPECT_EQ(s.supervisor().name(), "Pad B");
+
+  TextReader without("0 connect\n100 button a 1\n", "n.events", kEventScriptLimits);
+  EXPECT_FALSE(ScriptPlayer(without).supervised());
+}
+
+// The supervisor's events reach its own snapshot; the operator's stays as it was.
+TEST(InputState, EachControllersEventsReachItsOwnSnapshot) {
+  InputState s;
+  for (const auto& e : parse_event_script("0 connect Pad A\n0 supervisor connect Pad B\n0 supervisor button b 1\n"
+                                          "10 supervisor button a 1\n20 button x 1\n30 link down\n",
+                                          "s.events")) {
+    s.apply(e);
+  }
+  const auto a = *parse_button_name("a");
+  const auto b = *parse_button_name("b");
+  const auto x = *parse_button_name("x");
+  EXPECT_EQ(s.name(), "Pad A");
+  EXPECT_EQ(s.supervisor().name(), "Pad B");
+  EXPECT_FALSE(s.button(a).down);
+  EXPECT_TRUE(s.button(x).down);
+  EXPECT_TRUE(s.supervisor().button(a).down);
+  EXPECT_EQ(s.supervisor().button(a).presses, 1U);
+  EXPECT_TRUE(s.supervisor().button(b).down);
+  EXPECT_EQ(s.supervisor().button(b).presses, 0U);  // held at its connect: not a press
+  EXPECT_FALSE(s.supervisor().button(x).down);
+  EXPECT_EQ(s.take_faults().size(), 1U);  // faults stay on the top state
+  s.apply(parse_event_script("40 supervisor disconnect\n", "d").front());
+  EXPECT_TRUE(s.connected());
+  EXPECT_FALSE(s.supervisor().connected());
+  EXPECT_FALSE(s.supervisor().button(a).down);
+  EXPECT_EQ(s.supervisor().connection(), 1U);
+  EXPECT_EQ(s.connection(), 1U);
+}
 
 TEST(ScriptPlayer, ParseErrorsSurfaceAsInputErrors) {
   TextReader in("0 connect\n200 jump\n", "s.events", kEventScriptLimits);

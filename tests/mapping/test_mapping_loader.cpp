@@ -120,7 +120,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"unbind with no extends", kHead + "  - unbind: dpup\n", 4, 13, "binds nothing to it", kUnbindBase},
         BadMapping{"unbind of a base-layer input in a layer", "robot: HD1\nextends: base.yaml\nlayers:\n  arm:\n    hold: rightshoulder\n    bindings:\n      - unbind: dpup\n", 7, 17, "binds nothing to it in this layer", kUnbindBase},
         BadMapping{"unbind of an unknown input", kUnbindHead + "  - unbind: dpupp\n", 4, 13, "unknown input 'dpupp'", kUnbindBase},
-        BadMapping{"unbind with another key", kUnbindHead + "  - unbind: dpup\n    button: a\n", 5, 5, "unknown key 'button' in an unbind item", kUnbindBase}),
+        BadMapping{"unbind with another key", kUnbindHead + "  - unbind: dpup\n    button: a\n", 5, 5, "unknown key 'button' in an unbind item", kUnbindBase},
+        // The supervisor's controller's buttons.
+        BadMapping{"supervisor section without stop", "robot: HD1\ndeadman: a\nsupervisor:\n  weapons_consent: a\n", 4, 3, "the supervisor section needs 'stop: BUTTON'"},
+        BadMapping{"supervisor section with an unknown key", "robot: HD1\ndeadman: a\nsupervisor:\n  stop: b\n  consent: a\n", 5, 3, "unknown key 'consent' in the supervisor section (expected stop, weapons_consent)"},
+        BadMapping{"supervisor stop an axis", "robot: HD1\ndeadman: a\nsupervisor: {stop: leftx}\n", 3, 20, "unknown button 'leftx'"},
+        BadMapping{"supervisor section not a map", "robot: HD1\ndeadman: a\nsupervisor: b\n", 3, 13, "the supervisor section"},
+        BadMapping{"supervisor consent the stop", "robot: HD1\ndeadman: a\nsupervisor:\n  stop: b\n  weapons_consent: b\n", 5, 20, "the supervisor's 'weapons_consent' must be a different button from its 'stop' (line 4)"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (auto& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
@@ -283,6 +289,29 @@ TEST(MappingLoader, DefaultsAndEveryBindingKind) {
   EXPECT_EQ(laser.signal, protocol::signal_id("laser"));
   EXPECT_EQ(input::input_name(*laser.arm), "righttrigger");
   EXPECT_EQ(m.bindings[6].pos.line, 22);  // the laser binding's first line
+}
+
+// The supervisor's buttons are read on its own controller: the operator's
+// deadman, a layer key or a bound input may be the same button name.
+TEST(MappingLoader, TheSupervisorSectionNamesButtonsOnTheSecondController) {
+  MappingDir dir;
+  const auto m = *load_mapping(dir.write("sup.yaml", "robot: HD1\ndeadman: a\nsupervisor:\n  stop: a\n"
+                                                     "  weapons_consent: hat0up\nbindings:\n  - signal: tool_on\n"
+                                                     "    button: hat0up\n"));
+  ASSERT_TRUE(m.supervisor);
+  EXPECT_EQ(input::input_name(m.supervisor->stop.key), "a");
+  EXPECT_EQ(m.supervisor->stop.pos.line, 4);
+  ASSERT_TRUE(m.supervisor->weapons_consent);
+  EXPECT_EQ(input::input_name(m.supervisor->weapons_consent->key), "hat0up");
+  const auto stop_only = *load_mapping(dir.write("stop.yaml", "robot: HD1\ndeadman: a\nsupervisor: {stop: guide}\n"));
+  EXPECT_FALSE(stop_only.supervisor->weapons_consent);
+  EXPECT_FALSE(load_mapping(dir.write("none.yaml", "robot: HD1\ndeadman: a\n"))->supervisor);
+  // An extending file's section replaces the base's whole.
+  dir.write("base.yaml", "deadman: a\nsupervisor: {stop: b, weapons_consent: x}\n");
+  EXPECT_TRUE(load_mapping(dir.write("kept.yaml", "robot: HD1\nextends: base.yaml\n"))->supervisor->weapons_consent);
+  const auto over = *load_mapping(dir.write("over.yaml", "robot: HD1\nextends: base.yaml\nsupervisor: {stop: y}\n"));
+  EXPECT_EQ(input::input_name(over.supervisor->stop.key), "y");
+  EXPECT_FALSE(over.supervisor->weapons_consent);
 }
 
 // A base's layer of the same name is extended, not refused; a mapping built

@@ -68,6 +68,21 @@ TEST(Safety, WeaponsNeedTheRunFlagAndTheirArm) {
   EXPECT_EQ(apply_safety(everything_on(), SafetyContext{true, false, armed})[protocol::signal_id("weapon_1")], 0);
 }
 
+// The two-person rule: without the supervisor's consent no weapon is sent, armed or not.
+TEST(Safety, WeaponsNeedTheSupervisorsConsentWhenAskedFor) {
+  std::bitset<protocol::kSignalCount> armed;
+  armed.set(protocol::signal_id("weapon_1"));
+  SafetyContext ctx{true, true, armed};
+  ctx.consent = false;
+  const auto s = apply_safety(everything_on(), ctx);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (protocol::kSignals[i].kind == protocol::SignalKind::kWeapon) {
+      EXPECT_EQ(s.values[i], 0) << protocol::kSignals[i].name;
+    }
+  }
+  EXPECT_EQ(s[protocol::signal_id("safety")], 1);  // motion is not the supervisor's to give
+}
+
 TEST(Safety, BrakeWhileMovingOnly) {
   protocol::ControlState rest;
   rest[protocol::signal_id("drive")] = 128;

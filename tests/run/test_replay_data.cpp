@@ -70,7 +70,11 @@ INSTANTIATE_TEST_SUITE_P(
         // Neutral is the protocol's: a center trim moves only the enabled rest.
         Case{"center_trim", "trim.yaml"},
         // Speed levels: exact scaling, a held stick held back at a change, the level's life.
-        Case{"speed_levels", "speed.yaml"}),
+        Case{"speed_levels", "speed.yaml"},
+        // The supervisor's controller: its loss, its absence at the start, its weapons consent.
+        Case{"supervisor_loss", "core.yaml"},
+        Case{"supervisor_late", "core.yaml"},
+        Case{"supervisor_consent", "supervisor.yaml", true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -186,6 +186,48 @@ TEST(RunStatusBoard, NoSpeedLevelsNoWordOfThem) {
   EXPECT_EQ(log.text().find("speed"), std::string::npos) << log.text();
 }
 
+// The supervisor's controller: on the board, in the log once per change, and
+// named in the state when it is what is missing.
+TEST(RunStatusBoard, TheSupervisorsControllerIsShownAndItsComingAndGoingLogged) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  auto r = tick(40);
+  r.supervised = true;
+  r.supervisor_connected = true;
+  r.supervisor = "Pad B";
+  r.engine.supervisor_stop = true;
+  r.engine.consent = mapping::ConsentState::kGiven;
+  board.observe(r);
+  auto s = board.snapshot();
+  EXPECT_TRUE(s.supervised);
+  EXPECT_EQ(s.supervisor, "Pad B");
+  EXPECT_TRUE(s.supervisor_stop);
+  EXPECT_EQ(s.consent, mapping::ConsentState::kGiven);
+  r.t_ms = 80;
+  board.observe(r);
+  r.t_ms = 120;
+  r.supervisor_connected = false;
+  r.supervisor.clear();
+  r.state = run::OpState::kNoController;
+  board.observe(r);
+  s = board.snapshot();
+  EXPECT_FALSE(s.supervisor_connected);
+  EXPECT_FALSE(s.supervisor_stop);  // a lost controller holds nothing
+  EXPECT_EQ(s.enable_text, "connect the supervisor's controller, then press the deadman afresh");
+  r.t_ms = 160;
+  r.connected = false;
+  board.observe(r);
+  EXPECT_EQ(board.snapshot().enable_text, "connect a controller, then press the deadman");
+  const auto text = log.text();
+  EXPECT_EQ(count(text, "info: supervisor's controller: Pad B\n"), 1U) << text;
+  EXPECT_EQ(count(text, "warning: supervisor's controller: none connected: nothing moves without it\n"), 1U) << text;
+
+  const LogCapture quiet;  // without a supervisor, nothing is said of one
+  RunStatusBoard alone(RunStatus{});
+  alone.observe(tick(40));
+  EXPECT_EQ(quiet.text().find("supervisor"), std::string::npos) << quiet.text();
+}
+
 TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {
   RunStatus initial;
   initial.robot = "HD1";

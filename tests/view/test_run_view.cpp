@@ -156,6 +156,33 @@ TEST(RunView, StoppedByTheOperatorIsARedLineAboveAll) {
   EXPECT_EQ(shown(s, {80, 24})[0].find("STOP"), std::string::npos);
 }
 
+TEST(RunView, TheSupervisorsControllerHasItsOwnLineUnderTheOperators) {
+  RunStatus s = driving(false);
+  EXPECT_TRUE(shown(s, {80, 24})[4].starts_with("mapping     ")) << "a supervisor's line without one";
+  s.supervised = true;
+  s.supervisor_connected = true;
+  s.supervisor = "Pad B";
+  s.consent = mapping::ConsentState::kGiven;
+  auto lines = shown(s, {80, 24});
+  EXPECT_EQ(lines[3], "controller  Xbox 360 Controller");
+  EXPECT_EQ(lines[4], "supervisor  Pad B  consent: GIVEN");
+  EXPECT_TRUE(lines[5].starts_with("mapping     ")) << lines[5];
+  s.supervisor_stop = true;
+  s.consent = mapping::ConsentState::kHeldBack;
+  EXPECT_EQ(shown(s, {80, 24})[4], "supervisor  Pad B   STOP HELD   consent: release and press again");
+  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  EXPECT_NE(text.find("\x1b[1;97;41m STOP HELD \x1b[0m"), std::string::npos) << text;
+  s.consent = mapping::ConsentState::kNotAsked;
+  s.supervisor_stop = false;
+  EXPECT_EQ(shown(s, {80, 24})[4], "supervisor  Pad B");
+  s.supervisor_connected = false;
+  EXPECT_EQ(shown(s, {80, 24})[4], "supervisor  none connected: nothing moves without it");
+  // At 80x24 with the simulated vehicle the gauges and the frame still fit, and the log keeps 3 rows.
+  lines = shown(s, {80, 24});
+  EXPECT_LE(lines.size(), 21U);
+  EXPECT_TRUE(lines.back().starts_with("  frame     ")) << lines.back();
+}
+
 TEST(RunView, TheHeadlineIsTheOperatingState) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNoLink;

@@ -139,6 +139,22 @@ TEST(Sheet, WithoutSpeedLevelsNoWordOfThem) {
   EXPECT_EQ(render_sheet_text(s).find("SPEED"), std::string::npos);
 }
 
+// The supervisor's buttons are on its own controller: a note, not the operator's pad drawing.
+TEST(Sheet, NotesGiveTheSupervisorsButtons) {
+  const auto s = build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/supervisor.yaml"));
+  const auto has = [&](std::string_view text) {
+    return std::any_of(s.notes.begin(), s.notes.end(), [&](const std::string& n) { return n == text; });
+  };
+  EXPECT_TRUE(has("Weapons fire only when the run has --weapons, the deadman (LB) is held and the arming input "
+                  "(RB) is held, and the supervisor holds its consent."));
+  EXPECT_TRUE(has("Supervisor's controller (run --supervisor): X stops (latched until released, then the deadman "
+                  "pressed afresh); A held is the weapons consent (a two-person rule: pressed after the weapons "
+                  "became possible). Losing either controller stops motion."));
+  EXPECT_NE(render_sheet_text(s).find("Supervisor's controller"), std::string::npos);
+  EXPECT_NE(render_sheet_svg(s).find("Supervisor"), std::string::npos);
+  for (const auto& n : kinds_sheet().notes) EXPECT_EQ(n.find("upervisor"), std::string::npos) << n;
+}
+
 TEST(Sheet, PlainJoystickGetsListPanels) {
   const auto s = build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/joystick.yaml"));
   EXPECT_FALSE(s.pad);

@@ -50,6 +50,8 @@ struct Settings {
   timing::Rate rate{timing::kDefaultRateMillihertz, "", SourcePos{"--rate"}};
   bool weapons = false;
   std::string input{kSdlInput};                ///< "sdl" or an event script's path
+  std::string supervisor;                      ///< the supervisor's controller (INDEX|NAME|GUID); empty: none
+  SourcePos supervisor_pos{"--supervisor"};    ///< where it was set, for errors about it
   std::optional<std::uint8_t> expected_code;   ///< `monitor --code`
   int read_rate_hz = kDefaultReadRateHz;       ///< `record --rate`
   protocol::ReplayFormat format = protocol::ReplayFormat::kHex;

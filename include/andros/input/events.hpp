@@ -43,6 +43,13 @@ std::vector<InputEvent> parse_event_script(const std::string& text, const std::s
 /// regular file is read twice.
 TextReader checked_event_script(TextReader text);
 
+/// Whether a line of text addresses the supervisor's controller (`T
+/// supervisor EVENT`): such a script runs with a supervisor's controller
+/// configured from its start (docs/event-scripts.md). Reads text to its end
+/// (or to its first line over the limits, which playing it reports) and
+/// rewinds it: text must be able to rewind and be unread.
+bool addresses_supervisor(TextReader& text);
+
 /// One event as a script line (`120     axis        lefty -32768`), no newline.
 std::string format_event(const InputEvent& event);
 

@@ -24,6 +24,10 @@ class InputSource {
   /// A live controller source never finishes.
   [[nodiscard]] virtual bool finished(std::int64_t now_ms) const = 0;
 
+  /// A supervisor's controller is configured (`run --supervisor`, a script
+  /// that addresses one): driving needs it connected as well as the operator's.
+  [[nodiscard]] virtual bool supervised() const { return false; }
+
   /// Plays a pattern on the controller, if it has rumble or a light; never
   /// blocks. Called on the thread that calls pump(). A script has no
   /// controller: nothing happens.

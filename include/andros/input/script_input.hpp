@@ -23,6 +23,7 @@ class ScriptInput final : public InputSource {
 
   void pump(InputState& state, std::int64_t now_ms) override { player_->advance_to(now_ms, state); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_->finished_at(now_ms); }
+  [[nodiscard]] bool supervised() const override { return player_->supervised(); }
 
  private:
   TextReader text_;

@@ -14,8 +14,9 @@ namespace andros::input {
 
 class ScriptPlayer {
  public:
-  /// Plays text, which must outlive the player.
-  explicit ScriptPlayer(TextReader& text) : reader_(text) {}
+  /// Plays text, which must outlive the player. Text that can rewind is
+  /// read once first, for supervised().
+  explicit ScriptPlayer(TextReader& text);
 
   /// Applies every event with a time <= t_ms (the state the frame at t_ms
   /// reflects). Parse errors surface here as InputError.
@@ -25,11 +26,16 @@ class ScriptPlayer {
   /// >= the `end` time (or the last event's time, for a script with no `end`).
   [[nodiscard]] bool finished_at(std::int64_t t_ms) const;
 
+  /// The script addresses the supervisor's controller somewhere: a
+  /// supervisor is configured for the whole run (InputSource::supervised).
+  [[nodiscard]] bool supervised() const { return supervised_; }
+
  private:
   EventReader reader_;
   std::optional<InputEvent> pending_;  ///< read but not yet due
   bool exhausted_ = false;
   std::int64_t last_t_ = 0;
+  bool supervised_ = false;
 };
 
 }  // namespace andros::input

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "andros/base/error.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/input/device_layout.hpp"
 #include "andros/input/input_source.hpp"
@@ -26,6 +27,10 @@ struct SdlInputOptions {
   /// A file of extra SDL controller mappings (gamecontrollerdb.txt format).
   /// Empty: none beyond SDL's own and SDL_GAMECONTROLLERCONFIG.
   std::string controller_db;
+  /// The supervisor's controller, chosen as `controller` is (never the same
+  /// device). Empty: none.
+  std::string supervisor;
+  SourcePos supervisor_pos{"--supervisor"};  ///< where it was set, for errors about it
 };
 
 /// One attached device, as `andros-bridge controllers` lists it.
@@ -55,26 +60,29 @@ class SdlSession {
 void load_controller_db(const std::string& path, const StopCheck& stop = {});
 
 /// The live controller as an InputSource. Only the chosen controller feeds
-/// the state; the others are ignored. A connect is followed by the device's
-/// current state, all stamped with the connect's time, so that buttons held
-/// when it appears are not presses.
+/// the state (and the supervisor's, when one is chosen: its events carry
+/// Pad::kSupervisor); the others are ignored. A connect is followed by the
+/// device's current state, all stamped with the connect's time, so that
+/// buttons held when it appears are not presses.
 class SdlInput final : public InputSource {
  public:
   /// Starts SDL and loads options.controller_db, asking stop while it reads
-  /// (ReadStopped). Throws InputError for a bad selection or mapping file,
+  /// (ReadStopped). Throws InputError for a bad selection (a supervisor's
+  /// chosen as the operator's is, at supervisor_pos) or mapping file,
   /// RuntimeError when SDL cannot start. Opens no device yet: the first poll() does.
   explicit SdlInput(const SdlInputOptions& options, const StopCheck& stop = {});
   ~SdlInput() override;
   SdlInput(const SdlInput&) = delete;
   SdlInput& operator=(const SdlInput&) = delete;
 
-  /// Drains SDL's queue without blocking and returns the chosen controller's
+  /// Drains SDL's queue without blocking and returns the chosen controllers'
   /// events since the last call, every one stamped now_ms (valid until the
   /// next call). Never throws.
   const std::vector<InputEvent>& poll(std::int64_t now_ms);
 
   void pump(InputState& state, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
+  [[nodiscard]] bool supervised() const override;
 
   /// Sets the chosen controller's light and starts its rumble (at the last
   /// poll's time; later pulses start from poll()). Nothing without a
@@ -86,6 +94,8 @@ class SdlInput final : public InputSource {
 
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;
+  /// The same for the supervisor's; empty without one.
+  [[nodiscard]] std::string supervisor_selection() const;
 
  private:
   struct Impl;

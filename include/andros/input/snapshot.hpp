@@ -56,6 +56,12 @@ std::optional<InputKey> parse_axis_name(std::string_view name);
 /// The name parse_*_name reads back ("a", "3", "hat0up", "leftx").
 std::string input_name(InputKey key);
 
+/// Whose controller an event is for.
+enum class Pad : std::uint8_t {
+  kOperator,    ///< the operator's: the one that drives
+  kSupervisor,  ///< the supervisor's (`run --supervisor`; a script's `T supervisor EVENT`): a stop, a consent
+};
+
 struct InputEvent {
   enum class Type : std::uint8_t {
     kConnect, kDisconnect, kButton, kAxis, kHat, kEnd,
@@ -78,6 +84,9 @@ struct InputEvent {
   int value = 0;        ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
   std::string name;     ///< controller name, for kConnect; the mapping file, for kReload
   int line = 0;         ///< source line in an event script, 0 when live
+  /// Whose controller a connect, disconnect, button, axis or hat event is
+  /// for; always the operator's for the others (they are the run's, not a pad's).
+  Pad pad = Pad::kOperator;
 };
 
 struct ButtonState {
@@ -88,12 +97,13 @@ struct ButtonState {
   std::uint32_t presses = 0;
 };
 
-/// The controller snapshot a frame is computed from.
-class InputState {
+/// One controller's snapshot.
+class PadState {
  public:
-  /// Applies one event. Button, axis and hat events stamped with the same
-  /// time as the connect before them are the controller's state when it
-  /// appeared, not presses.
+  /// Applies a connect, disconnect, button, axis or hat event (whoever's
+  /// pad it names). Button, axis and hat events stamped with the same time as
+  /// the connect before them are the controller's state when it appeared,
+  /// not presses.
   void apply(const InputEvent& event);
 
   [[nodiscard]] bool connected() const { return connected_; }
@@ -106,10 +116,6 @@ class InputState {
   /// The hat's SDL_HAT_* mask (0 = centred).
   [[nodiscard]] int hat(int hat_index) const;
 
-  /// The fault events applied since the last call, in order (the run loop
-  /// answers them; the snapshot itself ignores them).
-  [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
-
  private:
   void set_button(InputKey key, bool down, bool initial);
 
@@ -119,6 +125,36 @@ class InputState {
   std::string name_;
   std::map<InputKey, ButtonState> buttons_;
   std::map<InputKey, std::int16_t> axes_;
+};
+
+/// The snapshot a frame is computed from: the operator's controller (read
+/// through the members below, which are its PadState's), the supervisor's
+/// (supervisor()), and the fault events for the run loop.
+class InputState {
+ public:
+  /// Applies one event: a fault is kept for take_faults(), a controller's
+  /// event goes to the pad it names (InputEvent::pad).
+  void apply(const InputEvent& event);
+
+  [[nodiscard]] bool connected() const { return operator_pad_.connected(); }
+  /// Counts the operator's connects; a new value means a new controller session.
+  [[nodiscard]] std::uint32_t connection() const { return operator_pad_.connection(); }
+  [[nodiscard]] const std::string& name() const { return operator_pad_.name(); }
+  [[nodiscard]] ButtonState button(InputKey key) const { return operator_pad_.button(key); }
+  [[nodiscard]] std::int16_t axis(InputKey key) const { return operator_pad_.axis(key); }
+  /// The hat's SDL_HAT_* mask (0 = centred).
+  [[nodiscard]] int hat(int hat_index) const { return operator_pad_.hat(hat_index); }
+
+  /// The supervisor's controller: never connected in a run without one.
+  [[nodiscard]] const PadState& supervisor() const { return supervisor_pad_; }
+
+  /// The fault events applied since the last call, in order (the run loop
+  /// answers them; the snapshot itself ignores them).
+  [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
+
+ private:
+  PadState operator_pad_;
+  PadState supervisor_pad_;
   std::vector<InputEvent> faults_;
 };
 

@@ -60,6 +60,9 @@ class Engine {
 
  private:
   void start_session(const input::InputState& input, bool at_start_up);
+  /// The stop buttons this tick (the operator's `estop`, the supervisor's
+  /// `stop`): EngineStatus::stop_pressed (taking the presses), stop_held, supervisor_stop.
+  void read_stops(const input::InputState& input);
   void clear_toggles();
   [[nodiscard]] bool held(const input::InputState& input, input::InputKey key, bool invert = false,
                           double threshold = kDefaultThreshold) const;
@@ -97,6 +100,9 @@ class Engine {
   // State carried from tick to tick.
   bool started_ = false;
   std::uint32_t connection_ = 0;
+  std::uint32_t supervisor_connection_ = 0;  ///< the supervisor's controller session
+  std::uint32_t stop_connection_ = 0;        ///< the supervisor's session its stop presses are counted in
+  std::uint32_t stop_presses_ = 0;           ///< the supervisor's stop presses already reported
   std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
   std::uint32_t deadman_base_ = 0;       ///< deadman presses that are not fresh
   bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session

@@ -34,6 +34,14 @@ struct SpeedLevel {
   bool operator==(const SpeedLevel&) const = default;
 };
 
+/// The supervisor's weapons consent (the mapping's `supervisor: weapons_consent:`).
+enum class ConsentState : std::uint8_t {
+  kNotAsked,  ///< the mapping asks for none: weapons need no consent
+  kReleased,  ///< not held (or no supervisor's controller connected): no weapon fires
+  kHeldBack,  ///< held since before it became meaningful: counts once released and pressed again
+  kGiven,     ///< held and counting: an armed fire input fires
+};
+
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;  ///< the active layer's name ("" for the base layer)
@@ -41,9 +49,14 @@ struct EngineStatus {
   /// Enabled, weapons enabled for the run, and the active layer has weapon
   /// bindings: an armed fire input fires (what the banner and the pad announce).
   bool weapons_mode = false;
-  /// A stop button (the mapping's `estop`) was pressed since the last step or
-  /// is held: the run loop latches "stopped by the operator".
+  /// A stop button was pressed or is held this tick (the operator's `estop`,
+  /// the supervisor's `stop`): the run loop latches the stop.
   bool stop_pressed = false;
+  /// One is held now: the latched stop cannot clear yet.
+  bool stop_held = false;
+  /// The supervisor's `stop` is held (for the view: whose stop it is).
+  bool supervisor_stop = false;
+  ConsentState consent = ConsentState::kNotAsked;
   SpeedLevel speed;
 };
 

@@ -151,6 +151,14 @@ enum class BrakeMode : std::uint8_t {
   kMoving,   ///< released only while drive or pivot is off centre
 };
 
+/// The supervisor's controller (`supervisor:`, docs/mapping.md): buttons
+/// read on the second pad (`run --supervisor`), never on the operator's.
+struct SupervisorButtons {
+  SourcePos pos;                            ///< the section
+  InputUse stop;                            ///< latches the stop, as the operator's `estop` does
+  std::optional<InputUse> weapons_consent;  ///< with it, a weapon fires only while it is held too
+};
+
 struct Mapping {
   std::string file;                  ///< the file it was loaded from
   std::vector<std::string> chain;    ///< the files read, canonical: this one, then each it extends
@@ -171,6 +179,7 @@ struct Mapping {
   /// Enabled with no change of any input the mapping reads for this long ends
   /// "enabled" (`enable_timeout:`, in ms here); none: no timeout.
   std::optional<std::int64_t> enable_timeout_ms;
+  std::optional<SupervisorButtons> supervisor;
   BrakeMode brake = BrakeMode::kEnabled;
   SpeedScale scale;
   FeedbackTable feedback = default_feedback();  ///< rumble and light per event

@@ -7,11 +7,13 @@
 #include <bitset>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
 
 #include "andros/input/snapshot.hpp"
+#include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 
@@ -23,12 +25,15 @@ struct SafetyContext {
   std::bitset<protocol::kSignalCount> armed;  ///< weapon signals whose arming input is held
   int center = kDefaultCenter;  ///< drive and pivot's rest while enabled (the trim): `brake: moving` measures from it
   BrakeMode brake = BrakeMode::kEnabled;
+  /// The supervisor's weapons consent counts (RestRule::consent), or the mapping asks for none.
+  bool consent = true;
 };
 
 /// Not enabled: motion and weapon bits 0, drive/pivot at the protocol's
 /// centre (128, whatever the mapping's trim), selectors, levels and constants
 /// unchanged. Enabled: safety = 1, drive_brake = 1 (or
-/// only while moving), weapons only when enabled for the run and armed.
+/// only while moving), weapons only when enabled for the run, armed and
+/// consented to.
 /// Always: an opposing pair asked for both ways sends neither.
 protocol::ControlState apply_safety(protocol::ControlState state, const SafetyContext& context);
 
@@ -49,6 +54,14 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
 /// fire input means too, so a fire input held at that frame waits as above. An
 /// arming input itself counts, like the deadman, when it is pressed in the
 /// frame of a change; one held since before the change waits until released.
+///
+/// The supervisor's weapons consent (the mapping's `supervisor:` section) is
+/// read the same way: it means something while enabled in a layer with
+/// weapons, and it takes on a new meaning when that begins, when the weapons
+/// in effect change with the layer, and when either controller is new. A
+/// consent pressed in that frame counts; one held since before waits until
+/// released (a consent taped down is no second person). Consent given is
+/// part of arming: a fire input held when it comes waits too.
 class RestRule {
  public:
   explicit RestRule(const Mapping& mapping);
@@ -68,6 +81,13 @@ class RestRule {
   /// The inputs held back now (EngineStatus::held_back).
   [[nodiscard]] std::vector<input::InputKey> held_back_inputs() const;
 
+  /// The supervisor's consent at the last update (kNotAsked without one in the mapping).
+  [[nodiscard]] ConsentState consent_state() const { return consent_; }
+  /// Weapons may fire as far as the supervisor is concerned: consent given, or none asked.
+  [[nodiscard]] bool consent() const {
+    return consent_ == ConsentState::kNotAsked || consent_ == ConsentState::kGiven;
+  }
+
  private:
   /// What "at rest" is for one binding reading one input.
   struct Reader {
@@ -84,6 +104,7 @@ class RestRule {
   [[nodiscard]] static bool at_rest(const input::InputState& input, input::InputKey key, const std::vector<Reader>& readers);
   void hold_back(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
   void hold_back_fire_inputs(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
+  void update_consent(const input::InputState& input, int layer, bool enabled);
   void hold(const input::InputState& input, input::InputKey key, bool rest);
   [[nodiscard]] bool pressed_this_frame(const input::InputState& input, input::InputKey arm) const;
 
@@ -99,6 +120,14 @@ class RestRule {
   std::set<input::InputKey> arms_down_;
   std::map<input::InputKey, std::uint32_t> arm_presses_;
   std::uint32_t arms_connection_ = 0;  ///< the controller session of that frame
+  // The supervisor's weapons consent.
+  std::optional<input::InputKey> consent_key_;
+  std::vector<std::vector<std::pair<int, std::size_t>>> weapons_;  ///< [layer + 1]: the weapon bindings in effect
+  ConsentState consent_ = ConsentState::kNotAsked;
+  bool consent_meant_ = false;              ///< consent meant something at the last frame
+  std::uint32_t consent_presses_ = 0;       ///< its presses at the last frame
+  std::uint32_t consent_hold_presses_ = 0;  ///< and when it was held back
+  std::uint32_t consent_connection_ = 0;    ///< the supervisor's controller session of the last frame
 };
 
 }  // namespace andros::mapping

@@ -65,6 +65,9 @@ struct TickReport {
   OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
   bool connected = false;    ///< a controller is connected
   std::string controller;    ///< its name (may be empty)
+  bool supervised = false;   ///< a supervisor's controller is configured (InputSource::supervised)
+  bool supervisor_connected = false;  ///< and it is connected
+  std::string supervisor;    ///< its name (may be empty)
   mapping::EngineStatus engine;  ///< after this tick's step (the last step's when none ran)
   link::LinkStatus link;     ///< after this tick's send
 

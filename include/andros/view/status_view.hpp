@@ -49,6 +49,11 @@ struct RunStatus {
   std::string input;             ///< "sdl" or the script's path
   std::string controller;        ///< its name; empty when none is connected
   bool connected = false;
+  bool supervised = false;       ///< a supervisor's controller is configured
+  std::string supervisor;        ///< its name; empty when none is connected
+  bool supervisor_connected = false;
+  bool supervisor_stop = false;  ///< the supervisor holds its stop
+  mapping::ConsentState consent = mapping::ConsentState::kNotAsked;  ///< the supervisor's weapons consent
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
@@ -76,7 +81,8 @@ bool shows_speed(const mapping::SpeedLevel& speed);
 
 /// `run`'s screen for a terminal of this size: pinned first (the WEAPONS
 /// banner when weapons are enabled, saying WEAPONS LAYER in a weapons mode;
-/// title and measured rate, state, link, controller, mapping file), then
+/// title and measured rate, state, link, controller, the supervisor's
+/// controller when one is configured, mapping file), then
 /// counters, switch groups and gauges while rows are left (docs/running.md,
 /// "What the operator sees").
 Screen render_run_view(const RunStatus& status, TermSize size);

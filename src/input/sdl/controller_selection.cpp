@@ -21,11 +21,11 @@ std::string nonnull(const char* text) { return text != nullptr ? text : ""; }
 
 }  // namespace
 
-ControllerSelection::ControllerSelection(const std::string& text) {
+ControllerSelection::ControllerSelection(const std::string& text, const SourcePos& where) {
   if (text.empty()) return;
   if (all_of(text, &isdigit)) {
     by_ = By::kIndex;
-    index_ = static_cast<int>(parse_integer(text, 0, kMaxJoystickIndex, "controller index", SourcePos{"--controller"}));
+    index_ = static_cast<int>(parse_integer(text, 0, kMaxJoystickIndex, "controller index", where));
   } else if (text.size() == 32 && all_of(text, &isxdigit)) {
     by_ = By::kGuid;
   } else {

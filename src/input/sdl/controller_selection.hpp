@@ -3,17 +3,25 @@
 
 #include <string>
 
+#include "andros/base/error.hpp"
+
 namespace andros::input {
 
 class ControllerSelection {
  public:
-  /// Empty text: the first device. Throws InputError (at --controller) for an
+  /// Empty text: the first device. Throws InputError (at where) for an
   /// index beyond kMaxJoystickIndex.
-  explicit ControllerSelection(const std::string& text);
+  explicit ControllerSelection(const std::string& text, const SourcePos& where = SourcePos{"--controller"});
 
   /// Whether the device at this SDL device index is the one chosen.
   [[nodiscard]] bool matches(int device_index) const;
   [[nodiscard]] std::string describe() const;
+  /// No choice made: the first device found.
+  [[nodiscard]] bool is_first() const { return by_ == By::kFirst; }
+  /// The same choice (index, GUID or name, any case) as other.
+  [[nodiscard]] bool same_as(const ControllerSelection& other) const {
+    return by_ == other.by_ && (by_ == By::kIndex ? index_ == other.index_ : text_ == other.text_);
+  }
 
  private:
   enum class By { kFirst, kIndex, kGuid, kName };

@@ -35,8 +35,18 @@ RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptio
     const auto& events = input.poll(status.t_ms);
     for (const auto& event : events) {
       write_line(out, format_event(event));
-      if (event.type == InputEvent::Type::kConnect) status.connected = true;
-      if (event.type == InputEvent::Type::kDisconnect) status.connected = false;
+      bool& connected = event.pad == Pad::kSupervisor ? status.supervisor_connected : status.connected;
+      if (event.type == InputEvent::Type::kConnect) connected = true;
+      if (event.type == InputEvent::Type::kDisconnect) connected = false;
+    }
+    if (tick == 0 && input.supervised() && !status.supervisor_connected) {
+      // The script says a supervisor was configured even if its controller never comes: replay then
+      // needs it, as the live run did (docs/event-scripts.md).
+      InputEvent absent;
+      absent.t_ms = status.t_ms;
+      absent.type = InputEvent::Type::kDisconnect;
+      absent.pad = Pad::kSupervisor;
+      write_line(out, format_event(absent));
     }
     if (!events.empty()) out.flush();  // a killed recording keeps what it saw
     status.events += static_cast<std::int64_t>(events.size());

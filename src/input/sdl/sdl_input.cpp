@@ -1,4 +1,4 @@
-// The live controller source: SDL's queue, drained once per tick.
+// The live controllers' source: SDL's queue, drained once per tick.
 #include "andros/input/sdl_input.hpp"
 
 #include <spdlog/spdlog.h>
@@ -13,26 +13,56 @@
 #include "sdl_device.hpp"
 
 namespace andros::input {
+namespace {
+
+/// One controller the source looks for and, once found, reads.
+struct Slot {
+  Slot(Pad p, ControllerSelection s) : pad(p), selection(std::move(s)) {}
+
+  /// "controller 1", "the supervisor's controller (controller 1)": what the log says.
+  [[nodiscard]] std::string describe() const {
+    return pad == Pad::kSupervisor ? "the supervisor's controller (" + selection.describe() + ")" : selection.describe();
+  }
+
+  Pad pad;
+  ControllerSelection selection;
+  std::unique_ptr<SdlDevice> device;
+  std::int64_t connect_t = -1;
+  bool rescan = true;  // a device may have appeared: look for the chosen one
+  bool waiting_logged = false;
+};
+
+}  // namespace
 
 struct SdlInput::Impl {
-  Impl(const SdlInputOptions& options, const StopCheck& stop) : selection(options.controller) {
+  Impl(const SdlInputOptions& options, const StopCheck& stop)
+      : driver(Pad::kOperator, ControllerSelection(options.controller)) {
+    if (!options.supervisor.empty()) {
+      ControllerSelection chosen(options.supervisor, options.supervisor_pos);
+      if (chosen.same_as(driver.selection)) {
+        throw InputError(options.supervisor_pos, "the supervisor's controller is " + chosen.describe() +
+                                                     ", the operator's too (--controller): name another one");
+      }
+      supervisor.emplace(Pad::kSupervisor, std::move(chosen));
+    }
     if (!options.controller_db.empty()) load_controller_db(options.controller_db, stop);
   }
 
   void poll(std::int64_t now_ms);
   void drain(std::int64_t now_ms);
   void handle(const SDL_Event& event, std::int64_t now_ms);
-  void connect_chosen(std::int64_t now_ms);
-  void lose(std::int64_t now_ms);
+  void handle(Slot& slot, const SDL_Event& event, std::int64_t now_ms);
+  void connect_chosen(Slot& slot, std::int64_t now_ms);
+  /// Whether the device at this index is slot's to open: chosen by it, and not the other slot's.
+  [[nodiscard]] bool may_open(const Slot& slot, int device_index) const;
+  void lose(Slot& slot, std::int64_t now_ms);
+  [[nodiscard]] InputEvent event(const Slot& slot, InputEvent::Type type, std::int64_t now_ms) const;
 
   SdlSession session;  // first member: SDL outlives everything below
-  ControllerSelection selection;
-  std::unique_ptr<SdlDevice> device;
-  std::int64_t connect_t = -1;
-  bool rescan = true;  // a device may have appeared: look for the chosen one
-  bool waiting_logged = false;
+  Slot driver;         // the operator's controller
+  std::optional<Slot> supervisor;
   std::vector<InputEvent> events;
-  FeedbackPlayer feedback;
+  FeedbackPlayer feedback;  // the operator's controller's
   std::int64_t last_poll_ms = 0;
 };
 
@@ -43,10 +73,13 @@ void SdlInput::Impl::poll(std::int64_t now_ms) {
   // event of this pump gets now_ms.
   SDL_PumpEvents();
   drain(now_ms);
-  if (device && !device->attached()) lose(now_ms);  // in case the removal event is late
-  if (!device && rescan) connect_chosen(now_ms);
+  for (Slot* slot : {&driver, supervisor ? &*supervisor : nullptr}) {
+    if (slot == nullptr) continue;
+    if (slot->device && !slot->device->attached()) lose(*slot, now_ms);  // in case the removal event is late
+    if (!slot->device && slot->rescan) connect_chosen(*slot, now_ms);
+  }
   last_poll_ms = now_ms;
-  if (device) feedback.update(device->joystick(), now_ms);
+  if (driver.device) feedback.update(driver.device->joystick(), now_ms);
 }
 
 void SdlInput::Impl::drain(std::int64_t now_ms) {
@@ -60,72 +93,96 @@ void SdlInput::Impl::drain(std::int64_t now_ms) {
 }
 
 void SdlInput::Impl::handle(const SDL_Event& event, std::int64_t now_ms) {
+  handle(driver, event, now_ms);
+  if (supervisor) handle(*supervisor, event, now_ms);
+}
+
+void SdlInput::Impl::handle(Slot& slot, const SDL_Event& event, std::int64_t now_ms) {
   if (event.type == SDL_JOYDEVICEADDED) {
-    rescan = true;
+    slot.rescan = true;
     return;
   }
-  if (!device) return;
+  if (!slot.device) return;
   if (event.type == SDL_JOYDEVICEREMOVED) {
-    if (event.jdevice.which == device->instance_id()) lose(now_ms);
+    if (event.jdevice.which == slot.device->instance_id()) lose(slot, now_ms);
     return;
   }
-  auto ev = device->translate(event, now_ms);
+  auto ev = slot.device->translate(event, now_ms);
   if (!ev) return;
   // Events in the connect's own pump are initial state (same stamp). SDL may
   // report a resting trigger's first value as half-pressed: see append_state.
-  if (now_ms == connect_t && device->is_game_controller() && is_pad_trigger(ev->key)) return;
+  if (now_ms == slot.connect_t && slot.device->is_game_controller() && is_pad_trigger(ev->key)) return;
+  ev->pad = slot.pad;
   events.push_back(std::move(*ev));
 }
 
-void SdlInput::Impl::connect_chosen(std::int64_t now_ms) {
-  rescan = false;
+bool SdlInput::Impl::may_open(const Slot& slot, int device_index) const {
+  if (!slot.selection.matches(device_index)) return false;
+  const Slot* other = &slot == &driver ? (supervisor ? &*supervisor : nullptr) : &driver;
+  if (other == nullptr) return true;
+  if (other->device && other->device->instance_id() == SDL_JoystickGetDeviceInstanceID(device_index)) return false;
+  // "The first controller" is the first that is not the supervisor's.
+  return !(slot.selection.is_first() && other->selection.matches(device_index));
+}
+
+void SdlInput::Impl::connect_chosen(Slot& slot, std::int64_t now_ms) {
+  slot.rescan = false;
   const int count = SDL_NumJoysticks();
   for (int i = 0; i < count; ++i) {
-    if (!selection.matches(i)) continue;
-    device = SdlDevice::open(i);
-    if (!device) {
+    if (!may_open(slot, i)) continue;
+    slot.device = SdlDevice::open(i);
+    if (!slot.device) {
       spdlog::warn("cannot open controller {} {}: {}", i, quote_name(device_name(i)), SDL_GetError());
       continue;
     }
-    spdlog::info("controller connected: {} ({}, {})", printable_text(device->name()), printable_text(device->guid()),
-                 device->is_game_controller() ? "game controller" : "joystick");
-    waiting_logged = false;
-    connect_t = now_ms;
-    InputEvent connect;
-    connect.t_ms = now_ms;
-    connect.type = InputEvent::Type::kConnect;
-    connect.name = device->name();
+    spdlog::info("{} connected: {} ({}, {})", slot.pad == Pad::kSupervisor ? "supervisor's controller" : "controller",
+                 printable_text(slot.device->name()), printable_text(slot.device->guid()),
+                 slot.device->is_game_controller() ? "game controller" : "joystick");
+    slot.waiting_logged = false;
+    slot.connect_t = now_ms;
+    InputEvent connect = event(slot, InputEvent::Type::kConnect, now_ms);
+    connect.name = slot.device->name();
     events.push_back(std::move(connect));
     // Some drivers (SDL's virtual one among them) deliver a freshly opened
     // device's state on the next update: take it now, inside this pump, so
     // that a button held at connect is stamped with the connect's time.
     SDL_JoystickUpdate();
-    device->append_state(now_ms, events);
+    const auto before = events.size();
+    slot.device->append_state(now_ms, events);
+    for (auto k = before; k < events.size(); ++k) events[k].pad = slot.pad;
     drain(now_ms);
     return;
   }
-  if (!waiting_logged) {
-    spdlog::info("waiting for {}", selection.describe());
-    waiting_logged = true;
+  if (!slot.waiting_logged) {
+    spdlog::info("waiting for {}", slot.describe());
+    slot.waiting_logged = true;
   }
 }
 
-void SdlInput::Impl::lose(std::int64_t now_ms) {
-  spdlog::warn("controller lost: {}", printable_text(device->name()));
-  device.reset();
-  feedback.cancel();
+void SdlInput::Impl::lose(Slot& slot, std::int64_t now_ms) {
+  spdlog::warn("{} lost: {}", slot.pad == Pad::kSupervisor ? "supervisor's controller" : "controller",
+               printable_text(slot.device->name()));
+  slot.device.reset();
+  if (slot.pad == Pad::kOperator) feedback.cancel();
   // SDL releases a removed device's buttons and recentres its axes just
   // before reporting the removal. That is not the operator's input, and the
   // disconnect clears the state anyway: keep it out of recordings.
-  while (!events.empty() && events.back().type != InputEvent::Type::kConnect &&
-         events.back().type != InputEvent::Type::kDisconnect) {
-    events.pop_back();
+  for (auto k = events.size(); k > 0; --k) {
+    const auto& e = events[k - 1];
+    if (e.pad != slot.pad) continue;
+    if (e.type == InputEvent::Type::kConnect || e.type == InputEvent::Type::kDisconnect) break;
+    events.erase(events.begin() + static_cast<std::ptrdiff_t>(k - 1));
   }
-  InputEvent gone;
-  gone.t_ms = now_ms;
-  gone.type = InputEvent::Type::kDisconnect;
-  events.push_back(std::move(gone));
-  rescan = true;  // another device matching the selection may be attached
+  events.push_back(event(slot, InputEvent::Type::kDisconnect, now_ms));
+  slot.rescan = true;  // another device matching the selection may be attached
+}
+
+InputEvent SdlInput::Impl::event(const Slot& slot, InputEvent::Type type, std::int64_t now_ms) const {
+  InputEvent e;
+  e.t_ms = now_ms;
+  e.type = type;
+  e.pad = slot.pad;
+  return e;
 }
 
 SdlInput::SdlInput(const SdlInputOptions& options, const StopCheck& stop)
@@ -142,16 +199,22 @@ void SdlInput::pump(InputState& state, std::int64_t now_ms) {
   for (const auto& event : poll(now_ms)) state.apply(event);
 }
 
+bool SdlInput::supervised() const { return impl_->supervisor.has_value(); }
+
 void SdlInput::feedback(const FeedbackPattern& pattern) {
-  if (impl_->device) impl_->feedback.play(impl_->device->joystick(), pattern, impl_->last_poll_ms);
+  if (impl_->driver.device) impl_->feedback.play(impl_->driver.device->joystick(), pattern, impl_->last_poll_ms);
 }
 
 std::optional<DeviceLayout> SdlInput::device() const {
-  if (!impl_->device) return std::nullopt;
-  return impl_->device->layout();
+  if (!impl_->driver.device) return std::nullopt;
+  return impl_->driver.device->layout();
 }
 
-std::string SdlInput::selection() const { return impl_->selection.describe(); }
+std::string SdlInput::selection() const { return impl_->driver.selection.describe(); }
+
+std::string SdlInput::supervisor_selection() const {
+  return impl_->supervisor ? impl_->supervisor->selection.describe() : std::string();
+}
 
 std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop) {
   return std::make_unique<SdlInput>(options, stop);

@@ -63,6 +63,47 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
   EXPECT_EQ(events.back().type, T::kEnd);
 }
 
+// record --supervisor: the supervisor's events with the prefix; one not there
+// at the start is written as `0 supervisor disconnect`, so that the script
+// keeps the supervisor the live run had.
+TEST(ScriptRecorder, TheSupervisorsEventsCarryThePrefix) {
+  test::use_dummy_video();
+  const SdlSession session;
+  auto pad = std::make_unique<VirtualDevice>(VirtualDevice::pad("Operator Pad", 20));
+  SdlInputOptions sdl;
+  sdl.controller = "operator";
+  sdl.supervisor = "supervisor";
+  SdlInput input(sdl);
+  std::ostringstream out;
+  RecordOptions options;
+  options.period_ms = 2;
+  std::unique_ptr<VirtualDevice> second;
+  int step = 0;
+  const auto script = [&](const RecordStatus&) {
+    switch (++step) {
+      case 2: second = std::make_unique<VirtualDevice>(VirtualDevice::pad("Supervisor Pad", 21)); break;
+      case 4: second->button(SDL_CONTROLLER_BUTTON_B, true); break;
+      case 5: pad->button(SDL_CONTROLLER_BUTTON_B, true); break;
+      case 6: second->unplug(); break;
+      default: break;
+    }
+    return step < 8;
+  };
+  StopRequest stop;
+  record_script(input, out, options, stop, script);
+  std::vector<std::string> lines;
+  for (const auto& e : parse_event_script(out.str(), "recorded")) {
+    auto line = format_event(e);
+    lines.push_back(line.substr(line.find_first_not_of("0123456789 ")));
+  }
+  const std::vector<std::string> expected = {
+      "connect     Operator Pad",          "supervisor disconnect",         "supervisor connect     Supervisor Pad",
+      "supervisor button      b 1",        "button      b 1",               "supervisor disconnect",
+      "end"};
+  EXPECT_EQ(lines, expected) << out.str();
+  EXPECT_EQ(parse_event_script(out.str(), "recorded")[1].t_ms, 0);
+}
+
 }  // namespace
 /// SDL headless, a virtual pad attached, and the input the recorder reads.
 struct PadRig {

@@ -17,6 +17,13 @@ using test::VirtualDevice;
 
 constexpr InputKey kA{InputKind::kPadButton, SDL_CONTROLLER_BUTTON_A};
 
+SdlInputOptions chosen(const std::string& controller, const std::string& controller_db = "") {
+  SdlInputOptions o;
+  o.controller = controller;
+  o.controller_db = controller_db;
+  return o;
+}
+
 class SdlSelectionTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { test::use_dummy_video(); }
@@ -27,7 +34,7 @@ class SdlSelectionTest : public ::testing::Test {
   void expect_only_beta_counts(const std::function<std::string(const VirtualDevice& beta)>& choose) {
     auto alpha = VirtualDevice::pad("Alpha Pad", 10);
     auto beta = VirtualDevice::pad("Beta Pad", 11);
-    SdlInput input(SdlInputOptions{choose(beta), ""});
+    SdlInput input(chosen(choose(beta)));
     tick(input);
     ASSERT_TRUE(state_.connected());
     EXPECT_EQ(state_.name(), "Beta Pad");
@@ -70,7 +77,7 @@ TEST_F(SdlSelectionTest, DefaultIsTheFirstDevice) {
 
 TEST_F(SdlSelectionTest, NoMatchWaitsAndAMatchingDeviceConnectsLater) {
   auto alpha = VirtualDevice::pad("Alpha Pad", 10);
-  SdlInput input(SdlInputOptions{"gamma", ""});
+  SdlInput input(chosen("gamma"));
   tick(input);
   EXPECT_FALSE(state_.connected());
   auto gamma = VirtualDevice::pad("Gamma Pad", 12);
@@ -94,9 +101,99 @@ TEST_F(SdlSelectionTest, ListsEveryDeviceWithItsType) {
   EXPECT_EQ(find("Test Stick")->index, stick.device_index());
 }
 
+// --supervisor: a second controller, chosen the same ways, feeding its own snapshot.
+class SupervisorSelectionTest : public SdlSelectionTest {
+ protected:
+  void expect_beta_supervises(const std::function<std::string(const VirtualDevice& beta)>& choose) {
+    auto alpha = VirtualDevice::pad("Alpha Pad", 10);
+    auto beta = VirtualDevice::pad("Beta Pad", 11);
+    SdlInputOptions options;
+    options.controller = std::to_string(alpha.device_index());
+    options.supervisor = choose(beta);
+    SdlInput input(options);
+    EXPECT_TRUE(input.supervised());
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    ASSERT_TRUE(state_.supervisor().connected());
+    EXPECT_EQ(state_.name(), "Alpha Pad");
+    EXPECT_EQ(state_.supervisor().name(), "Beta Pad");
+    beta.button(SDL_CONTROLLER_BUTTON_A, true);
+    tick(input);
+    EXPECT_TRUE(state_.supervisor().button(kA).down);
+    EXPECT_FALSE(state_.button(kA).down) << "the supervisor's press reached the operator's snapshot";
+    alpha.button(SDL_CONTROLLER_BUTTON_A, true);
+    tick(input);
+    EXPECT_TRUE(state_.button(kA).down);
+    EXPECT_EQ(state_.supervisor().button(kA).presses, 1U);
+    beta.unplug();
+    tick(input);
+    EXPECT_FALSE(state_.supervisor().connected());
+    EXPECT_TRUE(state_.connected()) << "the operator's controller went with the supervisor's";
+  }
+};
+
+TEST_F(SupervisorSelectionTest, ByIndex) {
+  expect_beta_supervises([](const VirtualDevice& beta) { return std::to_string(beta.device_index()); });
+}
+
+TEST_F(SupervisorSelectionTest, ByName) {
+  expect_beta_supervises([](const VirtualDevice&) { return "beta pad"; });
+}
+
+TEST_F(SupervisorSelectionTest, ByGuid) {
+  expect_beta_supervises([](const VirtualDevice& beta) { return beta.guid(); });
+}
+
+// "The first controller" is the first that is not the supervisor's, and a
+// name that matches both devices gives the supervisor the one the operator
+// does not hold.
+TEST_F(SupervisorSelectionTest, TheOperatorsControllerIsNeverTheSupervisors) {
+  if (SDL_NumJoysticks() > 0) GTEST_SKIP() << "a real controller is attached";
+  auto alpha = VirtualDevice::pad("Alpha Pad", 10);
+  auto beta = VirtualDevice::pad("Beta Pad", 11);
+  {
+    SdlInputOptions options;
+    options.supervisor = "alpha";
+    SdlInput input(options);
+    tick(input);
+    EXPECT_EQ(state_.name(), "Beta Pad");
+    EXPECT_EQ(state_.supervisor().name(), "Alpha Pad");
+  }
+  state_ = InputState{};
+  SdlInputOptions options;
+  options.controller = "alpha";
+  options.supervisor = "pad";  // both match
+  SdlInput input(options);
+  tick(input);
+  EXPECT_EQ(state_.name(), "Alpha Pad");
+  EXPECT_EQ(state_.supervisor().name(), "Beta Pad");
+  beta.unplug();
+  tick(input);
+  EXPECT_FALSE(state_.supervisor().connected()) << "the supervisor took the operator's controller";
+  EXPECT_TRUE(state_.connected());
+}
+
+TEST_F(SupervisorSelectionTest, TheSameChoiceForBothIsRefusedWhereTheSupervisorWasSet) {
+  for (const auto& [controller, supervisor] : {std::pair{"1", "1"}, std::pair{"01", "1"}, std::pair{"Xbox", "xbox"}}) {
+    SdlInputOptions options;
+    options.controller = controller;
+    options.supervisor = supervisor;
+    options.supervisor_pos = SourcePos{"bridge.conf", 7, 12};
+    try {
+      SdlInput input(options);
+      FAIL() << controller << " and " << supervisor << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.pos().file, "bridge.conf");
+      EXPECT_EQ(e.pos().line, 7);
+      EXPECT_NE(std::string(e.what()).find("the operator's too (--controller): name another one"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(SdlOptions, AnIndexOutOfRangeIsBadInput) {
   test::use_dummy_video();
-  EXPECT_THROW(SdlInput(SdlInputOptions{"256", ""}), InputError);
+  EXPECT_THROW(SdlInput(chosen("256")), InputError);
 }
 
 class ControllerDbTest : public SdlSelectionTest {
@@ -110,7 +207,7 @@ class ControllerDbTest : public SdlSelectionTest {
 
 TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
   try {
-    SdlInput input(SdlInputOptions{"", "/nonexistent/db.txt"});
+    SdlInput input(chosen("", "/nonexistent/db.txt"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.pos().file, "/nonexistent/db.txt");
@@ -120,7 +217,7 @@ TEST_F(ControllerDbTest, AnUnreadableFileIsBadInput) {
 TEST_F(ControllerDbTest, ABadMappingLineIsBadInputAtItsLine) {
   write("# a comment\n\nnot a mapping at all\n");
   try {
-    SdlInput input(SdlInputOptions{"", path_});
+    SdlInput input(chosen("", path_));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.pos().line, 3);
@@ -132,7 +229,7 @@ TEST_F(ControllerDbTest, AMappingTurnsAPlainJoystickIntoAGameController) {
   write("# other platforms' lines are skipped\n" + stick.guid() +
         ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Windows,\n" + stick.guid() +
         ",Mapped Stick,a:b0,b:b1,leftshoulder:b4,leftx:a0,lefty:a1,platform:Linux,\n");
-  SdlInput input(SdlInputOptions{"", path_});
+  SdlInput input(chosen("", path_));
   tick(input);
   EXPECT_EQ(state_.name(), "Mapped Stick");
   stick.button(4, true);

@@ -1,0 +1,74 @@
+// The supervisor's controller through the run loop on the virtual clock
+// (replay): each report names both controllers, the operating state waits for
+// both, and the supervisor's stop reaches the loop on the tick that sees it.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "andros/input/script_player.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/replay.hpp"
+
+namespace andros::run {
+namespace {
+
+std::vector<TickReport> replay_reports(const std::string& script, const std::string& mapping_file) {
+  TextReader in(script, "s.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  std::vector<TickReport> reports;
+  ReplayOptions options;
+  options.observe = [&reports](const TickReport& r) { reports.push_back(r); };
+  replay(player, mapping::Engine(mapping::load_mapping(mapping_file), options.engine), options,
+         [](std::int64_t, const protocol::DataBytes&) {});
+  return reports;
+}
+
+const std::string kSupervisorMapping = ANDROS_TEST_DATA_DIR "/mappings/supervisor.yaml";
+
+TEST(ReplaySupervisor, EachReportNamesBothControllersAndTheStateWaitsForBoth) {
+  const auto r = replay_reports("0 connect Pad A\n10 button leftshoulder 1\n90 supervisor connect Pad B\n"
+                                "130 supervisor disconnect\n160 end\n",
+                                kSupervisorMapping);
+  ASSERT_EQ(r.size(), 5U);  // 0 .. 160
+  for (const auto& t : r) EXPECT_TRUE(t.supervised) << t.t_ms;
+  EXPECT_EQ(r[1].state, OpState::kNoController);  // the operator's deadman, but no supervisor yet
+  EXPECT_TRUE(r[1].connected);
+  EXPECT_FALSE(r[1].supervisor_connected);
+  EXPECT_EQ(r[3].state, OpState::kNotEnabled);  // 120: both there, the deadman no longer fresh
+  EXPECT_TRUE(r[3].supervisor_connected);
+  EXPECT_EQ(r[3].supervisor, "Pad B");
+  EXPECT_EQ(r[3].engine.enable, mapping::EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(r[4].state, OpState::kNoController);
+  EXPECT_FALSE(r[4].supervisor_connected);
+
+  const auto alone = replay_reports("0 connect Pad A\n10 button leftshoulder 1\n80 end\n", kSupervisorMapping);
+  EXPECT_FALSE(alone.back().supervised);
+  EXPECT_EQ(alone.back().state, OpState::kEnabled);  // a script without a supervisor runs as before
+}
+
+// The supervisor's stop latches "stopped by the operator" as the operator's
+// own does: a tap is enough, the deadman held through it keeps it, and it
+// clears only with the supervisor's stop and the operator's deadman both
+// released, the deadman then pressed afresh.
+TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
+  const auto states = [](const std::string& script) {
+    std::vector<OpState> out;
+    for (const auto& t : replay_reports(script, kSupervisorMapping)) out.push_back(t.state);
+    return out;
+  };
+  using S = OpState;
+  // 0..280 every 40 ms: a tap at 90, LB released at 170, pressed again at 210.
+  EXPECT_EQ(states("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
+                   "90 supervisor button x 1\n95 supervisor button x 0\n"
+                   "170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n"),
+            (std::vector<S>{S::kNotEnabled, S::kEnabled, S::kEnabled, S::kStopped, S::kStopped, S::kNotEnabled,
+                            S::kEnabled, S::kEnabled}));
+  // Held by the supervisor through the deadman's release and press: still stopped.
+  EXPECT_EQ(states("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
+                   "90 supervisor button x 1\n170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n")
+                .back(),
+            S::kStopped);
+}
+
+}  // namespace
+}  // namespace andros::run
