@@ -1,9 +1,15 @@
 #include "andros/mapping/loader.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <limits>
+#include <optional>
 #include <set>
 
+#include "andros/base/error_list.hpp"
 #include "andros/protocol/robots.hpp"
 #include "feedback_reader.hpp"
 #include "merge.hpp"
@@ -170,17 +176,20 @@ struct BindingList {
   std::vector<Unbind> unbinds;
 };
 
-BindingList read_bindings(const Reader& r, const YAML::Node& list) {
+/// A bad item is added to errors and left out; reading goes on with the next.
+BindingList read_bindings(const Reader& r, const YAML::Node& list, ErrorList& errors) {
   r.expect_list(list, "bindings");
   BindingList out;
   for (const auto& n : list) {
-    if (n.IsMap() && n["unbind"]) out.unbinds.push_back(read_unbind(r, n));
-    else out.bindings.push_back(read_binding(r, n));
+    errors.attempt([&] {
+      if (n.IsMap() && n["unbind"]) out.unbinds.push_back(read_unbind(r, n));
+      else out.bindings.push_back(read_binding(r, n));
+    });
   }
   return out;
 }
 
-Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, BindingList& list) {
+Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, BindingList& list, ErrorList& errors) {
   r.expect_keys(n, {"hold", "toggle", "bindings"}, "a layer");
   Layer layer;
   layer.name = r.text(name, "layer name");
@@ -192,15 +201,31 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, B
   const auto button = layer.toggle ? n["toggle"] : n["hold"];
   layer.input = use(r, button, r.button(button));
   if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
-  list = read_bindings(r, n["bindings"]);
+  list = read_bindings(r, n["bindings"], errors);
   return layer;
 }
 
-/// The files being read, outermost first, and the YAML nodes they may still hold.
+/// The files being read, outermost first, the YAML nodes they may still
+/// hold, and the errors found so far in any of them.
 struct Chain {
   std::vector<fs::path> files;
   std::size_t node_budget = yaml::kMaxNodes;
+  ErrorList errors;
 };
+
+/// Why a mapping file cannot be read, from stat(): missing, not permitted, or
+/// not a regular file (a FIFO is never opened: that would wait for a writer).
+/// Empty for a regular file.
+std::string unreadable(const fs::path& file) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0) return std::strerror(errno);
+  if (S_ISREG(st.st_mode)) return {};
+  if (S_ISDIR(st.st_mode)) return "it is a directory";
+  if (S_ISFIFO(st.st_mode)) return "it is a FIFO (a named pipe), not a regular file";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "it is a device, not a regular file";
+  if (S_ISSOCK(st.st_mode)) return "it is a socket, not a regular file";
+  return "it is not a regular file";
+}
 
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from);
 
@@ -219,8 +244,10 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
-  if (!fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file " + quote(file.string()));
+  if (const auto why = unreadable(file); !why.empty()) {
+    throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
+                     "cannot open mapping file " + quote(file.string()) + ": " + why);
+  }
   if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
     for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
@@ -236,50 +263,66 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
   m.file = file.string();
   m.chain.insert(m.chain.begin(), canonical.string());
+  // Each key and each binding on its own: an error in one is collected and the
+  // rest is still read, so that every error is reported at once.
+  auto& errors = chain.errors;
   if (root["robot"]) {
-    const auto name = r.text(root["robot"], "robot");
-    m.robot = protocol::canonical_robot(name);
-    if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
-    m.robot_pos = r.pos(root["robot"]);
+    errors.attempt([&] {
+      const auto name = r.text(root["robot"], "robot");
+      m.robot = protocol::canonical_robot(name);
+      if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
+      m.robot_pos = r.pos(root["robot"]);
+    });
   }
-  if (const auto c = root["center"]) m.center = read_center(r, c);
+  if (const auto c = root["center"]) errors.attempt([&] { m.center = read_center(r, c); });
   if (const auto c = root["constants"]) {
-    r.expect_keys(c, {"byte12", "battery"}, "constants");
-    if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
-    if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+    errors.attempt([&] {
+      r.expect_keys(c, {"byte12", "battery"}, "constants");
+      if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
+      if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+    });
   }
   if (root["deadman"]) {
-    m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
+    errors.attempt([&] { m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman")); });
   }
   if (const auto b = root["brake"]) {
-    const auto mode = r.text(b, "brake");
-    if (mode == "enabled") m.brake = BrakeMode::kEnabled;
-    else if (mode == "moving") m.brake = BrakeMode::kMoving;
-    else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
+    errors.attempt([&] {
+      const auto mode = r.text(b, "brake");
+      if (mode == "enabled") m.brake = BrakeMode::kEnabled;
+      else if (mode == "moving") m.brake = BrakeMode::kMoving;
+      else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
+    });
   }
-  if (root["feedback"]) read_feedback(r, root["feedback"], m.feedback);
+  if (root["feedback"]) errors.attempt([&] { read_feedback(r, root["feedback"], m.feedback); });
   if (root["bindings"]) {
-    auto list = read_bindings(r, root["bindings"]);
-    merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);
+    errors.attempt([&] {
+      auto list = read_bindings(r, root["bindings"], errors);
+      merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);
+    });
   }
   if (const auto layers = root["layers"]) {
-    r.expect_map(layers, "layers");
-    std::set<std::string> seen;
-    for (const auto& kv : layers) {
-      BindingList list;
-      auto layer = read_layer(r, kv.first, kv.second, list);
-      check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
-      const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
-      if (it == m.layers.end()) {
-        merge_bindings(layer.bindings, std::move(list.bindings), list.unbinds);
-        m.layers.push_back(std::move(layer));
-      } else {
-        merge_bindings(it->bindings, std::move(list.bindings), list.unbinds);
-        it->input = layer.input;
-        it->toggle = layer.toggle;
-        it->pos = layer.pos;
+    errors.attempt([&] {
+      r.expect_map(layers, "layers");
+      std::set<std::string> seen;
+      for (const auto& kv : layers) {
+        errors.attempt([&] {
+          BindingList list;
+          auto layer = read_layer(r, kv.first, kv.second, list, errors);
+          check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
+          const auto it =
+              std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
+          if (it == m.layers.end()) {
+            merge_bindings(layer.bindings, std::move(list.bindings), list.unbinds);
+            m.layers.push_back(std::move(layer));
+          } else {
+            merge_bindings(it->bindings, std::move(list.bindings), list.unbinds);
+            it->input = layer.input;
+            it->toggle = layer.toggle;
+            it->pos = layer.pos;
+          }
+        });
       }
-    }
+    });
   }
   chain.files.pop_back();
   return m;
@@ -289,9 +332,37 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from) {
 
 Mapping load_mapping_file(const fs::path& file) {
   Chain chain;
-  return read_file(file, chain, SourcePos{});
+  std::optional<Mapping> mapping;
+  try {
+    mapping = read_file(file, chain, SourcePos{});
+  } catch (const InputError& e) {
+    chain.errors.add(e);  // one that ends the reading (bad YAML, a missing base), after those collected
+  }
+  chain.errors.throw_if_any();
+  return std::move(*mapping);
 }
 
-ValidMapping load_mapping(const fs::path& file) { return validate(load_mapping_file(file), true); }
+ValidMapping load_mapping(const fs::path& file, NeedsRobot needs) {
+  Chain chain;
+  std::optional<Mapping> mapping;
+  try {
+    mapping = read_file(file, chain, SourcePos{});
+  } catch (const InputError& e) {
+    chain.errors.add(e);
+  }
+  if (mapping) {
+    // After errors in the reading, a key that could not be read would be
+    // called missing: the robot and deadman are not asked for then.
+    const bool named = needs == NeedsRobot::kYes || mapping->robot.has_value();
+    try {
+      auto valid = validate(std::move(*mapping), named && chain.errors.empty());
+      if (chain.errors.empty()) return valid;
+    } catch (const InputError& e) {
+      chain.errors.add(e);
+    }
+  }
+  chain.errors.throw_if_any();
+  throw InputError(SourcePos{file.string()}, "cannot load the mapping");  // not reached: no mapping came with an error
+}
 
 }  // namespace andros::mapping
