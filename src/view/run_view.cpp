@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "andros/base/text.hpp"
+#include "andros/view/run_status.hpp"
 #include "format.hpp"
 
 namespace andros::view {
@@ -68,6 +69,9 @@ Line controller_line(const RunStatus& s) {
   Line line("controller  ");
   if (s.connected) line.add(s.controller, Style::kBold);
   else line.add("none connected", Style::kAlert);
+  if (s.connected && s.game_controller == false) {
+    line.add("  (a plain joystick to SDL)", joystick_note(s.pad_names, s.game_controller).empty() ? Style::kPlain : Style::kWarn);
+  }
   return s.input == "controller" ? line : line.add("  (script " + s.input + ")");
 }
 

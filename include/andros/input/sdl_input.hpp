@@ -83,7 +83,7 @@ class SdlInput final : public InputSource {
   void feedback(const FeedbackPattern& pattern) override;
 
   /// The chosen controller's inputs; none while it is not connected.
-  [[nodiscard]] std::optional<DeviceLayout> device() const;
+  [[nodiscard]] std::optional<DeviceLayout> device() const override;
 
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;

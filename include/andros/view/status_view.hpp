@@ -48,6 +48,10 @@ struct RunStatus {
   std::string input;             ///< "sdl" or the script's path
   std::string controller;        ///< its name; empty when none is connected
   bool connected = false;
+  /// The live controller is a game controller to SDL (false: a plain
+  /// joystick, numbered inputs only); nullopt: none connected, or a script.
+  std::optional<bool> game_controller;
+  bool pad_names = true;         ///< the mapping reads game-controller names (leftshoulder, leftx...)
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
