@@ -31,6 +31,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     }
     next.layer = r.engine.layer;
     next.weapons_mode = next.enabled() && r.engine.weapons_mode;
+    next.armed = next.weapons_mode && r.engine.armed;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;

@@ -54,12 +54,28 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
     }
   }
   if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);
-  if (s.weapons_mode) out.back().add("   ").add(" " + std::string(kWeaponsLayer) + " ", Style::kBanner);
+  if (s.weapons_mode) {
+    out.back().add("   ").add(" " + std::string(kWeaponsLayer) + (s.armed ? " ARMED " : " "), Style::kBanner);
+  }
   return out;
 }
 
-Line link_line(const RunStatus& s) {
-  Line line("link        " + s.link_name + ": ");
+/// text cut in its middle to at most room characters: a by-id path keeps its
+/// start and its end (the adapter's serial number), and what follows it shows.
+std::string cut_middle(const std::string& text, std::size_t room) {
+  constexpr std::string_view kCut = "...";
+  if (text.size() <= room || room <= kCut.size() + 2) return text;
+  // A third from the start, two from the end: a by-id path's start is the same for every adapter.
+  const auto keep = room - kCut.size();
+  return text.substr(0, keep / 3) + std::string(kCut) + text.substr(text.size() - (keep - keep / 3));
+}
+
+/// The link's state is what the line is for: the name gives way to it.
+Line link_line(const RunStatus& s, std::size_t width) {
+  constexpr std::string_view kLabel = "link        ";
+  const auto state = std::string(to_string(s.link_state));
+  const std::size_t fixed = kLabel.size() + 2 + state.size();
+  Line line(std::string(kLabel) + cut_middle(s.link_name, width > fixed ? width - fixed : 0) + ": ");
   line.add(std::string(to_string(s.link_state)), s.link_state == link::LinkState::kUp ? Style::kGood : Style::kAlert);
   if (!s.motion_allowed) return line.add(" - " + s.link_detail, Style::kAlert);
   return s.link_detail.empty() ? line : line.add(" - " + s.link_detail);
@@ -109,18 +125,22 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   Screen screen;
   if (s.weapons) {
     // In a weapons mode the top line says so too: it is the one line every terminal shows.
-    const std::string banner =
-        s.weapons_mode ? std::string(kWeaponsLayer) + ": an armed fire input fires" : std::string(kWeapons);
+    const std::string banner = !s.weapons_mode ? std::string(kWeapons)
+                               : s.armed       ? std::string(kWeaponsLayer) + ": ARMED: a fire button fires"
+                                               : std::string(kWeaponsLayer) + ": an armed fire input fires";
     const auto pad = width > banner.size() ? width - banner.size() : 0;
     screen.pin(Line(std::string(pad / 2, ' ') + banner + std::string(pad - pad / 2, ' '), Style::kBanner));
   }
-  screen.pin(Line("andros-bridge run", Style::kBold)
-                 .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
-                 .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
-                 .add(fmt("  t %.1f s", static_cast<double>(s.t_ms) / 1000.0)));
+  auto title = Line("andros-bridge run", Style::kBold)
+                   .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
+                   .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
+                   .add(fmt("  t %.1f s", static_cast<double>(s.t_ms) / 1000.0));
+  // Without --weapons nothing on the screen would say so: no banner is not the same as "off".
+  if (!s.weapons) title.add("  weapons off");
+  screen.pin(std::move(title));
   const auto state = state_lines(s, width);
   for (const auto& line : state) screen.pin(line);
-  screen.pin(link_line(s));
+  screen.pin(link_line(s, width));
   screen.pin(controller_line(s));
   screen.pin(mapping_line(s.mapping_file, width));
 
@@ -128,10 +148,11 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   const bool decoded = s.vehicle && s.vehicle->last;
   const auto& frame = decoded ? *s.vehicle->last : s.sent;
   auto gauges = gauge_lines(frame, s.center);
-  auto switches = switch_lines(frame, width, false);
+  auto switches = switch_lines(frame, width, false, SwitchNames::kOperator);
   const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4);
-  const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 1) - kMinLogRows;
-  if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true);
+  const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 2) - kMinLogRows;
+  if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true, SwitchNames::kOperator);
+  switches.insert(switches.begin(), selector_line(frame));
   switches.insert(switches.begin(), Line(decoded ? "as the vehicle decodes it:" : "as sent:"));
 
   screen.block(std::move(counters), 4);

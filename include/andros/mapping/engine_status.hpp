@@ -28,6 +28,8 @@ struct EngineStatus {
   /// Enabled, weapons enabled for the run, and the active layer has weapon
   /// bindings: an armed fire input fires (what the banner and the pad announce).
   bool weapons_mode = false;
+  /// In a weapons mode with an arming input held: a fire button pressed now fires.
+  bool armed = false;
 };
 
 }  // namespace andros::mapping

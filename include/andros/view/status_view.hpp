@@ -26,10 +26,22 @@ struct SignalGroup {
 };
 const std::vector<SignalGroup>& signal_groups();
 
+/// How switch_lines names a switch.
+enum class SwitchNames : std::uint8_t {
+  kSignal,    ///< the protocol's name (`zoom_down`): `monitor`, the vehicle's side
+  kOperator,  ///< the operator's words (protocol/words.hpp, "zoom out"): `run`
+};
+
 /// The switch groups of a frame, wrapped to width: active switches in upper
-/// case (reverse video in colour), idle ones lower case (dim). compact: only
-/// the active ones, one line a group, for a small terminal.
-std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact);
+/// case (reverse video in colour; a weapon white on red), idle ones lower
+/// case (dim). compact: only the active ones, one line a group, for a small
+/// terminal.
+std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact,
+                               SwitchNames names = SwitchNames::kSignal);
+
+/// The selectors' positions a frame sets, a position without a bit too:
+/// "speed medium   main video 1   inset off".
+Line selector_line(const protocol::DataBytes& data);
 
 /// The drive, pivot, arm speed and light gauges, and the frame in hex; drive
 /// and pivot grow from center (the mapping's rest while enabled) in a frame
@@ -56,6 +68,7 @@ struct RunStatus {
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
+  bool armed = false;            ///< in a weapons mode, an arming input held: a fire button fires
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;
