@@ -9,6 +9,8 @@
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
 #include "andros/base/stop.hpp"
+#include "andros/cli/command_line.hpp"
+#include "andros/cli/config.hpp"
 #include "andros/input/sdl_input.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/view/inputs_view.hpp"
@@ -28,17 +30,26 @@ struct InputsOptions {
   std::string mapping;
 };
 
-/// The deadzones to show, and where they come from.
+/// The deadzones to show, and where they come from. With neither --robot
+/// nor --mapping, the mapping `run` would use: the config file's (mapping=,
+/// robot=), else HD1's; the screen's second line says which.
 view::AxisUses load_uses(const InputsOptions& opt, std::string& source) {
   if (!opt.robot.empty() && !opt.mapping.empty()) {
     throw InputError(SourcePos{"--mapping"}, "give --robot or --mapping, not both");
   }
+  std::string why;
+  Settings settings;  // run's defaults: robot HD1
   if (opt.robot.empty() && opt.mapping.empty()) {
-    source = "no mapping given: deadzone 0, the mapping default (--robot or --mapping shows a mapping's)";
-    return {};
+    const auto config = find_default_config(true);
+    if (!config.empty()) read_config_file(config, settings);
+    why = config.empty() ? " (run's default: no --robot or --mapping given)"
+                         : " (run's, from " + config + ": no --robot or --mapping given)";
+  } else {
+    settings.mapping = opt.mapping;
+    if (!opt.robot.empty()) settings.robot = opt.robot;
   }
-  const auto mapping = mapping::load_chosen_mapping(opt.mapping, opt.robot);
-  source = "deadzones and thresholds of " + mapping->file;
+  const auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
+  source = "deadzones and thresholds of " + mapping->file + why;
   return view::axis_uses(*mapping);
 }
 
@@ -56,7 +67,8 @@ int run_inputs(const InputsOptions& opt) {
   view::InputsBoard board(std::move(uses), "andros-bridge inputs: " + input.selection() + " (Ctrl-C ends)\n" + source);
   std::optional<view::StatusDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) {
-    display.emplace([&board](view::TermSize) { return view::text_screen(board.compose()); }, kRedrawsPerSecond);
+    display.emplace([&board](view::TermSize size) { return view::text_screen(board.compose(size)); },
+                    kRedrawsPerSecond);
     display->start();
   } else {
     std::printf("# %s\n# %s\n", input.selection().c_str(), source.c_str());
@@ -88,8 +100,8 @@ void add_inputs_command(CLI::App& app, int& exit_code) {
       "Ctrl-C ends it. See docs/controllers.md.");
   cmd->add_option("--robot", opt->robot, "show the deadzones of this robot type's mapping");
   cmd->add_option("--mapping", opt->mapping,
-                  "show the deadzones of this mapping file (with neither option: deadzone 0, the\n"
-                  "mapping default)");
+                  "show the deadzones of this mapping file (with neither option: the mapping 'run'\n"
+                  "uses, the config file's or HD1's; the screen names it)");
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_inputs(*opt); });
 }

@@ -137,6 +137,7 @@ int run_bridge(const RunOptions& opt) {
   initial.weapons = config.weapons;
   initial.code = config.code;
   initial.center = engine.center;
+  initial.pad_names = engine.pad_names;
   initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
@@ -170,7 +171,7 @@ int run_bridge(const RunOptions& opt) {
   };
   control.finish_reload = [&] { return reload.finish(); };
   bridge.run(control, [&](const run::TickReport& r) {
-    board.observe(r);
+    board.observe(r, *input);  // on the loop's thread, which owns SDL: it asks what kind a new controller is
     feedback.observe(run::feedback_status(r));
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
     if (service.active()) service.observe(r, board.snapshot());

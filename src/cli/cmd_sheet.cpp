@@ -39,7 +39,7 @@ void add_sheet_command(CLI::App& app, int& exit_code) {
       "selectors marked and weapons shown with what they need. SVG is one 190 x 260 mm\n"
       "page that prints at 100% on A4 or Letter; text is a table per layer. Made from\n"
       "the mapping itself, so it always matches it (docs/sheets.md).");
-  cmd->add_option("--robot", opt->robot, "robot type (" + protocol::robot_list() + "); default HD1");
+  cmd->add_option("--robot", opt->robot, "robot type (" + protocol::robot_list() + ", any case; HD-1 and V-A1 too); default HD1");
   cmd->add_option("--mapping", opt->mapping, "mapping file to draw instead of a robot's shipped one");
   cmd->add_option("--format", opt->format, "svg (a printable page) or text (tables for a terminal)")
       ->type_name("svg|text")

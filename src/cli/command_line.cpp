@@ -5,18 +5,16 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 
-
 namespace andros::cli {
-namespace {
 
-std::string find_default_config() {
+std::string find_default_config(bool warn) {
   for (const auto& path : default_config_paths()) {
-    if (std::filesystem::exists(path)) return path;
+    std::error_code error;
+    if (std::filesystem::exists(path, error)) return path;
+    if (error && warn) spdlog::warn("config: cannot look for {}: {}; going on without it", path, error.message());
   }
   return {};
 }
-
-}  // namespace
 
 CommandLine::CommandLine(CLI::App& cmd, Command command) : command_(command) {
   for (const auto& row : settings_table()) {
@@ -71,7 +69,7 @@ Settings resolve_settings(const GivenFlags& flags, ConfigRead read) {
   Settings settings;
   if (find_flag("--config", flags.command) != nullptr) {
     const auto given = flags.given("--config");
-    const std::string file = given ? *given : find_default_config();
+    const std::string file = given ? *given : find_default_config(read == ConfigRead::kStart);
     if (!file.empty()) {
       read_config_file(file, settings, read);
       if (read == ConfigRead::kStart) spdlog::info("config: {}", file);

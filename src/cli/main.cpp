@@ -9,6 +9,7 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <string_view>
 
 #include "andros/base/error.hpp"
 #include "andros/timing/rate.hpp"
@@ -59,8 +60,34 @@ void keep_standard_descriptors_taken() {
   }
 }
 
+/// The commands, "frame, replay, ...", as --help lists them (not the hidden help-data).
+std::string command_list(CLI::App& app) {
+  std::string out;
+  for (const auto* sub : app.get_subcommands([](CLI::App* s) { return !s->get_group().empty(); })) {
+    out += (out.empty() ? "" : ", ") + sub->get_name();
+  }
+  return out;
+}
+
+/// What CLI11 says of a missing or mistyped command ("A subcommand is
+/// required") names neither: say which word was not a command and list them.
+/// Empty when the first word is a command or an option.
+std::string command_error(CLI::App& app, int argc, char** argv) {
+  if (argc < 2) return "no command given (one of: " + command_list(app) + ")";
+  const std::string_view word = argv[1];
+  if (word.starts_with('-')) return {};
+  for (const auto* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (sub->check_name(std::string(word))) return {};
+  }
+  return "unknown command " + andros::quote(word) + " (one of: " + command_list(app) + ")";
+}
+
 /// Parses (which runs the chosen command) and turns what escapes into a line and a code.
 int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view::FdLogSink& log) {
+  if (const auto error = command_error(app, argc, argv); !error.empty()) {
+    log.write_line("andros-bridge: error: " + error + " (see --help)");
+    return andros::kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

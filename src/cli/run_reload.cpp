@@ -3,6 +3,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <exception>
 #include <stdexcept>
 #include <utility>
@@ -13,6 +14,26 @@
 
 namespace andros::cli {
 
+namespace {
+
+/// Whether any input the mapping reads is a game-controller name (the deadman, a layer key, a binding's input or arm).
+bool reads_pad_names(const mapping::Mapping& m) {
+  const auto pad = [](const mapping::InputUse& u) {
+    return u.key.kind == input::InputKind::kPadButton || u.key.kind == input::InputKind::kPadAxis;
+  };
+  if (m.deadman && pad(*m.deadman)) return true;
+  for (const auto& layer : m.layers) {
+    if (pad(layer.input)) return true;
+  }
+  for (const auto ref : mapping::all_bindings(m)) {
+    const auto& b = mapping::binding_at(m, ref);
+    if (std::any_of(b.inputs.begin(), b.inputs.end(), pad) || (b.arm && pad(*b.arm))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 EngineSetup load_engine(const Settings& settings) {
   auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
   EngineSetup setup;
@@ -21,6 +42,7 @@ EngineSetup load_engine(const Settings& settings) {
   setup.center = mapping->center;
   setup.feedback = mapping->feedback;
   setup.supervisor_buttons = mapping->supervisor.has_value();
+  setup.pad_names = reads_pad_names(*mapping);
   setup.frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   return setup;
@@ -145,6 +167,7 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
   to.feedback.set_table(setup.feedback);
   to.settings = std::move(*result.settings);
   to.board.set_mapping(setup.robot, setup.mapping_file, to.settings.weapons, setup.center);
+  to.board.set_pad_names(setup.pad_names);
   ReloadOutcome out{true, fmt::format("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
                                       setup.mapping_file, to.settings.weapons ? ", WEAPONS ENABLED" : "")};
   spdlog::info("{}", out.message);

@@ -29,6 +29,7 @@ struct EngineSetup {
   std::string robot;         ///< its robot type (the settings' when the mapping names none)
   std::string mapping_file;  ///< the file loaded
   int center = 128;          ///< drive and pivot's rest value (for the gauges)
+  bool pad_names = true;     ///< it reads game-controller names (a plain joystick sends none)
   mapping::FeedbackTable feedback;
   bool supervisor_buttons = false;  ///< the mapping has a `supervisor:` section
 };

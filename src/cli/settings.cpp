@@ -59,7 +59,7 @@ const std::array<Setting, 16> kTable = {{
        s.port_pos = p;
      },
      [](const Settings& s) { return s.port; }, false},
-    {"robot", "--robot", "NAME", kRun | kReplay, "the robot type (any case), whose shipped mapping is used: {}",
+    {"robot", "--robot", "NAME", kRun | kReplay, "the robot type (any case; the vehicle's name, HD-1 or V-A1, too), whose shipped mapping is used: {}",
      protocol::robot_list,
      [](std::string_view t, const SourcePos& p, Settings& s) {
        const auto robot = protocol::canonical_robot(t);

@@ -397,6 +397,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
   } else {
     clear_toggles();  // releasing the deadman stops everything a toggle started
   }
+  status_.armed = status_.weapons_mode && ctx.armed.any();
   // Presses made while not enabled are consumed here, never replayed later.
   for (const auto key : buttons_) seen_presses_[key] = input.button(key).presses;
   last_ms_ = now_ms;

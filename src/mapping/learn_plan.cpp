@@ -2,6 +2,7 @@
 
 #include "andros/base/text.hpp"
 #include "andros/mapping/learn.hpp"
+#include "andros/protocol/words.hpp"
 #include "overload.hpp"
 
 namespace andros::mapping {
@@ -12,6 +13,15 @@ using input::InputKey;
 using Role = LearnStep::Role;
 
 std::string name_of(protocol::SignalId id) { return std::string(protocol::info(id).name); }
+
+/// What a signal does, in the operator's words (protocol/words.hpp): "zoom out".
+std::string words_of(protocol::SignalId id) { return std::string(protocol::words(id).words); }
+
+/// The way an analog byte grows, as the operator says it: "drive forward", "light brighter".
+std::string growing(protocol::SignalId id) {
+  const auto& w = protocol::words(id);
+  return std::string(w.words) + " " + std::string(w.more);
+}
 
 bool is_pad_trigger(InputKey key) {
   return key.kind == input::InputKind::kPadAxis &&
@@ -96,6 +106,29 @@ std::string target(const Mapping& m, const LearnStep& s) {
                     b.rule);
 }
 
+/// What the step's target does in the operator's words, " (front articulators
+/// up)", when they say more than its name; "" otherwise.
+std::string words_note(const Mapping& m, const LearnStep& s) {
+  if (s.role != Role::kBinding) return {};
+  const auto note = std::visit(
+      Overload{
+          [&](const ButtonBinding& r) { return words_of(r.signal); },
+          [&](const WeaponBinding& r) { return s.slot == 0 ? "fire " + words_of(r.signal) : std::string(); },
+          [&](const PairBinding& r) { return words_of(r.signals[0]) + " / " + words_of(r.signals[1]); },
+          [&](const AxisBinding& r) {
+            const auto& w = protocol::words(r.analog);
+            return std::string(w.words) + " " + std::string(w.more) + "/" + std::string(w.less);
+          },
+          [&](const KnobBinding& r) {
+            const auto& w = protocol::words(r.analog);
+            return std::string(w.words) + " " + std::string(s.slot == 0 ? w.more : w.less);
+          },
+          [&](const SelectorBinding&) { return std::string(); },
+      },
+      binding_of(m, s).rule);
+  return note.empty() || note == target(m, s) ? std::string() : " (" + note + ")";
+}
+
 std::string layer_name(const Mapping& m, int layer) {
   return layer < 0 ? "base layer" : "layer " + quote_name(m.layers.at(static_cast<std::size_t>(layer)).name);
 }
@@ -174,16 +207,14 @@ std::string LearnPlan::prompt(std::size_t i) const {
     case LearnAccepts::kAxis: {
       const auto& rule = binding_of(learned_, s).rule;
       if (const auto* p = std::get_if<PairBinding>(&rule)) {
-        ask = "push a stick the way that sets " + name_of(p->signals[0]) + " and let go";
+        ask = "push a stick the way for " + std::string(protocol::words(p->signals[0]).words) + " and let go";
       } else {
-        const auto id = std::get<AxisBinding>(rule).analog;
-        const bool centred = protocol::info(id).kind == protocol::SignalKind::kCentred;
-        ask = "push a stick or trigger the way that raises " + name_of(id) + (centred ? " (above centre)" : "") + " and let go";
+        ask = "push a stick or trigger the way for " + growing(std::get<AxisBinding>(rule).analog) + " and let go";
       }
     }
   }
   return "[" + std::to_string(i + 1) + "/" + std::to_string(steps_.size()) + "] " + layer_name(learned_, s.layer) +
-         ", " + target(learned_, s) + ": " + ask + " (Enter keeps " + current(i) + ")";
+         ", " + target(learned_, s) + words_note(learned_, s) + ": " + ask + " (Enter keeps " + current(i) + ")";
 }
 
 std::size_t LearnPlan::next_layer(std::size_t i) const {

@@ -1,10 +1,16 @@
 #include "andros/mapping/loader.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "andros/base/text.hpp"
+#include "andros/base/error_list.hpp"
 #include "andros/protocol/robots.hpp"
 #include "feedback_reader.hpp"
 #include "merge.hpp"
@@ -208,17 +214,20 @@ struct BindingList {
   std::vector<Unbind> unbinds;
 };
 
-BindingList read_bindings(const Reader& r, const YAML::Node& list) {
+/// A bad item is added to errors and left out; reading goes on with the next.
+BindingList read_bindings(const Reader& r, const YAML::Node& list, ErrorList& errors) {
   r.expect_list(list, "bindings");
   BindingList out;
   for (const auto& n : list) {
-    if (n.IsMap() && n["unbind"]) out.unbinds.push_back(read_unbind(r, n));
-    else out.bindings.push_back(read_binding(r, n));
+    errors.attempt([&] {
+      if (n.IsMap() && n["unbind"]) out.unbinds.push_back(read_unbind(r, n));
+      else out.bindings.push_back(read_binding(r, n));
+    });
   }
   return out;
 }
 
-Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, BindingList& list) {
+Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, BindingList& list, ErrorList& errors) {
   r.expect_keys(n, {"hold", "toggle", "bindings"}, "a layer");
   Layer layer;
   layer.name = r.text(name, "layer name");
@@ -230,7 +239,7 @@ Layer read_layer(const Reader& r, const YAML::Node& name, const YAML::Node& n, B
   const auto button = layer.toggle ? n["toggle"] : n["hold"];
   layer.input = use(r, button, r.button(button));
   if (!n["bindings"]) r.fail(n, "layer " + quote(layer.name) + " needs 'bindings'");
-  list = read_bindings(r, n["bindings"]);
+  list = read_bindings(r, n["bindings"], errors);
   return layer;
 }
 
@@ -245,11 +254,28 @@ SupervisorButtons read_supervisor(const Reader& r, const YAML::Node& n) {
   return s;
 }
 
-/// The files being read, outermost first, and the YAML nodes they may still hold.
+/// The files being read, outermost first, the YAML nodes they may still
+/// hold, and the errors found so far in any of them.
 struct Chain {
   std::vector<fs::path> files;
   std::size_t node_budget = yaml::kMaxNodes;
+  ErrorList errors;
 };
+
+/// Why a mapping file cannot be read, from stat(): missing, not permitted, or
+/// not a regular file (a FIFO is never opened: that would wait for a writer).
+/// Empty for a regular file.
+std::string unreadable(const fs::path& file) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0) return std::strerror(errno);
+  if (S_ISREG(st.st_mode)) return {};
+  if (S_ISDIR(st.st_mode)) return "it is a directory";
+  if (S_ISFIFO(st.st_mode)) return "it is a FIFO (a named pipe), not a regular file";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "it is a device, not a regular file";
+  if (S_ISSOCK(st.st_mode)) return "it is a socket, not a regular file";
+  return "it is not a regular file";
+}
+
 
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text = nullptr);
 
@@ -288,8 +314,12 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text) {
   std::error_code ec;
   const auto canonical = fs::weakly_canonical(file, ec);
-  if (text == nullptr && !fs::is_regular_file(file, ec)) throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
-                                                       "cannot open mapping file " + quote_name(file.string()));
+  if (text == nullptr) {
+    if (const auto why = unreadable(file); !why.empty()) {
+      throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
+                       "cannot open mapping file " + quote_name(file.string()) + ": " + why);
+    }
+  }
   if (std::find(chain.files.begin(), chain.files.end(), canonical) != chain.files.end()) {
     std::string loop;
     for (const auto& f : chain.files) loop += f.filename().string() + " -> ";
@@ -306,66 +336,88 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
   m.file = file.string();
   m.chain.insert(m.chain.begin(), canonical.string());
+  // Each key and each binding on its own: an error in one is collected and the
+  // rest is still read, so that every error is reported at once.
+  auto& errors = chain.errors;
   if (root["robot"]) {
-    const auto name = r.text(root["robot"], "robot");
-    m.robot = protocol::canonical_robot(name);
-    if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
-    m.robot_pos = r.pos(root["robot"]);
+    errors.attempt([&] {
+      const auto name = r.text(root["robot"], "robot");
+      m.robot = protocol::canonical_robot(name);
+      if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
+      m.robot_pos = r.pos(root["robot"]);
+    });
   }
-  if (const auto c = root["center"]) m.center = read_center(r, c);
+  if (const auto c = root["center"]) errors.attempt([&] { m.center = read_center(r, c); });
   if (const auto c = root["constants"]) {
-    r.expect_keys(c, {"byte12", "battery"}, "constants");
-    if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
-    if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+    errors.attempt([&] {
+      r.expect_keys(c, {"byte12", "battery"}, "constants");
+      if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
+      if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+    });
   }
   if (root["deadman"]) {
-    m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman"));
+    errors.attempt([&] { m.deadman = use(r, root["deadman"], r.button_or_trigger(root["deadman"], "deadman")); });
   }
   if (const auto p = root["deadman_panic"]) {
-    m.deadman_panic = r.number(p, kDeadmanPanicMin, 1.0, true, "deadman_panic");
-    if (*m.deadman_panic <= kDeadmanPanicMin) {
-      r.fail(p, "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
-    }
-    m.deadman_panic_pos = r.pos(p);
+    errors.attempt([&] {
+      m.deadman_panic = r.number(p, kDeadmanPanicMin, 1.0, true, "deadman_panic");
+      if (*m.deadman_panic <= kDeadmanPanicMin) {
+        r.fail(p, "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
+      }
+      m.deadman_panic_pos = r.pos(p);
+    });
   }
-  if (const auto e = root["estop"]) m.estop = use(r, e, r.button(e));
-  if (const auto t = root["enable_timeout"]; t && r.text(t, "enable_timeout") == "off") {
-    m.enable_timeout_ms.reset();  // a base's timeout switched off
-  } else if (t) {
-    const double seconds = r.number(t, kEnableTimeoutMinS, kEnableTimeoutMaxS, false, "enable_timeout");
-    m.enable_timeout_ms = static_cast<std::int64_t>(seconds * 1000.0 + 0.5);
+  if (const auto e = root["estop"]) errors.attempt([&] { m.estop = use(r, e, r.button(e)); });
+  if (const auto t = root["enable_timeout"]) {
+    errors.attempt([&] {
+      if (r.text(t, "enable_timeout") == "off") {
+        m.enable_timeout_ms.reset();  // a base's timeout switched off
+        return;
+      }
+      const double seconds = r.number(t, kEnableTimeoutMinS, kEnableTimeoutMaxS, false, "enable_timeout");
+      m.enable_timeout_ms = static_cast<std::int64_t>(seconds * 1000.0 + 0.5);
+    });
   }
-  if (const auto sup = root["supervisor"]) m.supervisor = read_supervisor(r, sup);
+  if (const auto sup = root["supervisor"]) errors.attempt([&] { m.supervisor = read_supervisor(r, sup); });
   if (const auto b = root["brake"]) {
-    const auto mode = r.text(b, "brake");
-    if (mode == "enabled") m.brake = BrakeMode::kEnabled;
-    else if (mode == "moving") m.brake = BrakeMode::kMoving;
-    else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
+    errors.attempt([&] {
+      const auto mode = r.text(b, "brake");
+      if (mode == "enabled") m.brake = BrakeMode::kEnabled;
+      else if (mode == "moving") m.brake = BrakeMode::kMoving;
+      else r.fail(b, "brake must be 'enabled' or 'moving', not " + quote(mode));
+    });
   }
-  if (const auto s = root["scale"]) m.scale = read_scale(r, s);
-  if (root["feedback"]) read_feedback(r, root["feedback"], m.feedback);
+  if (const auto s = root["scale"]) errors.attempt([&] { m.scale = read_scale(r, s); });
+  if (root["feedback"]) errors.attempt([&] { read_feedback(r, root["feedback"], m.feedback); });
   if (root["bindings"]) {
-    auto list = read_bindings(r, root["bindings"]);
-    merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);
+    errors.attempt([&] {
+      auto list = read_bindings(r, root["bindings"], errors);
+      merge_bindings(m.bindings, std::move(list.bindings), list.unbinds);
+    });
   }
   if (const auto layers = root["layers"]) {
-    r.expect_map(layers, "layers");
-    std::set<std::string> seen;
-    for (const auto& kv : layers) {
-      BindingList list;
-      auto layer = read_layer(r, kv.first, kv.second, list);
-      check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
-      const auto it = std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
-      if (it == m.layers.end()) {
-        merge_bindings(layer.bindings, std::move(list.bindings), list.unbinds);
-        m.layers.push_back(std::move(layer));
-      } else {
-        merge_bindings(it->bindings, std::move(list.bindings), list.unbinds);
-        it->input = layer.input;
-        it->toggle = layer.toggle;
-        it->pos = layer.pos;
+    errors.attempt([&] {
+      r.expect_map(layers, "layers");
+      std::set<std::string> seen;
+      for (const auto& kv : layers) {
+        errors.attempt([&] {
+          BindingList list;
+          auto layer = read_layer(r, kv.first, kv.second, list, errors);
+          check_layer_name(seen, layer);  // within this file; a base's layer of the same name is merged below
+          const auto it =
+              std::find_if(m.layers.begin(), m.layers.end(), [&](const Layer& l) { return l.name == layer.name; });
+          if (it == m.layers.end()) {
+            merge_bindings(layer.bindings, std::move(list.bindings), list.unbinds);
+            m.layers.push_back(std::move(layer));
+          } else {
+            merge_bindings(it->bindings, std::move(list.bindings), list.unbinds);
+            it->input = layer.input;
+            it->toggle = layer.toggle;
+            it->pos = layer.pos;
+          }
+        });
       }
-    }
+    });
   }
   chain.files.pop_back();
   return m;
@@ -375,10 +427,38 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
 
 Mapping load_mapping_file(const fs::path& file) {
   Chain chain;
-  return read_file(file, chain, SourcePos{});
+  std::optional<Mapping> mapping;
+  try {
+    mapping = read_file(file, chain, SourcePos{});
+  } catch (const InputError& e) {
+    chain.errors.add(e);  // one that ends the reading (bad YAML, a missing base), after those collected
+  }
+  chain.errors.throw_if_any();
+  return std::move(*mapping);
 }
 
-ValidMapping load_mapping(const fs::path& file) { return validate(load_mapping_file(file), true); }
+ValidMapping load_mapping(const fs::path& file, NeedsRobot needs) {
+  Chain chain;
+  std::optional<Mapping> mapping;
+  try {
+    mapping = read_file(file, chain, SourcePos{});
+  } catch (const InputError& e) {
+    chain.errors.add(e);
+  }
+  if (mapping) {
+    // After errors in the reading, a key that could not be read would be
+    // called missing: the robot and deadman are not asked for then.
+    const bool named = needs == NeedsRobot::kYes || mapping->robot.has_value();
+    try {
+      auto valid = validate(std::move(*mapping), named && chain.errors.empty());
+      if (chain.errors.empty()) return valid;
+    } catch (const InputError& e) {
+      chain.errors.add(e);
+    }
+  }
+  chain.errors.throw_if_any();
+  throw InputError(SourcePos{file.string()}, "cannot load the mapping");  // not reached: no mapping came with an error
+}
 
 ValidMapping load_mapping_text(const std::string& text, const fs::path& file) {
   Chain chain;

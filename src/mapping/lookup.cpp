@@ -40,7 +40,8 @@ fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>&
   for (const auto& dir : search_path) {
     std::error_code ec;
     if (fs::is_regular_file(dir / file, ec)) return dir / file;
-    looked += (looked.empty() ? "" : ", ") + dir.string();
+    // A folder that cannot be looked into (a HOME the user may not read) is passed over, and said if nothing is found.
+    looked += (looked.empty() ? "" : ", ") + dir.string() + (ec ? " (" + ec.message() + ")" : "");
   }
   throw InputError(SourcePos{"--robot"}, "no mapping " + file + " for robot " + *canonical + " (looked in " + looked + ")");
 }

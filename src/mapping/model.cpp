@@ -1,5 +1,6 @@
 #include "andros/mapping/model.hpp"
 
+#include "andros/base/error_list.hpp"
 #include "andros/protocol/robots.hpp"
 #include "overload.hpp"
 
@@ -33,12 +34,25 @@ void check_motion(protocol::SignalId id, const SourcePos& pos) {
   if (protocol::info(id).kind != protocol::SignalKind::kMotion) throw InputError(pos, not_bindable(id));
 }
 
+/// "line 12", or "line 12 of base.yaml" when other is in another file than here.
+std::string line_of(const SourcePos& other, const SourcePos& here) {
+  return "line " + std::to_string(other.line) + (other.file == here.file ? "" : " of " + other.file);
+}
+
+/// Of two places that clash, the one in the file being checked (the other
+/// one is named in the message): an extending file's mistake is reported in
+/// that file, at its line, not at the line of the base it runs into.
+const SourcePos& blame(const std::string& file, const SourcePos& first, const SourcePos& second) {
+  return first.file != file && second.file == file ? second : first;
+}
+
 void check_range(bool ok, const SourcePos& at, const std::string& what) {
   if (!ok) throw InputError(at, what + " is out of range");
 }
 
-// reserved: the deadman and the layer keys.
-void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const std::vector<InputUse>& reserved) {
+// reserved: the deadman and the layer keys; file: the file checked.
+void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const std::vector<InputUse>& reserved,
+                const std::string& file) {
   const auto& at = b.target_pos;
   const auto check_threshold = [&](double t) { check_range(t > 0.0 && t <= 1.0, b.pos, "threshold"); };
   std::visit(Overload{
@@ -58,8 +72,9 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                    // A layer key that also arms would make one press enter the layer and arm it.
                    for (const auto& key : reserved) {
                      if (*r.arm == key.key) {
-                       throw InputError(b.arm->pos, "'arm' must be a second button, not the key of a layer (line " +
-                                                        std::to_string(key.pos.line) + ")");
+                       const auto& at = blame(file, b.arm->pos, key.pos);
+                       throw InputError(at, "'arm' must be a second button, not the key of a layer (" +
+                                                line_of(&at == &key.pos ? b.arm->pos : key.pos, at) + ")");
                      }
                    }
                  },
@@ -107,44 +122,55 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
 }
 
 // Within one list of bindings: every input once, every analog byte once.
-void check_list(const std::vector<Binding>& list, const std::vector<InputUse>& reserved) {
+void check_list(const std::vector<Binding>& list, const std::vector<InputUse>& reserved, const std::string& file,
+                ErrorList& errors) {
   std::map<input::InputKey, SourcePos> inputs;
   std::map<protocol::SignalId, SourcePos> analogs;
   for (const auto& b : list) {
     for (const auto& u : b.inputs) {
       for (const auto& r : reserved) {
-        if (r.key == u.key) {
-          throw InputError(u.pos, "'" + input::input_name(u.key) + "' is the deadman or switches a layer (line " +
-                                      std::to_string(r.pos.line) + "); it cannot also be bound");
+        if (r.key != u.key) continue;
+        const auto name = "'" + input::input_name(u.key) + "'";
+        if (&blame(file, u.pos, r.pos) == &u.pos) {
+          errors.add(InputError(u.pos, name + " is the deadman or switches a layer (" + line_of(r.pos, u.pos) +
+                                           "); it cannot also be bound"));
+        } else {
+          errors.add(InputError(r.pos, name + " is bound at " + line_of(u.pos, r.pos) +
+                                           "; it cannot also be the deadman or switch a layer"));
         }
       }
       const auto [it, fresh] = inputs.emplace(u.key, u.pos);
       if (!fresh) {
-        throw InputError(u.pos, "'" + input::input_name(u.key) + "' is bound twice in this layer (first at line " +
-                                    std::to_string(it->second.line) + ")");
+        errors.add(InputError(u.pos, "'" + input::input_name(u.key) + "' is bound twice in this layer (first at " +
+                                         line_of(it->second, u.pos) + ")"));
       }
     }
     if (const auto target = analog_target(b)) {
       const auto [it, fresh] = analogs.emplace(*target, b.target_pos);
       if (!fresh) {
-        throw InputError(b.target_pos, quoted(*target) + " is driven by two bindings in this layer (first at line " +
-                                           std::to_string(it->second.line) + ")");
+        errors.add(InputError(b.target_pos, quoted(*target) + " is driven by two bindings in this layer (first at " +
+                                                line_of(it->second, b.target_pos) + ")"));
       }
     }
   }
 }
 
 // A weapon's arming input may not also fire something else in the same layer.
-void check_arms(const Mapping& m, int layer) {
+void check_arms(const Mapping& m, int layer, ErrorList& errors) {
   const auto refs = effective_bindings(m, layer);
   for (const auto& ref : refs) {
     const auto& b = binding_at(m, ref);
     if (!b.arm) continue;
     for (const auto& other : refs) {
       for (const auto& u : binding_at(m, other).inputs) {
-        if (u.key == b.arm->key) {
-          throw InputError(b.arm->pos, "arming input '" + input::input_name(u.key) + "' is also bound at line " +
-                                           std::to_string(u.pos.line) + "; pressing it would do both");
+        if (u.key != b.arm->key) continue;
+        const auto name = "'" + input::input_name(u.key) + "'";
+        if (&blame(m.file, b.arm->pos, u.pos) == &b.arm->pos) {
+          errors.add(InputError(b.arm->pos, "arming input " + name + " is also bound at " + line_of(u.pos, b.arm->pos) +
+                                                "; pressing it would do both"));
+        } else {
+          errors.add(InputError(u.pos, name + " is the arming input at " + line_of(b.arm->pos, u.pos) +
+                                           "; pressing it would do both"));
         }
       }
     }
@@ -153,7 +179,7 @@ void check_arms(const Mapping& m, int layer) {
 
 // One signal has one toggle state, flipped by any of its toggle inputs; a
 // momentary binding on the same signal would leave "on" with two meanings.
-void check_toggles(const Mapping& m) {
+void check_toggles(const Mapping& m, ErrorList& errors) {
   std::map<protocol::SignalId, std::pair<bool, const Binding*>> first;  // signal -> (toggled?, its first binding)
   for (const auto& ref : all_bindings(m)) {
     const auto& b = binding_at(m, ref);
@@ -166,10 +192,12 @@ void check_toggles(const Mapping& m) {
     for (const auto& [id, toggle] : uses) {
       const auto [it, fresh] = first.emplace(id, std::pair{toggle, &b});
       if (fresh || it->second.first == toggle) continue;
-      const auto& other = it->second.second->pos;
-      const std::string where = "line " + std::to_string(other.line) + (other.file == b.pos.file ? "" : " of " + other.file);
-      throw InputError(b.target_pos, quoted(id) + (toggle ? " is momentary" : " is a toggle") + " at " + where +
-                                         "; a signal is either toggled or momentary, not both");
+      const auto& other = *it->second.second;
+      const bool here = &blame(m.file, b.target_pos, other.target_pos) == &b.target_pos;
+      const auto& at = here ? b.target_pos : other.target_pos;
+      errors.add(InputError(at, quoted(id) + ((here ? toggle : !toggle) ? " is momentary" : " is a toggle") + " at " +
+                                    line_of(here ? other.pos : b.pos, at) +
+                                    "; a signal is either toggled or momentary, not both"));
     }
   }
 }
@@ -329,19 +357,23 @@ void check_layer_name(std::set<std::string>& names, const Layer& layer) {
 }
 
 ValidMapping validate(Mapping m, bool require_robot) {
+  // Every error is collected, as a compiler does: the operator fixes them all in one pass.
+  ErrorList errors;
   if (require_robot && !m.robot) {
-    throw InputError(SourcePos{m.file}, "missing 'robot' (one of " + protocol::robot_list() + ")");
+    errors.add(InputError(SourcePos{m.file}, "missing 'robot' (one of " + protocol::robot_list() + ")"));
   }
-  if (require_robot && !m.deadman) throw InputError(SourcePos{m.file}, "missing 'deadman': the button that enables motion");
+  if (require_robot && !m.deadman) {
+    errors.add(InputError(SourcePos{m.file}, "missing 'deadman': the button that enables motion"));
+  }
   if (m.center < kCenterTrimMin || m.center > kCenterTrimMax) {
-    throw InputError(SourcePos{m.file}, center_out_of_band(std::to_string(m.center)));
+    errors.add(InputError(SourcePos{m.file}, center_out_of_band(std::to_string(m.center))));
   }
   std::vector<InputUse> reserved;
   if (m.deadman) {
     const auto k = m.deadman->key;
     if (k.kind == input::InputKind::kJoyAxis || (k.kind == input::InputKind::kPadAxis && input::input_name(k) != "lefttrigger" &&
                                           input::input_name(k) != "righttrigger")) {
-      throw InputError(m.deadman->pos, "the deadman is a button or a trigger (lefttrigger, righttrigger)");
+      errors.add(InputError(m.deadman->pos, "the deadman is a button or a trigger (lefttrigger, righttrigger)"));
     }
     reserved.push_back(*m.deadman);
   }
@@ -349,10 +381,12 @@ ValidMapping validate(Mapping m, bool require_robot) {
   for (const auto& layer : m.layers) {
     for (const auto& r : reserved) {
       if (r.key == layer.input.key) {
-        throw InputError(layer.input.pos, "'" + input::input_name(r.key) + "' already switches a layer or is the deadman");
+        errors.add(InputError(layer.input.pos, "'" + input::input_name(r.key) +
+                                                   "' already switches a layer or is the deadman (" +
+                                                   line_of(r.pos, layer.input.pos) + ")"));
       }
     }
-    check_layer_name(names, layer);
+    errors.attempt([&] { check_layer_name(names, layer); });
     reserved.push_back(layer.input);
   }
   if (m.supervisor && m.supervisor->weapons_consent && m.supervisor->weapons_consent->key == m.supervisor->stop.key) {
@@ -363,29 +397,31 @@ ValidMapping validate(Mapping m, bool require_robot) {
   std::map<protocol::SignalId, SourcePos> selector_signals;
   const auto check_bindings = [&](const std::vector<Binding>& list) {
     for (const auto& b : list) {
-      check_rule(b, m.deadman, reserved);
+      errors.attempt([&] { check_rule(b, m.deadman, reserved, m.file); });
       if (const auto* s = std::get_if<SelectorBinding>(&b.rule)) {
         std::set<protocol::SignalId> mine;
         for (const auto& p : s->positions) mine.insert(p.begin(), p.end());
         for (const auto id : mine) {
           const auto [it, fresh] = selector_signals.emplace(id, b.target_pos);
           if (!fresh) {
-            throw InputError(b.target_pos, quoted(id) + " is already set by the selector at line " +
-                                               std::to_string(it->second.line));
+            const auto& at = blame(m.file, b.target_pos, it->second);
+            errors.add(InputError(at, quoted(id) + " is also set by the selector at " +
+                                          line_of(&at == &b.target_pos ? it->second : b.target_pos, at)));
           }
         }
       }
     }
-    check_list(list, reserved);
+    check_list(list, reserved, m.file, errors);
   };
   check_bindings(m.bindings);
   for (const auto& layer : m.layers) check_bindings(layer.bindings);
-  check_arms(m, -1);
-  for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i));
-  check_toggles(m);
-  check_estop(m);
-  check_deadman_panic(m);
-  check_scale(m, reserved);
+  check_arms(m, -1, errors);
+  for (std::size_t i = 0; i < m.layers.size(); ++i) check_arms(m, static_cast<int>(i), errors);
+  check_toggles(m, errors);
+  errors.attempt([&] { check_estop(m); });
+  errors.attempt([&] { check_deadman_panic(m); });
+  errors.attempt([&] { check_scale(m, reserved); });
+  errors.throw_if_any();
   return ValidMapping(std::move(m));
 }
 

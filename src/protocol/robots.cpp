@@ -9,6 +9,9 @@ std::optional<std::string> canonical_robot(std::string_view name) {
   for (const auto robot : kRobotTypes) {
     if (robot == upper) return upper;
   }
+  for (const auto& [alias, type] : kRobotAliases) {
+    if (alias == upper) return std::string(type);
+  }
   return std::nullopt;
 }
 

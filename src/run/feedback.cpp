@@ -46,9 +46,30 @@ std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& sta
   const auto events = feedback_events(last_, status);
   last_ = status;
   const auto it = std::find_if(events.begin(), events.end(), [this](FeedbackEvent e) { return table_[e].has_value(); });
-  if (it == events.end()) return std::nullopt;
-  input_.feedback(mapping::feedback_pattern(*it, *table_[*it], status.speed_level));
-  return *it;
+  std::optional<FeedbackEvent> played;
+  std::optional<input::FeedbackPattern> pattern;
+  if (it != events.end()) {
+    played = *it;
+    pattern = mapping::feedback_pattern(*it, *table_[*it], status.speed_level);
+    // An enabled colour (weapons_off's green too) is for an enabled bridge only.
+    const bool enabled_colour = *it == FeedbackEvent::kEnabled || *it == FeedbackEvent::kWeaponsOn ||
+                                *it == FeedbackEvent::kWeaponsOff;
+    if (enabled_colour && !status.enabled) pattern->led.reset();
+  }
+  // The light keeps the last colour set. Green (or a weapons colour) left on
+  // after a stop would tell the operator the robot still follows the pad: the
+  // stop sets a colour, whatever the table says of the event that ends it
+  // (switched off, `led: off`, one more important without a colour).
+  if (enabled_light_ && !status.enabled && status.connected && !(pattern && pattern->led)) {
+    if (!pattern) pattern = input::FeedbackPattern{.low = 0.0, .high = 0.0, .ms = 1, .pulses = 1, .led = std::nullopt};
+    const auto& disabled = table_[FeedbackEvent::kDisabled];
+    pattern->led = disabled && disabled->led ? disabled->led
+                                             : mapping::default_feedback_pattern(FeedbackEvent::kDisabled).led;
+  }
+  if (!pattern) return played;
+  if (pattern->led) enabled_light_ = status.enabled;
+  input_.feedback(*pattern);
+  return played;
 }
 
 }  // namespace andros::run

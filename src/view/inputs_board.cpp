@@ -15,9 +15,9 @@ std::vector<std::string> InputsBoard::update(const std::vector<input::InputEvent
   return lines;
 }
 
-std::string InputsBoard::compose() const {
+std::string InputsBoard::compose(TermSize size) const {
   const std::lock_guard lock(mutex_);
-  return render_inputs_screen(state_, layout_, uses_, heading_);
+  return render_inputs_screen(state_, layout_, uses_, heading_, size);
 }
 
 }  // namespace andros::view

@@ -15,9 +15,12 @@ using detail::fmt;
 using input::InputKey;
 using input::InputKind;
 
-constexpr int kBarHalf = 5;
-constexpr std::size_t kScreenWidth = 79;  ///< an 80-column terminal, the cursor never wrapping
-constexpr int kButtonsPerRow = 4;
+constexpr int kMinBarHalf = 5;
+constexpr int kMaxBarHalf = 10;  ///< 1/10 of the way a cell: enough to see a deadzone of 0.1 at work
+/// An axis line's width without its bar's cells, and with room for its limit
+/// ("deadzone 0.00 (default)"): the bar grows only where that still fits.
+constexpr std::size_t kAxisFixed = 70;
+constexpr std::size_t kButtonWidth = 19;  ///< " *  11 rightshoulder"
 
 bool is_axis(InputKey key) { return key.kind == InputKind::kPadAxis || key.kind == InputKind::kJoyAxis; }
 bool is_trigger(InputKey key) { return key.kind == InputKind::kPadAxis && key.index >= 4; }
@@ -80,18 +83,19 @@ std::string hat_text(int mask) {
   return out;
 }
 
-std::string bar(InputKey key, std::int16_t value) {
-  std::string out(2 * kBarHalf + 1, ' ');
+/// A bar of 2*half+1 cells: a stick's grows from the middle, a trigger's from the left.
+std::string bar(InputKey key, std::int16_t value, int half) {
+  std::string out(static_cast<std::size_t>(2 * half + 1), ' ');
   const double x = mapping::normalise_axis(value);
   if (is_trigger(key)) {  // 0..32767, from the left
-    const int n = static_cast<int>(std::lround(std::max(0.0, x) * 2 * kBarHalf));
+    const int n = static_cast<int>(std::lround(std::max(0.0, x) * 2 * half));
     for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i + 1)] = '=';
     out[0] = '|';
     return "[" + out + "]";
   }
-  const int n = static_cast<int>(std::lround(x * kBarHalf));
-  for (int i = std::min(0, n); i <= std::max(0, n); ++i) out[static_cast<std::size_t>(kBarHalf + i)] = '=';
-  out[kBarHalf] = '|';
+  const int n = static_cast<int>(std::lround(x * half));
+  for (int i = std::min(0, n); i <= std::max(0, n); ++i) out[static_cast<std::size_t>(half + i)] = '=';
+  out[static_cast<std::size_t>(half)] = '|';
   return "[" + out + "]";
 }
 
@@ -100,23 +104,35 @@ std::string device_text(const input::DeviceLayout& d) {
          printable_text(d.guid) + ")";
 }
 
-void append_axis(std::string& out, const input::InputState& state, InputKey key, const AxisUses& uses) {
+void append_axis(std::string& out, const input::InputState& state, InputKey key, const AxisUses& uses, int half) {
   const std::int16_t v = state.axis(key);
   const AxisUse use = axis_use(uses, key);
-  // The verdict before the limit: a narrow screen cuts the signal's name, not it.
-  out += fmt("  %3u %-12s %6d %s %-7s ", static_cast<unsigned>(key.index), input::input_name(key).c_str(), v,
-             bar(key, v).c_str(), reading(use, v));
+  // The verdict before the limit: a narrow screen cuts the signal's name, not
+  // it. The value from -1 to 1 beside the bar, to read a deadzone against.
+  out += fmt("  %3u %-12s %6d %6.3f %s %-7s ", static_cast<unsigned>(key.index), input::input_name(key).c_str(), v,
+             mapping::normalise_axis(v), bar(key, v, half).c_str(), reading(use, v));
   out += limit_text(use) + "\n";
 }
 
-/// Each line cut to the screen's width (a long signal or layer name).
-std::string fit(const std::string& text) {
-  std::string out;
+void append_hat(std::string& out, const input::InputState& state, int hat) {
+  out += fmt("  %3d %-12s %s\n", hat, ("hat" + std::to_string(hat)).c_str(), hat_text(state.hat(hat)).c_str());
+}
+
+/// The lines of text, each cut to width (a long signal or layer name); when
+/// there are more than rows, the blank lines go first.
+std::string fit(const std::string& text, TermSize size) {
+  const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
+  std::vector<std::string> lines;
   for (std::size_t from = 0; from < text.size();) {
     const auto end = std::min(text.find('\n', from), text.size());
-    out += text.substr(from, std::min(end - from, kScreenWidth)) + "\n";
+    lines.push_back(text.substr(from, std::min(end - from, width)));
     from = end + 1;
   }
+  if (lines.size() > static_cast<std::size_t>(std::max(size.rows, 1))) {
+    std::erase_if(lines, [](const std::string& line) { return line.empty(); });
+  }
+  std::string out;
+  for (const auto& line : lines) out += line + "\n";
   return out;
 }
 
@@ -162,19 +178,24 @@ std::string format_input_change(const input::InputEvent& e, const AxisUses& uses
 }
 
 std::string render_inputs_screen(const input::InputState& state, const std::optional<input::DeviceLayout>& layout,
-                                 const AxisUses& uses, const std::string& heading) {
+                                 const AxisUses& uses, const std::string& heading, TermSize size) {
   std::string out = heading + "\n";
-  if (!layout || !state.connected()) return fit(out + "controller: none connected, waiting\n");
+  if (!layout || !state.connected()) return fit(out + "controller: none connected, waiting\n", size);
+  // The grid and the bars follow the width.
+  const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
+  const auto per_row = std::max<std::size_t>(1, width / kButtonWidth);
+  const int half = std::clamp(static_cast<int>(width > kAxisFixed ? (width - kAxisFixed) / 2 : 0), kMinBarHalf,
+                              kMaxBarHalf);
   // The GUID apart: a long name must not push it off the screen.
   out += "controller: " + printable_text(layout->name) + (layout->game_controller ? " (game controller)" : " (joystick)") +
          "\n  GUID " + printable_text(layout->guid) + "\n\nbuttons (* held)\n";
-  int column = 0;
+  std::size_t column = 0;
   for (const auto key : layout->buttons) {
     out += fmt(" %c%3u %-13s", state.button(key).down ? '*' : ' ', static_cast<unsigned>(key.index),
                input::input_name(key).c_str());
-    if (++column % kButtonsPerRow == 0) out += "\n";
+    if (++column % per_row == 0) out += "\n";
   }
-  if (column % kButtonsPerRow != 0) out += "\n";
+  if (column % per_row != 0) out += "\n";
   if (layout->game_controller && layout->buttons.size() < input::kPadButtonNames.size()) {
     std::string missing;
     for (std::uint16_t b = 0; b < input::kPadButtonNames.size(); ++b) {
@@ -185,23 +206,25 @@ std::string render_inputs_screen(const input::InputState& state, const std::opti
     }
     out += "  not in its SDL mapping:" + missing + "\n";
   }
-  out += "\naxes               value\n";
+  out += "\naxes               value   -1..1\n";
   for (const auto key : layout->axes) {
-    if (!is_trigger(key)) append_axis(out, state, key, uses);
+    if (!is_trigger(key)) append_axis(out, state, key, uses, half);
   }
   if (layout->game_controller) {
     out += "triggers\n";
     for (const auto key : layout->axes) {
-      if (is_trigger(key)) append_axis(out, state, key, uses);
+      if (is_trigger(key)) append_axis(out, state, key, uses, half);
     }
   }
   if (layout->hats > 0) {
     out += "hats\n";
-    for (int h = 0; h < layout->hats; ++h) {
-      out += fmt("  %3d %-12s %s\n", h, ("hat" + std::to_string(h)).c_str(), hat_text(state.hat(h)).c_str());
-    }
+    for (int h = 0; h < layout->hats; ++h) append_hat(out, state, h);
   }
-  return fit(out);
+  if (!layout->free_hats.empty()) {
+    out += "hats outside its SDL mapping (bind them as hatNup, ...)\n";
+    for (const int h : layout->free_hats) append_hat(out, state, h);
+  }
+  return fit(out, size);
 }
 
 }  // namespace andros::view

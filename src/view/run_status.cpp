@@ -30,9 +30,15 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     next.consent = r.engine.consent;
     next.state = r.state;
     next.enable_text = state_text(r);
+    // "deadman released" forever would send the operator looking at the deadman.
+    if (const auto note = joystick_note(next.pad_names, next.game_controller);
+        !note.empty() && r.connected && r.state == run::OpState::kNotEnabled) {
+      next.enable_text = note;
+    }
     next.layer = r.engine.layer;
     next.weapons_mode = next.enabled() && r.engine.weapons_mode;
     next.speed = r.engine.speed;
+    next.armed = next.weapons_mode && r.engine.armed;
     next.link_state = r.link.state;
     next.motion_allowed = r.link.motion_allowed;
     next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
@@ -43,6 +49,15 @@ void RunStatusBoard::observe(const run::TickReport& r) {
   log_changes(next, status_);
   if (r.skipped > 0) spdlog::warn("clock stalled: {} tick(s) skipped, none sent late in a burst", r.skipped);
   first_tick_ = false;
+}
+
+void RunStatusBoard::observe(const run::TickReport& r, const input::InputSource& input) {
+  if (r.connected != was_connected_) {
+    was_connected_ = r.connected;
+    const auto device = r.connected ? input.device() : std::nullopt;
+    set_game_controller(device ? std::optional<bool>(device->game_controller) : std::nullopt);
+  }
+  observe(r);
 }
 
 void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after) const {
@@ -88,6 +103,16 @@ void RunStatusBoard::set_mapping(std::string robot, std::string mapping_file, bo
   status_.center = center;
 }
 
+void RunStatusBoard::set_pad_names(bool pad_names) {
+  const std::lock_guard lock(mutex_);
+  status_.pad_names = pad_names;
+}
+
+void RunStatusBoard::set_game_controller(std::optional<bool> game_controller) {
+  const std::lock_guard lock(mutex_);
+  status_.game_controller = game_controller;
+}
+
 RunStatus RunStatusBoard::snapshot() const {
   const std::lock_guard lock(mutex_);
   return status_;
@@ -115,6 +140,13 @@ std::string state_text(const run::TickReport& r) {
     case OpState::kStopping: return "sending neutral frames";
   }
   return "?";
+}
+
+std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {
+  if (!pad_names || game_controller != false) return {};
+  return "the controller is a plain joystick to SDL, not a game controller, and the mapping reads game-controller "
+         "names (leftshoulder, leftx...): nothing it does reaches the mapping. Give SDL its mapping with "
+         "--controller-db FILE (docs/controllers.md), or map its buttons with 'andros-bridge learn'";
 }
 
 std::string enable_text(const mapping::EngineStatus& status) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "andros/base/text.hpp"
+#include "andros/view/run_status.hpp"
 #include "format.hpp"
 
 namespace andros::view {
@@ -66,12 +67,28 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
     else out.back().add("   ");
     out.back().add(speed, Style::kBold);
   }
-  if (s.weapons_mode) out.back().add("   ").add(" " + std::string(kWeaponsLayer) + " ", Style::kBanner);
+  if (s.weapons_mode) {
+    out.back().add("   ").add(" " + std::string(kWeaponsLayer) + (s.armed ? " ARMED " : " "), Style::kBanner);
+  }
   return out;
 }
 
-Line link_line(const RunStatus& s) {
-  Line line("link        " + s.link_name + ": ");
+/// text cut in its middle to at most room characters: a by-id path keeps its
+/// start and its end (the adapter's serial number), and what follows it shows.
+std::string cut_middle(const std::string& text, std::size_t room) {
+  constexpr std::string_view kCut = "...";
+  if (text.size() <= room || room <= kCut.size() + 2) return text;
+  // A third from the start, two from the end: a by-id path's start is the same for every adapter.
+  const auto keep = room - kCut.size();
+  return text.substr(0, keep / 3) + std::string(kCut) + text.substr(text.size() - (keep - keep / 3));
+}
+
+/// The link's state is what the line is for: the name gives way to it.
+Line link_line(const RunStatus& s, std::size_t width) {
+  constexpr std::string_view kLabel = "link        ";
+  const auto state = std::string(to_string(s.link_state));
+  const std::size_t fixed = kLabel.size() + 2 + state.size();
+  Line line(std::string(kLabel) + cut_middle(s.link_name, width > fixed ? width - fixed : 0) + ": ");
   line.add(std::string(to_string(s.link_state)), s.link_state == link::LinkState::kUp ? Style::kGood : Style::kAlert);
   if (!s.motion_allowed) return line.add(" - " + s.link_detail, Style::kAlert);
   return s.link_detail.empty() ? line : line.add(" - " + s.link_detail);
@@ -81,6 +98,9 @@ Line controller_line(const RunStatus& s) {
   Line line("controller  ");
   if (s.connected) line.add(s.controller, Style::kBold);
   else line.add("none connected", Style::kAlert);
+  if (s.connected && s.game_controller == false) {
+    line.add("  (a plain joystick to SDL)", joystick_note(s.pad_names, s.game_controller).empty() ? Style::kPlain : Style::kWarn);
+  }
   return s.input == "controller" ? line : line.add("  (script " + s.input + ")");
 }
 
@@ -133,20 +153,24 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   Screen screen;
   if (s.weapons) {
     // In a weapons mode the top line says so too: it is the one line every terminal shows.
-    const std::string banner =
-        s.weapons_mode ? std::string(kWeaponsLayer) + ": an armed fire input fires" : std::string(kWeapons);
+    const std::string banner = !s.weapons_mode ? std::string(kWeapons)
+                               : s.armed       ? std::string(kWeaponsLayer) + ": ARMED: a fire button fires"
+                                               : std::string(kWeaponsLayer) + ": an armed fire input fires";
     screen.pin(Line(centred(banner, width), Style::kBanner));
   }
   // Stopped by the operator: a red line across the top, above all else.
   const bool stopped = s.state == run::OpState::kStopped;
   if (stopped) screen.pin(Line(centred(std::string(kStopBanner) + ": stopped by the operator", width), Style::kBanner));
-  screen.pin(Line("andros-bridge run", Style::kBold)
-                 .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
-                 .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
-                 .add(fmt("  t %.1f s", static_cast<double>(s.t_ms) / 1000.0)));
+  auto title = Line("andros-bridge run", Style::kBold)
+                   .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
+                   .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
+                   .add(fmt("  t %.1f s", static_cast<double>(s.t_ms) / 1000.0));
+  // Without --weapons nothing on the screen would say so: no banner is not the same as "off".
+  if (!s.weapons) title.add("  weapons off");
+  screen.pin(std::move(title));
   const auto state = state_lines(s, width);
   for (const auto& line : state) screen.pin(line);
-  screen.pin(link_line(s));
+  screen.pin(link_line(s, width));
   screen.pin(controller_line(s));
   if (s.supervised) screen.pin(supervisor_line(s));
   screen.pin(mapping_line(s.mapping_file, width));
@@ -155,10 +179,11 @@ Screen render_run_view(const RunStatus& s, TermSize size) {
   const bool decoded = s.vehicle && s.vehicle->last;
   const auto& frame = decoded ? *s.vehicle->last : s.sent;
   auto gauges = gauge_lines(frame, s.center);
-  auto switches = switch_lines(frame, width, false);
+  auto switches = switch_lines(frame, width, false, SwitchNames::kOperator);
   const auto pinned = static_cast<int>(state.size()) + (s.weapons ? 5 : 4) + (stopped ? 1 : 0) + (s.supervised ? 1 : 0);
-  const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 1) - kMinLogRows;
-  if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true);
+  const auto room = size.rows - pinned - static_cast<int>(counters.size() + gauges.size() + 2) - kMinLogRows;
+  if (static_cast<int>(switches.size()) > room) switches = switch_lines(frame, width, true, SwitchNames::kOperator);
+  switches.insert(switches.begin(), selector_line(frame));
   switches.insert(switches.begin(), Line(decoded ? "as the vehicle decodes it:" : "as sent:"));
 
   screen.block(std::move(counters), 4);

@@ -148,6 +148,28 @@ std::string plain(const Line& line, std::size_t width) {
   return out;
 }
 
+std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent) {
+  indent = std::min(indent, width / 2);  // a continuation keeps room for text
+  std::vector<std::string> out;
+  std::string_view rest = text;
+  std::size_t room = std::max<std::size_t>(width, 1);
+  while (code_points(rest) > room) {
+    auto head = first(rest, room);
+    // Break after the last space that fits, when there is one past the indent.
+    const auto space = head.rfind(' ');
+    std::size_t next = head.size();
+    if (space != std::string_view::npos && space > indent) {
+      head = head.substr(0, space);
+      next = space + 1;
+    }
+    out.emplace_back((out.empty() ? "" : std::string(indent, ' ')) + std::string(head));
+    rest.remove_prefix(next);
+    room = std::max<std::size_t>(width - indent, 1);
+  }
+  out.emplace_back((out.empty() ? "" : std::string(indent, ' ')) + std::string(rest));
+  return out;
+}
+
 bool colour_wanted(const char* no_color, const char* term) {
   if (no_color != nullptr && no_color[0] != '\0') return false;
   if (term == nullptr) return false;

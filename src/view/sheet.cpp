@@ -11,6 +11,7 @@
 #include <set>
 
 #include "andros/base/text.hpp"
+#include "andros/protocol/words.hpp"
 #include "sheet_layout.hpp"
 
 namespace andros::view {
@@ -51,7 +52,21 @@ std::string direction(InputKey axis, bool invert, bool positive) {
   return raw_positive ? "right" : "left";
 }
 
-std::string name(protocol::SignalId id) { return std::string(protocol::info(id).name); }
+/// What a signal does, in the operator's words (protocol/words.hpp): "zoom out".
+std::string name(protocol::SignalId id) { return std::string(protocol::words(id).words); }
+
+/// A mapping's own name (a selector's) as words: "main_video" reads "main video".
+std::string spoken(std::string text) {
+  std::replace(text.begin(), text.end(), '_', ' ');
+  return text;
+}
+
+/// A number of the mapping as it is written there: 0.1, 0.35.
+std::string figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 std::string percent(double fraction) {
   return std::to_string(static_cast<int>(std::lround(fraction * 100))) + "%";
@@ -114,37 +129,59 @@ class PanelBuilder {
         past(b.threshold), inherited);
   }
   void add_rule(const mapping::AxisBinding& b, bool inherited) {
-    std::string detail = "analog";
+    const auto& w = protocol::words(b.analog);
+    // "up = forward" (drive forward/back reads as analog already); "analog"
+    // when the way is the word ("right = right").
+    const auto dir = direction(b.axis, b.shape.invert, true);
+    const auto grows = dir == w.more ? std::string() : dir + " = " + std::string(w.more);
+    std::string detail;
     if (protocol::info(b.analog).kind == protocol::SignalKind::kCentred) {
-      detail += ", " + direction(b.axis, b.shape.invert, true) + " = above centre";
+      detail = grows.empty() ? "analog" : grows;
     } else {
-      detail += " 0..255";
-      if (!is_trigger(b.axis) || b.shape.invert) detail += ", " + direction(b.axis, b.shape.invert, true) + " = more";
+      detail = "analog 0..255";
+      if ((!is_trigger(b.axis) || b.shape.invert) && !grows.empty()) detail += ", " + grows;
     }
-    add(b.axis, SheetMark::kPlain, name(b.analog), detail, inherited);
+    add(b.axis, SheetMark::kPlain, name(b.analog) + " " + std::string(w.more) + "/" + std::string(w.less), detail,
+        inherited);
   }
   void add_rule(const mapping::KnobBinding& b, bool inherited) {
     const auto rate = std::to_string(b.rate) + "/s";
-    add(b.increase, SheetMark::kKnob, name(b.analog) + " up", rate, inherited);
-    add(b.decrease, SheetMark::kKnob, name(b.analog) + " down", rate, inherited);
+    const auto& w = protocol::words(b.analog);
+    add(b.increase, SheetMark::kKnob, name(b.analog) + " " + std::string(w.more), rate, inherited);
+    add(b.decrease, SheetMark::kKnob, name(b.analog) + " " + std::string(w.less), rate, inherited);
   }
   void add_rule(const mapping::SelectorBinding& b, bool inherited) {
-    add(b.next, SheetMark::kSelector, b.name + " selector: next", {}, inherited);
-    if (b.prev) add(*b.prev, SheetMark::kSelector, b.name + " selector: previous", {}, inherited);
+    add(b.next, SheetMark::kSelector, spoken(b.name) + " selector: next", {}, inherited);
+    if (b.prev) add(*b.prev, SheetMark::kSelector, spoken(b.name) + " selector: previous", {}, inherited);
   }
 
   std::map<InputKey, SheetEntry> entries_;
 };
 
-std::string position(const std::vector<protocol::SignalId>& signals) {
+/// What a position with no bit means for the selector whose bits these are
+/// ("speed medium", "main video 1", "inset off"); "none" for bits of no known switch.
+std::string no_bit(const mapping::SelectorBinding& s) {
+  for (const auto& p : s.positions) {
+    for (const auto id : p) {
+      for (const auto& w : protocol::kSelectorWords) {
+        if (std::find(w.bits.begin(), w.bits.end(), protocol::info(id).name) != w.bits.end()) {
+          return std::string(w.name) + " " + std::string(w.none);
+        }
+      }
+    }
+  }
+  return "none";
+}
+
+std::string position(const mapping::SelectorBinding& s, const std::vector<protocol::SignalId>& signals) {
   std::string out;
   for (const auto id : signals) out += (out.empty() ? "" : "+") + name(id);
-  return out.empty() ? "none" : out;
+  return out.empty() ? no_bit(s) : out;
 }
 
 std::string positions(const mapping::SelectorBinding& s) {
   std::string out;
-  for (const auto& p : s.positions) out += (out.empty() ? "" : " > ") + position(p);
+  for (const auto& p : s.positions) out += (out.empty() ? "" : " > ") + position(s, p);
   return out;
 }
 
@@ -184,24 +221,33 @@ std::string speed_note(const mapping::Mapping& m) {
 std::vector<std::string> notes(const mapping::Mapping& m) {
   std::vector<std::string> out;
   std::set<std::string> arms;
+  std::string shapes;
   for (const auto ref : mapping::all_bindings(m)) {
     const auto& b = mapping::binding_at(m, ref);
     if (const auto* s = std::get_if<mapping::SelectorBinding>(&b.rule)) {
-      out.push_back(s->name + " selector" + where(m, ref.layer) + ", " + label(s->next) + " steps" +
+      out.push_back(spoken(s->name) + " selector" + where(m, ref.layer) + ", " + label(s->next) + " steps" +
                     (s->prev ? ", " + label(*s->prev) + " back" : "") + ": " + positions(*s) + "; starts at " +
-                    position(s->positions.at(static_cast<std::size_t>(s->initial))));
+                    position(*s, s->positions.at(static_cast<std::size_t>(s->initial))));
     } else if (const auto* k = std::get_if<mapping::KnobBinding>(&b.rule)) {
-      out.push_back(name(k->analog) + " knob" + where(m, ref.layer) + ": " + label(k->increase) + " up, " +
-                    label(k->decrease) + " down, " + std::to_string(k->rate) + " units/s; starts at " +
+      const auto& w = protocol::words(k->analog);
+      out.push_back(name(k->analog) + " knob" + where(m, ref.layer) + ": " + label(k->increase) + " " +
+                    std::string(w.more) + ", " + label(k->decrease) + " " + std::string(w.less) + ", " +
+                    std::to_string(k->rate) + " units/s; starts at " +
                     std::to_string(k->initial.value_or(0)) + ", kept while not enabled");
     } else if (const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule); w != nullptr && w->arm) {
       arms.insert(label(*w->arm));
+    } else if (const auto* a = std::get_if<mapping::AxisBinding>(&b.rule)) {
+      // The figures that make a stick feel as it does, to recognise it by.
+      const auto layer = ref.layer < 0 ? "" : ", " + m.layers.at(static_cast<std::size_t>(ref.layer)).name + " layer";
+      shapes += (shapes.empty() ? "" : "; ") + name(a->analog) + " (" + label(a->axis) + layer + "): deadzone " +
+                figure(a->shape.deadzone) + ", expo " + figure(a->shape.expo);
     }
   }
   if (m.scale.up) out.push_back(speed_note(m));
   else if (m.scale.levels.front() != 1.0) {
     out.push_back("Drive and pivot move " + exact_percent(m.scale.levels.front()) + " of the stick's travel from rest (scale).");
   }
+  if (!shapes.empty()) out.push_back("Analog inputs: " + shapes + ".");
   if (!arms.empty()) {
     std::string list;
     for (const auto& a : arms) list += (list.empty() ? "" : " or ") + a;
@@ -234,6 +280,17 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   }
   out.push_back("Releasing the deadman switches toggles and toggled layers off. After the deadman press or a layer "
                 "change, an input with a new meaning acts only once seen at rest.");
+  const auto numbered = [](const mapping::InputUse& u) { return u.key.kind >= InputKind::kJoyButton; };
+  bool joystick = (m.deadman && numbered(*m.deadman)) ||
+                  std::any_of(m.layers.begin(), m.layers.end(), [&](const auto& l) { return numbered(l.input); });
+  for (const auto ref : mapping::all_bindings(m)) {
+    const auto& b = mapping::binding_at(m, ref);
+    joystick = joystick || std::any_of(b.inputs.begin(), b.inputs.end(), numbered) || (b.arm && numbered(*b.arm));
+  }
+  if (joystick) {
+    out.push_back("Joystick buttons, axes and hats are numbered from 0, as SDL numbers them and 'andros-bridge "
+                  "inputs' shows them: button 0 is the first, which the device may print as 1.");
+  }
   return out;
 }
 

@@ -22,7 +22,10 @@ constexpr std::size_t kLogLines = 64;  ///< kept for the screen: more than a tal
 constexpr int kLogPriority = -1;       ///< below every block of a view
 
 /// The log lines as the screen's last block: warnings yellow, errors red.
-std::vector<Line> log_lines(const std::vector<std::string>& formatted) {
+/// A line wider than the screen wraps, indented under its text: a log line
+/// says why (a refused reload, a lost link), and its end is often the point.
+std::vector<Line> log_lines(const std::vector<std::string>& formatted, std::size_t width) {
+  constexpr std::size_t kIndent = 9;  // under the text, past "HH:MM:SS "
   std::vector<Line> out;
   for (auto text : formatted) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
@@ -31,7 +34,7 @@ std::vector<Line> log_lines(const std::vector<std::string>& formatted) {
                        : text.compare(level, 5, "error") == 0 || text.compare(level, 8, "critical") == 0
                            ? Style::kAlert
                            : Style::kPlain;
-    out.emplace_back(std::move(text), style);
+    for (auto& part : wrap_text(text, width, kIndent)) out.emplace_back(std::move(part), style);
   }
   return out;
 }
@@ -114,7 +117,7 @@ void StatusDisplay::draw(bool final) {
   // One column short of the edge: a line never leaves the cursor waiting to wrap.
   size.cols = std::max(size.cols - 1, 1);
   Screen screen = compose_(size);
-  screen.tail(log_lines(log_->last_formatted()), kLogPriority);
+  screen.tail(log_lines(log_->last_formatted(), static_cast<std::size_t>(size.cols)), kLogPriority);
   const std::string text = screen.render(size, colour_);
   // Each line is cleared to its end as it is drawn, so nothing stale shows;
   // the last one ends without a newline, which would scroll the top away.

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "andros/base/text.hpp"
+#include "andros/protocol/words.hpp"
 #include "format.hpp"
 
 namespace andros::view {
@@ -67,7 +68,7 @@ const std::vector<SignalGroup>& signal_groups() {
   return groups;
 }
 
-std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact) {
+std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact, SwitchNames names) {
   const auto state = protocol::read_signals(data);
   std::vector<Line> out;
   for (const auto& group : signal_groups()) {
@@ -75,18 +76,34 @@ std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t widt
     for (const auto id : group.signals) {
       const bool on = state[id] != 0;
       if (compact && !on) continue;
-      const auto name = protocol::info(id).name;
+      const auto name = names == SwitchNames::kOperator ? protocol::words(id).words : protocol::info(id).name;
       if (line.width() + name.size() + 1 > width && line.width() > kIndent) {
         out.push_back(std::move(line));
         line = Line(std::string(kIndent - 1, ' '));
       }
       line.add(" ");
-      line.add(on ? to_upper(name) : std::string(name), on ? Style::kReverse : Style::kDim);
+      // A weapon firing must not look like any other switch.
+      const bool weapon = protocol::info(id).kind == protocol::SignalKind::kWeapon;
+      line.add(on ? to_upper(name) : std::string(name), on ? (weapon ? Style::kBanner : Style::kReverse) : Style::kDim);
     }
     if (!compact || line.width() > kIndent - 1) out.push_back(std::move(line));
   }
   if (out.empty()) out.emplace_back("  no switch on");
   return out;
+}
+
+Line selector_line(const protocol::DataBytes& data) {
+  const auto state = protocol::read_signals(data);
+  Line line("  set     ");
+  for (const auto& selector : protocol::kSelectorWords) {
+    std::string position(selector.none);
+    for (std::size_t i = 0; i < selector.bits.size(); ++i) {
+      const auto id = selector.bits[i].empty() ? std::nullopt : protocol::find_signal(selector.bits[i]);
+      if (id && state[*id] != 0) position = selector.words[i];
+    }
+    line.add("  " + std::string(selector.name) + " ").add(position, Style::kBold);
+  }
+  return line;
 }
 
 std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {

@@ -37,8 +37,8 @@ w cycle_a.yaml 'robot: HD1\ndeadman: leftshoulder\nextends: cycle_b.yaml\n'
 w cycle_b.yaml 'extends: cycle_a.yaml\n'
 expect_error "cycle_b.yaml:1:10: error: 'extends' makes a cycle: cycle_a.yaml -> cycle_b.yaml -> cycle_a.yaml" "$BIN" check cycle_a.yaml
 w missing_base.yaml 'robot: HD1\nextends: nowhere.yaml\n'
-expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.yaml'" "$BIN" check missing_base.yaml
-expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.yaml'" "$BIN" replay ok.events --mapping missing_base.yaml
+expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.yaml': No such file or directory" "$BIN" check missing_base.yaml
+expect_error "missing_base.yaml:2:10: error: cannot open mapping file 'nowhere.yaml': No such file or directory" "$BIN" replay ok.events --mapping missing_base.yaml
 
 # Event scripts.
 w unknown_event.events '0 connect\n10 jump\n'

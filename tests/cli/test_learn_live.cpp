@@ -107,22 +107,23 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
     for (int i = 0; i < 10; ++i) session.step(1);
     type("\r");
     until(session, "  kept leftshoulder\n");
-    until(session, "base layer, drive: push a stick or trigger the way that raises drive (above centre) and let go (Enter keeps lefty up)");
+    until(session, "base layer, drive (drive forward/back): push a stick or trigger the way for drive forward and let go "
+                   "(Enter keeps lefty up)");
     push(pad, session, SDL_CONTROLLER_AXIS_LEFTY, 32767);
     until(session, "  drive: lefty up -> lefty down\n");
     type("\r");  // pivot
-    until(session, "pt_left / pt_right: push a stick");
+    until(session, "pt_left / pt_right (pan left / pan right): push a stick the way for pan left");
     press(pad, session, SDL_CONTROLLER_BUTTON_A);
     until(session, "  refused: pt_left / pt_right takes a stick or trigger, not the button a; try another\n");
     type("\r\r");  // pan, tilt
-    until(session, "base layer, front_art_up: press a button");
+    until(session, "base layer, front_art_up (front articulators up): press a button");
     press(pad, session, SDL_CONTROLLER_BUTTON_B);
     until(session, "  refused: 'b' is already used for selector inset_video next in the base layer; try another\n");
     press(pad, session, SDL_CONTROLLER_BUTTON_PADDLE1);
     until(session, "  front_art_up: dpup -> paddle1\n");
     type("b");  // back: the step shows what was just chosen
-    until(session, "[6/61] base layer, front_art_up: press a button, or push a stick or trigger the way that sets it "
-                   "and let go (Enter keeps paddle1)\n");
+    until(session, "[6/61] base layer, front_art_up (front articulators up): press a button, or push a stick or "
+                   "trigger the way that sets it and let go (Enter keeps paddle1)\n");
     type("\r");
     until(session, "  kept paddle1\n");
     type("s");

@@ -28,7 +28,8 @@ if missing: sys.exit(f"{sys.argv[1]}: missing {missing}")
 PY
 }
 for robot in f6a va1 wolverine hd1 prowler rav rons; do
-  well_formed "$shipped/$robot.svg" "DEADMAN" "ARM LAYER" "CAMERA LAYER" "WEAPONS LAYER" "fire weapon_1" "laser"
+  well_formed "$shipped/$robot.svg" "DEADMAN" "ARM LAYER" "CAMERA LAYER" "WEAPONS LAYER" "fire weapon 1" "laser" \
+    "zoom out" "reel in tether" "drive forward/back" "deadzone 0.1, expo 0.3"
 done
 grep -q "^HD1 cheat sheet (hd1.yaml)" "$shipped/hd1.txt" || fail "hd1.txt header"
 wide=$(awk 'length > 80' "$shipped/hd1.txt")
@@ -42,17 +43,17 @@ for line in \
   "  LT                     DEADMAN  hold to enable motion (past half way)" \
   "  LB                     LAYER    hold: arm layer" \
   "  RB                     LAYER    weapons layer on/off" \
-  "  X                      TOGGLE   tool_on" \
-  "  B                      KNOB     light up (64/s)" \
+  "  X                      TOGGLE   tool on" \
+  "  B                      KNOB     light brighter (64/s)" \
   "  Start                  SELECTOR speed selector: next" \
   "  Back                   SELECTOR speed selector: previous" \
-  "  D-pad up                        front_art_up" \
-  "  RT                              fiber_unwind" \
-  "  right stick up/down             up: rear_art_up (past 30%)" \
-  "  right stick left/right          left: pt_left, right: pt_right" \
-  "  left stick up/down              drive (analog, up = above centre)" \
-  "  RT                              arm_speed (analog 0..255)" \
-  "  Y                      WEAPON   fire weapon_1 (needs --weapons + left stick click)" \
+  "  D-pad up                        front articulators up" \
+  "  RT                              pay out tether" \
+  "  right stick up/down             up: rear articulators up (past 30%)" \
+  "  right stick left/right          left: pan left, right: pan right" \
+  "  left stick up/down              drive forward/back (up = forward)" \
+  "  RT                              arm speed faster/slower (analog 0..255)" \
+  "  Y                      WEAPON   fire weapon 1 (needs --weapons + left stick click)" \
   "  left stick click       ARMING   hold to arm weapons" \
   "  RB                     LAYER    weapons layer off (back to base)"; do
   grep -qxF -- "$line" "$TMP/kinds.txt" || fail "text sheet lacks '$line'"

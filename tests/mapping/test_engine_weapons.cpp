@@ -234,5 +234,37 @@ TEST(EngineWeapons, OnTheShippedLayoutWeaponsAreLiveOnlyWhileRBIsHeld) {
   EXPECT_EQ(f[protocol::signal_id("fiber_takeup")], 0);   // and LT
 }
 
+// Issue 19, finding 7: "armed" is what the screen says while the arming input
+// is held in a weapons mode, and only then.
+TEST(EngineWeapons, ArmedIsTheArmingInputHeldInAWeaponsMode) {
+  Engine engine(mapping_from_yaml(kHeld), kWeapons);
+  input::InputState in;
+  start_enabled(engine, in);
+  apply_script(in, "50 button rightshoulder 1\n");
+  engine.step(in, 80);
+  EXPECT_FALSE(engine.status().armed);  // held, but not in the weapons layer
+  apply_script(in, "90 button y 1\n");
+  engine.step(in, 120);
+  EXPECT_TRUE(engine.status().weapons_mode);
+  EXPECT_FALSE(engine.status().armed);  // held through the layer change: it must be let go first
+  apply_script(in, "130 button rightshoulder 0\n140 button rightshoulder 1\n");
+  engine.step(in, 160);
+  EXPECT_TRUE(engine.status().armed);
+  apply_script(in, "170 button rightshoulder 0\n");
+  engine.step(in, 200);
+  EXPECT_FALSE(engine.status().armed);
+  apply_script(in, "210 button rightshoulder 1\n");
+  engine.step(in, 240);
+  EXPECT_TRUE(engine.status().armed);
+  apply_script(in, "250 button leftshoulder 0\n");
+  engine.step(in, 280);
+  EXPECT_FALSE(engine.status().armed);  // the deadman released: no weapons mode, nothing armed
+
+  Engine without(mapping_from_yaml(kHeld), EngineOptions{});
+  input::InputState pad;
+  start_enabled(without, pad, "20 button y 1\n30 button rightshoulder 1\n");
+  EXPECT_FALSE(without.status().armed);  // no --weapons
+}
+
 }  // namespace
 }  // namespace andros::mapping

@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
+#include "andros/protocol/robots.hpp"
 #include "andros/protocol/signals.hpp"
+#include "andros/protocol/words.hpp"
 
 namespace andros::protocol {
 namespace {
@@ -78,6 +82,48 @@ TEST(Signals, Lookup) {
   EXPECT_EQ(kSignals[signal_id("battery")].byte, 14);
   EXPECT_FALSE(find_signal("Safety"));
   EXPECT_FALSE(find_signal(""));
+}
+
+// Issue 19, finding 10: one table of operator words, and docs/robots.md's
+// list of it says the same, row for row.
+TEST(SignalWords, DocsRobotsListsTheTableRowForRow) {
+  std::ifstream in(ANDROS_DOCS_DIR "/robots.md");
+  ASSERT_TRUE(in) << "docs/robots.md";
+  std::string line;
+  while (std::getline(in, line) && line != "## Operator words") {}
+  ASSERT_EQ(line, "## Operator words");
+  std::vector<std::string> rows;
+  while (std::getline(in, line) && !line.starts_with("## ")) {
+    if (line.starts_with("| `")) rows.push_back(line);
+  }
+  ASSERT_EQ(rows.size(), kSignalWords.size());
+  for (std::size_t i = 0; i < kSignalWords.size(); ++i) {
+    const auto& w = kSignalWords[i];
+    const std::string grows = w.more.empty() ? "" : std::string(w.more) + " / " + std::string(w.less);
+    EXPECT_EQ(rows[i], "| `" + std::string(w.signal) + "` | " + std::string(w.words) + " | " + grows + " |");
+  }
+}
+
+TEST(SignalWords, EveryAnalogByteSaysWhichWayItGrows) {
+  for (std::size_t i = 0; i < kSignalCount; ++i) {
+    const auto kind = kSignals[i].kind;
+    const bool analog = kind == SignalKind::kCentred || kind == SignalKind::kLevel;
+    EXPECT_EQ(!kSignalWords[i].more.empty(), analog) << kSignals[i].name;
+    EXPECT_FALSE(kSignalWords[i].words.empty()) << kSignals[i].name;
+  }
+  EXPECT_EQ(words(signal_id("zoom_down")).words, "zoom out");
+  EXPECT_EQ(words(signal_id("fiber_takeup")).words, "reel in tether");
+  EXPECT_EQ(words(signal_id("drive")).more, "forward");
+}
+
+// Issue 19, finding 11: the vehicles' names are robot types too.
+TEST(Robots, TheVehiclesNamesAreAcceptedInAnyCase) {
+  EXPECT_EQ(canonical_robot("HD-1"), "HD1");
+  EXPECT_EQ(canonical_robot("hd-1"), "HD1");
+  EXPECT_EQ(canonical_robot("V-A1"), "VA1");
+  EXPECT_EQ(canonical_robot("wolverine"), "WOLVERINE");
+  EXPECT_EQ(canonical_robot("HD-2"), std::nullopt);
+  EXPECT_EQ(canonical_robot("HD_1"), std::nullopt);
 }
 
 }  // namespace

@@ -164,6 +164,40 @@ TEST(FeedbackNotifier, ASpeedLevelIsCountedOutInPulses) {
   EXPECT_EQ(off.observe(level(kEnabled, 1)), std::nullopt);
 }
 
+// Issue 19, finding 7: after a stop the pad's light is not green, whatever the
+// mapping says of the event that ends the enabled state.
+TEST(FeedbackNotifier, TheLightOfTheEnabledStateEndsWithIt) {
+  const auto orange = mapping::default_feedback_pattern(E::kDisabled).led;
+  for (const auto& why : {"disabled: {led: off}", "disabled: off", "link_lost: {led: off}"}) {
+    SCOPED_TRACE(why);
+    auto table = mapping::default_feedback();
+    if (why == std::string("disabled: {led: off}")) table[E::kDisabled]->led.reset();
+    if (why == std::string("disabled: off")) table[E::kDisabled].reset();
+    if (why == std::string("link_lost: {led: off}")) table[E::kLinkLost]->led.reset();
+    RecordingInput input;
+    FeedbackNotifier notifier(table, input);
+    notifier.observe(kConnected);
+    notifier.observe(kEnabled);
+    ASSERT_EQ(input.played.back().led, table[E::kEnabled]->led);  // green
+    notifier.observe(why == std::string("link_lost: {led: off}") ? link_down(kConnected) : kConnected);
+    ASSERT_FALSE(input.played.empty());
+    EXPECT_EQ(input.played.back().led, orange);
+    // Stopped already: nothing more to say while it stays so.
+    const auto count = input.played.size();
+    notifier.observe(kConnected);
+    EXPECT_EQ(input.played.size(), count);
+  }
+  // A stop from a weapons mode (its yellow) too.
+  auto table = mapping::default_feedback();
+  table[E::kDisabled].reset();
+  RecordingInput input;
+  FeedbackNotifier notifier(table, input);
+  notifier.observe(kEnabled);
+  notifier.observe(weapons(kEnabled));
+  notifier.observe(kConnected);
+  EXPECT_EQ(input.played.back().led, orange);
+}
+
 TEST(FeedbackNotifier, AllOffPlaysNothing) {
   RecordingInput input;
   FeedbackNotifier notifier(mapping::FeedbackTable{}, input);

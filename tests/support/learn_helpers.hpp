@@ -15,10 +15,15 @@ namespace andros::test {
 inline input::Gesture button(const char* name) { return {*input::parse_button_name(name), false}; }
 inline input::Gesture axis(const char* name, bool negative) { return {*input::parse_axis_name(name), negative}; }
 
-/// The step whose prompt names this layer and target ("base layer, drive").
+/// The step whose prompt names this layer and target ("base layer, drive"),
+/// before the operator's words in brackets, if any ("(zoom out)").
 inline std::size_t step_of(const mapping::LearnPlan& plan, const std::string& where) {
   for (std::size_t i = 0; i < plan.steps().size(); ++i) {
-    if (plan.prompt(i).find("] " + where + ":") != std::string::npos) return i;
+    const auto prompt = plan.prompt(i);
+    const auto at = prompt.find("] " + where);
+    if (at == std::string::npos) continue;
+    const auto after = prompt.substr(at + 2 + where.size(), 2);
+    if (after.starts_with(":") || after == " (") return i;
   }
   ADD_FAILURE() << "no step " << where;
   return 0;

@@ -1,6 +1,8 @@
 // The input tester's lines and screen, and the deadzones it reads from a mapping.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "andros/mapping/loader.hpp"
 #include "andros/view/inputs_view.hpp"
 #include "support/temp_dir.hpp"
@@ -29,7 +31,7 @@ InputEvent event(std::int64_t t, T type, InputKey key = {}, int value = 0, std::
 }
 
 input::DeviceLayout pad_layout() {
-  input::DeviceLayout d{"Test Pad", "0300aaaa", true, {}, {}, 0};
+  input::DeviceLayout d{"Test Pad", "0300aaaa", true, {}, {}, 0, {}};
   for (std::uint16_t b = 0; b < 15; ++b) d.buttons.push_back({InputKind::kPadButton, b});  // no misc1, paddles, touchpad
   for (std::uint16_t a = 0; a < 6; ++a) d.axes.push_back({InputKind::kPadAxis, a});
   return d;
@@ -116,10 +118,10 @@ TEST(InputsView, TheScreenShowsEveryInputOfThePad) {
     EXPECT_NE(screen.find(" " + std::string(name) + " "), std::string::npos) << name;
   }
   EXPECT_NE(screen.find("not in its SDL mapping: misc1 paddle1 paddle2 paddle3 paddle4 touchpad"), std::string::npos);
-  EXPECT_NE(screen.find("    1 lefty        -32768 [=====|     ] moves   deadzone 0.10 drive\n"),
+  EXPECT_NE(screen.find("    1 lefty        -32768 -1.000 [=====|     ] moves   deadzone 0.10 drive\n"),
             std::string::npos)
       << screen;
-  EXPECT_NE(screen.find("triggers\n    4 lefttrigger       0 [|          ] at rest deadzone 0.00 (default)\n"),
+  EXPECT_NE(screen.find("triggers\n    4 lefttrigger       0  0.000 [|          ] at rest deadzone 0.00 (default)\n"),
             std::string::npos)
       << screen;
   EXPECT_NE(screen.find("righttrigger"), std::string::npos);
@@ -143,7 +145,7 @@ TEST(InputsView, AControllersNameReachesTheTerminalEscaped) {
 
 TEST(InputsView, TheScreenShowsAJoysticksNumberedInputsAndHats) {
   InputsBoard board({}, "h");
-  input::DeviceLayout stick{"Stick", "0300bbbb", false, {}, {}, 1};
+  input::DeviceLayout stick{"Stick", "0300bbbb", false, {}, {}, 1, {}};
   for (std::uint16_t b = 0; b < 12; ++b) stick.buttons.push_back({InputKind::kJoyButton, b});
   for (std::uint16_t a = 0; a < 4; ++a) stick.axes.push_back({InputKind::kJoyAxis, a});
   board.update({event(0, T::kConnect, {}, 0, "Stick"), event(0, T::kHat, {InputKind::kHat, 0}, 2),
@@ -156,6 +158,52 @@ TEST(InputsView, TheScreenShowsAJoysticksNumberedInputsAndHats) {
   EXPECT_NE(screen.find("hats\n    0 hat0         right"), std::string::npos) << screen;
   EXPECT_EQ(screen.find("triggers"), std::string::npos);
   EXPECT_EQ(screen.find("not in its SDL mapping"), std::string::npos);
+}
+
+// Issue 19, finding 8: a small terminal gets the screen reflowed (fewer
+// button columns, no blank lines), never its triggers or a button column cut;
+// a wide one a finer bar; an axis's value from -1 to 1 is always beside it.
+TEST(InputsView, TheScreenReflowsToTheTerminal) {
+  InputsBoard board(core_uses(), "andros-bridge inputs: the first controller (Ctrl-C ends)\ndeadzones of core.yaml");
+  board.update({event(0, T::kConnect, {}, 0, "Test Pad"), event(0, T::kAxis, kLeftX, 3276),
+                event(0, T::kButton, {InputKind::kPadButton, 14}, 1)},
+               pad_layout());
+  const auto lines_of = [](const std::string& screen) {
+    std::vector<std::string> out;
+    for (std::size_t from = 0, to = 0; (to = screen.find('\n', from)) != std::string::npos; from = to + 1) {
+      out.push_back(screen.substr(from, to - from));
+    }
+    return out;
+  };
+  const auto small = lines_of(board.compose({60, 20}));
+  EXPECT_LE(small.size(), 20U);
+  const auto has = [](const std::vector<std::string>& lines, const std::string& what) {
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(what) != std::string::npos; });
+  };
+  EXPECT_TRUE(has(small, "    5 righttrigger")) << board.compose({60, 20});
+  EXPECT_TRUE(has(small, "* 14 dpright")) << board.compose({60, 20});  // the last button, in its column
+  for (const auto& line : small) EXPECT_LE(line.size(), 60U) << line;
+  // Three columns of buttons at 60 columns: a row holds a, b, x, not y.
+  const auto row = std::find_if(small.begin(), small.end(), [](const std::string& l) { return l.find(" 0 a ") != std::string::npos; });
+  ASSERT_NE(row, small.end());
+  EXPECT_NE(row->find(" 2 x"), std::string::npos) << *row;
+  EXPECT_EQ(row->find(" 3 y"), std::string::npos) << *row;
+  // 0.1 of the way: the value says it, whatever the bar's resolution.
+  EXPECT_TRUE(has(small, "    0 leftx          3276  0.100 [     |     ] at rest")) << board.compose({60, 20});
+  // Wide: a bar of 21 cells, a tenth of the way a cell.
+  EXPECT_TRUE(has(lines_of(board.compose({120, 40})), "    0 leftx          3276  0.100 [          |=         ] at rest"))
+      << board.compose({120, 40});
+}
+
+TEST(InputsView, APadsHatsOutsideItsMappingAreShown) {
+  InputsBoard board({}, "h");
+  auto layout = pad_layout();
+  layout.free_hats = {1};
+  board.update({event(0, T::kConnect, {}, 0, "Test Pad"), event(0, T::kHat, {InputKind::kHat, 4}, 1)}, layout);
+  const auto screen = board.compose();
+  EXPECT_NE(screen.find("hats outside its SDL mapping (bind them as hatNup, ...)\n    1 hat1         up\n"),
+            std::string::npos)
+      << screen;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,8 +45,7 @@ std::vector<std::string> shown(const RunStatus& s, TermSize size) {
 /// The header's lines start so, in this order, from the top.
 void expect_header(const std::vector<std::string>& lines, bool weapons) {
   std::vector<std::string> want = {"andros-bridge run  robot HD1  code 01  25.0 Hz", "state       ENABLED",
-                                   "link        /dev/andros-switchbox", "controller  Xbox 360 Controller",
-                                   "mapping     "};
+                                   "link        /dev/an", "controller  Xbox 360 Controller", "mapping     "};
   if (weapons) want.insert(want.begin(), "");  // the banner, checked below
   ASSERT_GE(lines.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i) {
@@ -228,11 +228,78 @@ TEST(RunView, TheSwitchListShrinksToTheActiveOnesBeforeTheGaugesGo) {
   c[protocol::signal_id("drive")] = 128;
   s.vehicle->last = protocol::FrameBuilder(1).build(c);
   auto text = render_run_view(s, {80, 40}).text();
-  EXPECT_NE(text.find("  drive    SAFETY drive_brake"), std::string::npos) << text;
+  EXPECT_NE(text.find("  drive    ENABLED (DEADMAN HELD) brake released"), std::string::npos) << text;
   text = render_run_view(s, {80, 24}).text();
-  EXPECT_NE(text.find("as the vehicle decodes it:\n  drive    SAFETY\n  arm      SHOULDER_CW\n  drive      ["), std::string::npos) << text;
+  EXPECT_NE(text.find("as the vehicle decodes it:\n  set       speed medium  main video 1  inset off\n"
+                      "  drive    ENABLED (DEADMAN HELD)\n  arm      SHOULDER DOWN\n  drive      ["),
+            std::string::npos)
+      << text;
   const auto lines = shown(s, {80, 24});
   EXPECT_NE(std::find(lines.begin(), lines.end(), "  drive      [          |          ] 128"), lines.end());
+}
+
+// Issue 19, finding 7: the operator's second pass over the screen at 80x24.
+TEST(RunView, ALongLinkNameIsCutInItsMiddleAndTheStateStays) {
+  for (const auto state : {link::LinkState::kUp, link::LinkState::kConnecting}) {
+    RunStatus s = driving(false);
+    s.link_name = "/dev/serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0 9600 8N1";
+    s.link_state = state;
+    const auto lines = shown(s, {79, 24});
+    const auto& link = lines[2];
+    const auto word = std::string(link::to_string(state));
+    EXPECT_TRUE(link.ends_with(": " + word)) << link;
+    EXPECT_LE(link.size(), 79u) << link;
+    EXPECT_NE(link.find("..."), std::string::npos) << link;
+    EXPECT_TRUE(link.starts_with("link        /dev/serial/by-id")) << link;
+    EXPECT_NE(link.find("A50285BI-if00-port0 9600 8N1: "), std::string::npos) << link;  // the serial number kept
+  }
+}
+
+TEST(RunView, SelectorPositionsWithoutABitAreShown) {
+  RunStatus s = driving(false);
+  protocol::ControlState c;
+  c[protocol::signal_id("main_video_3")] = 1;
+  c[protocol::signal_id("inset_4")] = 1;
+  s.vehicle->last = protocol::FrameBuilder(1).build(c);
+  auto text = render_run_view(s, {80, 24}).text();
+  EXPECT_NE(text.find("  set       speed medium  main video 3  inset 4\n"), std::string::npos) << text;
+  c = {};
+  c[protocol::signal_id("speed_low")] = 1;
+  s.vehicle->last = protocol::FrameBuilder(1).build(c);
+  text = render_run_view(s, {80, 24}).text();
+  EXPECT_NE(text.find("  set       speed low  main video 1  inset off\n"), std::string::npos) << text;
+}
+
+TEST(RunView, WeaponsOffArmedAndFiringAreEachSaid) {
+  // Without --weapons the title line says so; no banner.
+  auto lines = shown(driving(false), {80, 24});
+  EXPECT_TRUE(lines[0].ends_with("  weapons off")) << lines[0];
+  // With them, in a weapons mode: armed is said in the banner and the state line.
+  RunStatus s = driving(true);
+  s.weapons_mode = true;
+  s.armed = true;
+  lines = shown(s, {80, 24});
+  EXPECT_NE(lines[0].find("WEAPONS LAYER: ARMED: a fire button fires"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[2].find("WEAPONS LAYER ARMED"), std::string::npos) << lines[2];
+  EXPECT_EQ(lines[1].find("weapons off"), std::string::npos) << lines[1];
+  s.armed = false;
+  EXPECT_EQ(shown(s, {80, 24})[0].find("ARMED"), std::string::npos);
+  // A weapon firing is white on red, not the reverse video of any other switch.
+  protocol::ControlState c;
+  c[protocol::signal_id("safety")] = 1;
+  c[protocol::signal_id("weapon_2")] = 1;
+  c[protocol::signal_id("tool_on")] = 1;
+  const auto data = protocol::FrameBuilder(1).build(c);
+  std::optional<Style> weapon;
+  std::optional<Style> tool;
+  for (const auto& line : switch_lines(data, 80, true, SwitchNames::kOperator)) {
+    for (const auto& piece : line.pieces()) {
+      if (piece.text == "WEAPON 2") weapon = piece.style;
+      if (piece.text == "TOOL ON") tool = piece.style;
+    }
+  }
+  EXPECT_EQ(weapon, Style::kBanner);
+  EXPECT_EQ(tool, Style::kReverse);
 }
 
 }  // namespace

@@ -95,5 +95,34 @@ TEST(Screen, ColourFollowsNoColorAndTheTerminalType) {
   EXPECT_FALSE(colour_wanted(nullptr, nullptr));
 }
 
+// Issue 19, finding 7: a log line wider than the screen wraps under its text,
+// whole, instead of being cut.
+TEST(Screen, WrapTextBreaksAtSpacesAndKeepsEveryCharacter) {
+  const std::string line =
+      "12:00:01 warning: reload refused: /home/op/.config/andros-bridge/mappings/hd1.yaml:12:5: error: unknown signal";
+  const auto parts = wrap_text(line, 40, 9);
+  ASSERT_GE(parts.size(), 3U);
+  std::string joined;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    EXPECT_LE(parts[i].size(), 40U) << parts[i];
+    if (i > 0) {
+      EXPECT_TRUE(parts[i].starts_with("         ")) << parts[i];  // under the text, past the time
+      joined += ' ';
+    }
+    joined += i > 0 ? parts[i].substr(9) : parts[i];
+  }
+  // Broken at spaces, or inside a word longer than a line: nothing lost.
+  std::string squeezed;
+  for (const char c : joined) if (c != ' ') squeezed += c;
+  std::string want;
+  for (const char c : line) if (c != ' ') want += c;
+  EXPECT_EQ(squeezed, want);
+  EXPECT_EQ(parts[0], "12:00:01 warning: reload refused:");
+  EXPECT_EQ(wrap_text("short", 40, 9), std::vector<std::string>{"short"});
+  // UTF-8 counts by character.
+  EXPECT_EQ(wrap_text("\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9", 2, 0),
+            (std::vector<std::string>{"\xc3\xa9\xc3\xa9", "\xc3\xa9\xc3\xa9"}));
+}
+
 }  // namespace
 }  // namespace andros::view

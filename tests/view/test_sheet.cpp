@@ -35,14 +35,15 @@ TEST(Sheet, EveryBindingKindHasItsEntryAndMark) {
   EXPECT_TRUE(s.pad);
   ASSERT_EQ(s.panels.size(), 3u);
   expect_entry(s, 0, "LT", SheetMark::kDeadman, "hold to enable motion", "past half way");
-  expect_entry(s, 0, "D-pad up", SheetMark::kPlain, "front_art_up");
-  expect_entry(s, 0, "X", SheetMark::kToggle, "tool_on");
-  expect_entry(s, 0, "RT", SheetMark::kPlain, "fiber_unwind");
-  expect_entry(s, 0, "right stick up/down", SheetMark::kPlain, "up: rear_art_up", "past 30%");
-  expect_entry(s, 0, "right stick left/right", SheetMark::kPlain, "left: pt_left, right: pt_right");
-  expect_entry(s, 0, "left stick up/down", SheetMark::kPlain, "drive", "analog, up = above centre");
-  expect_entry(s, 0, "B", SheetMark::kKnob, "light up", "64/s");
-  expect_entry(s, 0, "A", SheetMark::kKnob, "light down", "64/s");
+  // Issue 19, finding 10: the operator's words, and a stick's deadzone and expo.
+  expect_entry(s, 0, "D-pad up", SheetMark::kPlain, "front articulators up");
+  expect_entry(s, 0, "X", SheetMark::kToggle, "tool on");
+  expect_entry(s, 0, "RT", SheetMark::kPlain, "pay out tether");
+  expect_entry(s, 0, "right stick up/down", SheetMark::kPlain, "up: rear articulators up", "past 30%");
+  expect_entry(s, 0, "right stick left/right", SheetMark::kPlain, "left: pan left, right: pan right");
+  expect_entry(s, 0, "left stick up/down", SheetMark::kPlain, "drive forward/back", "up = forward");
+  expect_entry(s, 0, "B", SheetMark::kKnob, "light brighter", "64/s");
+  expect_entry(s, 0, "A", SheetMark::kKnob, "light dimmer", "64/s");
   expect_entry(s, 0, "Start", SheetMark::kSelector, "speed selector: next");
   expect_entry(s, 0, "Back", SheetMark::kSelector, "speed selector: previous");
   expect_entry(s, 0, "LB", SheetMark::kLayerKey, "hold: arm layer");
@@ -53,17 +54,17 @@ TEST(Sheet, LayersShowTheirOwnBindingsAndTheBaseOnesTheyKeep) {
   const auto s = kinds_sheet();
   EXPECT_EQ(s.panels[1].title, "arm layer");
   EXPECT_EQ(s.panels[1].how, "while LB is held");
-  expect_entry(s, 1, "RT", SheetMark::kPlain, "arm_speed", "analog 0..255");  // replaces fiber_unwind
-  expect_entry(s, 1, "X", SheetMark::kToggle, "tool_on", "", true);
+  expect_entry(s, 1, "RT", SheetMark::kPlain, "arm speed faster/slower", "analog 0..255");
+  expect_entry(s, 1, "X", SheetMark::kToggle, "tool on", "", true);
   expect_entry(s, 1, "LB", SheetMark::kLayerKey, "held: arm layer");
   expect_entry(s, 1, "RB", SheetMark::kLayerKey, "weapons layer on/off");
   expect_entry(s, 1, "LT", SheetMark::kDeadman, "hold to enable motion", "past half way");
 
   EXPECT_EQ(s.panels[2].how, "RB turns it on and off");
-  expect_entry(s, 2, "Y", SheetMark::kWeapon, "fire weapon_1", "needs --weapons + left stick click");
+  expect_entry(s, 2, "Y", SheetMark::kWeapon, "fire weapon 1", "needs --weapons + left stick click");
   expect_entry(s, 2, "left stick click", SheetMark::kArming, "hold to arm weapons");
   expect_entry(s, 2, "RB", SheetMark::kLayerKey, "weapons layer off (back to base)");
-  expect_entry(s, 2, "RT", SheetMark::kPlain, "fiber_unwind", "", true);
+  expect_entry(s, 2, "RT", SheetMark::kPlain, "pay out tether", "", true);
 }
 
 TEST(Sheet, EntriesFollowTheDrawingsOrder) {
@@ -80,8 +81,12 @@ TEST(Sheet, NotesGiveSelectorPositionsKnobsAndTheWeaponsRule) {
   const auto has = [&](std::string_view text) {
     return std::any_of(s.notes.begin(), s.notes.end(), [&](const std::string& n) { return n == text; });
   };
-  EXPECT_TRUE(has("speed selector, Start steps, Back back: speed_low > none > speed_high; starts at none"));
-  EXPECT_TRUE(has("light knob: B up, A down, 64 units/s; starts at 10, kept while not enabled"));
+  // A position without a bit says what it means on the switchbox.
+  EXPECT_TRUE(has("speed selector, Start steps, Back back: speed low > speed medium > speed high; starts at speed medium"));
+  EXPECT_TRUE(has("light knob: B brighter, A dimmer, 64 units/s; starts at 10, kept while not enabled"));
+  EXPECT_TRUE(has("Analog inputs: drive (left stick up/down): deadzone 0.1, expo 0; arm speed (RT, arm layer): "
+                  "deadzone 0, expo 0."));
+  EXPECT_FALSE(std::any_of(s.notes.begin(), s.notes.end(), [](const std::string& n) { return n.find("numbered from 0") != std::string::npos; }));
   EXPECT_TRUE(has("Weapons fire only when the run has --weapons, the deadman (LT) is held and the arming input "
                   "(left stick click) is held."));
 }
@@ -159,10 +164,14 @@ TEST(Sheet, PlainJoystickGetsListPanels) {
   const auto s = build_sheet(*mapping::load_mapping(ANDROS_TEST_DATA_DIR "/mappings/joystick.yaml"));
   EXPECT_FALSE(s.pad);
   expect_entry(s, 0, "button 4", SheetMark::kDeadman, "hold to enable motion");
-  expect_entry(s, 0, "hat 0 up", SheetMark::kPlain, "front_art_up");
-  expect_entry(s, 0, "axis 1", SheetMark::kPlain, "drive", "analog, negative = above centre");
-  expect_entry(s, 0, "axis 2", SheetMark::kPlain, "positive: zoom_up", "past 25%");
-  expect_entry(s, 0, "axis 3", SheetMark::kPlain, "negative: zoom_down", "past 25%");
+  expect_entry(s, 0, "hat 0 up", SheetMark::kPlain, "front articulators up");
+  expect_entry(s, 0, "axis 1", SheetMark::kPlain, "drive forward/back", "negative = forward");
+  expect_entry(s, 0, "axis 2", SheetMark::kPlain, "positive: zoom in", "past 25%");
+  expect_entry(s, 0, "axis 3", SheetMark::kPlain, "negative: zoom out", "past 25%");
+  // Numbered inputs: the sheet says where the numbers start.
+  EXPECT_TRUE(std::any_of(s.notes.begin(), s.notes.end(), [](const std::string& n) {
+    return n.starts_with("Joystick buttons, axes and hats are numbered from 0");
+  }));
   const auto svg = render_sheet_svg(s);
   EXPECT_EQ(svg.find("<ellipse"), std::string::npos) << "no pad drawing for a joystick";
   EXPECT_NE(svg.find(">button 4</text>"), std::string::npos);
@@ -176,11 +185,12 @@ TEST(Sheet, TextIsATablePerLayer) {
                       "  LB                     LAYER    hold: arm layer\n"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("\n  Y                      WEAPON   fire weapon_1 (needs --weapons + left stick click)\n"),
+  EXPECT_NE(text.find("\n  Y                      WEAPON   fire weapon 1 (needs --weapons + left stick click)\n"),
             std::string::npos);
-  EXPECT_NE(text.find("\n  X                      TOGGLE   tool_on [base]\n"), std::string::npos);
+  EXPECT_NE(text.find("\n  X                      TOGGLE   tool on [base]\n"), std::string::npos);
   const auto notes = text.substr(text.find("\nNOTES\n"));
-  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: speed_low > none > speed_high; starts\n  at none\n"),
+  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: speed low > speed medium > speed high;\n"
+                       "  starts at speed medium\n"),
             std::string::npos)
       << notes;
   for (std::size_t start = 0, end; (end = notes.find('\n', start)) != std::string::npos; start = end + 1) {

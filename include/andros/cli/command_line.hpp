@@ -67,6 +67,12 @@ Settings resolve_settings(const CommandLine& flags);
 /// the file).
 Settings resolve_settings(const GivenFlags& flags, ConfigRead read);
 
+/// The first of default_config_paths() that exists, "" for none. A place that
+/// cannot be looked into (a HOME the user may not read) is passed over, and
+/// said in the log when warn is true: it holds no config this run could read,
+/// and the next place may.
+std::string find_default_config(bool warn);
+
 /// Applies the flags given to settings (the last step of resolve_settings).
 void apply_flags(const GivenFlags& flags, Settings& settings);
 

@@ -5,7 +5,9 @@
 /// nothing polls between ticks.
 
 #include <cstdint>
+#include <optional>
 
+#include "andros/input/device_layout.hpp"
 #include "andros/input/feedback.hpp"
 #include "andros/input/snapshot.hpp"
 
@@ -32,6 +34,10 @@ class InputSource {
   /// blocks. Called on the thread that calls pump(). A script has no
   /// controller: nothing happens.
   virtual void feedback(const FeedbackPattern& /*pattern*/) {}
+
+  /// The live controller's inputs (whether SDL knows it as a game
+  /// controller); none while none is connected, and never for a script.
+  [[nodiscard]] virtual std::optional<DeviceLayout> device() const { return std::nullopt; }
 };
 
 }  // namespace andros::input

@@ -56,7 +56,8 @@ class SdlSession {
 /// Adds the SDL mappings in a gamecontrollerdb.txt-style file (lines for other
 /// platforms are skipped). Needs a live SdlSession. Throws InputError naming
 /// FILE (unreadable) or FILE:LINE (a mapping SDL rejects, a line or the file
-/// over kControllerDbLimits), ReadStopped when stop says so.
+/// over kControllerDbLimits, more than 5,000 mappings for this platform),
+/// ReadStopped when stop says so.
 void load_controller_db(const std::string& path, const StopCheck& stop = {});
 
 /// The live controller as an InputSource. Only the chosen controller feeds
@@ -90,7 +91,7 @@ class SdlInput final : public InputSource {
   void feedback(const FeedbackPattern& pattern) override;
 
   /// The chosen controller's inputs; none while it is not connected.
-  [[nodiscard]] std::optional<DeviceLayout> device() const;
+  [[nodiscard]] std::optional<DeviceLayout> device() const override;
 
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;

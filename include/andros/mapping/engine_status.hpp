@@ -58,6 +58,8 @@ struct EngineStatus {
   bool supervisor_stop = false;
   ConsentState consent = ConsentState::kNotAsked;
   SpeedLevel speed;
+  /// In a weapons mode with an arming input held: a fire button pressed now fires.
+  bool armed = false;
 };
 
 }  // namespace andros::mapping

@@ -1,6 +1,7 @@
 #pragma once
 /// Reading mapping files (docs/mapping.md) and finding a robot's file.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -11,12 +12,21 @@
 namespace andros::mapping {
 
 /// Loads a mapping file and the chain of files it `extends`, merged, without
-/// validate(). Every error is an InputError at FILE:LINE:COL.
+/// validate(). Every error is an InputError at FILE:LINE:COL; a bad key or
+/// binding does not stop the reading, so that all are reported at once
+/// (InputErrors for more than one).
 Mapping load_mapping_file(const std::filesystem::path& file);
 
-/// Loads a robot's mapping from an explicit file (`--mapping FILE`) and
-/// validates it; it must name a robot.
-ValidMapping load_mapping(const std::filesystem::path& file);
+/// Whether a file loaded must name a robot.
+enum class NeedsRobot : std::uint8_t {
+  kYes,      ///< a mapping to run (`--mapping FILE`)
+  kIfNamed,  ///< `check`: a file with no `robot:` is checked as a base for others to extend
+};
+
+/// Loads a mapping from an explicit file (`--mapping FILE`) and validates
+/// it. Every error of both steps is reported (InputErrors for more than one):
+/// validate() also runs on what could be read when the reading found errors.
+ValidMapping load_mapping(const std::filesystem::path& file, NeedsRobot needs = NeedsRobot::kYes);
 
 /// Reads text as the mapping file `file` would be read (its errors name
 /// file, its `extends:` is found from there), and validates it; file need

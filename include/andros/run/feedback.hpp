@@ -33,7 +33,10 @@ FeedbackStatus feedback_status(const TickReport& report);
 std::vector<mapping::FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after);
 
 /// Feeds each tick's status through feedback_events() and plays the first
-/// event that has a pattern in the table on the input's controller.
+/// event that has a pattern in the table on the input's controller. A light
+/// set while enabled never outlives it: leaving the enabled state sets the
+/// `disabled` colour (the built-in orange when the table gives none) when
+/// the event played sets no colour of its own.
 class FeedbackNotifier {
  public:
   FeedbackNotifier(mapping::FeedbackTable table, input::InputSource& input) : table_(table), input_(input) {}
@@ -47,6 +50,7 @@ class FeedbackNotifier {
   mapping::FeedbackTable table_;
   input::InputSource& input_;
   FeedbackStatus last_;  ///< before the first tick: nothing connected, not enabled, link down
+  bool enabled_light_ = false;  ///< the last colour set was set while enabled (green, the weapons colours)
 };
 
 }  // namespace andros::run

@@ -11,6 +11,7 @@
 #include "andros/input/device_layout.hpp"
 #include "andros/input/snapshot.hpp"
 #include "andros/mapping/model.hpp"
+#include "andros/view/screen.hpp"
 
 namespace andros::view {
 
@@ -37,10 +38,17 @@ AxisUse axis_use(const AxisUses& uses, input::InputKey axis);
 std::string format_input_change(const input::InputEvent& event, const AxisUses& uses,
                                 const std::optional<input::DeviceLayout>& layout);
 
-/// The live screen: every button, axis, trigger and hat of the device, by
-/// name and number, each axis with its value, bar and deadzone.
+/// An 80x24 terminal less the column the display leaves free (the cursor never wraps).
+inline constexpr TermSize kInputsSize{79, 24};
+
+/// The live screen for a terminal of this size (the columns it may fill): every button, axis, trigger
+/// and hat of the device (a pad's hats its SDL mapping leaves out too), by
+/// name and number, each axis with its raw value, its value from -1 to 1,
+/// a bar as wide as the screen allows, whether the mapping would act on it
+/// and its deadzone. Narrow or short, it reflows (fewer button columns, no
+/// blank lines) before anything is cut.
 std::string render_inputs_screen(const input::InputState& state, const std::optional<input::DeviceLayout>& layout,
-                                 const AxisUses& uses, const std::string& heading);
+                                 const AxisUses& uses, const std::string& heading, TermSize size = kInputsSize);
 
 /// The tester's state between polls: the poll loop feeds it, the display
 /// thread reads the screen from it.
@@ -53,7 +61,7 @@ class InputsBoard {
   std::vector<std::string> update(const std::vector<input::InputEvent>& events,
                                   std::optional<input::DeviceLayout> layout);
   /// The screen now (render_inputs_screen); safe from another thread.
-  [[nodiscard]] std::string compose() const;
+  [[nodiscard]] std::string compose(TermSize size = kInputsSize) const;
 
  private:
   mutable std::mutex mutex_;

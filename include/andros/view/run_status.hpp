@@ -4,8 +4,10 @@
 // terminal, one log line per change.
 
 #include <mutex>
+#include <optional>
 #include <string>
 
+#include "andros/input/input_source.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/timing/frame_timing.hpp"
 #include "andros/view/status_view.hpp"
@@ -20,9 +22,18 @@ class RunStatusBoard {
   /// Called by the run loop after every tick (cheap: no formatting). The
   /// report is all the board learns: it holds no link and no engine.
   void observe(const run::TickReport& report);
+  /// The same, for a run whose input may be a live controller: on a connect,
+  /// first asks input what kind of device it is (set_game_controller). On the
+  /// thread that pumps input (SDL's).
+  void observe(const run::TickReport& report, const input::InputSource& input);
   /// After a reload: the robot and mapping file the view names, whether
   /// weapons are enabled, and the centre its gauges grow from.
   void set_mapping(std::string robot, std::string mapping_file, bool weapons, int center);
+  /// Whether the mapping reads game-controller names: at start and after a reload.
+  void set_pad_names(bool pad_names);
+  /// What kind of device the live controller is, told by whoever owns it (on
+  /// each connect, before the report of that tick): see joystick_note().
+  void set_game_controller(std::optional<bool> game_controller);
   /// The last status, copied under the lock: for the display thread, and
   /// after the run for the closing line.
   [[nodiscard]] RunStatus snapshot() const;
@@ -34,6 +45,7 @@ class RunStatusBoard {
   RunStatus status_;
   timing::FrameTiming timing_;
   bool first_tick_ = true;
+  bool was_connected_ = false;  ///< as the last report said, for observe(report, input)
 };
 
 /// "enabled", or why not ("deadman released"); while enabled, the inputs the
@@ -48,5 +60,11 @@ inline constexpr std::string_view kStoppedText =
 /// The operating state in words for the screen, the log and the service
 /// status: why nothing moves, or (enabled) what the engine still holds back.
 std::string state_text(const run::TickReport& report);
+
+/// Why a live controller does nothing although it is connected: SDL knows it
+/// only as a plain joystick (numbered buttons and axes) while the mapping
+/// reads game-controller names, which it never sends; with the two ways out.
+/// "" when that is not so.
+std::string joystick_note(bool pad_names, std::optional<bool> game_controller);
 
 }  // namespace andros::view

@@ -80,6 +80,11 @@ Screen text_screen(std::string_view text);
 /// The plain text of a line cut to width (no escapes).
 std::string plain(const Line& line, std::size_t width);
 
+/// text as lines of at most width characters (UTF-8 code points), broken at
+/// spaces where it can and inside a word longer than a line; every line
+/// after the first starts with indent spaces. Nothing is left out.
+std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent);
+
 /// Whether to use colour on this terminal: not with NO_COLOR set (any value,
 /// https://no-color.org), not for TERM unset, "dumb" or a terminal type
 /// known to have none (vt100, vt220, ...).

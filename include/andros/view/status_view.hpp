@@ -27,10 +27,22 @@ struct SignalGroup {
 };
 const std::vector<SignalGroup>& signal_groups();
 
+/// How switch_lines names a switch.
+enum class SwitchNames : std::uint8_t {
+  kSignal,    ///< the protocol's name (`zoom_down`): `monitor`, the vehicle's side
+  kOperator,  ///< the operator's words (protocol/words.hpp, "zoom out"): `run`
+};
+
 /// The switch groups of a frame, wrapped to width: active switches in upper
-/// case (reverse video in colour), idle ones lower case (dim). compact: only
-/// the active ones, one line a group, for a small terminal.
-std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact);
+/// case (reverse video in colour; a weapon white on red), idle ones lower
+/// case (dim). compact: only the active ones, one line a group, for a small
+/// terminal.
+std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact,
+                               SwitchNames names = SwitchNames::kSignal);
+
+/// The selectors' positions a frame sets, a position without a bit too:
+/// "speed medium   main video 1   inset off".
+Line selector_line(const protocol::DataBytes& data);
 
 /// The drive, pivot, arm speed and light gauges, and the frame in hex; drive
 /// and pivot grow from center (the mapping's rest while enabled) in a frame
@@ -54,11 +66,16 @@ struct RunStatus {
   bool supervisor_connected = false;
   bool supervisor_stop = false;  ///< the supervisor holds its stop
   mapping::ConsentState consent = mapping::ConsentState::kNotAsked;  ///< the supervisor's weapons consent
+  /// The live controller is a game controller to SDL (false: a plain
+  /// joystick, numbered inputs only); nullopt: none connected, or a script.
+  std::optional<bool> game_controller;
+  bool pad_names = true;         ///< the mapping reads game-controller names (leftshoulder, leftx...)
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
   std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;             ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
   mapping::SpeedLevel speed;     ///< the speed level (the mapping's `scale:`)
+  bool armed = false;            ///< in a weapons mode, an arming input held: a fire button fires
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;

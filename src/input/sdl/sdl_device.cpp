@@ -1,5 +1,7 @@
 #include "sdl_device.hpp"
 
+#include <algorithm>
+
 #include "controller_selection.hpp"
 
 namespace andros::input {
@@ -30,6 +32,26 @@ InputEvent make_event(InputEvent::Type type, InputKey key, int value, std::int64
 
 InputKey key(InputKind kind, int index) { return InputKey{kind, static_cast<std::uint16_t>(index)}; }
 
+/// The joystick hats no button or axis of the pad's SDL mapping reads: SDL's
+/// game-controller events never report them, so they are read as hats.
+std::vector<int> free_hats(SDL_GameController* pad, SDL_Joystick* joystick) {
+  std::vector<int> out;
+  const int hats = std::min(SDL_JoystickNumHats(joystick), kMaxHatIndex + 1);
+  for (int h = 0; h < hats; ++h) {
+    bool bound = false;
+    for (int b = 0; b < SDL_CONTROLLER_BUTTON_MAX && !bound; ++b) {
+      const auto bind = SDL_GameControllerGetBindForButton(pad, static_cast<SDL_GameControllerButton>(b));
+      bound = bind.bindType == SDL_CONTROLLER_BINDTYPE_HAT && bind.value.hat.hat == h;
+    }
+    for (int a = 0; a < SDL_CONTROLLER_AXIS_MAX && !bound; ++a) {
+      const auto bind = SDL_GameControllerGetBindForAxis(pad, static_cast<SDL_GameControllerAxis>(a));
+      bound = bind.bindType == SDL_CONTROLLER_BINDTYPE_HAT && bind.value.hat.hat == h;
+    }
+    if (!bound) out.push_back(h);
+  }
+  return out;
+}
+
 }  // namespace
 
 bool is_pad_trigger(InputKey k) {
@@ -43,6 +65,7 @@ std::unique_ptr<SdlDevice> SdlDevice::open(int device_index) {
     dev->pad_.reset(SDL_GameControllerOpen(device_index));
     if (!dev->pad_) return nullptr;
     dev->joystick_ = SDL_GameControllerGetJoystick(dev->pad_.get());
+    dev->free_hats_ = free_hats(dev->pad_.get(), dev->joystick_);
   } else {
     dev->joy_.reset(SDL_JoystickOpen(device_index));
     if (!dev->joy_) return nullptr;
@@ -57,7 +80,7 @@ std::unique_ptr<SdlDevice> SdlDevice::open(int device_index) {
 bool SdlDevice::attached() const { return SDL_JoystickGetAttached(joystick_) == SDL_TRUE; }
 
 DeviceLayout SdlDevice::layout() const {
-  DeviceLayout out{name_, guid_, pad_ != nullptr, {}, {}, 0};
+  DeviceLayout out{name_, guid_, pad_ != nullptr, {}, {}, 0, free_hats_};
   if (pad_) {
     for (int b = 0; b < SDL_CONTROLLER_BUTTON_MAX; ++b) {
       if (SDL_GameControllerHasButton(pad_.get(), static_cast<SDL_GameControllerButton>(b)) == SDL_TRUE) {
@@ -96,6 +119,10 @@ void SdlDevice::append_state(std::int64_t t_ms, std::vector<InputEvent>& out) co
       const int v = SDL_GameControllerGetAxis(pad_.get(), static_cast<SDL_GameControllerAxis>(a));
       if (v != 0) out.push_back(make_event(T::kAxis, key(InputKind::kPadAxis, a), v, t_ms));
     }
+    for (const int h : free_hats_) {
+      const int mask = SDL_JoystickGetHat(joystick_, h) & 0x0F;
+      if (mask != 0) out.push_back(make_event(T::kHat, key(InputKind::kHat, h * 4), mask, t_ms));
+    }
     return;
   }
   const int buttons = std::min(SDL_JoystickNumButtons(joystick_), kMaxJoystickIndex + 1);
@@ -128,6 +155,11 @@ std::optional<InputEvent> SdlDevice::translate(const SDL_Event& e, std::int64_t 
       case SDL_CONTROLLERAXISMOTION:
         if (e.caxis.which != id_ || e.caxis.axis >= SDL_CONTROLLER_AXIS_MAX) return std::nullopt;
         return make_event(T::kAxis, key(InputKind::kPadAxis, e.caxis.axis), e.caxis.value, t_ms);
+      case SDL_JOYHATMOTION:  // only a hat the pad's mapping leaves out: a mapped one is the D-pad's buttons
+        if (e.jhat.which != id_ || std::find(free_hats_.begin(), free_hats_.end(), e.jhat.hat) == free_hats_.end()) {
+          return std::nullopt;
+        }
+        return make_event(T::kHat, key(InputKind::kHat, e.jhat.hat * 4), e.jhat.value & 0x0F, t_ms);
       default: return std::nullopt;
     }
   }

@@ -54,6 +54,7 @@ class SdlDevice {
   SDL_JoystickID id_ = -1;
   std::string name_;
   std::string guid_;
+  std::vector<int> free_hats_;  // a game controller's hats its SDL mapping leaves out
 };
 
 /// A game controller's trigger axis (0..32767 in SDL's terms).

@@ -12,6 +12,14 @@ namespace {
 
 constexpr Uint32 kSdlSubsystems = SDL_INIT_EVENTS | SDL_INIT_JOYSTICK | SDL_INIT_GAMECONTROLLER;
 
+/// The most mappings a controller database may add. SDL keeps them in a
+/// list that each SDL_GameControllerAddMapping walks end to end (to find the
+/// controller's GUID, then to append): n mappings cost n*n/2 steps, and the
+/// 86,596 lines that fit the file limit took 96 s of CPU. The community
+/// gamecontrollerdb.txt has a few thousand lines for all platforms together
+/// (only this platform's are added); 5,000 take a tenth of a second.
+constexpr int kMaxControllerMappings = 5000;
+
 }  // namespace
 
 SdlSession::SdlSession() {
@@ -43,6 +51,12 @@ void load_controller_db(const std::string& path, const StopCheck& stop) {
     if (line.empty() || line[0] == '#') continue;
     const auto at = line.find("platform:");
     if (at != std::string::npos && line.compare(at, platform.size(), platform) != 0) continue;
+    if (added == kMaxControllerMappings) {
+      throw InputError(SourcePos{path, in.line_number(), 1},
+                       "more than " + std::to_string(kMaxControllerMappings) + " controller mappings for " +
+                           SDL_GetPlatform() + " (SDL's time to add them grows with the square of their number): " +
+                           "keep the lines of the controllers you use");
+    }
     if (SDL_GameControllerAddMapping(line.c_str()) < 0) {
       throw InputError(SourcePos{path, in.line_number(), 1}, std::string("bad SDL mapping: ") + SDL_GetError());
     }

@@ -62,7 +62,8 @@ TEST_F(InputTesterTest, APadShowsEveryNamedInputWithItsNumber) {
   EXPECT_NE(screen.find("* 11 dpup"), std::string::npos) << screen;
   EXPECT_NE(screen.find("    1 b "), std::string::npos) << screen;
   EXPECT_NE(screen.find("touchpad"), std::string::npos);
-  EXPECT_NE(screen.find("righttrigger  32767 [|==========] moves   deadzone 0.00 arm_speed\n"), std::string::npos) << screen;
+  EXPECT_NE(screen.find("righttrigger  32767  1.000 [|==========] moves   deadzone 0.00 arm_speed\n"), std::string::npos)
+      << screen;
 
   pad.unplug();
   EXPECT_EQ(poll(input, board), std::vector<std::string>{"260 disconnect"});
@@ -91,6 +92,24 @@ TEST_F(InputTesterTest, AJoystickShowsNumberedButtonsAxesAndHats) {
   const auto screen = board.compose();
   EXPECT_NE(screen.find("* 11 11"), std::string::npos) << screen;
   EXPECT_NE(screen.find("    0 hat0         up+left"), std::string::npos) << screen;
+}
+
+// Issue 19, finding 8: a hat the pad's SDL mapping leaves out is read as a
+// hat (SDL's game-controller events never report it), shown and reported.
+TEST_F(InputTesterTest, APadsHatOutsideItsMappingShows) {
+  VirtualDevice pad("Hat Pad", SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX, SDL_CONTROLLER_BUTTON_MAX, 1, 3);
+  SdlInput input(SdlInputOptions{});
+  view::InputsBoard board({}, "h");
+  ASSERT_EQ(poll(input, board).size(), 1U);
+  const auto layout = input.device();
+  ASSERT_TRUE(layout.has_value());
+  ASSERT_TRUE(layout->game_controller);
+  ASSERT_EQ(layout->free_hats, std::vector<int>{0});  // SDL maps a virtual pad's D-pad to buttons
+  pad.hat(0, SDL_HAT_DOWN);
+  EXPECT_EQ(poll(input, board), std::vector<std::string>{"40 hat 0 down"});
+  EXPECT_NE(board.compose().find("hats outside its SDL mapping (bind them as hatNup, ...)\n    0 hat0         down\n"),
+            std::string::npos)
+      << board.compose();
 }
 
 }  // namespace

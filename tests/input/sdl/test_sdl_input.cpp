@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "andros/input/sdl_input.hpp"
+#include "andros/view/run_status.hpp"
 #include "support/virtual_device.hpp"
 
 namespace andros::input {
@@ -173,6 +174,52 @@ TEST_F(SdlInputTest, PollsAreNonBlockingAndQuietWithoutChanges) {
   EXPECT_TRUE(input.poll(80).empty());
   EXPECT_TRUE(input.poll(120).empty());
   EXPECT_FALSE(input.finished(120));
+}
+
+// Issue 19, finding 6: a controller SDL knows only as a plain joystick sends
+// numbered inputs, never the game-controller names a mapping reads. The board,
+// told by the input on the connect, says so (with the ways out) where it would
+// say "deadman released" forever; a game controller keeps the plain words.
+TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
+  for (const bool pad : {false, true}) {
+    auto device = pad ? VirtualDevice::pad("Hint Pad") : VirtualDevice::stick("Hint Stick");
+    SdlInput input(SdlInputOptions{});
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    view::RunStatusBoard board(view::RunStatus{});
+    board.set_pad_names(true);  // hd1's: leftshoulder, leftx...
+    run::TickReport r;
+    r.connected = true;
+    r.controller = state_.name();
+    r.state = run::OpState::kNotEnabled;
+    r.engine.enable = mapping::EnableState::kDeadmanReleased;
+    board.observe(r, input);
+    const auto status = board.snapshot();
+    EXPECT_EQ(status.game_controller, std::optional<bool>(pad));
+    const auto screen = view::render_run_view(status, {80, 24}).render({80, 24}, false);
+    if (pad) {
+      EXPECT_EQ(status.enable_text, "deadman released");
+      EXPECT_EQ(screen.find("plain joystick"), std::string::npos) << screen;
+    } else {
+      EXPECT_NE(status.enable_text.find("not a game controller"), std::string::npos) << status.enable_text;
+      EXPECT_NE(status.enable_text.find("--controller-db FILE"), std::string::npos) << status.enable_text;
+      EXPECT_NE(status.enable_text.find("andros-bridge learn"), std::string::npos) << status.enable_text;
+      EXPECT_NE(screen.find("Hint Stick  (a plain joystick to SDL)"), std::string::npos) << screen;
+      EXPECT_NE(screen.find("--controller-db FILE"), std::string::npos) << screen;  // the state wraps, whole
+    }
+    // A mapping of numbered inputs (learned for this stick) needs no hint.
+    board.set_pad_names(false);
+    board.observe(r, input);
+    EXPECT_EQ(board.snapshot().enable_text, "deadman released");
+    // Unplugged: nothing is said of a device that is not there.
+    device.unplug();
+    tick(input);
+    r.connected = false;
+    r.state = run::OpState::kNoController;
+    board.observe(r, input);
+    EXPECT_EQ(board.snapshot().game_controller, std::nullopt);
+    state_ = InputState{};
+  }
 }
 
 }  // namespace
