@@ -20,6 +20,7 @@ EngineSetup load_engine(const Settings& settings) {
   setup.mapping_file = mapping->file;
   setup.center = mapping->center;
   setup.feedback = mapping->feedback;
+  setup.sources = run::read_mapping_sources(mapping->chain);
   setup.frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   return setup;
@@ -162,6 +163,10 @@ void RunReload::begin(const std::string& mapping) {
 std::optional<ReloadOutcome> RunReload::finish() {
   auto result = worker_.poll();
   if (!result) return std::nullopt;
+  if (result->settings) {
+    const EngineSetup& s = result->setup;
+    applied_ = Applied{s.robot, s.mapping_file, s.center, s.sources};
+  }
   return apply_reload(std::move(*result), to_);
 }
 

@@ -17,6 +17,7 @@
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
+#include "andros/run/session.hpp"
 #include "andros/view/run_status.hpp"
 #include "run_service.hpp"
 
@@ -30,6 +31,7 @@ struct EngineSetup {
   std::string mapping_file;  ///< the file loaded
   int center = 128;          ///< drive and pivot's rest value (for the gauges)
   mapping::FeedbackTable feedback;
+  std::vector<run::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
 };
 
 /// Loads the mapping the settings name and builds its engine. Throws
@@ -135,10 +137,20 @@ class RunReload {
   void begin(const std::string& mapping = "");
   std::optional<ReloadOutcome> finish();
 
+  /// What the last reload that was applied put in place (the flight recorder's).
+  struct Applied {
+    std::string robot;
+    std::string mapping_file;
+    int center = 128;
+    std::vector<run::MappingSource> sources;
+  };
+  [[nodiscard]] const Applied& applied() const { return applied_; }
+
  private:
   GivenFlags flags_;
   ReloadTargets to_;
   ReloadWorker worker_;
+  Applied applied_;
 };
 
 }  // namespace andros::cli

@@ -63,6 +63,7 @@ void InputState::set_button(InputKey key, bool down, bool initial) {
 
 void InputState::apply(const InputEvent& event) {
   using T = InputEvent::Type;
+  if (keep_applied_) applied_.push_back(event);
   if (event.is_fault()) {
     faults_.push_back(event);
     return;

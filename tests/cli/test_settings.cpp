@@ -44,6 +44,9 @@ std::string sample(const Setting& row) {
   if (flag == "--rate") return "12.5";
   if (flag == "--weapons") return "enabled";
   if (flag == "--format") return "jsonl";
+  if (flag == "--no-record") return "disabled";
+  if (flag == "--record-max-mb") return "20";
+  if (flag == "--record-max-days") return "7";
   return "/abs/file";  // --config, --mapping, --input, --output
 }
 
@@ -59,7 +62,7 @@ TEST(Settings, EveryKeyedRowReadsTheSameFromTheFileAndTheFlag) {
     EXPECT_EQ(row.show(file), row.show(cli)) << row.key;
     EXPECT_NE(row.show(file), row.show(Settings{})) << row.key << ": the sample is the default";
   }
-  EXPECT_EQ(keyed, 8);  // the legacy four and rate, mapping, weapons, input
+  EXPECT_EQ(keyed, 12);  // the legacy four and rate, mapping, weapons, input; the recorder's four
 }
 
 TEST(Settings, EveryRowTakesBackWhatItShows) {

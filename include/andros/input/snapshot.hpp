@@ -110,6 +110,11 @@ class InputState {
   /// answers them; the snapshot itself ignores them).
   [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
 
+  /// Also keeps every event applied from now on, faults included, for
+  /// take_applied(): what the flight recorder writes (docs/recording.md).
+  void keep_applied(bool on) { keep_applied_ = on; }
+  [[nodiscard]] std::vector<InputEvent> take_applied() { return std::exchange(applied_, {}); }
+
  private:
   void set_button(InputKey key, bool down, bool initial);
 
@@ -120,6 +125,8 @@ class InputState {
   std::map<InputKey, ButtonState> buttons_;
   std::map<InputKey, std::int16_t> axes_;
   std::vector<InputEvent> faults_;
+  bool keep_applied_ = false;
+  std::vector<InputEvent> applied_;
 };
 
 }  // namespace andros::input
