@@ -218,7 +218,6 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
   RecordedRun live;
   live.run(kDriveWithFaults);
   ASSERT_TRUE(verify_session(live.session).intact);
-  if (std::getenv("ANDROS_KEEP_SESSION") != nullptr) std::filesystem::copy_file(live.session, std::getenv("ANDROS_KEEP_SESSION"), std::filesystem::copy_options::overwrite_existing);
   const Session s = read_session(live.session);
   // What happened is in it: the stalls, the pause, the link loss, the reload.
   EXPECT_EQ(std::count_if(s.frames.begin(), s.frames.end(), [](const FrameRecord& f) { return f.gap == 2; }), 2);
