@@ -86,11 +86,11 @@ view::PlotInput from_session(const PlotOptions& opt) {
   const auto s = run::read_session(opt.source);
   view::PlotInput in;
   in.title = fmt::format("{} drive, mapping {}", s.settings.robot, file_name(s.settings.mapping_file));
-  in.settings = fmt::format("session {} recorded {} on {} by andros-bridge {}; {} Hz, code {:02X}, {}, input {}",
-                            file_name(opt.source), s.started, s.host, s.version,
-                            timing::rate_text(s.settings.rate_millihertz), s.settings.code,
-                            weapons_text(s.settings.weapons), s.settings.input);
+  in.settings = fmt::format("{} Hz, code {:02X}, {}, input {}, port {}", timing::rate_text(s.settings.rate_millihertz),
+                            s.settings.code, weapons_text(s.settings.weapons), s.settings.input, s.settings.port);
   if (!s.reloads.empty()) in.settings += fmt::format(", {} reload(s)", s.reloads.size());
+  in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started,
+                          s.host, s.version);
   in.samples = view::plot_samples(s);
   return in;
 }
@@ -104,8 +104,9 @@ view::PlotInput from_script(const PlotOptions& opt) {
   auto script = input::checked_event_script(TextReader::open(opt.source, kEventScriptLimits));
   view::PlotInput in;
   in.title = fmt::format("{} drive, mapping {}", mapping->robot.value_or(settings.robot), file_name(mapping->file));
-  in.settings = fmt::format("replay of {}; {} Hz, code {:02X}, {}", file_name(opt.source),
-                            timing::rate_text(settings.rate.millihertz), settings.code, weapons_text(settings.weapons));
+  in.settings = fmt::format("{} Hz, code {:02X}, {}", timing::rate_text(settings.rate.millihertz), settings.code,
+                            weapons_text(settings.weapons));
+  in.source = "replay of " + file_name(opt.source);
   input::ScriptPlayer player(script);
   run::ReplayOptions replay{.rate_millihertz = settings.rate.millihertz,
                             .engine = mapping::EngineOptions{settings.weapons, settings.code}};

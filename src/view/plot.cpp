@@ -26,7 +26,7 @@ constexpr double kDriveTop = 162;
 constexpr double kDriveHeight = 190;
 constexpr double kSignalsTop = 392;
 constexpr double kRowHeight = 13;
-constexpr double kBottom = 760;
+constexpr double kLastRow = 752;  // the signals' rows end above it
 
 /// The operating states as the plot groups them.
 struct Band {
@@ -119,13 +119,33 @@ std::string seconds_text(std::int64_t ms) {
   return ms % 1000 == 0 ? fmt::format("{}", ms / 1000) : fmt::format("{:.1f}", static_cast<double>(ms) / 1000.0);
 }
 
-void draw_time_grid(Page& page) {
+/// The signals that were on at some sample, in frame order.
+std::vector<std::size_t> signals_on(const std::vector<const PlotSample*>& s) {
+  std::vector<std::size_t> on;
+  for (std::size_t i = 0; i < protocol::kSignals.size(); ++i) {
+    const auto& sig = protocol::kSignals[i];
+    if (!sig.is_bit()) continue;
+    const bool seen = std::any_of(s.begin(), s.end(), [&sig](const PlotSample* p) {
+      return p->sent && (p->data[sig.byte] >> sig.bit & 1) != 0;
+    });
+    if (seen) on.push_back(i);
+  }
+  return on;
+}
+
+/// Rows of signals that fit; the last says how many more when they do not all fit.
+std::size_t signal_rows(std::size_t on) {
+  const auto fit = static_cast<std::size_t>((kLastRow - kSignalsTop) / kRowHeight);
+  return std::min(on, fit);
+}
+
+void draw_time_grid(Page& page, double bottom) {
   const std::int64_t step = time_step_ms(page.to() - page.from());
   for (std::int64_t t = (page.from() + step - 1) / step * step; t <= page.to(); t += step) {
     const double x = page.x(t);
-    page.line(x, kBandTop, x, kBottom - 14, "#e6e6e6", 0.6);
+    page.line(x, kBandTop, x, bottom, "#e6e6e6", 0.6);
     page.text(x, kDriveTop + kDriveHeight + 14, seconds_text(t), " font-size=\"10\" text-anchor=\"middle\"");
-    page.text(x, kBottom, seconds_text(t), " font-size=\"10\" text-anchor=\"middle\"");
+    page.text(x, bottom + 12, seconds_text(t), " font-size=\"10\" text-anchor=\"middle\"");
   }
   page.text(kRight, kDriveTop + kDriveHeight + 28, "time (s)", " font-size=\"10\" text-anchor=\"end\"");
 }
@@ -223,20 +243,11 @@ void draw_drive(Page& page, const std::vector<const PlotSample*>& s) {
   page.text(kLeft, kDriveTop - 4, "frames sent (gaps: none sent); 128 is centre", " font-size=\"10\" fill=\"#555\"");
 }
 
-void draw_signals(Page& page, const std::vector<const PlotSample*>& s) {
-  std::vector<std::size_t> on;  // signals on at some sample, in frame order
-  for (std::size_t i = 0; i < protocol::kSignals.size(); ++i) {
-    const auto& sig = protocol::kSignals[i];
-    if (!sig.is_bit()) continue;
-    const bool seen = std::any_of(s.begin(), s.end(), [&sig](const PlotSample* p) {
-      return p->sent && (p->data[sig.byte] >> sig.bit & 1) != 0;
-    });
-    if (seen) on.push_back(i);
-  }
+void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std::vector<std::size_t>& on) {
   page.text(kLeft, kSignalsTop - 8,
             on.empty() ? "switch signals: none was on" : "switch signals that were on (weapons in red)",
             " font-size=\"11\"");
-  const auto rows = static_cast<std::size_t>((kBottom - 20 - kSignalsTop) / kRowHeight);
+  const std::size_t rows = signal_rows(on.size());
   const std::size_t shown = on.size() > rows ? rows - 1 : on.size();
   for (std::size_t r = 0; r < shown; ++r) {
     const auto& sig = protocol::kSignals[on[r]];
@@ -301,15 +312,18 @@ std::string render_plot_svg(const PlotInput& in) {
       kWidth, kHeight));
   page.rect(0, 0, kWidth, kHeight, "white");
   page.text(kLeft, 30, in.title, " font-size=\"17\" font-weight=\"bold\"");
-  page.text(kLeft, 50, in.settings, " font-size=\"11\" fill=\"#333\"");
-  page.text(kLeft, 66,
-            fmt::format("{} to {} s, {} ticks", seconds_text(page.from()), seconds_text(page.to()), shown.size()),
+  page.text(kLeft, 48, in.settings, " font-size=\"11\" fill=\"#333\"");
+  page.text(kLeft, 64,
+            fmt::format("{}{} to {} s, {} ticks", in.source.empty() ? "" : in.source + "; ", seconds_text(page.from()),
+                        seconds_text(page.to()), shown.size()),
             " font-size=\"10\" fill=\"#555\"");
-  draw_time_grid(page);
+  const auto on = signals_on(shown);
+  const double bottom = kSignalsTop + kRowHeight * static_cast<double>(std::max<std::size_t>(signal_rows(on.size()), 1));
+  draw_time_grid(page, bottom);
   draw_bands(page, shown);
   draw_layers(page, shown);
   draw_drive(page, shown);
-  draw_signals(page, shown);
+  draw_signals(page, shown, on);
   page.add("</svg>\n");
   return page.svg();
 }

@@ -25,7 +25,8 @@ struct PlotSample {
 
 struct PlotInput {
   std::string title;     ///< robot and mapping
-  std::string settings;  ///< rate, code, weapons, where it came from
+  std::string settings;  ///< rate, code, weapons, input
+  std::string source;    ///< where it came from: a session (when, where, by which version), a replayed script
   std::vector<PlotSample> samples;  ///< in time order
   std::int64_t from_ms = 0;
   std::int64_t to_ms = -1;  ///< -1: to the last sample
