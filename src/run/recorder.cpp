@@ -58,7 +58,7 @@ namespace {
 
 /// How often the thread looks at the queue: the loop never wakes it (no
 /// system call on the loop's side of the queue).
-constexpr auto kPollPeriod = std::chrono::milliseconds(100);
+constexpr auto kPollPeriod = std::chrono::milliseconds(250);
 constexpr auto kSyncPeriod = std::chrono::seconds(1);
 constexpr std::size_t kBatchBytes = 64 * 1024;
 
