@@ -120,6 +120,10 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", engine.robot, engine.mapping_file, config.port,
                config.code, config.weapons ? ", WEAPONS ENABLED" : "");
 
+  // The flight recorder (docs/recording.md): a thread of its own, never in the loop's way.
+  const auto recording = RunRecording::start(config, engine, *link, *input);
+  input::InputSource& loop_input = recording ? recording->input() : *input;
+
   view::RunStatus initial;
   initial.robot = engine.robot;
   initial.mapping_file = engine.mapping_file;
@@ -130,9 +134,10 @@ int run_bridge(const RunOptions& opt) {
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
-  const auto compose = [&board, &sim](view::TermSize size) {
+  const auto compose = [&board, &sim, &recording](view::TermSize size) {
     view::RunStatus status = board.snapshot();
     if (sim) status.vehicle = sim->snapshot();
+    if (recording) recording->describe(status);
     return view::render_run_view(status, size);
   };
   std::optional<view::StatusDisplay> display;
@@ -141,9 +146,6 @@ int run_bridge(const RunOptions& opt) {
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
-  // The flight recorder (docs/recording.md): a thread of its own, never in the loop's way.
-  const auto recording = RunRecording::start(config, engine, *link, *input);
-  input::InputSource& loop_input = recording ? recording->input() : *input;
   RealClock clock;
   run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.

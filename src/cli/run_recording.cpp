@@ -96,6 +96,18 @@ void RunRecording::observe(const run::TickReport& report) {
   }
 }
 
+void RunRecording::describe(view::RunStatus& status) const {
+  const auto missing = writer_.dropped() + writer_.lost();
+  status.recorder_failing = missing != 0;
+  if (missing == 0) {
+    status.recorder = path_.string();
+    return;
+  }
+  const auto error = writer_.error();
+  status.recorder = std::to_string(missing) + " records dropped (" + (error.empty() ? "the disk is not keeping up" : error) +
+                    "): " + path_.filename().string() + " is incomplete";
+}
+
 void RunRecording::finish(const std::string& why) {
   recorder_.end(why);
   const bool whole = writer_.close(1000);

@@ -11,6 +11,7 @@
 #include "andros/input/input_source.hpp"
 #include "andros/link/link.hpp"
 #include "andros/run/recorder.hpp"
+#include "andros/view/status_view.hpp"
 #include "run_reload.hpp"
 #include "session_files.hpp"
 
@@ -32,6 +33,9 @@ class RunRecording {
   /// After the run: the end record, the writer closed (a stalled disk is
   /// waited for a second at most), the closing line logged, the folder rotated.
   void finish(const std::string& why);
+
+  /// For the status screen (any thread): the session, or what was dropped.
+  void describe(view::RunStatus& status) const;
 
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
