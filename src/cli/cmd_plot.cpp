@@ -91,6 +91,9 @@ view::PlotInput from_session(const PlotOptions& opt) {
   if (!s.reloads.empty()) in.settings += fmt::format(", {} reload(s)", s.reloads.size());
   in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started,
                           s.host, s.version);
+  // Drawn all the same, but never passed off as a whole record.
+  if (const auto check = run::verify_session(opt.source); !check.intact) in.source += "; NOT INTACT: " + check.problem;
+  else if (s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
   in.samples = view::plot_samples(s);
   return in;
 }

@@ -55,6 +55,12 @@ paths = [re.findall(r'<path d="([^"]*)"', open(f).read()) for f in sys.argv[1:]]
 sys.exit(0 if paths[0] == paths[1] and len(paths[0]) == 2 else 1)
 PY
 
+# A session that is not intact is drawn, and says so.
+python3 -c 'import sys; p=sys.argv[1]; l=open(p).read().split("\n"); l[7],l[8]=l[8],l[7]; open(sys.argv[2],"w").write("\n".join(l))' \
+  "$session" "$TMP/swapped.andros-session"
+expect_exit 0 "$BIN" plot "$TMP/swapped.andros-session" --output "$TMP/swapped.svg"
+svg_has "$TMP/swapped.svg" "NOT INTACT: record 7 reordered"
+
 # Errors: one line, exit 2 for bad input, 1 when the file cannot be written.
 expect_exit 2 "$BIN" plot "$TMP/none.events"
 expect_one_line_stderr
