@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libsdl2-dev libyaml-cpp-dev libspdlog-dev libcli11-dev nlohmann-json3-dev
+  libsdl2-dev libyaml-cpp-dev libspdlog-dev libcli11-dev nlohmann-json3-dev libssl-dev
   libgtest-dev libgmock-dev python3 groff-base
 )
 packages+=("$@")  # callers may ask for more (e.g. clang for the fuzzers)

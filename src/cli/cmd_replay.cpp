@@ -13,6 +13,8 @@
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/frame_output.hpp"
 #include "andros/run/replay.hpp"
+#include "andros/run/session.hpp"
+#include "andros/run/session_replay.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {
@@ -32,7 +34,41 @@ void write_frames(const Settings& opt, const std::function<void(std::ostream&)>&
   out.commit();
 }
 
-void run_replay(const ReplayOptions& opt) {
+/// A flight recorder's session (its first line says so), rather than an event script.
+bool is_session_file(const std::string& path) {
+  if (path == "-" || !std::filesystem::is_regular_file(path)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string first(64, '\0');
+  in.read(first.data(), static_cast<std::streamsize>(first.size()));
+  first.resize(static_cast<std::size_t>(in.gcount()));
+  return run::is_session_start(first);
+}
+
+/// A session replayed with its own settings and mapping: are its frames what the loop makes again?
+int replay_session_file(const ReplayOptions& opt) {
+  for (const auto& row : settings_table()) {
+    const auto flag = flag_name(row);
+    if ((row.commands & kReplay) != 0 && opt.settings->given(flag)) {
+      throw InputError(SourcePos{std::string(flag)}, "not for a session: it replays with the settings it recorded");
+    }
+  }
+  const auto check = run::verify_session(opt.events);
+  if (!check.intact) {
+    std::cout << "NOT INTACT: " << check.problem << " (andros-bridge verify)\n";
+    return kExitRuntime;
+  }
+  const auto session = run::read_session(opt.events);
+  const auto result = run::replay_session(session);
+  if (!result.identical) {
+    std::cout << "DIFFERENT after " << result.compared << " identical frames: " << result.difference << "\n";
+    return kExitRuntime;
+  }
+  std::cout << result.compared << " frames identical\n";
+  return kExitOk;
+}
+
+int run_replay(const ReplayOptions& opt) {
+  if (is_session_file(opt.events)) return replay_session_file(opt);
   // Everything is checked, the whole script included, before a frame is written.
   if (opt.settings->given("--robot") && opt.settings->given("--mapping")) {
     throw InputError("replay: give --robot or --mapping, not both");
@@ -53,6 +89,7 @@ void run_replay(const ReplayOptions& opt) {
     run::replay(player, std::move(engine), replay_options,
                 [&](std::int64_t t, const protocol::DataBytes& data) { protocol::write_frame(out, settings.format, t, data); });
   });
+  return kExitOk;
 }
 
 }  // namespace
@@ -65,16 +102,15 @@ void add_replay_command(CLI::App& app, int& exit_code) {
       "frames the vehicle receives: one every 1000/rate ms from t=0 through the script's end.\n"
       "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
       "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
-      "any machine, at any speed.");
+      "any machine, at any speed. Given a flight recorder's session (docs/recording.md), replays\n"
+      "it with its own settings and mapping and prints 'N frames identical', or the first\n"
+      "frame that differs (exit 1).");
   cmd->add_option("EVENTS", opt->events,
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
-                  "before the first frame is written")
+                  "before the first frame is written; or a session file")
       ->required();
   opt->settings = std::make_unique<CommandLine>(*cmd, kReplay);
-  cmd->callback([opt, &exit_code] {
-    run_replay(*opt);
-    exit_code = kExitOk;
-  });
+  cmd->callback([opt, &exit_code] { exit_code = run_replay(*opt); });
 }
 
 }  // namespace andros::cli

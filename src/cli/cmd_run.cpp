@@ -24,6 +24,7 @@
 #include "andros/view/status_display.hpp"
 #include "commands.hpp"
 #include "run_input.hpp"
+#include "run_recording.hpp"
 #include "run_reload.hpp"
 #include "run_service.hpp"
 #include "sdl_options.hpp"
@@ -131,6 +132,10 @@ int run_bridge(const RunOptions& opt) {
   spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", engine.robot, engine.mapping_file, config.port,
                config.code, config.weapons ? ", WEAPONS ENABLED" : "");
 
+  // The flight recorder (docs/recording.md): a thread of its own, never in the loop's way.
+  const auto recording = RunRecording::start(config, engine, *link, *input);
+  input::InputSource& loop_input = recording ? recording->input() : *input;
+
   view::RunStatus initial;
   initial.robot = engine.robot;
   initial.mapping_file = engine.mapping_file;
@@ -142,9 +147,10 @@ int run_bridge(const RunOptions& opt) {
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
-  const auto compose = [&board, &sim](view::TermSize size) {
+  const auto compose = [&board, &sim, &recording](view::TermSize size) {
     view::RunStatus status = board.snapshot();
     if (sim) status.vehicle = sim->snapshot();
+    if (recording) recording->describe(status);
     return view::render_run_view(status, size);
   };
   std::optional<view::StatusDisplay> display;
@@ -154,7 +160,7 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   RealClock clock;
-  run::Bridge bridge(clock, *input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
@@ -170,7 +176,9 @@ int run_bridge(const RunOptions& opt) {
     reload.begin(mapping.empty() ? "" : beside(config.input, mapping));
   };
   control.finish_reload = [&] { return reload.finish(); };
+  if (recording) control = recording->control(std::move(control), config, reload);
   bridge.run(control, [&](const run::TickReport& r) {
+    if (recording) recording->observe(r);
     board.observe(r, *input);  // on the loop's thread, which owns SDL: it asks what kind a new controller is
     feedback.observe(run::feedback_status(r));
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
@@ -182,6 +190,7 @@ int run_bridge(const RunOptions& opt) {
   const auto end = board.snapshot();
   std::string why = "end of the input";
   if (stop.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(stop.signal_number());
+  if (recording) recording->finish(why);
   spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why,
                end.link.sent, end.link.busy, end.link.down);
   if (sim) {

@@ -43,7 +43,7 @@ std::optional<std::string> GivenFlags::given(std::string_view flag) const {
 std::optional<std::string> CommandLine::given(std::string_view flag) const {
   for (const auto& entry : entries_) {
     if (flag_name(*entry.row) != flag || entry.option->count() == 0) continue;
-    return entry.row->value_name.empty() ? std::string("enabled") : entry.text;
+    return entry.row->value_name.empty() ? std::string(switch_text(*entry.row)) : entry.text;
   }
   return std::nullopt;
 }
@@ -52,7 +52,7 @@ GivenFlags CommandLine::given_flags() const {
   GivenFlags flags{command_, {}};
   for (const auto& entry : entries_) {
     if (entry.option->count() == 0) continue;
-    flags.values.emplace_back(entry.row, entry.row->value_name.empty() ? std::string("enabled") : entry.text);
+    flags.values.emplace_back(entry.row, entry.row->value_name.empty() ? std::string(switch_text(*entry.row)) : entry.text);
   }
   return flags;
 }

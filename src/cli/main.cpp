@@ -138,6 +138,9 @@ int main(int argc, char** argv) {
   andros::cli::add_sheet_command(app, exit_code);
   andros::cli::add_learn_command(app, exit_code);
   andros::cli::add_inputs_command(app, exit_code);
+  andros::cli::add_verify_command(app, exit_code);
+  andros::cli::add_sessions_command(app, exit_code);
+  andros::cli::add_plot_command(app, exit_code);
   refuse_empty_values(app);
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);

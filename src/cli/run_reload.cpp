@@ -43,6 +43,7 @@ EngineSetup load_engine(const Settings& settings) {
   setup.feedback = mapping->feedback;
   setup.supervisor_buttons = mapping->supervisor.has_value();
   setup.pad_names = reads_pad_names(*mapping);
+  setup.sources = run::read_mapping_sources(mapping->chain);
   setup.frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   return setup;
@@ -187,6 +188,10 @@ void RunReload::begin(const std::string& mapping) {
 std::optional<ReloadOutcome> RunReload::finish() {
   auto result = worker_.poll();
   if (!result) return std::nullopt;
+  if (result->settings) {
+    const EngineSetup& s = result->setup;
+    applied_ = Applied{s.robot, s.mapping_file, s.center, s.sources};
+  }
   return apply_reload(std::move(*result), to_);
 }
 

@@ -17,6 +17,7 @@
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
+#include "andros/run/session.hpp"
 #include "andros/view/run_status.hpp"
 #include "run_service.hpp"
 
@@ -32,6 +33,7 @@ struct EngineSetup {
   bool pad_names = true;     ///< it reads game-controller names (a plain joystick sends none)
   mapping::FeedbackTable feedback;
   bool supervisor_buttons = false;  ///< the mapping has a `supervisor:` section
+  std::vector<run::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
 };
 
 /// Loads the mapping the settings name and builds its engine. Throws
@@ -137,10 +139,20 @@ class RunReload {
   void begin(const std::string& mapping = "");
   std::optional<ReloadOutcome> finish();
 
+  /// What the last reload that was applied put in place (the flight recorder's).
+  struct Applied {
+    std::string robot;
+    std::string mapping_file;
+    int center = 128;
+    std::vector<run::MappingSource> sources;
+  };
+  [[nodiscard]] const Applied& applied() const { return applied_; }
+
  private:
   GivenFlags flags_;
   ReloadTargets to_;
   ReloadWorker worker_;
+  Applied applied_;
 };
 
 }  // namespace andros::cli

@@ -41,7 +41,7 @@ void parse_supervisor(std::string_view t, const SourcePos& p, Settings& s) {
 
 // The rows, in the legacy file's key order (its four keys, then the bridge's),
 // then the settings that only a flag sets.
-const std::array<Setting, 16> kTable = {{
+const std::array<Setting, 20> kTable = {{
     {"", "--config", "FILE", kRun,
      "the config file (key=value, docs/running.md); default: "
      "$XDG_CONFIG_HOME/andros-bridge/andros-bridge.conf, then /etc/andros-bridge/andros-bridge.conf, if present",
@@ -59,7 +59,7 @@ const std::array<Setting, 16> kTable = {{
        s.port_pos = p;
      },
      [](const Settings& s) { return s.port; }, false},
-    {"robot", "--robot", "NAME", kRun | kReplay, "the robot type (any case; the vehicle's name, HD-1 or V-A1, too), whose shipped mapping is used: {}",
+    {"robot", "--robot", "NAME", kRun | kReplay | kPlot, "the robot type (any case; the vehicle's name, HD-1 or V-A1, too), whose shipped mapping is used: {}",
      protocol::robot_list,
      [](std::string_view t, const SourcePos& p, Settings& s) {
        const auto robot = protocol::canonical_robot(t);
@@ -67,18 +67,18 @@ const std::array<Setting, 16> kTable = {{
        s.robot = *robot;
      },
      [](const Settings& s) { return s.robot; }, false},
-    {"code", "--code", "HEX", kRun | kReplay, "the switchbox's dip-switch code for byte 11, in hex", nullptr,
+    {"code", "--code", "HEX", kRun | kReplay | kPlot, "the switchbox's dip-switch code for byte 11, in hex", nullptr,
      [](std::string_view t, const SourcePos& p, Settings& s) { s.code = parse_code(t, p); },
      [](const Settings& s) { return code_text(s.code); }, false},
-    {"rate", "--rate", "HZ", kRun | kReplay,
+    {"rate", "--rate", "HZ", kRun | kReplay | kPlot,
      "frames per second, such as 25 or 12.5 (at least 1, at most 3 decimals); rate x 360 bits must fit the "
      "baud ({})",
      rate_detail, [](std::string_view t, const SourcePos& p, Settings& s) { s.rate = timing::parse_rate(t, p); },
      [](const Settings& s) { return timing::rate_text(s.rate.millihertz); }, false},
-    {"mapping", "--mapping", "FILE", kRun | kReplay, "a mapping file instead of the robot's shipped one", nullptr,
+    {"mapping", "--mapping", "FILE", kRun | kReplay | kPlot, "a mapping file instead of the robot's shipped one", nullptr,
      [](std::string_view t, const SourcePos&, Settings& s) { s.mapping = std::string(t); },
      [](const Settings& s) { return s.mapping; }, true},
-    {"weapons", "--weapons", "", kRun | kReplay,
+    {"weapons", "--weapons", "", kRun | kReplay | kPlot,
      "enable weapon signals (they still need the deadman and the arming input)", nullptr,
      [](std::string_view t, const SourcePos& p, Settings& s) { s.weapons = parse_weapons(t, p); },
      [](const Settings& s) { return std::string(s.weapons ? "enabled" : "disabled"); }, false},
@@ -90,6 +90,29 @@ const std::array<Setting, 16> kTable = {{
      "a second controller, the supervisor's, chosen as --controller chooses (never the same one): its stop and "
      "weapons consent are the mapping's 'supervisor:' buttons, and driving needs it connected too. Default: none",
      nullptr, parse_supervisor, [](const Settings& s) { return s.supervisor; }, false},
+    {"record", "--no-record", "", kRun,
+     "don't keep the flight recorder's session of this run (config: record=disabled; docs/recording.md)", nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) { s.record = parse_switch(t, "record", p); },
+     [](const Settings& s) { return std::string(s.record ? "enabled" : "disabled"); }, false},
+    {"record_dir", "--record-dir", "DIR", kRun,
+     "where sessions are kept; default $STATE_DIRECTORY (the service's), else $XDG_STATE_HOME/andros-bridge, else "
+     "~/.local/state/andros-bridge",
+     nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.record_dir = std::string(t); },
+     [](const Settings& s) { return s.record_dir; }, true},
+    {"record_max_mb", "--record-max-mb", "MB", kRun,
+     "the sessions kept take at most this many megabytes (10^6 bytes); the oldest are removed first, never the "
+     "running one",
+     nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) {
+       s.record_max_mb = parse_integer(t, 1, 1'000'000'000, "record_max_mb", p);
+     },
+     [](const Settings& s) { return std::to_string(s.record_max_mb); }, false},
+    {"record_max_days", "--record-max-days", "DAYS", kRun, "sessions last written longer ago than this are removed",
+     nullptr,
+     [](std::string_view t, const SourcePos& p, Settings& s) {
+       s.record_max_days = static_cast<int>(parse_integer(t, 1, 100'000, "record_max_days", p));
+     },
+     [](const Settings& s) { return std::to_string(s.record_max_days); }, false},
     {"", "--code", "HEX", kMonitor, "also count frames whose byte 11 differs from this code as invalid", nullptr,
      [](std::string_view t, const SourcePos& p, Settings& s) { s.expected_code = parse_code(t, p); },
      [](const Settings& s) { return s.expected_code ? code_text(*s.expected_code) : std::string(); }, false},
@@ -172,11 +195,17 @@ int parse_baud(std::string_view text, const SourcePos& pos) {
   throw InputError(pos, "baud " + std::string(text) + " is not one of " + baud_list());
 }
 
-bool parse_weapons(std::string_view text, const SourcePos& pos) {
+bool parse_weapons(std::string_view text, const SourcePos& pos) { return parse_switch(text, "weapons", pos); }
+
+bool parse_switch(std::string_view text, std::string_view name, const SourcePos& pos) {
   const auto v = to_lower(text);
   if (v == "enabled" || v == "true" || v == "yes" || v == "on" || v == "1") return true;
   if (v == "disabled" || v == "false" || v == "no" || v == "off" || v == "0") return false;
-  throw InputError(pos, "weapons " + quote(text) + " must be enabled or disabled");
+  throw InputError(pos, std::string(name) + " " + quote(text) + " must be enabled or disabled");
+}
+
+std::string_view switch_text(const Setting& row) {
+  return flag_name(row).starts_with("--no-") ? "disabled" : "enabled";
 }
 
 }  // namespace andros::cli

@@ -62,6 +62,7 @@ void PadState::set_button(InputKey key, bool down, bool initial) {
 }
 
 void InputState::apply(const InputEvent& event) {
+  if (keep_applied_) applied_.push_back(event);
   if (event.is_fault()) {
     faults_.push_back(event);
     return;

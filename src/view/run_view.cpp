@@ -143,6 +143,9 @@ std::vector<Line> counter_lines(const RunStatus& s) {
                          static_cast<unsigned long long>(v.stats.bad_checksum),
                          static_cast<unsigned long long>(v.stats.invalid), v.last ? "" : " (nothing decoded yet)"));
   }
+  if (!s.recorder.empty()) {
+    out.push_back(Line("recorder    ").add(s.recorder, s.recorder_failing ? Style::kAlert : Style::kPlain));
+  }
   return out;
 }
 

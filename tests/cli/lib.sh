@@ -4,6 +4,9 @@ BIN=$1
 DATA=$2
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
+# `run` keeps a flight recorder session per run (docs/recording.md): in the test's folder, never ~/.local/state.
+export XDG_STATE_HOME=$TMP/state
+unset STATE_DIRECTORY
 failures=0
 
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }

@@ -72,7 +72,7 @@ TEST(Config, BadLinesNameFileAndLine) {
             "dir/test.conf:2:10: error: baud 9601 is not one of 9600, 19200, 38400, 57600, 115200");
   EXPECT_EQ(error_of("speed=3\n"),
             "dir/test.conf:1:1: error: unknown key 'speed' (known: baudrate, serialport, robot, code, "
-            "rate, mapping, weapons, input, supervisor)");
+            "rate, mapping, weapons, input, supervisor, record, record_dir, record_max_mb, record_max_days)");
   EXPECT_NE(error_of("\n\nrobot=R2D2\n").find("dir/test.conf:3:7: error: unknown robot 'R2D2'"),
             std::string::npos);
   EXPECT_EQ(error_of("supervisor = 256\n"), "dir/test.conf:1:14: error: controller index 256 is out of range 0..255");

@@ -63,7 +63,7 @@ expect_error "code.conf:1:6: error: code '1FF' is not a byte in hex (one or two 
 w twice.conf 'weapons=disabled\nrobot=hd1\n  Weapons=enabled\n'  # never "last wins"
 expect_error "twice.conf:3:3: error: key 'weapons' given twice (first at line 1)" "$BIN" run --config twice.conf --input ok.events
 w key.conf 'serialprot=/dev/ttyUSB0\n'
-expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor)" "$BIN" run --config key.conf --input ok.events
+expect_error "key.conf:1:1: error: unknown key 'serialprot' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor, record, record_dir, record_max_mb, record_max_days)" "$BIN" run --config key.conf --input ok.events
 w noeq.conf 'baudrate 9600\n'
 expect_error "noeq.conf:1:1: error: expected key=value, got 'baudrate 9600'" "$BIN" run --config noeq.conf --input ok.events
 w rate.conf 'rate=-1920099999999999980\n'
@@ -122,7 +122,7 @@ expect_error "nul.events:1:3: error: unknown event 'conn\\x00ect' (expected conn
 printf '0 %s\n' "$(printf 'x%.0s' $(seq 100))" >long.events
 expect_error "long.events:1:3: error: unknown event '$(printf 'x%.0s' $(seq 64))'... (100 bytes) (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)" "$BIN" replay long.events
 printf '\xEF\xBB\xBFbaudrate=9600\n' >bom.conf
-expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor)" "$BIN" run --config bom.conf --input ok.events
+expect_error "bom.conf:1:1: error: unknown key '\\xEF\\xBB\\xBFbaudrate' (known: baudrate, serialport, robot, code, rate, mapping, weapons, input, supervisor, record, record_dir, record_max_mb, record_max_days)" "$BIN" run --config bom.conf --input ok.events
 w nul.yaml "$head"'  - signal: "tool\\0on"\n    button: a\n'
 expect_error "nul.yaml:4:13: error: unknown signal 'tool\\x00on' (expected one of: $("$BIN" frame signals --json | sed 's/^{"name":"\([^"]*\)".*/\1/' | tr '\n' ' ' | sed 's/ $//'))" "$BIN" check nul.yaml
 w bom_robot.yaml 'robot: \xEF\xBB\xBFHD1\ndeadman: a\n'

@@ -42,7 +42,7 @@ for key in $keys; do
   grep -q "^ *$key=" <<<"$conf" || fail "andros-bridge.conf(5) does not describe the key $key"
 done
 docs_keys=$(sed -n '/^## The configuration file/,/^## /p' "$(dirname "$0")/../../docs/running.md" |
-  sed -n 's/^| `\([a-z]*\)` |.*/\1/p' | tr '\n' ' ')
+  sed -n 's/^| `\([a-z_]*\)` |.*/\1/p' | tr '\n' ' ')
 [[ $docs_keys == "$keys " ]] || fail "docs/running.md lists the keys '$docs_keys', the program '$keys'"
 
 # complete WORDS...: what the completion offers for the last word.

@@ -45,6 +45,9 @@ std::string sample(const Setting& row) {
   if (flag == "--weapons") return "enabled";
   if (flag == "--format") return "jsonl";
   if (flag == "--supervisor") return "2";
+  if (flag == "--no-record") return "disabled";
+  if (flag == "--record-max-mb") return "20";
+  if (flag == "--record-max-days") return "7";
   return "/abs/file";  // --config, --mapping, --input, --output
 }
 
@@ -60,7 +63,7 @@ TEST(Settings, EveryKeyedRowReadsTheSameFromTheFileAndTheFlag) {
     EXPECT_EQ(row.show(file), row.show(cli)) << row.key;
     EXPECT_NE(row.show(file), row.show(Settings{})) << row.key << ": the sample is the default";
   }
-  EXPECT_EQ(keyed, 9);  // the legacy four and rate, mapping, weapons, input, supervisor
+  EXPECT_EQ(keyed, 13);  // the legacy four and rate, mapping, weapons, input, supervisor; the recorder's four
 }
 
 TEST(Settings, EveryRowTakesBackWhatItShows) {

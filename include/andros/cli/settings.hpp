@@ -20,11 +20,15 @@
 namespace andros::cli {
 
 /// The commands that take settings, as bits (a row lists those that use it).
-enum Command : unsigned { kRun = 1U, kReplay = 2U, kMonitor = 4U, kRecord = 8U };
+enum Command : unsigned { kRun = 1U, kReplay = 2U, kMonitor = 4U, kRecord = 8U, kPlot = 16U };
 
 inline constexpr std::uint8_t kDefaultCode = 0x01;
 inline constexpr std::string_view kSimPort = "sim";
 inline constexpr std::string_view kSdlInput = "sdl";
+/// The flight recorder's rotation: sessions beyond these (in total size, in
+/// age) are removed, oldest first, never the running one.
+inline constexpr std::int64_t kDefaultRecordMaxMb = 500;
+inline constexpr int kDefaultRecordMaxDays = 30;
 /// The bauds the legacy packet generator offered; nothing else is accepted.
 inline constexpr int kBauds[] = {9600, 19200, 38400, 57600, 115200};
 /// How often `record` reads the controller: the bridge's frame rate, so that
@@ -57,13 +61,17 @@ struct Settings {
   protocol::ReplayFormat format = protocol::ReplayFormat::kHex;
   std::string output;                          ///< `replay --output`; empty: standard output
   std::string script_output = "-";            ///< `record --output`; "-": standard output
+  bool record = true;                          ///< the flight recorder (docs/recording.md)
+  std::string record_dir;                      ///< where sessions go; empty: the state folder
+  std::int64_t record_max_mb = kDefaultRecordMaxMb;
+  int record_max_days = kDefaultRecordMaxDays;
 };
 
 /// One row of the table.
 struct Setting {
   std::string_view key;         ///< config-file key (lower case); empty: command line only
   std::string_view flag;        ///< CLI11 names: "--rate", "--output,-o"
-  std::string_view value_name;  ///< "HZ"; empty: a switch, which stands for "enabled"
+  std::string_view value_name;  ///< "HZ"; empty: a switch, which stands for "enabled" ("disabled" for a --no- one)
   unsigned commands;            ///< Command bits
   /// The help text; "{}" stands for detail() (a list made from its table).
   std::string_view help;
@@ -100,5 +108,10 @@ std::string baud_list();
 /// Value checks shared by the file and the flags; pos says where the text came from.
 int parse_baud(std::string_view text, const SourcePos& pos);
 bool parse_weapons(std::string_view text, const SourcePos& pos);
+/// enabled/disabled (or true/false, yes/no, on/off, 1/0) for the setting name.
+bool parse_switch(std::string_view text, std::string_view name, const SourcePos& pos);
+/// What a switch given on the command line stands for: "enabled", or
+/// "disabled" for a --no- one.
+std::string_view switch_text(const Setting& row);
 
 }  // namespace andros::cli

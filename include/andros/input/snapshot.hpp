@@ -152,10 +152,17 @@ class InputState {
   /// answers them; the snapshot itself ignores them).
   [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
 
+  /// Also keeps every event applied from now on, faults included, for
+  /// take_applied(): what the flight recorder writes (docs/recording.md).
+  void keep_applied(bool on) { keep_applied_ = on; }
+  [[nodiscard]] std::vector<InputEvent> take_applied() { return std::exchange(applied_, {}); }
+
  private:
   PadState operator_pad_;
   PadState supervisor_pad_;
   std::vector<InputEvent> faults_;
+  bool keep_applied_ = false;
+  std::vector<InputEvent> applied_;
 };
 
 }  // namespace andros::input

@@ -84,6 +84,8 @@ struct RunStatus {
   timing::TimingSummary sent_timing;     ///< frames handed to the link
   protocol::DataBytes sent{};              ///< the last frame computed
   std::optional<link::VehicleSnapshot> vehicle;  ///< the simulated vehicle's view
+  std::string recorder;          ///< the flight recorder: its session, or what it dropped; "" when off
+  bool recorder_failing = false; ///< records were dropped: the session is incomplete
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }

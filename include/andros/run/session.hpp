@@ -1,0 +1,183 @@
+#pragma once
+/// The flight recorder's session file (docs/recording.md): one text line per
+/// record, `SEQ KIND FIELDS... HASH`, where HASH is the SHA-256 of the
+/// previous record's HASH (32 bytes; zeros before the first) and of this
+/// line up to the space before HASH. A record altered, removed or moved
+/// breaks the chain at that record; verify_session() names the first.
+/// read_session() turns the records back into what replay and plot need.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "andros/base/sha256.hpp"
+#include "andros/input/snapshot.hpp"
+#include "andros/link/link_status.hpp"
+#include "andros/protocol/frame.hpp"
+#include "andros/run/bridge.hpp"
+#include "andros/run/operating_state.hpp"
+
+namespace andros::run {
+
+/// The first record's kind: a file whose first line is `0 andros-session ...` is a session.
+inline constexpr std::string_view kSessionMagic = "andros-session";
+inline constexpr int kSessionFormat = 1;
+inline constexpr std::string_view kSessionExtension = ".andros-session";
+
+/// True when text (a file's first line, or more) starts a session.
+bool is_session_start(std::string_view first_line);
+
+/// Turns payloads into chained lines: `SEQ PAYLOAD HASH\n`.
+class RecordChain {
+ public:
+  /// The next record's whole line, newline included.
+  std::string line(std::string_view payload);
+  [[nodiscard]] std::uint64_t records() const { return seq_; }
+  [[nodiscard]] const Sha256Digest& last() const { return last_; }
+
+ private:
+  Sha256 sha_;
+  Sha256Digest last_{};
+  std::uint64_t seq_ = 0;
+};
+
+/// A file of a mapping's `extends` chain, as it was read.
+struct MappingSource {
+  std::string path;  ///< canonical, as the loader read it
+  std::string text;
+};
+
+/// Reads each file of a mapping's chain (Mapping::chain). Throws InputError
+/// for a file that cannot be read.
+std::vector<MappingSource> read_mapping_sources(const std::vector<std::string>& chain);
+
+/// What the engine was made from: the settings that change frames, and the mapping.
+struct SessionSettings {
+  std::string robot;
+  std::string mapping_file;
+  std::int64_t rate_millihertz = 0;
+  bool weapons = false;
+  std::uint8_t code = 0;
+  int center = 128;
+  std::string port;
+  int baud = 0;
+  std::string input;
+  std::string config;
+  std::vector<MappingSource> sources;  ///< the mapping's file first, then each it extends
+};
+
+/// The payloads of the records, one a function (no SEQ, no hash).
+namespace record {
+std::string header();
+std::string program(std::string_view version);
+std::string started(std::string_view local_time, long pid, std::string_view host);
+/// `settings {json}`: the settings and the mapping's files (text and SHA-256).
+std::string settings(const SessionSettings& settings);
+std::string event(const input::InputEvent& event);
+std::string request(std::int64_t t_ms, Request request);
+std::string pause(std::int64_t t_ms);
+std::string reload(std::int64_t t_ms, const ReloadOutcome& outcome);
+/// `frame TICK T RESULT DATA gap=N`: written when the frame, its result or
+/// the tick's place changes; the ticks between repeat the last one.
+std::string frame(const TickReport& report, std::int64_t gap);
+std::string state(std::int64_t t_ms, OpState state);
+std::string layer(std::int64_t t_ms, std::string_view layer);
+/// t_ms -1: the link before the first tick.
+std::string link(std::int64_t t_ms, const link::LinkStatus& status);
+std::string input_end(std::int64_t t_ms);
+std::string dropped(std::uint64_t count);
+std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why);
+}  // namespace record
+
+/// What verify_session() found.
+struct VerifyResult {
+  bool intact = false;
+  std::uint64_t records = 0;  ///< records read in order (all of them when intact)
+  bool closed = false;        ///< the session has its end record
+  std::string last_hash;      ///< the last record's hash (compare with the log's closing line)
+  std::string problem;        ///< the first record altered, removed or reordered
+};
+
+/// Checks the chain of the session at path. Throws RuntimeError when it cannot be read.
+VerifyResult verify_session(const std::filesystem::path& path);
+
+/// Where an input is in effect: `t_ms` from a record.
+struct TimedText {
+  std::int64_t t_ms = 0;
+  std::string text;
+};
+
+struct FrameRecord {
+  std::int64_t tick = 0;
+  std::int64_t t_ms = 0;
+  bool offered = true;  ///< false: nothing was offered (suspended by a script)
+  link::SendResult result = link::SendResult::kSent;
+  protocol::DataBytes data{};
+  std::int64_t gap = 0;  ///< ticks the live loop did not run just before this one (a stall, a pause)
+};
+
+struct ReloadRecord {
+  std::int64_t t_ms = 0;
+  ReloadOutcome outcome;
+  std::optional<SessionSettings> settings;  ///< what an ok reload put in place
+};
+
+struct LinkRecord {
+  std::int64_t t_ms = 0;  ///< -1: before the first tick
+  link::LinkState state = link::LinkState::kConnecting;
+  bool motion_allowed = true;
+  std::string detail;
+};
+
+struct StateRecord {
+  std::int64_t t_ms = 0;
+  OpState state = OpState::kNoLink;
+};
+
+struct EndRecord {
+  std::int64_t t_ms = 0;
+  std::int64_t last_tick = 0;
+  std::uint64_t frames_sent = 0;
+  std::string why;
+};
+
+/// A session's records, by kind, in time order.
+struct Session {
+  std::string path;
+  std::string version;  ///< of the program that recorded it
+  std::string started;  ///< local time, ISO 8601
+  long pid = 0;
+  std::string host;
+  SessionSettings settings;
+  std::vector<input::InputEvent> events;
+  std::vector<TimedText> requests;  ///< "stop", "suspend", "resumed", "reload"
+  std::vector<std::int64_t> pauses;  ///< the time the loop went on after each job-control stop
+  std::vector<ReloadRecord> reloads;
+  std::vector<FrameRecord> frames;
+  std::vector<StateRecord> states;
+  std::vector<TimedText> layers;
+  std::vector<LinkRecord> links;
+  std::optional<std::int64_t> input_end;
+  std::uint64_t dropped = 0;
+  std::optional<EndRecord> end;
+
+  /// The frame record in effect at tick (the last one at or before it), or null.
+  [[nodiscard]] const FrameRecord* frame_at(std::int64_t tick) const;
+  /// Ticks the live loop ran (a gap's ticks are not counted).
+  [[nodiscard]] std::int64_t live_ticks() const;
+  /// The length in ms: the last tick's time.
+  [[nodiscard]] std::int64_t length_ms() const;
+};
+
+/// Reads the session at path (its chain is verify_session's business).
+/// Throws InputError at FILE:LINE for a record it cannot read.
+Session read_session(const std::filesystem::path& path);
+
+std::string_view request_name(Request request);
+std::optional<Request> parse_request(std::string_view name);
+std::optional<OpState> parse_op_state(std::string_view name);
+
+}  // namespace andros::run

@@ -1,0 +1,40 @@
+#pragma once
+/// A recorded session through the run loop again (docs/recording.md): the
+/// same Bridge on a virtual clock that the session moves as the live clock
+/// moved (a stall's skipped ticks, a Ctrl-Z's pause), the recorded input
+/// events, requests, reload outcomes and link results played back at the
+/// ticks they came, and the engine made from the recorded mapping text. Every
+/// frame the live loop handed to the link is compared with the replay's.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "andros/mapping/engine.hpp"
+#include "andros/run/bridge.hpp"
+#include "andros/run/session.hpp"
+
+namespace andros::run {
+
+struct SessionReplayResult {
+  std::uint64_t compared = 0;  ///< frames sent live that the replay reproduced byte for byte
+  bool identical = false;
+  std::string difference;      ///< the first difference, when not identical
+};
+
+/// The mapping a session's files make (the first file is the mapping).
+/// Throws InputError.
+using SourcesLoader = std::function<mapping::ValidMapping(const std::vector<MappingSource>& sources)>;
+
+/// Loads recorded mapping files: written under a temporary folder at their
+/// recorded paths (so that `extends` finds its bases), then loaded and validated.
+mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& sources);
+
+/// Replays session; observe sees every tick's report (the plot's source).
+/// Throws InputError for a session that cannot be replayed exactly (records
+/// dropped, an unknown mapping).
+SessionReplayResult replay_session(const Session& session, const SourcesLoader& load = load_recorded_mapping,
+                                   const Bridge::Observer& observe = {});
+
+}  // namespace andros::run

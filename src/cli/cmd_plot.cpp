@@ -1,0 +1,156 @@
+// `andros-bridge plot`: a drive on one A4 landscape page (docs/recording.md):
+// from a flight recorder's session, or from an event script through replay.
+#include <spdlog/fmt/fmt.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "andros/base/error.hpp"
+#include "andros/base/text_file.hpp"
+#include "andros/cli/command_line.hpp"
+#include "andros/cli/config.hpp"
+#include "andros/input/events.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/replay.hpp"
+#include "andros/run/session.hpp"
+#include "andros/timing/rate.hpp"
+#include "andros/view/plot.hpp"
+#include "commands.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct PlotOptions {
+  std::string source;
+  std::unique_ptr<CommandLine> settings;  ///< for a script: the settings table's replay flags
+  std::string output;
+  std::string from;
+  std::string to;
+};
+
+/// The whole page is made before FILE is opened; a failed write removes it
+/// (as `sheet --output`).
+void write_page(const std::string& output, const std::string& page) {
+  if (output.empty()) {
+    if (std::fwrite(page.data(), 1, page.size(), stdout) != page.size()) throw RuntimeError("stdout: write error");
+    return;
+  }
+  std::ofstream file(output, std::ios::binary | std::ios::trunc);
+  if (!file) throw RuntimeError(output + ": cannot open for writing");
+  file << page;
+  file.close();
+  if (!file) {
+    std::error_code ec;
+    std::filesystem::remove(output, ec);
+    throw RuntimeError(output + ": write error");
+  }
+}
+
+/// Seconds (decimals allowed) as ms; InputError at the flag.
+std::int64_t parse_seconds(const std::string& text, const char* flag) {
+  std::size_t used = 0;
+  double s = -1;
+  try {
+    s = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(s) || s < 0 || s > 86400) {
+    throw InputError(SourcePos{flag}, "expected seconds from 0 to 86400, got " + quote(text));
+  }
+  return std::llround(s * 1000);
+}
+
+std::string weapons_text(bool weapons) { return weapons ? "WEAPONS ENABLED" : "weapons disabled"; }
+
+std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+bool is_session(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string first(64, '\0');
+  in.read(first.data(), static_cast<std::streamsize>(first.size()));
+  first.resize(static_cast<std::size_t>(in.gcount()));
+  return run::is_session_start(first);
+}
+
+view::PlotInput from_session(const PlotOptions& opt) {
+  for (const auto& row : settings_table()) {
+    if ((row.commands & kPlot) != 0 && opt.settings->given(flag_name(row))) {
+      throw InputError(SourcePos{std::string(flag_name(row))}, "not for a session: it is drawn with the settings it recorded");
+    }
+  }
+  const auto s = run::read_session(opt.source);
+  view::PlotInput in;
+  in.title = fmt::format("{} drive, mapping {}", s.settings.robot, file_name(s.settings.mapping_file));
+  in.settings = fmt::format("{} Hz, code {:02X}, {}, input {}, port {}", timing::rate_text(s.settings.rate_millihertz),
+                            s.settings.code, weapons_text(s.settings.weapons), s.settings.input, s.settings.port);
+  if (!s.reloads.empty()) in.settings += fmt::format(", {} reload(s)", s.reloads.size());
+  in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started,
+                          s.host, s.version);
+  // Drawn all the same, but never passed off as a whole record.
+  if (const auto check = run::verify_session(opt.source); !check.intact) in.source += "; NOT INTACT: " + check.problem;
+  else if (s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
+  in.samples = view::plot_samples(s);
+  return in;
+}
+
+view::PlotInput from_script(const PlotOptions& opt) {
+  if (opt.settings->given("--robot") && opt.settings->given("--mapping")) {
+    throw InputError("plot: give --robot or --mapping, not both");
+  }
+  const Settings settings = resolve_settings(*opt.settings);
+  auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
+  auto script = input::checked_event_script(TextReader::open(opt.source, kEventScriptLimits));
+  view::PlotInput in;
+  in.title = fmt::format("{} drive, mapping {}", mapping->robot.value_or(settings.robot), file_name(mapping->file));
+  in.settings = fmt::format("{} Hz, code {:02X}, {}", timing::rate_text(settings.rate.millihertz), settings.code,
+                            weapons_text(settings.weapons));
+  in.source = "replay of " + file_name(opt.source);
+  input::ScriptPlayer player(script);
+  run::ReplayOptions replay{.rate_millihertz = settings.rate.millihertz,
+                            .engine = mapping::EngineOptions{settings.weapons, settings.code}};
+  replay.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.source, file)); };
+  replay.observe = [&in](const run::TickReport& r) { in.samples.push_back(view::plot_sample(r)); };
+  run::replay(player, mapping::Engine(std::move(mapping), replay.engine), replay,
+              [](std::int64_t, const protocol::DataBytes&) {});
+  return in;
+}
+
+void run_plot(const PlotOptions& opt) {
+  if (!std::filesystem::is_regular_file(opt.source)) throw InputError(SourcePos{opt.source}, "no such file");
+  const std::int64_t from = opt.from.empty() ? 0 : parse_seconds(opt.from, "--from");
+  const std::int64_t to = opt.to.empty() ? -1 : parse_seconds(opt.to, "--to");
+  if (to >= 0 && to <= from) throw InputError(SourcePos{"--to"}, "must be later than --from");
+  view::PlotInput in = is_session(opt.source) ? from_session(opt) : from_script(opt);
+  in.from_ms = from;
+  in.to_ms = to;
+  write_page(opt.output, view::render_plot_svg(in));
+}
+
+}  // namespace
+
+void add_plot_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<PlotOptions>();
+  auto* cmd = app.add_subcommand(
+      "plot",
+      "Draw a drive as SVG (docs/recording.md): drive and pivot over time, the operating state\n"
+      "as coloured bands, the active layer, and every switch signal that was on (weapons in\n"
+      "red), with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
+      "landscape on paper, or a browser. From a session file (as recorded), or from an event\n"
+      "script through replay (with --robot/--mapping and the other replay settings).");
+  cmd->add_option("SOURCE", opt->source, "a session file, or an event script (docs/event-scripts.md)")->required();
+  opt->settings = std::make_unique<CommandLine>(*cmd, kPlot);
+  cmd->add_option("--output", opt->output, "write to FILE instead of standard output")->type_name("FILE");
+  cmd->add_option("--from", opt->from, "start the time axis at T seconds")->type_name("T");
+  cmd->add_option("--to", opt->to, "end the time axis at T seconds (default: the end)")->type_name("T");
+  cmd->callback([opt, &exit_code] {
+    run_plot(*opt);
+    exit_code = kExitOk;
+  });
+}
+
+}  // namespace andros::cli

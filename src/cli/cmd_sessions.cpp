@@ -1,0 +1,75 @@
+// `andros-bridge sessions`: the flight recorder's sessions, with what each
+// holds and whether it is intact (docs/recording.md).
+#include <spdlog/fmt/fmt.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "andros/base/error.hpp"
+#include "andros/run/session.hpp"
+#include "commands.hpp"
+#include "session_files.hpp"
+
+namespace andros::cli {
+namespace {
+
+std::string duration_text(std::int64_t ms) {
+  const std::int64_t s = ms / 1000;
+  return fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60);
+}
+
+/// "2024-05-01T12:00:00+0200" as "2024-05-01 12:00:00".
+std::string start_text(const std::string& iso) {
+  if (iso.size() < 19) return iso;
+  std::string out = iso.substr(0, 19);
+  out[10] = ' ';
+  return out;
+}
+
+void run_sessions(const std::string& dir_given) {
+  const auto dir = session_dir(dir_given);
+  const auto sessions = list_sessions(dir);
+  if (sessions.empty()) {
+    std::cout << "no sessions in " << dir.string() << "\n";
+    return;
+  }
+  std::cout << "sessions in " << dir.string() << ":\n";
+  std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "START", "LENGTH", "ROBOT", "FRAMES", "VERIFY",
+                           "FILE");
+  for (const auto& path : sessions) {
+    std::string verdict;
+    try {
+      const auto check = run::verify_session(path);
+      verdict = !check.intact ? "NOT INTACT" : check.closed ? "intact" : "intact, not closed";
+      const auto s = run::read_session(path);
+      std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", start_text(s.started),
+                               duration_text(s.length_ms()), s.settings.robot,
+                               s.end ? std::to_string(s.end->frames_sent) : std::string("?"), verdict,
+                               path.filename().string());
+    } catch (const std::exception& e) {
+      std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "?", "?", "?", "?",
+                               verdict.empty() ? "unreadable" : verdict, path.filename().string());
+    }
+  }
+}
+
+}  // namespace
+
+void add_sessions_command(CLI::App& app, int& exit_code) {
+  auto dir = std::make_shared<std::string>();
+  auto* cmd = app.add_subcommand(
+      "sessions",
+      "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
+      "robot, frames sent and the verdict of 'verify'.");
+  cmd->add_option("--dir", *dir,
+                  "the folder to list; default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"
+                  "~/.local/state/andros-bridge (as run)");
+  cmd->callback([dir, &exit_code] {
+    run_sessions(*dir);
+    exit_code = kExitOk;
+  });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,43 @@
+// `andros-bridge verify SESSION`: is the flight recorder's session as it was
+// written (docs/recording.md)?
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "andros/base/error.hpp"
+#include "andros/run/session.hpp"
+#include "commands.hpp"
+
+namespace andros::cli {
+namespace {
+
+int run_verify(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(SourcePos{path}, "no such session file");
+  const auto result = run::verify_session(path);
+  if (!result.intact) {
+    std::cout << "NOT INTACT: " << result.problem << "\n";
+    return kExitRuntime;
+  }
+  std::cout << "intact (" << result.records << " records)\n";
+  std::cout << (result.closed ? "closed: the run ended and its last record is here\n"
+                              : "not closed: the run is still going, ended without closing it (a crash, power "
+                                "lost), or its last records were removed\n");
+  std::cout << "last hash: " << result.last_hash << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_verify_command(CLI::App& app, int& exit_code) {
+  auto path = std::make_shared<std::string>();
+  auto* cmd = app.add_subcommand(
+      "verify",
+      "Check a flight recorder session's hash chain (docs/recording.md): prints 'intact (N\n"
+      "records)' and the last record's hash (exit 0), or the first record that was altered,\n"
+      "removed or reordered (exit 1).");
+  cmd->add_option("SESSION", *path, "a session file (andros-bridge sessions lists them)")->required();
+  cmd->callback([path, &exit_code] { exit_code = run_verify(*path); });
+}
+
+}  // namespace andros::cli

@@ -1,0 +1,54 @@
+#pragma once
+// `run`'s flight recorder (docs/recording.md): a session file per run in the
+// state folder, fed from the loop's input, controls and reports, written by
+// a thread of its own. Whatever befalls it (no folder, a full or stalled
+// disk) is logged and counted; it never stops or delays the run.
+
+#include <memory>
+#include <string>
+
+#include "andros/cli/settings.hpp"
+#include "andros/input/input_source.hpp"
+#include "andros/link/link.hpp"
+#include "andros/run/recorder.hpp"
+#include "andros/view/status_view.hpp"
+#include "run_reload.hpp"
+#include "session_files.hpp"
+
+namespace andros::cli {
+
+class RunRecording {
+ public:
+  /// The session of this run, started: null when config says not to record,
+  /// or when the session cannot be created (said in the log). Rotates the
+  /// folder's older sessions first. Call before the loop's thread starts.
+  static std::unique_ptr<RunRecording> start(const Settings& config, const EngineSetup& engine, const link::Link& link,
+                                             input::InputSource& input);
+
+  /// The input the loop must read: the real one, with what it applies recorded.
+  input::InputSource& input() { return input_; }
+  /// The loop's controls, recorded; reload's settings are asked after an ok reload.
+  run::RunControl control(run::RunControl inner, const Settings& config, const RunReload& reload);
+  void observe(const run::TickReport& report);
+  /// After the run: the end record, the writer closed (a stalled disk is
+  /// waited for a second at most), the closing line logged, the folder rotated.
+  void finish(const std::string& why);
+
+  /// For the status screen (any thread): the session, or what was dropped.
+  void describe(view::RunStatus& status) const;
+
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  RunRecording(std::filesystem::path path, std::unique_ptr<run::RecordSink> sink, input::InputSource& input,
+               RotationLimits rotation);
+
+ private:
+  std::filesystem::path path_;
+  run::SessionWriter writer_;
+  run::Recorder recorder_;
+  run::RecordingInput input_;
+  RotationLimits rotation_;
+  bool warned_ = false;  ///< the first record dropped or lost has been logged
+};
+
+}  // namespace andros::cli

@@ -1,0 +1,280 @@
+#include "andros/run/recorder.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+#include "andros/base/error.hpp"
+#include "andros/base/write_fully.hpp"
+
+namespace andros::run {
+
+FileRecordSink::FileRecordSink(const std::string& path) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_APPEND, 0640);
+  if (fd_ < 0) throw RuntimeError(path + ": cannot create: " + std::strerror(errno));
+}
+
+FileRecordSink::~FileRecordSink() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+bool FileRecordSink::write(std::string_view text, std::string& error) {
+  const int err = write_fully(fd_, text);
+  if (err == 0) return true;
+  error = std::strerror(err);
+  return false;
+}
+
+bool FileRecordSink::sync(std::string& error) {
+  if (::fdatasync(fd_) == 0) return true;
+  error = std::strerror(errno);
+  return false;
+}
+
+struct SessionWriter::Shared {
+  explicit Shared(std::unique_ptr<RecordSink> s, std::size_t capacity) : sink(std::move(s)), ring(capacity) {}
+  std::unique_ptr<RecordSink> sink;
+  std::vector<std::string> ring;
+  // Single producer (push), single consumer (the thread): head is the
+  // producer's, tail the consumer's; a slot is the consumer's from tail to head.
+  std::atomic<std::size_t> head{0};
+  std::atomic<std::size_t> tail{0};
+  std::atomic<std::uint64_t> dropped{0};
+  std::atomic<std::uint64_t> lost{0};
+  std::atomic<std::uint64_t> written{0};
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::condition_variable finished;
+  bool closing = false;
+  bool done = false;
+  std::string error;
+  std::string last_hash;
+};
+
+namespace {
+
+/// How often the thread looks at the queue: the loop never wakes it (no
+/// system call on the loop's side of the queue).
+constexpr auto kPollPeriod = std::chrono::milliseconds(250);
+constexpr auto kSyncPeriod = std::chrono::seconds(1);
+constexpr std::size_t kBatchBytes = 64 * 1024;
+
+}  // namespace
+
+SessionWriter::SessionWriter(std::unique_ptr<RecordSink> sink, std::size_t capacity)
+    : shared_(std::make_shared<Shared>(std::move(sink), capacity)), thread_(work, shared_) {}
+
+SessionWriter::~SessionWriter() { close(1000); }
+
+bool SessionWriter::push(std::string payload) {
+  Shared& s = *shared_;
+  const std::size_t head = s.head.load(std::memory_order_relaxed);
+  if (head - s.tail.load(std::memory_order_acquire) >= s.ring.size()) {
+    s.dropped.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  s.ring[head % s.ring.size()] = std::move(payload);
+  s.head.store(head + 1, std::memory_order_release);
+  return true;
+}
+
+void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
+  Shared& s = *shared;
+  RecordChain chain;
+  std::uint64_t reported_drops = 0;
+  bool failed = false;
+  auto last_sync = std::chrono::steady_clock::now();
+  std::string batch;
+  std::uint64_t in_batch = 0;
+  const auto write_batch = [&] {
+    if (in_batch == 0) return;
+    std::string error;
+    if (!failed && !s.sink->write(batch, error)) {
+      failed = true;
+      const std::lock_guard lock(s.mutex);
+      s.error = error;
+    }
+    if (failed) s.lost.fetch_add(in_batch, std::memory_order_relaxed);
+    else s.written.store(chain.records(), std::memory_order_relaxed);
+    batch.clear();
+    in_batch = 0;
+  };
+  while (true) {
+    const std::size_t head = s.head.load(std::memory_order_acquire);
+    for (std::size_t tail = s.tail.load(std::memory_order_relaxed); tail != head; ++tail) {
+      const std::string payload = std::move(s.ring[tail % s.ring.size()]);
+      s.tail.store(tail + 1, std::memory_order_release);
+      batch += chain.line(payload);
+      ++in_batch;
+      if (batch.size() >= kBatchBytes) write_batch();
+    }
+    // Records the full queue refused: said where they went missing.
+    if (const auto drops = s.dropped.load(std::memory_order_relaxed); drops != reported_drops) {
+      batch += chain.line(record::dropped(drops - reported_drops));
+      ++in_batch;
+      reported_drops = drops;
+    }
+    write_batch();
+    if (!failed && std::chrono::steady_clock::now() - last_sync >= kSyncPeriod) {
+      std::string error;
+      if (!s.sink->sync(error)) {
+        failed = true;
+        const std::lock_guard lock(s.mutex);
+        s.error = error;
+      }
+      last_sync = std::chrono::steady_clock::now();
+    }
+    std::unique_lock lock(s.mutex);
+    if (s.closing && s.head.load(std::memory_order_acquire) == s.tail.load(std::memory_order_relaxed)) break;
+    s.wake.wait_for(lock, kPollPeriod, [&s] { return s.closing; });
+  }
+  std::string error;
+  if (!failed && !s.sink->sync(error)) failed = true;
+  const std::lock_guard lock(s.mutex);
+  if (failed && s.error.empty()) s.error = error;
+  s.last_hash = to_hex(chain.last());
+  s.done = true;
+  s.finished.notify_all();
+}
+
+bool SessionWriter::close(int timeout_ms) {
+  if (closed_) return shared_->done && dropped() == 0 && lost() == 0;
+  closed_ = true;
+  std::unique_lock lock(shared_->mutex);
+  shared_->closing = true;
+  shared_->wake.notify_all();
+  const bool done = shared_->finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return shared_->done; });
+  lock.unlock();
+  if (done) {
+    thread_.join();
+  } else {
+    // A disk that does not answer must not hold the exit: what it holds is lost.
+    const std::size_t queued = shared_->head.load() - shared_->tail.load();
+    shared_->lost.fetch_add(queued, std::memory_order_relaxed);
+    thread_.detach();
+  }
+  return done && dropped() == 0 && lost() == 0;
+}
+
+std::uint64_t SessionWriter::dropped() const { return shared_->dropped.load(std::memory_order_relaxed); }
+std::uint64_t SessionWriter::lost() const { return shared_->lost.load(std::memory_order_relaxed); }
+std::uint64_t SessionWriter::written() const { return shared_->written.load(std::memory_order_relaxed); }
+
+std::string SessionWriter::error() const {
+  const std::lock_guard lock(shared_->mutex);
+  return shared_->error;
+}
+
+std::string SessionWriter::last_hash() const {
+  const std::lock_guard lock(shared_->mutex);
+  return shared_->last_hash;
+}
+
+void Recorder::header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
+                      const SessionSettings& settings, const link::LinkStatus& link_before) {
+  push(record::header());
+  push(record::program(version));
+  push(record::started(local_time, pid, host));
+  push(record::settings(settings));
+  push(record::link(-1, link_before));
+  link_state_ = link_before.state;
+  link_motion_ = link_before.motion_allowed;
+  link_detail_ = link_before.detail;
+}
+
+void Recorder::pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events) {
+  t_ms_ = t_ms;
+  if (after_pause_) {
+    push(record::pause(t_ms));
+    after_pause_ = false;
+  }
+  for (const auto& e : events) push(record::event(e));
+}
+
+void Recorder::request(Request request) {
+  if (request != Request::kNone) push(record::request(t_ms_, request));
+}
+
+void Recorder::reloaded(const ReloadOutcome& outcome, const SessionSettings* settings) {
+  if (outcome.ok && settings != nullptr) push(record::settings(*settings));
+  push(record::reload(t_ms_, outcome));
+}
+
+void Recorder::input_end(std::int64_t t_ms) {
+  if (input_ended_) return;
+  input_ended_ = true;
+  push(record::input_end(t_ms));
+}
+
+void Recorder::observe(const TickReport& r) {
+  if (first_ || r.state != state_) {
+    state_ = r.state;
+    push(record::state(r.t_ms, r.state));
+  }
+  if (first_ || r.engine.layer != layer_) {
+    layer_ = r.engine.layer;
+    push(record::layer(r.t_ms, layer_));
+  }
+  if (r.link.state != link_state_ || r.link.motion_allowed != link_motion_ || r.link.detail != link_detail_) {
+    link_state_ = r.link.state;
+    link_motion_ = r.link.motion_allowed;
+    link_detail_ = r.link.detail;
+    push(record::link(r.t_ms, r.link));
+  }
+  const std::int64_t gap = r.tick - last_tick_ - 1;
+  if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_) {
+    data_ = r.data;
+    result_ = r.result;
+    sent_ = r.sent;
+    push(record::frame(r, gap));
+  }
+  if (r.sent && r.result == link::SendResult::kSent) ++frames_sent_;
+  last_tick_ = r.tick;
+  last_t_ms_ = r.t_ms;
+  first_ = false;
+}
+
+void Recorder::end(std::string_view why) { push(record::end(last_t_ms_, last_tick_, frames_sent_, why)); }
+
+void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
+  state.keep_applied(true);
+  inner_.pump(state, now_ms);
+  recorder_.pumped(now_ms, state.take_applied());
+}
+
+bool RecordingInput::finished(std::int64_t now_ms) const {
+  const bool done = inner_.finished(now_ms);
+  if (done) recorder_.input_end(now_ms);
+  return done;
+}
+
+RunControl recorded_control(RunControl inner, Recorder& recorder, std::function<SessionSettings()> settings) {
+  RunControl out = inner;
+  out.poll = [poll = inner.poll, &recorder] {
+    const Request r = poll();
+    recorder.request(r);
+    return r;
+  };
+  out.pause = [pause = inner.pause, &recorder] {
+    pause();
+    recorder.paused();
+  };
+  out.finish_reload = [finish = inner.finish_reload, &recorder, settings = std::move(settings)] {
+    auto outcome = finish();
+    if (outcome) {
+      if (outcome->ok) {
+        const SessionSettings now = settings();
+        recorder.reloaded(*outcome, &now);
+      } else {
+        recorder.reloaded(*outcome, nullptr);
+      }
+    }
+    return outcome;
+  };
+  return out;
+}
+
+}  // namespace andros::run

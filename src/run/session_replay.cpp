@@ -1,0 +1,254 @@
+#include "andros/run/session_replay.hpp"
+
+#include <stdlib.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "andros/base/error.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/engine_frames.hpp"
+
+namespace andros::run {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Ticks the replay may run past the live run's last before it is called astray.
+constexpr std::int64_t kOverrunTicks = 100;
+
+/// The session as the loop's world: its clock, input, link and controls,
+/// with where the replay is now.
+class Playback {
+ public:
+  Playback(const Session& s, const SourcesLoader& load, ReloadableFrames& frames)
+      : s_(s), load_(load), frames_(frames), schedule_(s.settings.rate_millihertz) {
+    last_tick_ = s.end ? s.end->last_tick : (s.frames.empty() ? 0 : s.frames.back().tick);
+  }
+
+  Clock& clock() { return clock_; }
+  [[nodiscard]] std::int64_t expected_tick() const { return expected_tick_; }
+  [[nodiscard]] std::int64_t last_tick() const { return last_tick_; }
+
+  // The input.
+  void pump(input::InputState& state, std::int64_t now_ms) {
+    now_ms_ = now_ms;
+    while (next_event_ < s_.events.size() && s_.events[next_event_].t_ms <= now_ms) state.apply(s_.events[next_event_++]);
+  }
+  [[nodiscard]] bool finished(std::int64_t now_ms) const { return s_.input_end && now_ms >= *s_.input_end; }
+
+  // The link, as the live one answered.
+  link::SendResult send() {
+    link_ = status_at(now_ms_);
+    const FrameRecord* f = s_.frame_at(expected_tick_);
+    return f == nullptr ? link::SendResult::kDown : f->result;
+  }
+  void close_link() {
+    link_.state = link::LinkState::kConnecting;
+    link_.detail = "closed";
+  }
+  [[nodiscard]] const LinkRecord& link() const { return link_; }
+  void start() { link_ = status_at(-1); }
+
+  // The controls.
+  Request poll() {
+    if (expected_tick_ > last_tick_) return Request::kStop;  // a session cut short (or astray): ends here
+    if (next_request_ < s_.requests.size() && s_.requests[next_request_].t_ms == now_ms_) {
+      return *parse_request(s_.requests[next_request_++].text);
+    }
+    return Request::kNone;
+  }
+  void pause() {
+    // The live process was stopped until the pause's pump: the clock goes
+    // there (its ms, and a time at which the same next tick is due).
+    if (next_pause_ >= s_.pauses.size()) return;
+    const std::int64_t resumed_ms = s_.pauses[next_pause_++];
+    const std::int64_t next = jump_after(last_run_).value_or(last_run_ + 1);
+    move_clock_to(std::max(resumed_ms * kNsPerMs, ns_due(next - 1)));
+    expected_tick_ = next;
+  }
+  std::optional<ReloadOutcome> finish_reload() {
+    if (next_reload_ >= s_.reloads.size() || s_.reloads[next_reload_].t_ms != now_ms_) return std::nullopt;
+    const ReloadRecord& r = s_.reloads[next_reload_++];
+    if (r.outcome.ok && r.settings) frames_.replace(engine_frames(*r.settings));
+    return r.outcome;
+  }
+
+  /// After tick's report: where the live loop went next (a stall skipped ticks).
+  void ticked(std::int64_t tick) {
+    last_run_ = tick;
+    const auto jump = jump_after(tick);
+    expected_tick_ = jump.value_or(tick + 1);
+    if (!jump) return;
+    const bool paused = next_pause_ < s_.pauses.size() && s_.pauses[next_pause_] <= schedule_.tick_ms(*jump);
+    if (!paused) move_clock_to(ns_due(*jump));  // pause() moves it for a pause
+  }
+
+  std::unique_ptr<FrameSource> engine_frames(const SessionSettings& settings) {
+    return make_engine_frames(
+        mapping::Engine(load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
+  }
+
+ private:
+  /// The tick the live loop ran after `tick`, when it was not tick + 1.
+  [[nodiscard]] std::optional<std::int64_t> jump_after(std::int64_t tick) const {
+    const FrameRecord* at = s_.frame_at(tick);
+    const auto it = at == nullptr ? s_.frames.begin() : s_.frames.begin() + (at - s_.frames.data()) + 1;
+    if (it == s_.frames.end() || it->gap == 0 || it->tick - it->gap - 1 != tick) return std::nullopt;
+    return it->tick;
+  }
+  /// The first time at which tick is due.
+  [[nodiscard]] std::int64_t ns_due(std::int64_t tick) const {
+    std::int64_t e = schedule_.tick_ns(tick);
+    while (schedule_.next_tick(-1, e) < tick) ++e;
+    return e;
+  }
+  void move_clock_to(std::int64_t ns) {
+    if (ns > clock_.now().count()) clock_.advance(Nanos(ns) - clock_.now());
+  }
+  [[nodiscard]] LinkRecord status_at(std::int64_t t_ms) const {
+    LinkRecord out{-1, link::LinkState::kUp, true, ""};
+    for (const auto& l : s_.links) {
+      if (l.t_ms > t_ms) break;
+      out = l;
+    }
+    return out;
+  }
+
+  const Session& s_;
+  const SourcesLoader& load_;
+  ReloadableFrames& frames_;
+  timing::TickSchedule schedule_;
+  VirtualClock clock_;
+  std::int64_t now_ms_ = -1;
+  std::int64_t expected_tick_ = 0;
+  std::int64_t last_run_ = -1;  ///< the last tick the replay ran
+  std::int64_t last_tick_ = 0;  ///< the live run's last
+  std::size_t next_event_ = 0;
+  std::size_t next_request_ = 0;
+  std::size_t next_pause_ = 0;
+  std::size_t next_reload_ = 0;
+  LinkRecord link_;
+};
+
+class PlaybackInput final : public input::InputSource {
+ public:
+  explicit PlaybackInput(Playback& p) : p_(p) {}
+  void pump(input::InputState& state, std::int64_t now_ms) override { p_.pump(state, now_ms); }
+  [[nodiscard]] bool finished(std::int64_t now_ms) const override { return p_.finished(now_ms); }
+
+ private:
+  Playback& p_;
+};
+
+class PlaybackLink final : public link::Link {
+ public:
+  explicit PlaybackLink(Playback& p) : p_(p) {}
+  link::SendResult send(const protocol::Frame& /*frame*/, std::int64_t /*now_ns*/) override {
+    const auto result = p_.send();
+    switch (result) {
+      case link::SendResult::kSent: ++counters_.sent; break;
+      case link::SendResult::kBusy: ++counters_.busy; break;
+      case link::SendResult::kDown: ++counters_.down; break;
+    }
+    return result;
+  }
+  bool drain_and_close(int /*timeout_ms*/) override {
+    p_.close_link();
+    return true;
+  }
+  [[nodiscard]] link::LinkState state() const override { return p_.link().state; }
+  [[nodiscard]] const std::string& name() const override { return name_; }
+  [[nodiscard]] const std::string& detail() const override { return p_.link().detail; }
+  [[nodiscard]] const link::LinkCounters& counters() const override { return counters_; }
+  [[nodiscard]] bool motion_allowed() const override { return p_.link().motion_allowed; }
+
+ private:
+  Playback& p_;
+  std::string name_ = "recorded link";
+  link::LinkCounters counters_;
+};
+
+std::string frame_text(const protocol::DataBytes& data) { return protocol::to_hex(data); }
+
+}  // namespace
+
+mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& sources) {
+  if (sources.empty()) throw InputError("the session names no mapping file");
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/andros-replay-XXXXXX";
+  if (mkdtemp(pattern.data()) == nullptr) throw RuntimeError("cannot make a temporary folder for the recorded mapping");
+  const fs::path root(pattern);
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{root};
+  const auto under_root = [&root](const std::string& path) { return root / fs::path(path).relative_path(); };
+  for (const auto& src : sources) {
+    const fs::path file = under_root(src.path);
+    fs::create_directories(file.parent_path());
+    std::ofstream out(file, std::ios::binary);
+    out << src.text;
+    if (!out) throw RuntimeError(file.string() + ": cannot write the recorded mapping");
+  }
+  return mapping::load_mapping(under_root(sources.front().path));
+}
+
+SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, const Bridge::Observer& observe) {
+  if (s.dropped != 0) {
+    throw InputError(SourcePos{s.path}, std::to_string(s.dropped) +
+                                            " records were dropped while it was recorded (the queue or the disk "
+                                            "was full): it cannot be replayed exactly");
+  }
+  SessionReplayResult out;
+  ReloadableFrames frames(nullptr);
+  Playback playback(s, load, frames);
+  frames.replace(playback.engine_frames(s.settings));
+  playback.start();
+  PlaybackInput input(playback);
+  PlaybackLink link(playback);
+  Bridge bridge(playback.clock(), input, frames, link,
+                BridgeOptions{.rate_millihertz = s.settings.rate_millihertz, .neutral_tail_at_end = true});
+
+  RunControl control;
+  control.poll = [&] { return playback.poll(); };
+  control.pause = [&] { playback.pause(); };
+  control.begin_reload = [](const std::string&) {};  // its outcome is the session's
+  control.finish_reload = [&] { return playback.finish_reload(); };
+
+  const auto differ = [&out](std::string what) {
+    if (out.difference.empty()) out.difference = std::move(what);
+  };
+  bridge.run(control, [&](const TickReport& r) {
+    if (observe) observe(r);
+    if (r.tick != playback.expected_tick()) {
+      differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " + std::to_string(playback.expected_tick()) +
+             " here");
+    } else if (r.tick <= playback.last_tick()) {
+      const FrameRecord* live = s.frame_at(r.tick);
+      const bool live_sent = live != nullptr && live->offered && live->result == link::SendResult::kSent;
+      if (live_sent && (!r.sent || r.data != live->data)) {
+        differ("tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) + " ms): recorded " +
+               frame_text(live->data) + ", replayed " + (r.sent ? frame_text(r.data) : std::string("no frame")));
+      } else if (live_sent) {
+        ++out.compared;
+      } else if (live != nullptr && !live->offered && r.sent) {
+        differ("tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) +
+               " ms): the live loop sent nothing, the replay " + frame_text(r.data));
+      }
+    }
+    playback.ticked(r.tick);
+  });
+  if (s.end && out.compared != s.end->frames_sent && out.difference.empty()) {
+    differ("the live run sent " + std::to_string(s.end->frames_sent) + " frames, the replay reproduced " +
+           std::to_string(out.compared));
+  }
+  out.identical = out.difference.empty();
+  return out;
+}
+
+}  // namespace andros::run

@@ -1,0 +1,78 @@
+# `plot`: the shipped plot of the demo drive is current; a script's and a
+# session's plot hold what they must; --from/--to; the errors.
+source "$(dirname "$0")/lib.sh"
+root="$DATA/../.."
+export XDG_CONFIG_HOME=$TMP/xdg
+
+# The shipped plot is what the demo drive gives today.
+bash "$root/scripts/make_plots.sh" "$BIN" "$TMP/plots" || fail "scripts/make_plots.sh failed"
+cmp -s "$TMP/plots/drive.svg" "$root/docs/plots/drive.svg" ||
+  fail "docs/plots/drive.svg is stale (or missing): regenerate with scripts/make_plots.sh $BIN"
+extra=$(cd "$root/docs/plots" && ls | grep -vx 'drive\.svg')
+[[ -z $extra ]] || fail "docs/plots/ holds files make_plots.sh does not make: $extra"
+
+# svg_has SVG TEXT...: parses as XML and each TEXT is in the page's text.
+svg_has() {
+  python3 - "$@" <<'PY' || fail "$1: not well-formed, or a label is missing"
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+text = "\n".join(root.itertext())
+missing = [t for t in sys.argv[2:] if t not in text]
+if missing: sys.exit(f"{sys.argv[1]}: missing {missing}")
+PY
+}
+shipped=$root/docs/plots/drive.svg
+svg_has "$shipped" "HD1 drive, mapping hd1.yaml" "25 Hz, code 01, weapons disabled" "replay of drive.events" \
+  "not enabled" "enabled" "stopped" "link down" "reloading" "drive" "pivot" "time (s)" "front_art_up" "pt_right"
+grep -q 'width="297mm" height="210mm"' "$shipped" || fail "not an A4 landscape page"
+grep -Eq '>(weapon_[0-9]|shotgun|laser|enable_key)<' "$shipped" && fail "the demo drive (weapons disabled) shows a weapon"
+
+# Weapons fired: their rows in red.
+expect_exit 0 "$BIN" plot "$DATA/replay/weapons_on_armed.events" --weapons --mapping "$DATA/mappings/core.yaml"
+grep -q 'fill="#c62828" font-weight="bold">weapon_1<' "$TMP/out" || fail "weapon_1 is not named in red"
+grep -q 'fill="#d32f2f"' "$TMP/out" || fail "weapon_1's bar is not red"
+# Layers: the layer strip names them.
+expect_exit 0 "$BIN" plot "$DATA/replay/layer_entered_stick_held.events" --mapping "$DATA/mappings/layers.yaml"
+cp "$TMP/out" "$TMP/layers.svg"
+svg_has "$TMP/layers.svg" "(blank: base layer)"
+
+# --from/--to narrow the time axis.
+expect_exit 0 "$BIN" plot "$root/demos/drive.events" --mapping "$root/mappings/hd1.yaml" --from 2 --to 4.5
+cp "$TMP/out" "$TMP/part.svg"
+svg_has "$TMP/part.svg" "2 to 4.5 s, 63 ticks"
+
+# A session's plot: its title, and what was recorded.
+run_cmd "$BIN" run --robot hd1 --input "$root/demos/drive.events"
+[[ $code -eq 0 ]] || fail "run exited $code"
+session=$(ls "$XDG_STATE_HOME"/andros-bridge/*.andros-session | tail -1)
+# (to 12 s: the run ends on neutral frames past the script's end; replay does not)
+expect_exit 0 "$BIN" plot "$session" --to 12 --output "$TMP/session.svg"
+svg_has "$TMP/session.svg" "HD1 drive, mapping hd1.yaml" "input $root/demos/drive.events" "session $(basename "$session")"
+# The session's frames are the replay's: the same drive and pivot lines as the shipped plot.
+python3 - "$TMP/session.svg" "$shipped" <<'PY' || fail "the session's drive and pivot differ from the replay's"
+import sys, re
+paths = [re.findall(r'<path d="([^"]*)"', open(f).read()) for f in sys.argv[1:]]
+sys.exit(0 if paths[0] == paths[1] and len(paths[0]) == 2 else 1)
+PY
+
+# A session that is not intact is drawn, and says so.
+python3 -c 'import sys; p=sys.argv[1]; l=open(p).read().split("\n"); l[7],l[8]=l[8],l[7]; open(sys.argv[2],"w").write("\n".join(l))' \
+  "$session" "$TMP/swapped.andros-session"
+expect_exit 0 "$BIN" plot "$TMP/swapped.andros-session" --output "$TMP/swapped.svg"
+svg_has "$TMP/swapped.svg" "NOT INTACT: record 7 reordered"
+
+# Errors: one line, exit 2 for bad input, 1 when the file cannot be written.
+expect_exit 2 "$BIN" plot "$TMP/none.events"
+expect_one_line_stderr
+expect_exit 2 "$BIN" plot "$root/demos/drive.events" --from x
+expect_stderr_matches "^--from: error: expected seconds"
+expect_exit 2 "$BIN" plot "$root/demos/drive.events" --from 5 --to 4
+expect_stderr_matches "^--to: error: must be later than --from"
+expect_exit 2 "$BIN" plot "$session" --robot hd1
+expect_stderr_matches "^--robot: error: not for a session"
+expect_exit 1 "$BIN" plot "$root/demos/drive.events" --output "$TMP/no/such/dir/x.svg"
+expect_stderr_matches "cannot open for writing"
+expect_exit 0 "$BIN" plot --help
+grep -q "A4" "$TMP/out" || fail "--help does not say what the page fits"
+
+finish

@@ -1,0 +1,272 @@
+// The flight recorder (run/recorder.hpp) on the run loop itself: a disk that
+// stalls or fails never delays a frame, and a recorded session (a stall, a
+// Ctrl-Z, a link loss and a reload inside it) replays byte for byte.
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "andros/input/script_input.hpp"
+#include "andros/link/fault_link.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/engine_frames.hpp"
+#include "andros/run/recorder.hpp"
+#include "andros/run/session_replay.hpp"
+#include "support/temp_dir.hpp"
+
+namespace andros::run {
+namespace {
+
+const std::string kMappings = ANDROS_MAPPINGS_DIR;
+
+/// A sink that holds every write until released (a disk that does not answer).
+class StallingSink final : public RecordSink {
+ public:
+  struct Gate {
+    std::mutex mutex;
+    std::condition_variable open;
+    bool released = false;
+    int writes = 0;
+    void release() {
+      const std::lock_guard lock(mutex);
+      released = true;
+      open.notify_all();
+    }
+  };
+  explicit StallingSink(std::shared_ptr<Gate> gate) : gate_(std::move(gate)) {}
+  bool write(std::string_view, std::string&) override {
+    std::unique_lock lock(gate_->mutex);
+    ++gate_->writes;
+    gate_->open.wait(lock, [this] { return gate_->released; });
+    return true;
+  }
+  bool sync(std::string&) override { return true; }
+
+ private:
+  std::shared_ptr<Gate> gate_;
+};
+
+/// A full disk.
+class FullSink final : public RecordSink {
+ public:
+  bool write(std::string_view, std::string& error) override {
+    error = "No space left on device";
+    return false;
+  }
+  bool sync(std::string&) override { return true; }
+};
+
+/// A script that moves the left stick on every tick for `seconds` with the deadman held.
+std::string busy_script(int seconds) {
+  std::string s = "0 connect pad\n0 button leftshoulder 0\n100 button leftshoulder 1\n";
+  for (int t = 200; t < seconds * 1000; t += 40) {
+    s += std::to_string(t) + " axis lefty " + std::to_string(-2000 - (t * 7) % 30000) + "\n";
+  }
+  return s + std::to_string(seconds * 1000) + " end\n";
+}
+
+/// The frames the link took in a run of script through hd1, on a virtual
+/// clock; with the recorder writing to writer when given.
+std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWriter* writer) {
+  input::ScriptInput script(script_path);
+  ReloadableFrames frames(make_engine_frames(
+      mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
+  std::vector<protocol::Frame> got;
+  link::SinkLink link([&got](std::int64_t, const protocol::Frame& f) { got.push_back(f); });
+  VirtualClock clock;
+  std::optional<Recorder> recorder;
+  std::optional<RecordingInput> recorded;
+  if (writer != nullptr) recorded.emplace(script, recorder.emplace(*writer));
+  input::InputSource& input = recorded ? static_cast<input::InputSource&>(*recorded) : script;
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  bridge.run([] { return false; }, [&](const TickReport& r) {
+    if (recorder) recorder->observe(r);
+  });
+  if (recorder) recorder->end("end of the input");
+  return got;
+}
+
+TEST(Recorder, AStalledDiskNeverDelaysAFrame) {
+  testing::TempDir dir;
+  const auto script = dir.write("busy.events", busy_script(60));
+  const auto without = run_loop(script, nullptr);
+
+  auto gate = std::make_shared<StallingSink::Gate>();
+  SessionWriter writer(std::make_unique<StallingSink>(gate), 64);
+  // The writer thread is stuck in its first write for the whole run: were the
+  // loop to wait for it, this run would never end.
+  const auto with = run_loop(script, &writer);
+  EXPECT_EQ(with, without);  // every frame, on its tick, the same bytes
+  EXPECT_EQ(with.size(), 60u * 25 + 1 + 3);
+  EXPECT_GT(writer.dropped(), 1000u);  // the queue filled; records, not frames, were dropped
+  gate->release();
+  EXPECT_FALSE(writer.close(5000));
+}
+
+TEST(Recorder, AFullQueueRefusesAtOnceAndCounts) {
+  auto gate = std::make_shared<StallingSink::Gate>();
+  SessionWriter writer(std::make_unique<StallingSink>(gate), 8);
+  int taken = 0;
+  for (int i = 0; i < 100; ++i) taken += writer.push("event " + std::to_string(i)) ? 1 : 0;
+  // 8 in the queue, at most one more already taken by the stalled writer.
+  EXPECT_GE(taken, 8);
+  EXPECT_LE(taken, 9);
+  EXPECT_EQ(writer.dropped(), static_cast<std::uint64_t>(100 - taken));
+  gate->release();
+  writer.close(5000);
+}
+
+TEST(Recorder, AFullDiskLosesRecordsWithTheReasonNeverAFrame) {
+  testing::TempDir dir;
+  const auto script = dir.write("busy.events", busy_script(5));
+  const auto without = run_loop(script, nullptr);
+  SessionWriter writer(std::make_unique<FullSink>());
+  const auto with = run_loop(script, &writer);
+  EXPECT_EQ(with, without);
+  EXPECT_FALSE(writer.close(5000));
+  EXPECT_GT(writer.lost(), 100u);
+  EXPECT_EQ(writer.written(), 0u);
+  EXPECT_EQ(writer.error(), "No space left on device");
+}
+
+/// A "live" run as `run` makes it, on a virtual clock that the test moves as
+/// a live one moves: a stall that skips ticks, a Ctrl-Z that stops the
+/// process a while, a reload read over a few ticks; recorded into a file.
+struct RecordedRun {
+  testing::TempDir dir;
+  std::filesystem::path session = dir.path() / "live.andros-session";
+  std::vector<std::pair<std::int64_t, protocol::DataBytes>> delivered;
+  std::vector<TickReport> reports;
+
+  void run(const std::string& script_text) {
+    const auto script_path = dir.write("drive.events", script_text);
+    input::ScriptInput script(script_path);
+    const auto engine_for = [](const std::string& file, bool weapons) {
+      auto m = mapping::load_mapping(file);
+      SessionSettings s{.robot = m->robot.value_or("HD1"), .mapping_file = m->file, .rate_millihertz = 25'000,
+                        .weapons = weapons, .code = 0x01, .center = m->center, .port = "test", .baud = 9600,
+                        .input = "script", .config = "", .sources = read_mapping_sources(m->chain)};
+      return std::make_pair(make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})),
+                            s);
+    };
+    auto [first, settings] = engine_for(kMappings + "/hd1.yaml", false);
+    ReloadableFrames frames(std::move(first));
+    VirtualClock clock;
+    link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+    SessionWriter writer(std::make_unique<FileRecordSink>(session.string()));
+    Recorder recorder(writer);
+    recorder.header("test", "2024-05-01T12:00:00+0200", 1, "bench", settings, link.status());
+    RecordingInput input(script, recorder);
+    Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+
+    int polls = 0;
+    int reload_ticks = 0;
+    SessionSettings reloaded;
+    RunControl control;
+    control.poll = [&] { return ++polls == 150 ? Request::kSuspend : Request::kNone; };  // Ctrl-Z at 6 s
+    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };  // stopped 1.23 s
+    control.begin_reload = [&](const std::string&) { reload_ticks = 0; };
+    control.finish_reload = [&]() -> std::optional<ReloadOutcome> {
+      if (++reload_ticks < 4) return std::nullopt;  // the worker still reads
+      auto [next, s] = engine_for(kMappings + "/f6a.yaml", true);
+      frames.replace(std::move(next));
+      reloaded = s;
+      return ReloadOutcome{true, "reloaded"};
+    };
+    bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const TickReport& r) {
+      recorder.observe(r);
+      reports.push_back(r);
+      if (r.sent && r.result == link::SendResult::kSent) delivered.emplace_back(r.tick, r.data);
+      if (r.tick == 40 || r.tick == 110) clock.advance(Nanos(130'000'000));  // a stall: ticks 41 and 42 skipped
+    });
+    recorder.end("end of the input");
+    ASSERT_TRUE(writer.close(5000));
+  }
+};
+
+const char* const kDriveWithFaults =
+    "0 connect pad\n"
+    "0 button leftshoulder 1\n"
+    "1000 button leftshoulder 0\n"
+    "1500 button leftshoulder 1\n"
+    "2000 axis lefty -16000\n"
+    "2500 link down\n"
+    "2700 link up\n"
+    "2900 axis lefty 0\n"
+    "3000 button leftshoulder 0\n"
+    "3100 button leftshoulder 1\n"
+    "3300 axis lefty -30000\n"
+    "3500 axis leftx 12000\n"
+    "4000 reload\n"
+    "4400 axis lefty 0\n"
+    "4420 axis leftx 0\n"
+    "4500 button leftshoulder 0\n"
+    "4600 button leftshoulder 1\n"
+    "4800 axis lefty -25000\n"
+    "5500 button dpup 1\n"
+    "5800 button dpup 0\n"
+    "7000 axis lefty 0\n"
+    "7100 button leftshoulder 0\n"
+    "7200 button leftshoulder 1\n"
+    "7400 axis lefty -20000\n"
+    "9000 button leftshoulder 0\n"
+    "9500 end\n";
+
+TEST(Recorder, ARecordedSessionReplaysByteForByte) {
+  RecordedRun live;
+  live.run(kDriveWithFaults);
+  ASSERT_TRUE(verify_session(live.session).intact);
+  const Session s = read_session(live.session);
+  // What happened is in it: the stalls, the pause, the link loss, the reload.
+  EXPECT_EQ(std::count_if(s.frames.begin(), s.frames.end(), [](const FrameRecord& f) { return f.gap == 2; }), 2);
+  EXPECT_EQ(s.pauses.size(), 1u);
+  EXPECT_EQ(s.reloads.size(), 1u);
+  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kNoLink; }));
+  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kEnabled; }));
+  ASSERT_TRUE(s.end);
+  EXPECT_EQ(s.end->frames_sent, live.delivered.size());
+
+  // Every frame the live loop sent is one the recording makes again.
+  for (const auto& [tick, data] : live.delivered) {
+    const auto* f = s.frame_at(tick);
+    ASSERT_NE(f, nullptr);
+    EXPECT_EQ(f->data, data) << "tick " << tick;
+  }
+
+  std::vector<TickReport> replayed;
+  const auto result = replay_session(s, load_recorded_mapping, [&](const TickReport& r) { replayed.push_back(r); });
+  EXPECT_TRUE(result.identical) << result.difference;
+  EXPECT_EQ(result.compared, live.delivered.size());
+  // The same ticks and the same states, not only the same bytes.
+  ASSERT_EQ(replayed.size(), live.reports.size());
+  for (std::size_t i = 0; i < replayed.size(); ++i) {
+    EXPECT_EQ(replayed[i].tick, live.reports[i].tick) << i;
+    EXPECT_EQ(replayed[i].state, live.reports[i].state) << "tick " << live.reports[i].tick;
+  }
+}
+
+TEST(Recorder, AReplayNamesTheFirstFrameThatDiffers) {
+  RecordedRun live;
+  live.run(kDriveWithFaults);
+  Session s = read_session(live.session);
+  // The frame record in effect while driving says something else.
+  const auto it = std::find_if(s.frames.begin(), s.frames.end(), [](const FrameRecord& f) { return f.data[7] != 128; });
+  ASSERT_NE(it, s.frames.end());
+  it->data[7] ^= 0x01;
+  const auto result = replay_session(s);
+  EXPECT_FALSE(result.identical);
+  EXPECT_EQ(result.difference.rfind("tick " + std::to_string(it->tick) + " (", 0), 0u) << result.difference;
+}
+
+TEST(Recorder, ASessionWithDroppedRecordsIsNotReplayed) {
+  RecordedRun live;
+  live.run(kDriveWithFaults);
+  Session s = read_session(live.session);
+  s.dropped = 3;
+  EXPECT_THROW(replay_session(s), InputError);
+}
+
+}  // namespace
+}  // namespace andros::run

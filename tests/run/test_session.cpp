@@ -1,0 +1,178 @@
+// The session file's chain (run/session.hpp): intact, and each kind of
+// tampering found at the first record it touches.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "andros/run/session.hpp"
+#include "support/temp_dir.hpp"
+
+namespace andros::run {
+namespace {
+
+/// A small session, whole: its lines.
+std::vector<std::string> session_lines() {
+  RecordChain chain;
+  std::vector<std::string> lines;
+  const auto add = [&](const std::string& payload) {
+    auto line = chain.line(payload);
+    line.pop_back();  // newline
+    lines.push_back(line);
+  };
+  add(record::header());
+  add(record::program("9.9.9"));
+  add("event 0       connect     pad");
+  add("event 40      button      a 1");
+  add("state 40 enabled");
+  add("event 80      button      a 0");
+  add("state 80 not enabled");
+  add(record::end(120, 3, 4, "SIGINT"));
+  return lines;
+}
+
+std::filesystem::path write_lines(const testing::TempDir& dir, const std::vector<std::string>& lines) {
+  std::string text;
+  for (const auto& l : lines) text += l + "\n";
+  return dir.write("s.andros-session", text);
+}
+
+TEST(Session, AWholeSessionIsIntactAndClosed) {
+  testing::TempDir dir;
+  const auto result = verify_session(write_lines(dir, session_lines()));
+  EXPECT_TRUE(result.intact) << result.problem;
+  EXPECT_EQ(result.records, 8u);
+  EXPECT_TRUE(result.closed);
+  EXPECT_EQ(result.last_hash.size(), 64u);
+}
+
+TEST(Session, EachLineIsChainedToTheOneBefore) {
+  // The same payload after a different history hashes differently.
+  RecordChain a;
+  RecordChain b;
+  a.line("x");
+  b.line("y");
+  const auto la = a.line("same");
+  const auto lb = b.line("same");
+  EXPECT_EQ(la.substr(0, la.size() - 66), lb.substr(0, lb.size() - 66));
+  EXPECT_NE(la, lb);
+}
+
+TEST(Session, AnAlteredByteIsFoundAtItsRecord) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  lines[3][lines[3].find("a 1") + 2] = '0';  // "button a 1" -> "button a 0"
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 3 (line 4) altered: its content or hash no longer matches the chain");
+}
+
+TEST(Session, AnAlteredHashIsFoundAtItsRecord) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  auto& last = lines[5].back();
+  last = last == '0' ? '1' : '0';
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 5 (line 6) altered: its content or hash no longer matches the chain");
+}
+
+TEST(Session, ARemovedRecordIsNamed) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  lines.erase(lines.begin() + 4);
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 4 removed (before line 5)");
+}
+
+TEST(Session, ARemovedAndRenumberedRecordBreaksTheChain) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  lines.erase(lines.begin() + 4);
+  // Renumbered by hand: the hashes no longer follow.
+  for (std::size_t i = 4; i < lines.size(); ++i) lines[i].replace(0, 1, std::to_string(i));
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 4 (line 5) altered: its content or hash no longer matches the chain");
+}
+
+TEST(Session, ASwappedPairIsReordered) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  std::swap(lines[5], lines[6]);
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 5 reordered: found at line 7, after record 6 (line 6)");
+}
+
+TEST(Session, CutShortItIsIntactButNotClosed) {
+  testing::TempDir dir;
+  auto lines = session_lines();
+  lines.pop_back();
+  const auto result = verify_session(write_lines(dir, lines));
+  EXPECT_TRUE(result.intact);
+  EXPECT_FALSE(result.closed);
+}
+
+TEST(Session, AnEventScriptIsNotASession) {
+  testing::TempDir dir;
+  const auto result = verify_session(dir.write("x.events", "0 connect pad\n"));
+  EXPECT_FALSE(result.intact);
+  EXPECT_EQ(result.problem, "record 0 (line 1) altered: not a record line");
+  EXPECT_FALSE(is_session_start("0 connect pad"));
+  EXPECT_TRUE(is_session_start(session_lines()[0]));
+}
+
+TEST(Session, RecordsReadBack) {
+  testing::TempDir dir;
+  RecordChain chain;
+  SessionSettings settings{.robot = "HD1", .mapping_file = "/m/hd1.yaml", .rate_millihertz = 25'000, .weapons = true,
+                           .code = 0x3C, .center = 130, .port = "sim", .baud = 9600, .input = "sdl", .config = "",
+                           .sources = {{"/m/hd1.yaml", "robot: HD1\nextends: common.yaml\n"}, {"/m/common.yaml", "x: 1\n"}}};
+  TickReport r;
+  r.tick = 7;
+  r.t_ms = 280;
+  r.data[3] = 0xAB;
+  r.result = link::SendResult::kBusy;
+  std::string text;
+  for (const auto& p : {record::header(), record::program("1.0"), record::started("2024-05-01T12:00:00+0200", 42, "bench"),
+                        record::settings(settings), record::link(-1, link::LinkStatus{}), record::frame(r, 2),
+                        record::request(280, Request::kSuspend), record::pause(1300), record::layer(280, "arm"),
+                        record::state(280, OpState::kNotEnabled), record::input_end(400),
+                        record::end(400, 10, 9, "end of the input")}) {
+    text += chain.line(p);
+  }
+  const auto s = read_session(dir.write("r.andros-session", text));
+  EXPECT_EQ(s.version, "1.0");
+  EXPECT_EQ(s.started, "2024-05-01T12:00:00+0200");
+  EXPECT_EQ(s.pid, 42);
+  EXPECT_EQ(s.host, "bench");
+  EXPECT_EQ(s.settings.robot, "HD1");
+  EXPECT_EQ(s.settings.code, 0x3C);
+  EXPECT_TRUE(s.settings.weapons);
+  EXPECT_EQ(s.settings.center, 130);
+  ASSERT_EQ(s.settings.sources.size(), 2u);
+  EXPECT_EQ(s.settings.sources[0].text, "robot: HD1\nextends: common.yaml\n");
+  ASSERT_EQ(s.frames.size(), 1u);
+  EXPECT_EQ(s.frames[0].tick, 7);
+  EXPECT_EQ(s.frames[0].gap, 2);
+  EXPECT_EQ(s.frames[0].result, link::SendResult::kBusy);
+  EXPECT_EQ(s.frames[0].data, r.data);
+  ASSERT_EQ(s.requests.size(), 1u);
+  EXPECT_EQ(s.requests[0].text, "suspend");
+  EXPECT_EQ(s.pauses, std::vector<std::int64_t>{1300});
+  ASSERT_EQ(s.layers.size(), 1u);
+  EXPECT_EQ(s.layers[0].text, "arm");
+  ASSERT_EQ(s.states.size(), 1u);
+  EXPECT_EQ(s.states[0].state, OpState::kNotEnabled);
+  EXPECT_EQ(s.input_end, 400);
+  ASSERT_TRUE(s.end);
+  EXPECT_EQ(s.end->frames_sent, 9u);
+  EXPECT_EQ(s.live_ticks(), 11 - 2);
+}
+
+}  // namespace
+}  // namespace andros::run
