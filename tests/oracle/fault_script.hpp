@@ -8,7 +8,8 @@
 // (often within one frame), Ctrl-Z and fg, reloads of good, bad and missing
 // mapping files, a stop; and the operator's stop button, squeezes of the
 // trigger (a deadman on some mappings) past half way and all the way, and
-// long pauses with nothing changing. The deadman is often held through a fault, and
+// long pauses with nothing changing; and in some scripts a supervisor's
+// controller, its stop tapped, lost and back. The deadman is often held through a fault, and
 // often released and pressed again after one, and now and then a weapon is
 // fired, so that both what must not move and what may move are reached.
 
@@ -107,8 +108,14 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(T::kButton, fire_button, 0);
   };
 
+  const auto supervisor = [&](T type, input::InputKey key = {}, int value = 0) {
+    add(type, key, value);
+    events.back().pad = input::Pad::kSupervisor;
+  };
   add(T::kConnect);
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
+  const bool supervised = pick.below(4) == 0;  // a supervisor's controller, now and then
+  if (supervised) supervisor(T::kConnect);
   const int n = 30 + static_cast<int>(pick.below(70));
   int after_stop = -1;  // events still to come once a stop is in
   for (int i = 0; i < n && after_stop != 0 && !pick.exhausted(); ++i) {
@@ -178,6 +185,19 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           break;
         case 18:
         case 19: t += 900 + pick.below(1200); break;  // nothing changes for a while (an enable timeout)
+        case 20:  // the supervisor's controller: its stop tapped, or lost and back
+          if (!supervised) {
+            rearm();
+          } else if (pick.below(2) == 0) {
+            supervisor(T::kButton, button("guide"), 1);
+            t += pick.below(2) == 0 ? 0 : pick.below(300);
+            supervisor(T::kButton, button("guide"), 0);
+          } else {
+            supervisor(T::kDisconnect);
+            pair_gap();
+            supervisor(T::kConnect);
+          }
+          break;
         default: rearm(); break;
       }
     }

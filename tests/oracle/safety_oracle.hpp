@@ -61,6 +61,8 @@ struct OracleCoverage {
   std::int64_t stop_latches = 0;                        ///< stops by a stop button
   std::int64_t panics = 0;                              ///< squeezes past the panic point
   std::int64_t timeouts = 0;                            ///< enable timeouts that ended motion
+  std::int64_t supervisor_stops = 0;                    ///< presses of a supervisor's stop button
+  std::int64_t supervised_frames = 0;                   ///< frames of scripts with a supervisor's controller
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
     frames += o.frames;
@@ -73,6 +75,8 @@ struct OracleCoverage {
     stop_latches += o.stop_latches;
     panics += o.panics;
     timeouts += o.timeouts;
+    supervisor_stops += o.supervisor_stops;
+    supervised_frames += o.supervised_frames;
     return *this;
   }
 };
@@ -96,6 +100,9 @@ class SafetyOracle {
   SafetyOracle(const mapping::Mapping& initial, std::vector<input::InputEvent> script, Lookup lookup, Options options)
       : script_(std::move(script)), lookup_(std::move(lookup)), options_(options) {
     add_possible(initial);
+    // A script that addresses the supervisor's controller anywhere is supervised from its start.
+    supervised_ = std::any_of(script_.begin(), script_.end(),
+                              [](const input::InputEvent& e) { return e.pad == input::Pad::kSupervisor; });
     // The last frame is the first at or after the `end` (or the last event).
     end_tick_ = script_.empty() ? 0 : tick_of(script_.back().t_ms);
   }
@@ -103,6 +110,7 @@ class SafetyOracle {
   /// Each delivered frame, in order: empty, or the rule it breaks.
   std::string frame(std::int64_t t, const protocol::DataBytes& data) {
     ++coverage_.frames;
+    if (supervised_) ++coverage_.supervised_frames;
     if (t % options_.period_ms != 0) return "a frame off the " + std::to_string(options_.period_ms) + " ms grid";
     if (t <= last_t_) return "frame times not increasing (previous " + std::to_string(last_t_) + ")";
     if (auto missing = missing_before(t); !missing.empty()) return missing;
@@ -214,7 +222,7 @@ class SafetyOracle {
   void at_tick(std::int64_t t) {
     if (stop_latched_) {
       const bool can_clear = t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
-                             !(estop_ && held(*estop_)) &&
+                             !(estop_ && held(*estop_)) && !supervisor_stop_held() &&
                              std::none_of(common_deadmen_.begin(), common_deadmen_.end(),
                                           [this](input::InputKey k) { return down(k); });
       if (can_clear) stop_latched_ = false;
@@ -251,6 +259,9 @@ class SafetyOracle {
       if (!value || (!first_mapping_ && !have)) have.reset();
       else have = have && !first_mapping_ ? std::max(*have, *value) : *value;
     };
+    const std::optional<input::InputKey> sup_stop =
+        m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt;
+    sup_stop_ = first_mapping_ || sup_stop_ == sup_stop ? sup_stop : std::nullopt;
     lenient(timeout_ms_, m.enable_timeout_ms);
     std::optional<int> panic;
     if (m.deadman_panic) panic = static_cast<int>(std::ceil(*m.deadman_panic * 32767.0));
@@ -294,6 +305,10 @@ class SafetyOracle {
       return;
     }
     if (stopped_) return;  // nothing else is answered once a stop is in
+    if (e.pad == input::Pad::kSupervisor) {
+      apply_supervisor(e);
+      return;
+    }
     switch (e.type) {
       case T::kConnect:
         end_enabled(Ending::kConnect);
@@ -394,6 +409,43 @@ class SafetyOracle {
            t < *reload_tick_ + options_.stop_ticks * options_.period_ms;
   }
 
+  // The supervisor's controller: driving needs it there (a script that
+  // addresses it is supervised), its coming and going ends "enabled" (the
+  // engine starts afresh), and its stop button latches as the operator's does.
+  void apply_supervisor(const input::InputEvent& e) {
+    using T = input::InputEvent::Type;
+    switch (e.type) {
+      case T::kConnect:
+        end_enabled(Ending::kConnect);
+        sup_connected_ = true;
+        sup_connect_t_ = e.t_ms;
+        sup_buttons_.clear();
+        break;
+      case T::kDisconnect:
+        end_enabled(Ending::kDisconnect);
+        sup_connected_ = false;
+        sup_buttons_.clear();
+        break;
+      case T::kButton: {
+        if (!sup_connected_) break;
+        const bool was = sup_buttons_[e.key];
+        sup_buttons_[e.key] = e.value != 0;
+        if (e.key == sup_stop_ && e.value != 0 && !was && e.t_ms != sup_connect_t_) {
+          stop_pending_ = true;
+          ++coverage_.supervisor_stops;
+        }
+        break;
+      }
+      default: break;
+    }
+  }
+
+  [[nodiscard]] bool supervisor_stop_held() const {
+    if (!sup_stop_) return false;
+    const auto it = sup_buttons_.find(*sup_stop_);
+    return it != sup_buttons_.end() && it->second;
+  }
+
   // A deadman pressed or released (button) or moved across its press point (trigger).
   void deadman_moved(input::InputKey key, bool was, bool now, std::int64_t t) {
     if (now && !was && t != connect_t_ && !stop_latched_) {
@@ -408,6 +460,7 @@ class SafetyOracle {
 
   [[nodiscard]] bool enabled() const {
     if (!connected_ || !link_up_ || suspended_ || stopped_ || stop_latched_) return false;
+    if (supervised_ && !sup_connected_) return false;
     return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return down(k); });
   }
 
@@ -421,6 +474,7 @@ class SafetyOracle {
   [[nodiscard]] std::string not_enabled_reason() const {
     if (stopped_) return "stopping";
     if (stop_latched_) return "stopped by the stop button";
+    if (supervised_ && !sup_connected_) return "no supervisor's controller";
     if (suspended_) return "suspended";
     if (!link_up_) return "link down";
     if (!connected_) return "no controller";
@@ -484,6 +538,11 @@ class SafetyOracle {
   static constexpr int kTriggerPressed = 16384;  ///< 0.5 of 32767, as the engine rounds it
 
   std::optional<input::InputKey> estop_;  ///< the stop button every possible mapping has
+  std::optional<input::InputKey> sup_stop_;  ///< the supervisor's stop button every possible mapping has
+  bool supervised_ = false;
+  bool sup_connected_ = false;
+  std::int64_t sup_connect_t_ = -1;
+  std::map<input::InputKey, bool> sup_buttons_;
   std::optional<std::int64_t> timeout_ms_;
   std::optional<int> panic_;              ///< the raw trigger value of the panic point
   bool first_mapping_ = true;
