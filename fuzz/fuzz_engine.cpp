@@ -5,6 +5,7 @@
 // not enabled, no weapon bit while weapons are off, and drive and pivot at
 // centre after a change of meaning until their stick was seen at rest.
 #include <array>
+#include <utility>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -92,6 +93,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   bool was_enabled = false;
   int sessions = 0, seen_sessions = 0;
   std::int64_t t = 0, next_frame = 0;
+  // The stop button (docs/mapping.md, "Stop"): a frame that sees it pressed
+  // since the last one, or held, moves nothing (the run loop then latches it).
+  bool stop_tapped = false;
+  const auto stop_held = [&] { return mapping.estop && input.connected() && input.button(mapping.estop->key).down; };
   for (std::size_t i = 2; i + 3 <= size; i += 3) {
     t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
     while (next_frame <= t) {
@@ -104,7 +109,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(!partner || s.values[k] == 0 || s[*partner] == 0);
         if (protocol::kSignals[k].kind == protocol::SignalKind::kWeapon && !weapons) check(s.values[k] == 0);
       }
-      const bool may_move = input.connected() && input.button(deadman).down && fresh;
+      const bool stop = std::exchange(stop_tapped, false) || stop_held();
+      const bool may_move = input.connected() && input.button(deadman).down && fresh && !stop;
       if (!may_move) check(is_neutral(s));
       for (std::size_t c = 0; c < centred.size(); ++c) {
         const mapping::Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
@@ -115,13 +121,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       was_enabled = may_move;
       seen_sessions = sessions;
-      check(s[protocol::signal_id("safety")] == (engine.status().enable == mapping::EnableState::kEnabled ? 1 : 0));
+      check(s[protocol::signal_id("safety")] ==
+            (engine.status().enable == mapping::EnableState::kEnabled && !stop ? 1 : 0));
       next_frame += 40;
     }
     const auto event = next_event(data + i, t);
     const bool was_down = input.button(deadman).down;
     const bool was_connected = input.connected();
+    const auto stop_presses = mapping.estop ? input.button(mapping.estop->key).presses : 0U;
     input.apply(event);
+    if (mapping.estop && input.button(mapping.estop->key).presses > stop_presses) stop_tapped = true;
+    if (event.type == input::InputEvent::Type::kConnect) stop_tapped = false;  // gone with the old session
     if (event.type == input::InputEvent::Type::kConnect || !input.connected()) fresh = false;
     if (event.type == input::InputEvent::Type::kConnect) ++sessions;
     if (was_connected && input.connected() && !was_down && input.button(deadman).down &&

@@ -72,17 +72,20 @@ std::unique_ptr<RunRecording> RunRecording::start(const Settings& config, const 
     return nullptr;
   }
   auto rec = std::make_unique<RunRecording>(path, std::move(sink), input, limits);
-  rec->recorder_.header(kVersion, local_time_text(now), static_cast<long>(getpid()), host_name(),
-                        session_settings(config, engine.robot, engine.mapping_file, engine.center, engine.sources),
+  auto settings = session_settings(config, engine.robot, engine.mapping_file, engine.center, engine.sources);
+  settings.supervised = input.supervised();
+  rec->recorder_.header(kVersion, local_time_text(now), static_cast<long>(getpid()), host_name(), settings,
                         link.status());
   spdlog::info("recording to {}", path.string());
   return rec;
 }
 
 run::RunControl RunRecording::control(run::RunControl inner, const Settings& config, const RunReload& reload) {
-  return run::recorded_control(std::move(inner), recorder_, [&config, &reload] {
+  return run::recorded_control(std::move(inner), recorder_, [this, &config, &reload] {
     const auto& applied = reload.applied();
-    return session_settings(config, applied.robot, applied.mapping_file, applied.center, applied.sources);
+    auto settings = session_settings(config, applied.robot, applied.mapping_file, applied.center, applied.sources);
+    settings.supervised = input_.supervised();
+    return settings;
   });
 }
 

@@ -33,7 +33,7 @@ nlohmann::json settings_json(const SessionSettings& s) {
   return {{"robot", s.robot},     {"mapping", s.mapping_file}, {"rate_mhz", s.rate_millihertz},
           {"weapons", s.weapons}, {"code", hex_byte(s.code)},  {"center", s.center},
           {"port", s.port},       {"baud", s.baud},            {"input", s.input},
-          {"config", s.config},   {"files", files}};
+          {"config", s.config},   {"supervised", s.supervised}, {"files", files}};
 }
 
 /// Splits `PAYLOAD HASH` (HASH: 64 hex digits); false when the line is not one.
@@ -270,6 +270,7 @@ SessionSettings parse_settings(const nlohmann::json& j, const SourcePos& pos) {
     s.baud = j.at("baud").get<int>();
     s.input = j.at("input").get<std::string>();
     s.config = j.at("config").get<std::string>();
+    s.supervised = j.value("supervised", false);
     for (const auto& f : j.at("files")) {
       MappingSource src{f.at("path").get<std::string>(), f.at("text").get<std::string>()};
       if (sha256_hex(src.text) != f.at("sha256").get<std::string>()) {

@@ -134,12 +134,14 @@ class Playback {
 
 class PlaybackInput final : public input::InputSource {
  public:
-  explicit PlaybackInput(Playback& p) : p_(p) {}
+  PlaybackInput(Playback& p, bool supervised) : p_(p), supervised_(supervised) {}
   void pump(input::InputState& state, std::int64_t now_ms) override { p_.pump(state, now_ms); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return p_.finished(now_ms); }
+  [[nodiscard]] bool supervised() const override { return supervised_; }
 
  private:
   Playback& p_;
+  bool supervised_;
 };
 
 class PlaybackLink final : public link::Link {
@@ -209,7 +211,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   Playback playback(s, load, frames);
   frames.replace(playback.engine_frames(s.settings));
   playback.start();
-  PlaybackInput input(playback);
+  PlaybackInput input(playback, s.settings.supervised);
   PlaybackLink link(playback);
   Bridge bridge(playback.clock(), input, frames, link,
                 BridgeOptions{.rate_millihertz = s.settings.rate_millihertz, .neutral_tail_at_end = true});

@@ -142,6 +142,9 @@ class RecordingInput final : public input::InputSource {
   void pump(input::InputState& state, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t now_ms) const override;
   void feedback(const input::FeedbackPattern& pattern) override { inner_.feedback(pattern); }
+  // Everything else the loop and the screen ask of the input is the inner source's.
+  [[nodiscard]] bool supervised() const override { return inner_.supervised(); }
+  [[nodiscard]] std::optional<input::DeviceLayout> device() const override { return inner_.device(); }
 
  private:
   input::InputSource& inner_;

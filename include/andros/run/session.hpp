@@ -66,6 +66,9 @@ struct SessionSettings {
   int baud = 0;
   std::string input;
   std::string config;
+  /// A supervisor's controller is configured (`--supervisor`, a script that
+  /// addresses one): driving needs it too, in the replay as in the run.
+  bool supervised = false;
   std::vector<MappingSource> sources;  ///< the mapping's file first, then each it extends
 };
 
