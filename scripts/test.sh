@@ -12,19 +12,28 @@ jobs=$(nproc)
 summary=$(mktemp)
 trap 'rm -f "$summary"' EXIT
 
-# phase NAME: starts a timed phase (the previous one ends); closing lists their times.
+# CPU seconds (user + system) of every process this script has waited for so far.
+cpu_seconds() {
+  times | tail -1 | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+}
+
+# phase NAME: starts a timed phase (the previous one ends); closing lists their
+# times, wall clock and CPU (which says what a phase would take on more cores).
 phases=()
 phase() {
-  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s")
+  local cpu
+  cpu=$(cpu_seconds)
+  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s (CPU $((cpu - phase_cpu)) s)")
   phase_name=$1
   phase_start=$SECONDS
+  phase_cpu=$cpu
   [[ -z $1 ]] || echo "== $1"
 }
 
 # closing: the plain 'N passed, N failed' line over every ctest run so far.
 closing() {
   phase ""
-  echo "phases: $(IFS=';'; echo "${phases[*]}" | sed 's/;/, /g')"
+  echo "phases: $(IFS=';'; echo "${phases[*]}" | sed 's/;/, /g'); total $SECONDS s"
   local total=0 failed=0 f t
   while read -r f t; do
     total=$((total + t))
