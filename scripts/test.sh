@@ -10,11 +10,14 @@ cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 jobs=$(nproc)
 summary=$(mktemp)
-trap 'rm -f "$summary"' EXIT
+trap 'rm -f "$summary" "$times_file"' EXIT
 
-# CPU seconds (user + system) of every process this script has waited for so far.
+# CPU seconds (user + system) of every process this script has waited for so
+# far. `times` is redirected, not piped: in a pipe it would time a subshell.
+times_file=$(mktemp)
 cpu_seconds() {
-  times | tail -1 | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+  times >"$times_file"
+  tail -1 "$times_file" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
 }
 
 # phase NAME: starts a timed phase (the previous one ends); closing lists their
