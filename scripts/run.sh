@@ -8,7 +8,8 @@
 # with no controller and no hardware.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh
+# Only what `run` needs: the tests are scripts/test.sh's to build.
+BUILD_TARGETS=andros-bridge scripts/build.sh
 bin=${BUILD_DIR:-build}/src/andros-bridge
 if (($# == 0)); then
   if [[ -n $("$bin" controllers --json 2>/dev/null) ]]; then

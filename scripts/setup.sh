@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libsdl2-dev libyaml-cpp-dev libspdlog-dev libcli11-dev nlohmann-json3-dev libssl-dev
   libgtest-dev libgmock-dev python3 groff-base
+  ccache  # keeps compiled objects between builds (CMakeLists.txt uses it when installed)
 )
 packages+=("$@")  # callers may ask for more (e.g. clang for the fuzzers)
 

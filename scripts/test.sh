@@ -10,21 +10,33 @@ cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 jobs=$(nproc)
 summary=$(mktemp)
-trap 'rm -f "$summary"' EXIT
+trap 'rm -f "$summary" "$times_file"' EXIT
 
-# phase NAME: starts a timed phase (the previous one ends); closing lists their times.
+# CPU seconds (user + system) of every process this script has waited for so
+# far. `times` is redirected, not piped: in a pipe it would time a subshell.
+times_file=$(mktemp)
+cpu_seconds() {
+  times >"$times_file"
+  tail -1 "$times_file" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+}
+
+# phase NAME: starts a timed phase (the previous one ends); closing lists their
+# times, wall clock and CPU (which says what a phase would take on more cores).
 phases=()
 phase() {
-  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s")
+  local cpu
+  cpu=$(cpu_seconds)
+  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s (CPU $((cpu - phase_cpu)) s)")
   phase_name=$1
   phase_start=$SECONDS
+  phase_cpu=$cpu
   [[ -z $1 ]] || echo "== $1"
 }
 
 # closing: the plain 'N passed, N failed' line over every ctest run so far.
 closing() {
   phase ""
-  echo "phases: $(IFS=';'; echo "${phases[*]}" | sed 's/;/, /g')"
+  echo "phases: $(IFS=';'; echo "${phases[*]}" | sed 's/;/, /g'); total $SECONDS s"
   local total=0 failed=0 f t
   while read -r f t; do
     total=$((total + t))
@@ -33,22 +45,32 @@ closing() {
   echo "tests: $((total - failed)) passed, $failed failed"
 }
 
-phase "build and test ($build)"
+# ctest runs twice as many jobs as cores: a unit test takes two of them (so
+# no more computing at once than there are cores), a command-line test one
+# (it mostly waits on the frame clock). tests/CMakeLists.txt sets the slots.
+ctest_jobs=$((2 * jobs))
+
+phase "build ($build)"
 scripts/build.sh
-ctest --test-dir "$build" --output-on-failure --parallel "$jobs" --timeout 300 | tee -a "$summary"
+phase "test ($build)"
+ctest --test-dir "$build" --output-on-failure --parallel "$ctest_jobs" --timeout 300 | tee -a "$summary"
 if [[ ${ANDROS_QUICK:-} == 1 ]]; then closing; exit 0; fi
 
-phase "build and test under ASan + UBSan ($build-asan)"
-BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF
+# -O1: what the sanitizers find does not need -O2's time to compile.
+phase "build under ASan + UBSan ($build-asan, -O1)"
+BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir "$build-asan" --output-on-failure --parallel "$jobs" --timeout 600 | tee -a "$summary"
+  ctest --test-dir "$build-asan" --output-on-failure --parallel "$ctest_jobs" --timeout 600 | tee -a "$summary"
 
-phase "Debian package: build (scripts/package.sh) and check (tests/package/test_package.sh)"
+phase "Debian package: build (scripts/package.sh)"
 scripts/package.sh >"$build/package.log" 2>&1 || { tail -40 "$build/package.log"; exit 1; }
+phase "Debian package: check (tests/package/test_package.sh)"
 tests/package/test_package.sh dist/andros-bridge_*.deb
 
 if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
-  phase "fuzz each target briefly"
+  phase "fuzz: build, then each target briefly"
   scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 else
   echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"

@@ -45,4 +45,10 @@ void BlockedSignals::discard(std::initializer_list<int> only) {
   }
 }
 
+bool signals_pending() {
+  sigset_t pending;
+  sigemptyset(&pending);
+  return sigpending(&pending) == 0 && !sigisemptyset(&pending);
+}
+
 }  // namespace andros

@@ -47,6 +47,9 @@ std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVeh
 }
 
 run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
+  // One sigpending() a tick rather than a sigtimedwait() for each signal set:
+  // the sets are asked only when a signal waits or the stop knows something.
+  if (!stop.has_unread() && !signals_pending()) return run::Request::kNone;
   if (stop.requested()) return run::Request::kStop;
   if (stop.reload_requested()) return run::Request::kReload;
   switch (job.poll()) {

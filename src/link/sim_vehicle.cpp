@@ -1,6 +1,7 @@
 #include "andros/link/sim_vehicle.hpp"
 
 #include <poll.h>
+#include <pthread.h>
 #include <termios.h>
 
 #include "andros/base/clock.hpp"
@@ -31,7 +32,10 @@ void SimVehicle::stop() {
   thread_.join();
 }
 
-void SimVehicle::start() { thread_ = std::thread([this] { run(); }); }
+void SimVehicle::start() {
+  thread_ = std::thread([this] { run(); });
+  pthread_setname_np(thread_.native_handle(), "andros-sim");
+}
 
 VehicleSnapshot SimVehicle::snapshot() const {
   const std::lock_guard lock(mutex_);

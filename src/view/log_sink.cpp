@@ -128,6 +128,7 @@ FdLogSink::FdLogSink(int fd, Options options)
   sigfillset(&all);
   pthread_sigmask(SIG_SETMASK, &all, &old);
   queue_->thread = std::thread([q = queue_] { write_out(q); });
+  pthread_setname_np(queue_->thread.native_handle(), "andros-log");
   pthread_sigmask(SIG_SETMASK, &old, nullptr);
 }
 

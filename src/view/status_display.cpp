@@ -1,6 +1,7 @@
 #include "andros/view/status_display.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <spdlog/sinks/ringbuffer_sink.h>
 #include <spdlog/spdlog.h>
 #include <sys/ioctl.h>
@@ -79,6 +80,7 @@ void StatusDisplay::start() {
   stop_.emplace();
   if (foreground()) write_out("\x1b[2J\x1b[?25l", period_ms_);  // clear, and hide the cursor while redrawing
   thread_ = std::thread([this] { run(); });
+  pthread_setname_np(thread_.native_handle(), "andros-screen");  // as top -H and the idle-cost benchmark name it
 }
 
 void StatusDisplay::stop() {

@@ -120,5 +120,26 @@ TEST(StopRequest, AHangUpStopsUntilItIsMadeAReload) {
   EXPECT_EQ(stop.signal_number(), SIGTERM);
 }
 
+// The run loop's one look per tick: with nothing pending and nothing unread,
+// stop, reload and job control have nothing to say, and are not asked.
+TEST(StopRequest, NothingPendingNothingUnreadMeansNothingNew) {
+  StopRequest stop(kStopSignals);
+  stop.reload_on_hangup();
+  EXPECT_FALSE(signals_pending());
+  EXPECT_FALSE(stop.has_unread());
+  raise(SIGHUP);  // blocked: pending
+  EXPECT_TRUE(signals_pending());
+  // Taken by another caller of requested() (a file read at start-up asks it):
+  // no longer pending, but the reload is still to be read.
+  EXPECT_FALSE(stop.requested());
+  EXPECT_FALSE(signals_pending());
+  EXPECT_TRUE(stop.has_unread());
+  EXPECT_TRUE(stop.reload_requested());
+  EXPECT_FALSE(stop.has_unread());
+  stop.raise();
+  EXPECT_TRUE(stop.has_unread());
+  EXPECT_FALSE(signals_pending());
+}
+
 }  // namespace
 }  // namespace andros

@@ -30,4 +30,10 @@ class BlockedSignals {
   sigset_t old_{};
 };
 
+/// True when a signal is pending for the calling thread or the process: one
+/// sigpending() call. A loop that asks several sets every turn (the run
+/// loop: stop, reload, job control) asks this first, and the sets only when
+/// it is true.
+bool signals_pending();
+
 }  // namespace andros

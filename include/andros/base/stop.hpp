@@ -44,6 +44,11 @@ class StopRequest {
   void reload_on_hangup() { hangup_reloads_ = true; }
   /// True once for each SIGHUP taken since reload_on_hangup(). Never blocks.
   bool reload_requested();
+  /// True when requested() or reload_requested() has news that no pending
+  /// signal brings: raised, or a SIGHUP taken (perhaps by another caller of
+  /// requested()) and not yet read. Without it and without signals_pending(),
+  /// neither has anything new to say. Never blocks, no system call.
+  [[nodiscard]] bool has_unread() const { return raised_ || reload_pending_; }
   /// The signal that asked (0: none, or raised by code).
   [[nodiscard]] int signal_number() const { return signal_.load(); }
 
