@@ -343,10 +343,14 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
              binding.rule);
 }
 
+void Engine::held_stops(const input::InputState& input, EngineStatus& status) const {
+  status.supervisor_stop = mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down;
+  status.stop_held = status.supervisor_stop ||
+                     (mapping_->estop && input.connected() && input.button(mapping_->estop->key).down);
+}
+
 void Engine::read_stops(const input::InputState& input) {
-  status_.supervisor_stop = mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down;
-  status_.stop_held = status_.supervisor_stop ||
-                      (mapping_->estop && input.connected() && input.button(mapping_->estop->key).down);
+  held_stops(input, status_);
   status_.stop_pressed = take_stop(input);
 }
 

@@ -87,6 +87,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       if (!frames_.take_stop(state_) && latched_tick_ < tick_ && frames_.stop_let_go(state_)) {
         apply(OpEvent::kStopCleared);
       }
+      frames_.held_stops(state_, engine_status_);  // what the screen says is held, now
       send(frames_.neutral(), observe);
       break;
     case OpState::kReloading:

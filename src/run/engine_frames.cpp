@@ -17,6 +17,9 @@ class EngineFrames final : public FrameSource {
   void restart(const input::InputState& now) override { engine_.restart(now); }
   bool take_stop(const input::InputState& input) override { return engine_.take_stop(input); }
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return engine_.stop_let_go(input); }
+  void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
+    engine_.held_stops(input, status);
+  }
 
  private:
   mapping::Engine engine_;

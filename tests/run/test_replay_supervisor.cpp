@@ -68,6 +68,15 @@ TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
                    "90 supervisor button x 1\n170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n")
                 .back(),
             S::kStopped);
+  // While stopped the engine is not stepped, but what the screen says is held is now's.
+  const auto r = replay_reports("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
+                                "90 supervisor button x 1\n130 supervisor button x 0\n200 end\n",
+                                kSupervisorMapping);
+  ASSERT_GE(r.size(), 5U);
+  EXPECT_EQ(r[3].state, S::kStopped);  // 120
+  EXPECT_TRUE(r[3].engine.supervisor_stop);
+  EXPECT_EQ(r[4].state, S::kStopped);  // 160: the deadman still held
+  EXPECT_FALSE(r[4].engine.supervisor_stop);
 }
 
 }  // namespace

@@ -49,6 +49,8 @@ class Engine {
   /// Stopped by the operator, the hands have let go: a controller there, no
   /// stop button and not the deadman held (the latch may clear).
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const;
+  /// The stop buttons held now into status (stop_held, supervisor_stop), without a step.
+  void held_stops(const input::InputState& input, EngineStatus& status) const;
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's

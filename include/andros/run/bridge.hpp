@@ -50,6 +50,9 @@ class FrameSource {
   /// Stopped by the operator: the hands have let go (a controller there, no
   /// stop button and not the deadman held), so the stop may clear.
   [[nodiscard]] virtual bool stop_let_go(const input::InputState& /*input*/) const { return true; }
+  /// Stopped (the engine is not stepped): which stop buttons are held now,
+  /// into status (stop_held, supervisor_stop), for the screen.
+  virtual void held_stops(const input::InputState& /*input*/, mapping::EngineStatus& /*status*/) const {}
 };
 
 /// What one tick did, for the status view and the log. Values only, copied by

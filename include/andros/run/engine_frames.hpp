@@ -24,6 +24,9 @@ class ReloadableFrames final : public FrameSource {
   void restart(const input::InputState& now) override { inner_->restart(now); }
   bool take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
   [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return inner_->stop_let_go(input); }
+  void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
+    inner_->held_stops(input, status);
+  }
 
  private:
   std::unique_ptr<FrameSource> inner_;
