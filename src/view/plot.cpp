@@ -9,6 +9,7 @@
 
 #include "andros/protocol/signals.hpp"
 #include "andros/timing/tick_schedule.hpp"
+#include "sheet_layout.hpp"
 
 namespace andros::view {
 namespace {
@@ -54,19 +55,6 @@ std::size_t band_of(run::OpState s) {
   return 0;
 }
 
-std::string escape(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 class Page {
  public:
@@ -80,7 +68,7 @@ class Page {
                         std::max(x1 - x0, 0.6), h, fill, extra);
   }
   void text(double x, double y, std::string_view text, std::string_view attrs = "") {
-    out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n", x, y, attrs, escape(text));
+    out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n", x, y, attrs, sheet_detail::xml_escape(text));
   }
   void line(double x0, double y0, double x1, double y1, std::string_view stroke, double width = 1) {
     out_ += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"{}\"/>\n",

@@ -45,3 +45,10 @@ finish() {
   if ((failures)); then echo "$failures check(s) failed" >&2; exit 1; fi
   echo "all checks passed"
 }
+
+# frames FILE.jsonl: "t drive pivot safety" per delivered frame.
+frames() { python3 -c '
+import json, sys
+for l in open(sys.argv[1]):
+    f = json.loads(l); s = f["signals"]
+    print(f["t"], s["drive"], s["pivot"], s["safety"])' "$1"; }

@@ -7,12 +7,6 @@ source "$(dirname "$0")/lib.sh"
 export XDG_CONFIG_HOME="$TMP/no-config"
 core="$DATA/mappings/core.yaml"
 
-# frames FILE.jsonl: "t drive pivot safety" per delivered frame.
-frames() { python3 -c '
-import json, sys
-for l in open(sys.argv[1]):
-    f = json.loads(l); s = f["signals"]
-    print(f["t"], s["drive"], s["pivot"], s["safety"])' "$1"; }
 
 # 1. Held deadman and stick through a link loss: nothing moves on the link that
 # comes back until the deadman is released and pressed afresh.
