@@ -13,10 +13,10 @@ summary=$(mktemp)
 trap 'rm -f "$summary" "$times_file"' EXIT
 
 # CPU seconds (user + system) of every process this script has waited for so
-# far. `times` is redirected, not piped: in a pipe it would time a subshell.
+# far: `times` run by this shell itself (in a pipe or $(...) it would time a
+# subshell), written to a file.
 times_file=$(mktemp)
 cpu_seconds() {
-  times >"$times_file"
   tail -1 "$times_file" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
 }
 
@@ -25,6 +25,7 @@ cpu_seconds() {
 phases=()
 phase() {
   local cpu
+  times >"$times_file"
   cpu=$(cpu_seconds)
   [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s (CPU $((cpu - phase_cpu)) s)")
   phase_name=$1
