@@ -140,10 +140,9 @@ bool Engine::take_stop(const input::InputState& input) {
 }
 
 bool Engine::stop_let_go(const input::InputState& input) const {
-  if (!input.connected()) return false;
-  if (mapping_->estop && input.button(mapping_->estop->key).down) return false;
-  if (mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down) return false;
-  return !deadman_held(input);
+  EngineStatus held;
+  held_stops(input, held);
+  return input.connected() && !held.stop_held && !deadman_held(input);
 }
 
 bool Engine::panic(const input::InputState& input) {

@@ -54,6 +54,12 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     }
   }
 
+  // A suspend's and a reload's ticks do not step the engine: a stop button
+  // pressed in them latches for when they end (the latch only: no row there).
+  if ((machine_.state() == OpState::kSuspended || machine_.state() == OpState::kReloading) &&
+      frames_.take_stop(state_)) {
+    apply(OpEvent::kOperatorStop);
+  }
   switch (machine_.state()) {
     case OpState::kStopping:
       if (neutral_frame(observe)) {
@@ -62,8 +68,6 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       }
       break;
     case OpState::kSuspended:
-      // A stop pressed now holds when the suspend ends (the latch only: no row here).
-      if (frames_.take_stop(state_)) apply(OpEvent::kOperatorStop);
       if (!suspend_frames_due_) {
         // Suspended by a script: nothing is sent until its resume.
         observe(report(frames_.neutral(), link::SendResult::kDown, false));
@@ -91,7 +95,6 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       send(frames_.neutral(), observe);
       break;
     case OpState::kReloading:
-      if (frames_.take_stop(state_)) apply(OpEvent::kOperatorStop);  // holds when the reload ends
       if (neutral_frame(observe) && control.finish_reload()) {
         apply(OpEvent::kReloadDone);
         if (std::exchange(suspend_pending_, false)) begin_suspend();
