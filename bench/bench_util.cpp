@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 #include "andros/base/clock.hpp"
@@ -42,8 +42,9 @@ std::vector<Arrival> read_arrivals(int fd, std::int64_t stop_ns, std::size_t max
     const auto n = read(fd, buf, sizeof buf);
     const auto now = monotonic_ns();
     if (n <= 0) continue;
-    decoder.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)),
-                 [&](const protocol::DecodedFrame& f) { out.push_back({now, f.data}); });
+    decoder.push(std::span<const std::uint8_t>(buf, static_cast<std::size_t>(n)), [&](const protocol::DecodedFrame& f) {
+      out.push_back({now, f.data});
+    });
   }
   return out;
 }

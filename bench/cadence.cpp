@@ -85,8 +85,8 @@ Result analyse(const std::vector<bench::Arrival>& a) {
 }
 
 void print_row(const char* name, const Result& r) {
-  std::printf("| %-34s | %6zu | %10.3f ms | %10.3f ms | %10.3f ms | %+9.3f ms/min |\n", name, r.frames,
-              r.median_ms, r.p99_dev_ms, r.max_dev_ms, r.drift_ms_per_min);
+  std::printf("| %-34s | %6zu | %10.3f ms | %10.3f ms | %10.3f ms | %+9.3f ms/min |\n", name, r.frames, r.median_ms,
+              r.p99_dev_ms, r.max_dev_ms, r.drift_ms_per_min);
 }
 
 }  // namespace
@@ -129,9 +129,10 @@ int main(int argc, char** argv) {
     }
   });
   std::thread bridge_loop([&] {
-    bridge.run([&] { return stop.requested(); }, [&](const run::TickReport& r) {
-      if (!r.shutting_down() && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
-    });
+    bridge.run([&] { return stop.requested(); },
+               [&](const run::TickReport& r) {
+                 if (!r.shutting_down() && monotonic_ns() < stop_ns) bridge_wrote.push_back({monotonic_ns(), {}});
+               });
   });
   bridge_reader.join();
   plain_reader.join();
@@ -141,11 +142,12 @@ int main(int argc, char** argv) {
 
   const auto b = analyse(bridge_got);
   const auto p = analyse(plain_got);
-  std::printf("Cadence on a pseudo-terminal, %d Hz, %d s (both loops in the same run; frames stamped on\n"
-              "arrival at the pty's far end, and, below, when each loop's write() returned)\n\n",
-              kRate, seconds);
-  std::printf("| %-34s | %6s | %13s | %13s | %13s | %16s |\n", "loop", "frames", "median period",
-              "p99 |dev|", "max |dev|", "drift");
+  std::printf(
+      "Cadence on a pseudo-terminal, %d Hz, %d s (both loops in the same run; frames stamped on\n"
+      "arrival at the pty's far end, and, below, when each loop's write() returned)\n\n",
+      kRate, seconds);
+  std::printf("| %-34s | %6s | %13s | %13s | %13s | %16s |\n", "loop", "frames", "median period", "p99 |dev|",
+              "max |dev|", "drift");
   std::printf("|%s|--------|---------------|---------------|---------------|------------------|\n",
               std::string(36, '-').c_str());
   print_row("bridge (Bridge + SerialLink)", b);

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     tcsetattr(fd, TCSANOW, &tio);
   }
   unsigned char frame[36] = {0};
-  frame[0] = 0xFF;  /* any 36 bytes do: the reader counts them */
+  frame[0] = 0xFF; /* any 36 bytes do: the reader counts them */
   struct timespec next;
   clock_gettime(CLOCK_MONOTONIC, &next);
   const long period_ns = 1000000000L / rate;

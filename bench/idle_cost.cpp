@@ -59,8 +59,8 @@ struct Case {
 };
 
 constexpr Case kCases[] = {
-    {"sdl", "sdl", false},       {"sdl+view", "sdl", true},       {"pad", "pad", false},
-    {"pad+view", "pad", true},   {"script", "script", false},     {"script+view", "script", true},
+    {"sdl", "sdl", false},     {"sdl+view", "sdl", true},   {"pad", "pad", false},
+    {"pad+view", "pad", true}, {"script", "script", false}, {"script+view", "script", true},
 };
 
 /// One process's counters at one moment.
@@ -283,13 +283,15 @@ int main(int argc, char** argv) {
   const std::string script = "/tmp/andros-bench-idle-" + std::to_string(getpid()) + ".events";
   std::ofstream(script) << "0 connect pad\n" << (seconds + kWarmupMs / 1000 + 60) * 1000 << " end\n";
 
-  std::printf("Idle cost of `%s run --port PTY` beside the floor (bench/floor.c), %d s per case after %d s\n"
-              "of start-up; nothing changes on the input. Goals (issue 18): CPU <= %.1fx the floor's,\n"
-              "<= %.0f wake-ups/s, RSS <= %.0f MB.\n\n",
-              bin.c_str(), seconds, kWarmupMs / 1000, kCpuFactorGoal, kWakeupsGoal, kRssGoalMb);
+  std::printf(
+      "Idle cost of `%s run --port PTY` beside the floor (bench/floor.c), %d s per case after %d s\n"
+      "of start-up; nothing changes on the input. Goals (issue 18): CPU <= %.1fx the floor's,\n"
+      "<= %.0f wake-ups/s, RSS <= %.0f MB.\n\n",
+      bin.c_str(), seconds, kWarmupMs / 1000, kCpuFactorGoal, kWakeupsGoal, kRssGoalMb);
   std::printf("| %-26s | %6s | %10s | %8s | %10s | %7s | %8s | |\n", "process", "frames", "p99 |dev|", "CPU",
               "CPU/frame", "wake/s", "RSS");
-  std::printf("|----------------------------|--------|------------|----------|------------|---------|----------|---|\n");
+  std::printf(
+      "|----------------------------|--------|------------|----------|------------|---------|----------|---|\n");
   bool all_ok = true;
   for (const auto& c : kCases) {
     if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), c.name) == wanted.end()) continue;

@@ -63,10 +63,11 @@ void controller_loss(const std::string& bin) {
   const bool drove = got.size() > 25 && !is_neutral(got[25].data);
   const double after_ms =
       first_neutral > 0 ? static_cast<double>(got[first_neutral].t_ns - got[0].t_ns) / 1e6 - 1010.0 : 0;
-  std::printf("| controller loss to neutral | tick %zu (t = %.0f ms) is neutral, %zu tick(s) after the loss, "
-              "%.1f ms after it | the next tick | %s |\n",
-              first_neutral, static_cast<double>(first_neutral) * kPeriodMs, first_neutral - 25, after_ms,
-              drove && first_neutral == 26 ? "PASS" : "FAIL");
+  std::printf(
+      "| controller loss to neutral | tick %zu (t = %.0f ms) is neutral, %zu tick(s) after the loss, "
+      "%.1f ms after it | the next tick | %s |\n",
+      first_neutral, static_cast<double>(first_neutral) * kPeriodMs, first_neutral - 25, after_ms,
+      drove && first_neutral == 26 ? "PASS" : "FAIL");
 }
 
 void shutdown_time(const std::string& bin) {
@@ -79,8 +80,9 @@ void shutdown_time(const std::string& bin) {
   const double ms = static_cast<double>(monotonic_ns() - t_term) / 1e6;
   std::size_t neutral_tail = 0;
   for (auto it = tail.rbegin(); it != tail.rend() && is_neutral(it->data); ++it) ++neutral_tail;
-  std::printf("| SIGTERM mid-drive to exit | exit %d after %.0f ms, the last %zu frames neutral | < 1 s, >= 3 neutral | %s |\n",
-              status, ms, neutral_tail, status == 0 && ms < 1000 && neutral_tail >= 3 ? "PASS" : "FAIL");
+  std::printf(
+      "| SIGTERM mid-drive to exit | exit %d after %.0f ms, the last %zu frames neutral | < 1 s, >= 3 neutral | %s |\n",
+      status, ms, neutral_tail, status == 0 && ms < 1000 && neutral_tail >= 3 ? "PASS" : "FAIL");
 }
 
 // The tick that sees the stop carries the first neutral frame: it leaves at
@@ -91,7 +93,7 @@ void first_neutral_after_stop(const std::string& bin) {
   for (int i = 0; i < 10; ++i) {
     bench::BridgeProcess run(bin, std::string(kDrive) + "60000 end\n");
     bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 15 + i);  // driving by now
-    sleep_until_ns_uninterrupted(monotonic_ns() + i * 4 * kNsPerMs);  // 0..36 ms into the period
+    sleep_until_ns_uninterrupted(monotonic_ns() + i * 4 * kNsPerMs);       // 0..36 ms into the period
     const auto t_term = monotonic_ns();
     kill(run.pid, SIGTERM);
     const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);
@@ -106,8 +108,9 @@ void first_neutral_after_stop(const std::string& bin) {
   std::sort(ms.begin(), ms.end());
   const double median = ms.empty() ? -1 : ms[ms.size() / 2];
   const double worst = ms.empty() ? -1 : ms.back();
-  std::printf("| SIGTERM to the first neutral frame (10 runs) | median %.1f ms, max %.1f ms | <= one period (40 ms) | %s |\n",
-              median, worst, ms.size() == 10 && worst <= kPeriodMs + 1.0 ? "PASS" : "FAIL");
+  std::printf(
+      "| SIGTERM to the first neutral frame (10 runs) | median %.1f ms, max %.1f ms | <= one period (40 ms) | %s |\n",
+      median, worst, ms.size() == 10 && worst <= kPeriodMs + 1.0 ? "PASS" : "FAIL");
 }
 
 void replug(const std::string& bin) {
@@ -134,7 +137,9 @@ void replug(const std::string& bin) {
 
 void cost(const std::string& bin, int seconds, bool sim) {
   bench::BridgeProcess run(bin, std::string(kDrive) + std::to_string(seconds * 1000) + " end\n", sim ? "sim" : "");
-  if (!sim) bench::read_arrivals(run.pty.master.get(), run.t0 + std::int64_t{seconds} * 1'000'000'000 + kWaitNs, SIZE_MAX, run.pid);
+  if (!sim)
+    bench::read_arrivals(run.pty.master.get(), run.t0 + std::int64_t{seconds} * 1'000'000'000 + kWaitNs, SIZE_MAX,
+                         run.pid);
   rusage usage{};
   bench::wait_child(run.pid, &usage);
   const double wall = static_cast<double>(monotonic_ns() - run.t0) / 1e9;
@@ -142,10 +147,10 @@ void cost(const std::string& bin, int seconds, bool sim) {
   const double sys = seconds_of(usage.ru_stime);
   const double pct = 100.0 * (user + sys) / wall;
   const double rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  std::printf("| cost at 25 Hz, %s | %.2f%% of a core (%.3f s user + %.3f s sys in %.1f s, start-up included), "
-              "peak RSS %.1f MB | < 0.5%%, < 12 MB | %s |\n",
-              sim ? "--port sim" : "--port PTY", pct, user, sys, wall, rss_mb,
-              pct < 0.5 && rss_mb < 12 ? "PASS" : "FAIL");
+  std::printf(
+      "| cost at 25 Hz, %s | %.2f%% of a core (%.3f s user + %.3f s sys in %.1f s, start-up included), "
+      "peak RSS %.1f MB | < 0.5%%, < 12 MB | %s |\n",
+      sim ? "--port sim" : "--port PTY", pct, user, sys, wall, rss_mb, pct < 0.5 && rss_mb < 12 ? "PASS" : "FAIL");
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ void measure(Way way, bool moving, std::int64_t ticks) {
       if (k % 1000 == 999) usleep(100'000);
     }
     writer.close(10'000);
-    if (writer.dropped() + writer.lost() != 0) std::printf("(dropped %llu)\n", static_cast<unsigned long long>(writer.dropped()));
+    if (writer.dropped() + writer.lost() != 0)
+      std::printf("(dropped %llu)\n", static_cast<unsigned long long>(writer.dropped()));
   }
   const double cpu = cpu_s() - cpu0;
   const auto bytes = std::filesystem::file_size(path);
@@ -94,7 +95,9 @@ void measure(Way way, bool moving, std::int64_t ticks) {
 
 int main(int argc, char** argv) {
   const std::int64_t ticks = argc > 1 ? std::stoll(argv[1]) : 100'000;
-  std::printf("| frames kept as | drive | loop's thread, mean per tick | p99 | CPU per tick, writer included | session per hour at 25 Hz |\n");
+  std::printf(
+      "| frames kept as | drive | loop's thread, mean per tick | p99 | CPU per tick, writer included | session per "
+      "hour at 25 Hz |\n");
   std::printf("|---|---|---|---|---|---|\n");
   for (const bool moving : {true, false}) {
     for (const Way way : {Way::kChanges, Way::kEveryFrame, Way::kDigest}) measure(way, moving, ticks);

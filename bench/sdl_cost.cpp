@@ -41,8 +41,8 @@ Phase run_phase(double seconds, Work&& work) {
 }
 
 void print(const char* name, const Phase& p) {
-  std::printf("| %-28s | %7.1f | %8.3f | %9.3f %% | %6ld |\n", name, p.wall_s, p.cpu_s,
-              100.0 * p.cpu_s / p.wall_s, p.ticks);
+  std::printf("| %-28s | %7.1f | %8.3f | %9.3f %% | %6ld |\n", name, p.wall_s, p.cpu_s, 100.0 * p.cpu_s / p.wall_s,
+              p.ticks);
 }
 
 }  // namespace
@@ -71,8 +71,7 @@ int main(int argc, char** argv) {
   print("pump(), pad at rest", pumped);
   print("pump(), stick moving", moving);
   std::printf("\npump() cost beyond the bare loop: %.3f %% (at rest), %.3f %% (moving) of one core\n",
-              100.0 * (pumped.cpu_s - idle.cpu_s) / pumped.wall_s,
-              100.0 * (moving.cpu_s - idle.cpu_s) / moving.wall_s);
+              100.0 * (pumped.cpu_s - idle.cpu_s) / pumped.wall_s, 100.0 * (moving.cpu_s - idle.cpu_s) / moving.wall_s);
   std::printf("peak RSS: %.1f MB\n", static_cast<double>(ru.ru_maxrss) / 1024.0);
   return 0;
 }

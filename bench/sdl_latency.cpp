@@ -123,7 +123,8 @@ int main(int argc, char** argv) {
     if (done == 0) continue;
     tick_to_bytes.push_back(static_cast<double>(done - tick_at[static_cast<std::size_t>(k)]) / 1e6);
     deadline_to_bytes.push_back(static_cast<double>(done - (start + kGrid.tick_ns(k))) / 1e6);
-    wake_lateness.push_back(static_cast<double>(tick_at[static_cast<std::size_t>(k)] - (start + kGrid.tick_ns(k))) / 1e6);
+    wake_lateness.push_back(static_cast<double>(tick_at[static_cast<std::size_t>(k)] - (start + kGrid.tick_ns(k))) /
+                            1e6);
   }
 
   std::printf("| %-34s | %8s | %8s | %8s | %5s |\n", "latency (ms)", "median", "p99", "max", "n");
@@ -133,7 +134,8 @@ int main(int argc, char** argv) {
   row("tick (nominal) -> woken", wake_lateness);
   row("tick (woken) -> 36 bytes on pty", tick_to_bytes);
   row("tick (nominal) -> 36 bytes on pty", deadline_to_bytes);
-  const auto over = std::count_if(deadline_to_bytes.begin(), deadline_to_bytes.end(), [](double ms) { return ms > 1.0; });
+  const auto over =
+      std::count_if(deadline_to_bytes.begin(), deadline_to_bytes.end(), [](double ms) { return ms > 1.0; });
   std::printf("\nframes on the pty more than 1 ms after their nominal tick: %ld of %zu\n", static_cast<long>(over),
               deadline_to_bytes.size());
   std::printf("changes not seen on the next tick: %ld of %ld\n", missed, ticks);

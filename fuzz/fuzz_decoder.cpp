@@ -31,7 +31,6 @@ std::vector<Seen> decode(std::span<const std::uint8_t> bytes, std::size_t chunk,
   return seen;
 }
 
-
 }  // namespace
 
 using andros::fuzz::check;

@@ -5,12 +5,12 @@
 // not enabled, no weapon bit while weapons are off, and drive and pivot at
 // centre after a change of meaning until their stick was seen at rest.
 #include <array>
-#include <utility>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "andros/mapping/engine.hpp"
@@ -24,12 +24,12 @@ namespace {
 
 using namespace andros;
 
-
 const std::vector<mapping::ValidMapping>& shipped() {
   static const auto mappings = [] {
     std::vector<mapping::ValidMapping> out;
     for (const auto robot : protocol::kRobotTypes) {
-      out.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
+      out.push_back(
+          mapping::load_mapping(mapping::find_robot_mapping(robot, {std::filesystem::path(kSourceMappingsDir)})));
     }
     return out;
   }();
@@ -40,7 +40,8 @@ const std::vector<mapping::ValidMapping>& shipped() {
 bool is_neutral(const protocol::ControlState& s) {
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     const auto kind = protocol::kSignals[i].kind;
-    if ((kind == protocol::SignalKind::kMotion || kind == protocol::SignalKind::kWeapon || kind == protocol::SignalKind::kInterlock) &&
+    if ((kind == protocol::SignalKind::kMotion || kind == protocol::SignalKind::kWeapon ||
+         kind == protocol::SignalKind::kInterlock) &&
         s.values[i] != 0) {
       return false;
     }
@@ -61,12 +62,14 @@ input::InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
     case 3:
     case 4:
       e.type = input::InputEvent::Type::kButton;
-      e.key = input::InputKey{input::InputKind::kPadButton, static_cast<std::uint16_t>(p[1] % input::kPadButtonNames.size())};
+      e.key = input::InputKey{input::InputKind::kPadButton,
+                              static_cast<std::uint16_t>(p[1] % input::kPadButtonNames.size())};
       e.value = p[2] & 1;
       break;
     default:
       e.type = input::InputEvent::Type::kAxis;
-      e.key = input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % input::kPadAxisNames.size())};
+      e.key =
+          input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % input::kPadAxisNames.size())};
       e.value = static_cast<int>(p[2] * 257) - 32768;
       break;
   }
@@ -113,7 +116,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const bool may_move = input.connected() && input.button(deadman).down && fresh && !stop;
       if (!may_move) check(is_neutral(s));
       for (std::size_t c = 0; c < centred.size(); ++c) {
-        const mapping::Binding* now = may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
+        const mapping::Binding* now =
+            may_move ? test::centre_driver(mapping, engine.status().layer, centred[c]) : nullptr;
         if (centre[c].must_centre(now, !was_enabled || sessions != seen_sessions,
                                   [&](input::InputKey key) { return input.axis(key); })) {
           check(s[centred[c]] == mapping.center);

@@ -23,7 +23,6 @@
 
 namespace {
 
-
 constexpr std::string_view kFileSeparator = "\n#file\n";
 constexpr int kMaxFiles = 24;  // more than an extends chain may hold
 

@@ -89,7 +89,7 @@ bool is_journal_stream(int fd) {
       !parse_number(value.substr(colon + 1), ino)) {
     return false;
   }
-  struct stat st{};
+  struct stat st {};
   return ::fstat(fd, &st) == 0 && st.st_dev == dev && st.st_ino == ino;
 }
 

@@ -112,7 +112,8 @@ std::string unescape_text(std::string_view text, const SourcePos& pos) {
     } else {
       SourcePos at = pos;
       if (at.column > 0) at.column += static_cast<int>(i);
-      throw InputError(at, "unknown escape " + quote(text.substr(i, 2)) + " (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
+      throw InputError(
+          at, "unknown escape " + quote(text.substr(i, 2)) + " (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
     }
     ++i;
   }
@@ -166,8 +167,7 @@ std::uint8_t parse_code(std::string_view text, const SourcePos& pos) {
   if (digits.size() > 2 && digits[0] == '0' && to_lower(digits[1]) == 'x') digits.remove_prefix(2);
   const auto value = to_integer(digits, 16);
   if (digits.size() > 2 || digits.starts_with('-') || !value) {
-    throw InputError(pos, "code " + quote(text) +
-                              " is not a byte in hex (one or two hex digits, e.g. 01 or 3C)");
+    throw InputError(pos, "code " + quote(text) + " is not a byte in hex (one or two hex digits, e.g. 01 or 3C)");
   }
   return static_cast<std::uint8_t>(*value);
 }
@@ -177,8 +177,8 @@ long long parse_integer(std::string_view text, long long min, long long max, std
   const auto value = to_integer(text);
   if (!value) throw InputError(pos, std::string(what) + " " + quote(text) + " is not a whole number");
   if (*value < min || *value > max) {
-    throw InputError(pos, std::string(what) + " " + std::to_string(*value) + " is out of range " +
-                              std::to_string(min) + ".." + std::to_string(max));
+    throw InputError(pos, std::string(what) + " " + std::to_string(*value) + " is out of range " + std::to_string(min) +
+                              ".." + std::to_string(max));
   }
   return *value;
 }

@@ -170,8 +170,8 @@ std::optional<std::string_view> TextReader::next_line() {
     if (line.size() > limits_.max_line) fail_line_too_long(line_no_);
     consumed_ += line.size() + (ended ? 1 : 0);
     if (consumed_ > limits_.max_bytes) {
-      throw InputError(SourcePos{name_, line_no_}, "more than " + format_size(limits_.max_bytes) +
-                                                        " (the limit for " + with_article(limits_.kind) + ")");
+      throw InputError(SourcePos{name_, line_no_}, "more than " + format_size(limits_.max_bytes) + " (the limit for " +
+                                                       with_article(limits_.kind) + ")");
     }
     pos_ += line.size() + (ended ? 1 : 0);
     scan_ = pos_;

@@ -22,7 +22,9 @@ std::vector<std::string> warnings(const mapping::Mapping& mapping) {
   for (const auto ref : mapping::all_bindings(mapping)) {
     const auto& b = mapping::binding_at(mapping, ref);
     const auto* axis = std::get_if<mapping::AxisBinding>(&b.rule);
-    if (axis == nullptr || protocol::info(axis->analog).kind != protocol::SignalKind::kCentred || axis->shape.deadzone > 0) continue;
+    if (axis == nullptr || protocol::info(axis->analog).kind != protocol::SignalKind::kCentred ||
+        axis->shape.deadzone > 0)
+      continue;
     out.push_back(format_error(b.pos,
                                "no deadzone on the stick driving '" + std::string(protocol::info(axis->analog).name) +
                                    "': after the deadman press or a layer change it acts only once it reads "
@@ -91,8 +93,8 @@ std::vector<std::string> lost_signals(const mapping::Mapping& m) {
       }
       break;
     }
-    out.push_back(format_error(at, name + " is on no input: " + why + " (bind it to another input if the vehicle needs it)",
-                               "warning"));
+    out.push_back(format_error(
+        at, name + " is on no input: " + why + " (bind it to another input if the vehicle needs it)", "warning"));
   }
   return out;
 }
@@ -101,17 +103,16 @@ std::vector<std::string> lost_signals(const mapping::Mapping& m) {
 
 void add_check_command(CLI::App& app, int& exit_code) {
   auto files = std::make_shared<std::vector<std::string>>();
-  auto* cmd = app.add_subcommand(
-      "check",
-      "Load and validate mapping files: prints 'FILE: ok' for each good one and the\n"
-      "error (FILE:LINE:COL: error: ...) for each bad one; exits 2 if any is bad.\n"
-      "A file with no 'robot:' is checked as a base for other files to extend. Warnings\n"
-      "(FILE:LINE:COL: warning: ...) point at what loads but may surprise: a stick on\n"
-      "drive or pivot with no deadzone, a signal the extended file bound left on no input.\n"
-      "They do not change the exit code. Every error of a file is reported, not only the\n"
-      "first, at the line of the file that has it. A 'center:'\n"
-      "trim other than 128 is said on the ok line: 'FILE: ok (center 124: drive and\n"
-      "pivot rest at 124 while enabled; neutral frames carry 128)'.");
+  auto* cmd = app.add_subcommand("check",
+                                 "Load and validate mapping files: prints 'FILE: ok' for each good one and the\n"
+                                 "error (FILE:LINE:COL: error: ...) for each bad one; exits 2 if any is bad.\n"
+                                 "A file with no 'robot:' is checked as a base for other files to extend. Warnings\n"
+                                 "(FILE:LINE:COL: warning: ...) point at what loads but may surprise: a stick on\n"
+                                 "drive or pivot with no deadzone, a signal the extended file bound left on no input.\n"
+                                 "They do not change the exit code. Every error of a file is reported, not only the\n"
+                                 "first, at the line of the file that has it. A 'center:'\n"
+                                 "trim other than 128 is said on the ok line: 'FILE: ok (center 124: drive and\n"
+                                 "pivot rest at 124 while enabled; neutral frames carry 128)'.");
   cmd->add_option("FILE", *files, "mapping files (YAML)")->required();
   cmd->callback([files, &exit_code] {
     bool all_ok = true;

@@ -46,11 +46,10 @@ int run_controllers(const ControllersOptions& opt) {
 
 void add_controllers_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<ControllersOptions>();
-  auto* cmd = app.add_subcommand(
-      "controllers",
-      "List the attached controllers: index, type (game controller, or plain joystick\n"
-      "with numbered buttons, axes and hats), GUID and name. Any of index, GUID or name\n"
-      "can be given to --controller.");
+  auto* cmd = app.add_subcommand("controllers",
+                                 "List the attached controllers: index, type (game controller, or plain joystick\n"
+                                 "with numbered buttons, axes and hats), GUID and name. Any of index, GUID or name\n"
+                                 "can be given to --controller.");
   // Only the mappings matter here: they decide the type and name shown.
   add_controller_db_option(cmd, opt->sdl);
   cmd->add_flag("--json", opt->json,

@@ -61,8 +61,8 @@ int run_decode(const DecodeOptions& opt) {
   if (in == nullptr) {
     throw InputError(SourcePos{opt.input}, std::string("cannot open: ") + std::strerror(errno));
   }
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closer(
-      from_stdin ? nullptr : in, [](std::FILE* f) { return std::fclose(f); });
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closer(from_stdin ? nullptr : in,
+                                                               [](std::FILE* f) { return std::fclose(f); });
   struct stat st {};
   if (::fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
     throw InputError(SourcePos{opt.input}, "is a directory, not a capture file");
@@ -93,10 +93,8 @@ int run_decode(const DecodeOptions& opt) {
                "frames: %llu, valid: %llu, bad checksum: %llu, invalid: %llu, bytes skipped: %llu "
                "(of %llu)\n",
                static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.valid),
-               static_cast<unsigned long long>(s.bad_checksum),
-               static_cast<unsigned long long>(s.invalid),
-               static_cast<unsigned long long>(s.bytes_skipped),
-               static_cast<unsigned long long>(s.bytes_total));
+               static_cast<unsigned long long>(s.bad_checksum), static_cast<unsigned long long>(s.invalid),
+               static_cast<unsigned long long>(s.bytes_skipped), static_cast<unsigned long long>(s.bytes_total));
   return kExitOk;
 }
 
@@ -114,8 +112,8 @@ void run_signals(bool as_json) {
       std::printf("%s\n", row.dump().c_str());
     } else {
       const std::string bit = sig.is_bit() ? std::to_string(sig.bit) : "0-7";
-      std::printf("%-20s byte %2d bit %-3s %-10s %-20s %s\n", name.c_str(), sig.byte, bit.c_str(),
-                  kind.c_str(), partner.empty() ? "-" : partner.c_str(), label.c_str());
+      std::printf("%-20s byte %2d bit %-3s %-10s %-20s %s\n", name.c_str(), sig.byte, bit.c_str(), kind.c_str(),
+                  partner.empty() ? "-" : partner.c_str(), label.c_str());
     }
   }
 }
@@ -127,31 +125,27 @@ void add_frame_command(CLI::App& app, int& exit_code) {
   frame->require_subcommand(1);
 
   auto enc = std::make_shared<EncodeOptions>();
-  auto* encode_cmd = frame->add_subcommand(
-      "encode",
-      "Print the 36-byte frame for 16 data bytes, as 72 upper-case hex digits.\n"
-      "Encodes exactly what it is given: no bits are fixed.");
-  encode_cmd->add_option("HEX32", enc->hex, "16 data bytes as 32 hex digits (spaces allowed)")
-      ->required();
+  auto* encode_cmd = frame->add_subcommand("encode",
+                                           "Print the 36-byte frame for 16 data bytes, as 72 upper-case hex digits.\n"
+                                           "Encodes exactly what it is given: no bits are fixed.");
+  encode_cmd->add_option("HEX32", enc->hex, "16 data bytes as 32 hex digits (spaces allowed)")->required();
   encode_cmd->add_flag("--raw", enc->raw, "write the 36 bytes themselves instead of hex text");
   encode_cmd->callback([enc] { run_encode(*enc); });
 
   auto dec = std::make_shared<DecodeOptions>();
-  auto* decode_cmd = frame->add_subcommand(
-      "decode",
-      "Find every frame in a raw byte stream (a capture of the serial line) and print one\n"
-      "JSON object per frame per line; a summary goes to stderr.");
-  decode_cmd->add_option("FILE", dec->input, "capture file, or - for standard input")
-      ->default_str("-");
-  decode_cmd->add_option("--code", dec->code,
-                         "also flag frames whose byte 11 differs from this code (2 hex digits)");
+  auto* decode_cmd =
+      frame->add_subcommand("decode",
+                            "Find every frame in a raw byte stream (a capture of the serial line) and print one\n"
+                            "JSON object per frame per line; a summary goes to stderr.");
+  decode_cmd->add_option("FILE", dec->input, "capture file, or - for standard input")->default_str("-");
+  decode_cmd->add_option("--code", dec->code, "also flag frames whose byte 11 differs from this code (2 hex digits)");
   decode_cmd->callback([dec, &exit_code] { exit_code = run_decode(*dec); });
 
   auto as_json = std::make_shared<bool>(false);
-  auto* signals_cmd = frame->add_subcommand(
-      "signals",
-      "List every signal of the frame under its canonical name: byte, bit, kind (motion,\n"
-      "selector, weapon, interlock, centred, level, constant), opposing partner, ICD wording.");
+  auto* signals_cmd =
+      frame->add_subcommand("signals",
+                            "List every signal of the frame under its canonical name: byte, bit, kind (motion,\n"
+                            "selector, weapon, interlock, centred, level, constant), opposing partner, ICD wording.");
   signals_cmd->add_flag("--json", *as_json, "one JSON object per signal per line");
   signals_cmd->callback([as_json] { run_signals(*as_json); });
 }

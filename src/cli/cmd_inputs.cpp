@@ -92,12 +92,11 @@ int run_inputs(const InputsOptions& opt) {
 
 void add_inputs_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<InputsOptions>();
-  auto* cmd = app.add_subcommand(
-      "inputs",
-      "Show what the controller reports, live: every button, axis, trigger and hat by SDL\n"
-      "name and number, each axis with its value and the deadzone (or threshold) the\n"
-      "mapping applies to it. On a terminal a screen; otherwise one line per change.\n"
-      "Ctrl-C ends it. See docs/controllers.md.");
+  auto* cmd = app.add_subcommand("inputs",
+                                 "Show what the controller reports, live: every button, axis, trigger and hat by SDL\n"
+                                 "name and number, each axis with its value and the deadzone (or threshold) the\n"
+                                 "mapping applies to it. On a terminal a screen; otherwise one line per change.\n"
+                                 "Ctrl-C ends it. See docs/controllers.md.");
   cmd->add_option("--robot", opt->robot, "show the deadzones of this robot type's mapping");
   cmd->add_option("--mapping", opt->mapping,
                   "show the deadzones of this mapping file (with neither option: the mapping 'run'\n"

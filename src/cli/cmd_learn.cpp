@@ -23,17 +23,20 @@ struct LearnCommandOptions {
 };
 
 int run_learn(const LearnCommandOptions& opt) {
-  if (opt.robot.empty() == opt.mapping.empty()) throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
-  if (opt.output == "-") throw InputError(SourcePos{"--output"}, "learn writes a file (its dialogue is on standard output)");
+  if (opt.robot.empty() == opt.mapping.empty())
+    throw InputError("learn: give --robot NAME or --mapping FILE (one of them)");
+  if (opt.output == "-")
+    throw InputError(SourcePos{"--output"}, "learn writes a file (its dialogue is on standard output)");
   auto base = mapping::load_chosen_mapping(opt.mapping, opt.robot);
   const auto target = learn_target(*base, opt.output, opt.force);  // checked before the operator does any work
   StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
   input::LiveGestures pad(opt.sdl);
   mapping::LearnPlan plan(*base);
   Keyboard keys(STDIN_FILENO);
-  std::printf("learning %s (robot %s, %zu inputs) from %s\n"
-              "Enter keeps the input, s skips the rest of this layer, b goes back, w writes now, q quits without writing\n",
-              opt.output.c_str(), plan.base().robot.value_or("?").c_str(), plan.steps().size(), pad.selection().c_str());
+  std::printf(
+      "learning %s (robot %s, %zu inputs) from %s\n"
+      "Enter keeps the input, s skips the rest of this layer, b goes back, w writes now, q quits without writing\n",
+      opt.output.c_str(), plan.base().robot.value_or("?").c_str(), plan.steps().size(), pad.selection().c_str());
   LearnSession session(plan, pad, keys, stdout);
   while (!signals.requested() && session.step(20)) {
   }
@@ -55,17 +58,17 @@ int run_learn(const LearnCommandOptions& opt) {
 
 void add_learn_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<LearnCommandOptions>();
-  auto* cmd = app.add_subcommand(
-      "learn",
-      "Change a mapping's buttons by pressing them: walks every input of the mapping\n"
-      "(the deadman, each binding, each layer key), shows what it does and its input now,\n"
-      "and takes the next button, stick push or trigger pull on the controller. Enter keeps\n"
-      "the input, s skips the rest of the layer, b goes back, w writes now, q (or Ctrl-C)\n"
-      "quits without writing. An input already used in the same layer is refused. Writes a\n"
-      "mapping that extends the one learned from with only what changed (extends: ROBOT\n"
-      "for a robot's mapping), loaded and checked before it is written; if it cannot be\n"
-      "written, it is printed instead. See docs/mapping.md (Changing buttons with learn).\n"
-      "Exit: 0 written or nothing changed, 1 quit, 2 bad options or mapping.");
+  auto* cmd =
+      app.add_subcommand("learn",
+                         "Change a mapping's buttons by pressing them: walks every input of the mapping\n"
+                         "(the deadman, each binding, each layer key), shows what it does and its input now,\n"
+                         "and takes the next button, stick push or trigger pull on the controller. Enter keeps\n"
+                         "the input, s skips the rest of the layer, b goes back, w writes now, q (or Ctrl-C)\n"
+                         "quits without writing. An input already used in the same layer is refused. Writes a\n"
+                         "mapping that extends the one learned from with only what changed (extends: ROBOT\n"
+                         "for a robot's mapping), loaded and checked before it is written; if it cannot be\n"
+                         "written, it is printed instead. See docs/mapping.md (Changing buttons with learn).\n"
+                         "Exit: 0 written or nothing changed, 1 quit, 2 bad options or mapping.");
   cmd->add_option("--robot", opt->robot, "the robot whose mapping to learn from (as 'run --robot' finds it)")
       ->type_name("NAME");
   cmd->add_option("--mapping", opt->mapping, "the mapping file to learn from")->type_name("FILE");

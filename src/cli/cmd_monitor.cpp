@@ -150,7 +150,7 @@ int run_monitor(const MonitorOptions& opt) {
   link::VehicleView view(settings.expected_code);
 
   if (opt.source == "-") return monitor_stream("standard input", STDIN_FILENO, false, view);
-  struct stat st{};
+  struct stat st {};
   if (::stat(opt.source.c_str(), &st) != 0) {
     throw InputError(SourcePos{opt.source}, std::string("cannot open: ") + std::strerror(errno));
   }
@@ -171,13 +171,12 @@ int run_monitor(const MonitorOptions& opt) {
 
 void add_monitor_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<MonitorOptions>();
-  auto* cmd = app.add_subcommand(
-      "monitor",
-      "The vehicle's view: decode the frames arriving on a serial port (or in a capture file,\n"
-      "or on standard input) and show them live, with rate, period jitter and error counts.\n"
-      "A capture file is decoded to its end and summarised. Stops on Ctrl-C.");
-  cmd->add_option("PORT|FILE", opt->source, "serial port, capture file, or - for standard input")
-      ->default_str("-");
+  auto* cmd =
+      app.add_subcommand("monitor",
+                         "The vehicle's view: decode the frames arriving on a serial port (or in a capture file,\n"
+                         "or on standard input) and show them live, with rate, period jitter and error counts.\n"
+                         "A capture file is decoded to its end and summarised. Stops on Ctrl-C.");
+  cmd->add_option("PORT|FILE", opt->source, "serial port, capture file, or - for standard input")->default_str("-");
   opt->settings = std::make_unique<CommandLine>(*cmd, kMonitor);
   cmd->callback([opt, &exit_code] { exit_code = run_monitor(*opt); });
 }

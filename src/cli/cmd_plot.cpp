@@ -80,7 +80,8 @@ bool is_session(const std::string& path) {
 view::PlotInput from_session(const PlotOptions& opt) {
   for (const auto& row : settings_table()) {
     if ((row.commands & kPlot) != 0 && opt.settings->given(flag_name(row))) {
-      throw InputError(SourcePos{std::string(flag_name(row))}, "not for a session: it is drawn with the settings it recorded");
+      throw InputError(SourcePos{std::string(flag_name(row))},
+                       "not for a session: it is drawn with the settings it recorded");
     }
   }
   const auto s = run::read_session(opt.source);
@@ -89,8 +90,8 @@ view::PlotInput from_session(const PlotOptions& opt) {
   in.settings = fmt::format("{} Hz, code {:02X}, {}, input {}, port {}", timing::rate_text(s.settings.rate_millihertz),
                             s.settings.code, weapons_text(s.settings.weapons), s.settings.input, s.settings.port);
   if (!s.reloads.empty()) in.settings += fmt::format(", {} reload(s)", s.reloads.size());
-  in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started,
-                          s.host, s.version);
+  in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started, s.host,
+                          s.version);
   // Drawn all the same, but never passed off as a whole record.
   if (const auto check = run::verify_session(opt.source); !check.intact) in.source += "; NOT INTACT: " + check.problem;
   else if (s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
@@ -135,13 +136,13 @@ void run_plot(const PlotOptions& opt) {
 
 void add_plot_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<PlotOptions>();
-  auto* cmd = app.add_subcommand(
-      "plot",
-      "Draw a drive as SVG (docs/recording.md): drive and pivot over time, the operating state\n"
-      "as coloured bands, the active layer, and every switch signal that was on (weapons in\n"
-      "red), with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
-      "landscape on paper, or a browser. From a session file (as recorded), or from an event\n"
-      "script through replay (with --robot/--mapping and the other replay settings).");
+  auto* cmd =
+      app.add_subcommand("plot",
+                         "Draw a drive as SVG (docs/recording.md): drive and pivot over time, the operating state\n"
+                         "as coloured bands, the active layer, and every switch signal that was on (weapons in\n"
+                         "red), with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
+                         "landscape on paper, or a browser. From a session file (as recorded), or from an event\n"
+                         "script through replay (with --robot/--mapping and the other replay settings).");
   cmd->add_option("SOURCE", opt->source, "a session file, or an event script (docs/event-scripts.md)")->required();
   opt->settings = std::make_unique<CommandLine>(*cmd, kPlot);
   cmd->add_option("--output", opt->output, "write to FILE instead of standard output")->type_name("FILE");

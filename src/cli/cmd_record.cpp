@@ -53,7 +53,9 @@ int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) 
     std::fprintf(stderr, "\rrecording %.1f s, %lld events, controller %s%s (Ctrl-C ends)\033[K",
                  static_cast<double>(s.t_ms) / 1000.0, static_cast<long long>(s.events),
                  s.connected ? "connected" : "not connected",
-                 !input.supervised() ? "" : s.supervisor_connected ? ", supervisor connected" : ", supervisor not connected");
+                 !input.supervised()      ? ""
+                 : s.supervisor_connected ? ", supervisor connected"
+                                          : ", supervisor not connected");
   };
   const auto keep_going = [&](const input::RecordStatus& s) {
     if (progress && s.t_ms - last_progress_ms >= 500) show_progress(s);
@@ -71,9 +73,10 @@ int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) 
     show_progress(ended);
     std::fputc('\n', stderr);
   }
-  if (ended.at_limit) std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
-  std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events),
-               output == "-" ? "" : " to ", output == "-" ? "" : output.c_str());
+  if (ended.at_limit)
+    std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
+  std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events), output == "-" ? "" : " to ",
+               output == "-" ? "" : output.c_str());
   return kExitOk;
 }
 
@@ -99,11 +102,10 @@ int run_record(const RecordCommandOptions& opt) {
 
 void add_record_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<RecordCommandOptions>();
-  auto* cmd = app.add_subcommand(
-      "record",
-      "Write the live controller's events as an event script (the text replay and\n"
-      "'run --input' read) until SIGINT (Ctrl-C) or SIGTERM, then end it with 'T end'.\n"
-      "Times are ms from the start of the recording.");
+  auto* cmd = app.add_subcommand("record",
+                                 "Write the live controller's events as an event script (the text replay and\n"
+                                 "'run --input' read) until SIGINT (Ctrl-C) or SIGTERM, then end it with 'T end'.\n"
+                                 "Times are ms from the start of the recording.");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRecord);
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_record(*opt); });

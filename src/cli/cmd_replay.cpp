@@ -77,7 +77,7 @@ int run_replay(const ReplayOptions& opt) {
   const timing::FrameClock clock(settings.rate.millihertz);
   auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
   auto script = input::checked_event_script(opt.events == "-" ? TextReader::standard_input(kEventScriptLimits)
-                                                       : TextReader::open(opt.events, kEventScriptLimits));
+                                                              : TextReader::open(opt.events, kEventScriptLimits));
 
   input::ScriptPlayer player(script);
   run::ReplayOptions replay_options{.rate_millihertz = settings.rate.millihertz,
@@ -86,8 +86,9 @@ int run_replay(const ReplayOptions& opt) {
   // A script's `reload FILE` names FILE relative to the script's folder.
   replay_options.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.events, file)); };
   write_frames(settings, [&](std::ostream& out) {
-    run::replay(player, std::move(engine), replay_options,
-                [&](std::int64_t t, const protocol::DataBytes& data) { protocol::write_frame(out, settings.format, t, data); });
+    run::replay(player, std::move(engine), replay_options, [&](std::int64_t t, const protocol::DataBytes& data) {
+      protocol::write_frame(out, settings.format, t, data);
+    });
   });
   return kExitOk;
 }
@@ -96,15 +97,15 @@ int run_replay(const ReplayOptions& opt) {
 
 void add_replay_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<ReplayOptions>();
-  auto* cmd = app.add_subcommand(
-      "replay",
-      "Run an event script through the bridge's own loop on a virtual clock and write the\n"
-      "frames the vehicle receives: one every 1000/rate ms from t=0 through the script's end.\n"
-      "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
-      "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
-      "any machine, at any speed. Given a flight recorder's session (docs/recording.md), replays\n"
-      "it with its own settings and mapping and prints 'N frames identical', or the first\n"
-      "frame that differs (exit 1).");
+  auto* cmd =
+      app.add_subcommand("replay",
+                         "Run an event script through the bridge's own loop on a virtual clock and write the\n"
+                         "frames the vehicle receives: one every 1000/rate ms from t=0 through the script's end.\n"
+                         "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
+                         "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
+                         "any machine, at any speed. Given a flight recorder's session (docs/recording.md), replays\n"
+                         "it with its own settings and mapping and prints 'N frames identical', or the first\n"
+                         "frame that differs (exit 1).");
   cmd->add_option("EVENTS", opt->events,
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
                   "before the first frame is written; or a session file")

@@ -41,7 +41,8 @@ struct RunOptions {
 
 std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<link::SerialLink>(sim->port_path(), config.baud);
-  if (config.port.starts_with("tcp:")) return std::make_unique<link::TcpLink>(link::parse_tcp_spec(config.port, config.port_pos));
+  if (config.port.starts_with("tcp:"))
+    return std::make_unique<link::TcpLink>(link::parse_tcp_spec(config.port, config.port_pos));
   link::check_serial_port(config.port, config.port_pos);
   return std::make_unique<link::SerialLink>(config.port, config.baud);
 }
@@ -115,18 +116,19 @@ int run_bridge(const RunOptions& opt) {
     input = make_input_source(config.input, sdl, [&stop] { return stop.requested(); });
   } catch (const ReadStopped&) {
     // Nothing has been sent: there is no frame to neutralise, and the stop was asked for.
-    spdlog::info("stopped (SIG{}) while reading the input, before the first frame",
-                 sigabbrev_np(stop.signal_number()));
+    spdlog::info("stopped (SIG{}) while reading the input, before the first frame", sigabbrev_np(stop.signal_number()));
     return kExitOk;
   }
   if (!config.supervisor.empty() && config.input != kSdlInput) {
-    spdlog::warn("supervisor {} not read: the event script {} is the input ('T supervisor EVENT' lines are its "
-                 "supervisor's controller)",
-                 config.supervisor, config.input);
+    spdlog::warn(
+        "supervisor {} not read: the event script {} is the input ('T supervisor EVENT' lines are its "
+        "supervisor's controller)",
+        config.supervisor, config.input);
   }
   if (engine.supervisor_buttons && !input->supervised()) {
-    spdlog::warn("the mapping's supervisor: buttons have no controller to read (no --supervisor): its stop "
-                 "cannot be pressed, and weapons that need its consent never fire");
+    spdlog::warn(
+        "the mapping's supervisor: buttons have no controller to read (no --supervisor): its stop "
+        "cannot be pressed, and weapons that need its consent never fire");
   }
   std::unique_ptr<link::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
@@ -194,13 +196,13 @@ int run_bridge(const RunOptions& opt) {
   std::string why = "end of the input";
   if (stop.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(stop.signal_number());
   if (recording) recording->finish(why);
-  spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why,
-               end.link.sent, end.link.busy, end.link.down);
+  spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why, end.link.sent,
+               end.link.busy, end.link.down);
   if (sim) {
     sim->stop();
     const auto v = sim->snapshot();
-    spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames,
-                 v.stats.valid, v.stats.bad_checksum, v.stats.invalid);
+    spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames, v.stats.valid,
+                 v.stats.bad_checksum, v.stats.invalid);
   }
   if (!bridge.shutdown_report().ok()) {
     spdlog::error("{}", failed_neutral_frames(bridge.shutdown_report(), initial.link_name));
@@ -213,15 +215,15 @@ int run_bridge(const RunOptions& opt) {
 
 void add_run_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<RunOptions>();
-  auto* cmd = app.add_subcommand(
-      "run",
-      "The bridge: the live controller (or an event script played in real time) to the link,\n"
-      "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
-      "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
-      "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file (a regular\n"
-      "file only; one that was a pipe at start is not read again) and the mapping: neutral\n"
-      "frames, then a fresh deadman press. Flags override the config file.\n"
-      "With no port, frames go to a built-in simulated vehicle (sim).");
+  auto* cmd =
+      app.add_subcommand("run",
+                         "The bridge: the live controller (or an event script played in real time) to the link,\n"
+                         "one frame every period, until Ctrl-C/SIGTERM or the end of the script; then neutral\n"
+                         "frames, drain, close. Ctrl-Z sends the neutral frames before stopping; after fg the\n"
+                         "deadman needs a fresh press. SIGHUP (systemctl reload) rereads the config file (a regular\n"
+                         "file only; one that was a pipe at start is not read again) and the mapping: neutral\n"
+                         "frames, then a fresh deadman press. Flags override the config file.\n"
+                         "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);
   cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });

@@ -59,10 +59,10 @@ void run_sessions(const std::string& dir_given) {
 
 void add_sessions_command(CLI::App& app, int& exit_code) {
   auto dir = std::make_shared<std::string>();
-  auto* cmd = app.add_subcommand(
-      "sessions",
-      "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
-      "robot, frames sent and the verdict of 'verify'.");
+  auto* cmd =
+      app.add_subcommand("sessions",
+                         "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
+                         "robot, frames sent and the verdict of 'verify'.");
   cmd->add_option("--dir", *dir,
                   "the folder to list; default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"
                   "~/.local/state/andros-bridge (as run)");

@@ -22,7 +22,8 @@ struct SheetOptions {
 void run_sheet(const SheetOptions& opt) {
   if (!opt.robot.empty() && !opt.mapping.empty()) throw InputError("sheet: give --robot or --mapping, not both");
   const auto format = view::parse_sheet_format(opt.format, SourcePos{"--format"});
-  const auto mapping = mapping::load_chosen_mapping(opt.mapping, opt.robot.empty() ? protocol::kDefaultRobot : opt.robot);
+  const auto mapping =
+      mapping::load_chosen_mapping(opt.mapping, opt.robot.empty() ? protocol::kDefaultRobot : opt.robot);
   const auto sheet = view::build_sheet(*mapping);
   const auto text = format == view::SheetFormat::kSvg ? view::render_sheet_svg(sheet) : view::render_sheet_text(sheet);
   write_output_file(opt.output.empty() ? "-" : opt.output, text);  // made whole before FILE is opened
@@ -32,14 +33,14 @@ void run_sheet(const SheetOptions& opt) {
 
 void add_sheet_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<SheetOptions>();
-  auto* cmd = app.add_subcommand(
-      "sheet",
-      "Print a mapping's cheat sheet: every input of the pad and what it does, one panel\n"
-      "per layer, with the deadman, layer keys, arming input, toggles, knobs and\n"
-      "selectors marked and weapons shown with what they need. SVG is one 190 x 260 mm\n"
-      "page that prints at 100% on A4 or Letter; text is a table per layer. Made from\n"
-      "the mapping itself, so it always matches it (docs/sheets.md).");
-  cmd->add_option("--robot", opt->robot, "robot type (" + protocol::robot_list() + ", any case; HD-1 and V-A1 too); default HD1");
+  auto* cmd = app.add_subcommand("sheet",
+                                 "Print a mapping's cheat sheet: every input of the pad and what it does, one panel\n"
+                                 "per layer, with the deadman, layer keys, arming input, toggles, knobs and\n"
+                                 "selectors marked and weapons shown with what they need. SVG is one 190 x 260 mm\n"
+                                 "page that prints at 100% on A4 or Letter; text is a table per layer. Made from\n"
+                                 "the mapping itself, so it always matches it (docs/sheets.md).");
+  cmd->add_option("--robot", opt->robot,
+                  "robot type (" + protocol::robot_list() + ", any case; HD-1 and V-A1 too); default HD1");
   cmd->add_option("--mapping", opt->mapping, "mapping file to draw instead of a robot's shipped one");
   cmd->add_option("--format", opt->format, "svg (a printable page) or text (tables for a terminal)")
       ->type_name("svg|text")

@@ -31,11 +31,11 @@ int run_verify(const std::string& path) {
 
 void add_verify_command(CLI::App& app, int& exit_code) {
   auto path = std::make_shared<std::string>();
-  auto* cmd = app.add_subcommand(
-      "verify",
-      "Check a flight recorder session's hash chain (docs/recording.md): prints 'intact (N\n"
-      "records)' and the last record's hash (exit 0), or the first record that was altered,\n"
-      "removed or reordered (exit 1).");
+  auto* cmd =
+      app.add_subcommand("verify",
+                         "Check a flight recorder session's hash chain (docs/recording.md): prints 'intact (N\n"
+                         "records)' and the last record's hash (exit 0), or the first record that was altered,\n"
+                         "removed or reordered (exit 1).");
   cmd->add_option("SESSION", *path, "a session file (andros-bridge sessions lists them)")->required();
   cmd->callback([path, &exit_code] { exit_code = run_verify(*path); });
 }

@@ -52,7 +52,8 @@ GivenFlags CommandLine::given_flags() const {
   GivenFlags flags{command_, {}};
   for (const auto& entry : entries_) {
     if (entry.option->count() == 0) continue;
-    flags.values.emplace_back(entry.row, entry.row->value_name.empty() ? std::string(switch_text(*entry.row)) : entry.text);
+    flags.values.emplace_back(entry.row,
+                              entry.row->value_name.empty() ? std::string(switch_text(*entry.row)) : entry.text);
   }
   return flags;
 }
@@ -63,7 +64,9 @@ void apply_flags(const GivenFlags& flags, Settings& settings) {
   if (flags.given("--robot") && !flags.given("--mapping")) settings.mapping.clear();
 }
 
-Settings resolve_settings(const CommandLine& flags) { return resolve_settings(flags.given_flags(), ConfigRead::kStart); }
+Settings resolve_settings(const CommandLine& flags) {
+  return resolve_settings(flags.given_flags(), ConfigRead::kStart);
+}
 
 Settings resolve_settings(const GivenFlags& flags, ConfigRead read) {
   Settings settings;

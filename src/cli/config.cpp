@@ -47,11 +47,12 @@ void parse_config(TextReader& in, Settings& settings) {
     const auto value = trim(text.substr(eq + 1));
     if (value.empty()) throw InputError(SourcePos{file_name, line_no, 0}, quote(key) + " has no value");
     // Column of the value, for errors about it (1-based, in the raw line).
-    const int value_col = static_cast<int>(line.find('=')) + 2 +
-                          static_cast<int>(text.substr(eq + 1).find_first_not_of(" \t"));
+    const int value_col =
+        static_cast<int>(line.find('=')) + 2 + static_cast<int>(text.substr(eq + 1).find_first_not_of(" \t"));
     const Setting* row = find_key(key);
     if (row == nullptr) {
-      throw InputError(SourcePos{file_name, line_no, 1}, "unknown key " + quote(key) + " (known: " + known_keys() + ")");
+      throw InputError(SourcePos{file_name, line_no, 1},
+                       "unknown key " + quote(key) + " (known: " + known_keys() + ")");
     }
     if (const auto [first, fresh] = first_line.try_emplace(key, line_no); !fresh) {
       const int key_col = static_cast<int>(line.find_first_not_of(" \t")) + 1;

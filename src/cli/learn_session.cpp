@@ -121,12 +121,12 @@ bool LearnSession::step(int wait_ms) {
       say("  kept the rest of this layer");
       go_to(plan_.next_layer(index_));
       return end_ == End::kRunning;
-    case Key::kBack:
-      go_to(index_ == 0 ? 0 : index_ - 1);
-      return true;
+    case Key::kBack: go_to(index_ == 0 ? 0 : index_ - 1); return true;
     case Key::kWrite: end_ = End::kWrite; return false;
     case Key::kQuit: end_ = End::kQuit; return false;
-    case Key::kOther: say("  keys: Enter keeps, s skips the rest of this layer, b goes back, w writes now, q quits"); break;
+    case Key::kOther:
+      say("  keys: Enter keeps, s skips the rest of this layer, b goes back, w writes now, q quits");
+      break;
   }
   return true;
 }
@@ -180,15 +180,17 @@ LearnTarget learn_target(const mapping::Mapping& base, const fs::path& output, b
   if (!fs::is_directory(folder, ec)) throw InputError(at, quote_name(folder.string()) + " is not a folder");
   const bool exists = fs::exists(fs::symlink_status(output, ec));
   if (exists && !force) {
-    throw InputError(at, quote_name(output.string()) +
-                             " exists: give --force to replace it (it is replaced only once the new file is written whole)");
+    throw InputError(
+        at, quote_name(output.string()) +
+                " exists: give --force to replace it (it is replaced only once the new file is written whole)");
   }
   const auto canonical = canonical_of(output);
   const auto& chain = base.chain;
   for (std::size_t i = 1; i < chain.size(); ++i) {
     if (fs::path(chain[i]) == canonical) {
-      throw InputError(at, quote_name(output.string()) +
-                               " is a file the mapping learned from extends: it would extend itself; write to another file");
+      throw InputError(
+          at, quote_name(output.string()) +
+                  " is a file the mapping learned from extends: it would extend itself; write to another file");
     }
   }
   fs::path over = chain.empty() ? fs::path(base.file) : fs::path(chain.front());
@@ -196,7 +198,8 @@ LearnTarget learn_target(const mapping::Mapping& base, const fs::path& output, b
     // Learning again from one's own output: the new file extends what it extended.
     over = chain.size() > 1 ? fs::path(chain[1]) : robot_mapping_past(base.robot.value_or(""), canonical);
     if (over.empty()) {
-      throw InputError(at, quote_name(output.string()) + " is the mapping learned from and extends nothing: no robot mapping " +
+      throw InputError(at, quote_name(output.string()) +
+                               " is the mapping learned from and extends nothing: no robot mapping " +
                                "for it to extend on the search path; write to another file");
     }
     return LearnTarget{*mapping::load_mapping(over), extends_name(over, base.robot, output)};

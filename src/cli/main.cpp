@@ -4,8 +4,8 @@
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -56,7 +56,7 @@ void keep_standard_descriptors_taken() {
   for (int fd = STDIN_FILENO; fd <= STDERR_FILENO; ++fd) {
     if (fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
     const int null = open("/dev/null", O_RDWR);  // the lowest free number: this one
-    if (null < 0) std::abort();  // no /dev/null: nothing safe to run on
+    if (null < 0) std::abort();                  // no /dev/null: nothing safe to run on
   }
 }
 
@@ -119,13 +119,14 @@ int main(int argc, char** argv) {
   CLI::App app{
       "andros-bridge: drive an Andros robot with a gamepad. Reads the controller, maps it\n"
       "through a per-robot YAML mapping and streams the Remotec switchbox's 36-byte\n"
-      "command frames to the vehicle's serial link at " + andros::timing::rate_text(andros::timing::kDefaultRateMillihertz) +
-          " Hz, with the safety rules applied.",
+      "command frames to the vehicle's serial link at " +
+          andros::timing::rate_text(andros::timing::kDefaultRateMillihertz) + " Hz, with the safety rules applied.",
       "andros-bridge"};
   app.set_version_flag("--version", std::string("andros-bridge ") + andros::kVersion);
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 1 runtime failure (also output lost to a full disk), 2 bad input.\n"
-             "Run 'andros-bridge COMMAND --help' for a command's options.");
+  app.footer(
+      "Exit codes: 0 success, 1 runtime failure (also output lost to a full disk), 2 bad input.\n"
+      "Run 'andros-bridge COMMAND --help' for a command's options.");
   int exit_code = andros::kExitOk;
   andros::cli::add_frame_command(app, exit_code);
   andros::cli::add_replay_command(app, exit_code);

@@ -7,7 +7,7 @@
 namespace andros::cli {
 
 std::unique_ptr<input::InputSource> make_input_source(const std::string& input, const input::SdlInputOptions& sdl,
-                                               const StopCheck& stop) {
+                                                      const StopCheck& stop) {
   if (input != kSdlInput) {
     // Silently ignored, it would leave the operator believing the pad they named drives.
     if (!sdl.controller.empty()) {

@@ -15,6 +15,6 @@ namespace andros::cli {
 /// controller database or a controller chosen (--controller) for a script;
 /// ReadStopped when stop says so while either is read.
 std::unique_ptr<input::InputSource> make_input_source(const std::string& input, const input::SdlInputOptions& sdl,
-                                               const StopCheck& stop);
+                                                      const StopCheck& stop);
 
 }  // namespace andros::cli

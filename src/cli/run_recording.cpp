@@ -49,7 +49,11 @@ std::string host_name() {
 
 RunRecording::RunRecording(fs::path path, std::unique_ptr<run::RecordSink> sink, input::InputSource& input,
                            RotationLimits rotation)
-    : path_(std::move(path)), writer_(std::move(sink)), recorder_(writer_), input_(input, recorder_), rotation_(rotation) {}
+    : path_(std::move(path)),
+      writer_(std::move(sink)),
+      recorder_(writer_),
+      input_(input, recorder_),
+      rotation_(rotation) {}
 
 std::unique_ptr<RunRecording> RunRecording::start(const Settings& config, const EngineSetup& engine,
                                                   const link::Link& link, input::InputSource& input) {
@@ -64,7 +68,8 @@ std::unique_ptr<RunRecording> RunRecording::start(const Settings& config, const 
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw RuntimeError(dir.string() + ": cannot create: " + ec.message());
-    for (const auto& old : rotate_sessions(dir, limits, path, now)) spdlog::info("recorder: removed {} (rotation)", old.string());
+    for (const auto& old : rotate_sessions(dir, limits, path, now))
+      spdlog::info("recorder: removed {} (rotation)", old.string());
     sink = std::make_unique<run::FileRecordSink>(path.string());
   } catch (const std::exception& e) {
     // Driving goes on without a record: said loudly, once.
@@ -107,8 +112,9 @@ void RunRecording::describe(view::RunStatus& status) const {
     return;
   }
   const auto error = writer_.error();
-  status.recorder = std::to_string(missing) + " records dropped (" + (error.empty() ? "the disk is not keeping up" : error) +
-                    "): " + path_.filename().string() + " is incomplete";
+  status.recorder = std::to_string(missing) + " records dropped (" +
+                    (error.empty() ? "the disk is not keeping up" : error) + "): " + path_.filename().string() +
+                    " is incomplete";
 }
 
 void RunRecording::finish(const std::string& why) {

@@ -178,7 +178,8 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
 
 void RunReload::begin(const std::string& mapping) {
   // The worker reads copies: the flags, and the settings as they are now.
-  if (worker_.start([flags = flags_, running = to_.settings, mapping] { return read_reload(flags, running, mapping); })) {
+  if (worker_.start(
+          [flags = flags_, running = to_.settings, mapping] { return read_reload(flags, running, mapping); })) {
     to_.service.reloading();
   } else {
     spdlog::info("reload (SIGHUP) while a reload is being read: the files are read again once that read ends");

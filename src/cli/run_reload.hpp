@@ -32,7 +32,7 @@ struct EngineSetup {
   int center = 128;          ///< drive and pivot's rest value (for the gauges)
   bool pad_names = true;     ///< it reads game-controller names (a plain joystick sends none)
   mapping::FeedbackTable feedback;
-  bool supervisor_buttons = false;  ///< the mapping has a `supervisor:` section
+  bool supervisor_buttons = false;          ///< the mapping has a `supervisor:` section
   std::vector<run::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
 };
 

@@ -23,7 +23,8 @@ fs::path session_dir(const std::string& configured) {
   if (!configured.empty()) return configured;
   // systemd may give several (StateDirectory=a b): the first is ours.
   if (auto state = env("STATE_DIRECTORY"); !state.empty()) return state.substr(0, state.find(':'));
-  if (auto xdg = env("XDG_STATE_HOME"); !xdg.empty() && fs::path(xdg).is_absolute()) return fs::path(xdg) / "andros-bridge";
+  if (auto xdg = env("XDG_STATE_HOME"); !xdg.empty() && fs::path(xdg).is_absolute())
+    return fs::path(xdg) / "andros-bridge";
   return fs::path(env("HOME")) / ".local/state/andros-bridge";
 }
 

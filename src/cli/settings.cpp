@@ -59,7 +59,8 @@ const std::array<Setting, 20> kTable = {{
        s.port_pos = p;
      },
      [](const Settings& s) { return s.port; }, false},
-    {"robot", "--robot", "NAME", kRun | kReplay | kPlot, "the robot type (any case; the vehicle's name, HD-1 or V-A1, too), whose shipped mapping is used: {}",
+    {"robot", "--robot", "NAME", kRun | kReplay | kPlot,
+     "the robot type (any case; the vehicle's name, HD-1 or V-A1, too), whose shipped mapping is used: {}",
      protocol::robot_list,
      [](std::string_view t, const SourcePos& p, Settings& s) {
        const auto robot = protocol::canonical_robot(t);
@@ -75,8 +76,8 @@ const std::array<Setting, 20> kTable = {{
      "baud ({})",
      rate_detail, [](std::string_view t, const SourcePos& p, Settings& s) { s.rate = timing::parse_rate(t, p); },
      [](const Settings& s) { return timing::rate_text(s.rate.millihertz); }, false},
-    {"mapping", "--mapping", "FILE", kRun | kReplay | kPlot, "a mapping file instead of the robot's shipped one", nullptr,
-     [](std::string_view t, const SourcePos&, Settings& s) { s.mapping = std::string(t); },
+    {"mapping", "--mapping", "FILE", kRun | kReplay | kPlot, "a mapping file instead of the robot's shipped one",
+     nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.mapping = std::string(t); },
      [](const Settings& s) { return s.mapping; }, true},
     {"weapons", "--weapons", "", kRun | kReplay | kPlot,
      "enable weapon signals (they still need the deadman and the arming input)", nullptr,
@@ -134,10 +135,10 @@ const std::array<Setting, 20> kTable = {{
      "is checked and the whole replay written: a failure leaves it as it was",
      nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.output = std::string(t); },
      [](const Settings& s) { return s.output; }, false},
-    {"", "--output,-o", "FILE", kRecord, "the script file, or - for standard output; a new FILE grows as events come, an existing one is "
+    {"", "--output,-o", "FILE", kRecord,
+     "the script file, or - for standard output; a new FILE grows as events come, an existing one is "
      "replaced when the recording ends (and kept if it fails)",
-     nullptr,
-     [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
+     nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
      [](const Settings& s) { return s.script_output; }, false},
     {"", "--supervisor", "INDEX|NAME|GUID", kRecord,
      "record a second controller too, the supervisor's, chosen as --controller chooses (never the same one): "

@@ -35,8 +35,15 @@ bool is_pad_event(std::string_view word) {
 }
 
 constexpr std::array<std::pair<std::string_view, int>, 9> kHatValues = {{
-    {"centered", 0}, {"up", 1}, {"right", 2}, {"down", 4}, {"left", 8},
-    {"rightup", 3}, {"rightdown", 6}, {"leftup", 9}, {"leftdown", 12},
+    {"centered", 0},
+    {"up", 1},
+    {"right", 2},
+    {"down", 4},
+    {"left", 8},
+    {"rightup", 3},
+    {"rightdown", 6},
+    {"leftup", 9},
+    {"leftdown", 12},
 }};
 
 /// A controller's name as a `connect` line holds it: printable_text() (a
@@ -62,9 +69,7 @@ std::optional<InputEvent> EventReader::next() {
     if (tokens.empty()) continue;
 
     const auto at = [&](const Token& t) { return SourcePos{text_.name(), text_.line_number(), t.column}; };
-    const auto fail = [&](const Token& t, const std::string& what) -> InputError {
-      return InputError(at(t), what);
-    };
+    const auto fail = [&](const Token& t, const std::string& what) -> InputError { return InputError(at(t), what); };
     if (ended_) throw fail(tokens[0], "event after 'end'");
 
     InputEvent ev;
@@ -109,8 +114,9 @@ std::optional<InputEvent> EventReader::next() {
           written.pop_back();
         }
         if (!is_printable_line(written)) {
-          throw fail(arg(1), "controller name " + quote(written) +
-                                    " is not one line of printable text (a control byte or invalid UTF-8 is written \\xNN)");
+          throw fail(arg(1),
+                     "controller name " + quote(written) +
+                         " is not one line of printable text (a control byte or invalid UTF-8 is written \\xNN)");
         }
         ev.name = unescape_text(written, at(arg(1)));
         if (ev.name.size() > kMaxControllerNameBytes) {
@@ -237,7 +243,8 @@ std::string format_event(const InputEvent& event) {
   };
   switch (event.type) {
     case T::kConnect:
-      out += event.name.empty() ? "connect" : pad("connect") + script_name(event.name.substr(0, kMaxControllerNameBytes));
+      out +=
+          event.name.empty() ? "connect" : pad("connect") + script_name(event.name.substr(0, kMaxControllerNameBytes));
       break;
     case T::kDisconnect: out += "disconnect"; break;
     case T::kEnd: out += "end"; break;

@@ -12,8 +12,7 @@ std::optional<int> parse_index(std::string_view text) {
 }
 
 template <std::size_t N>
-std::optional<std::uint16_t> find_name(const std::array<std::string_view, N>& names,
-                                       std::string_view name) {
+std::optional<std::uint16_t> find_name(const std::array<std::string_view, N>& names, std::string_view name) {
   for (std::size_t i = 0; i < N; ++i) {
     if (names[i] == name) return static_cast<std::uint16_t>(i);
   }

@@ -38,7 +38,8 @@ std::string program_name(int pid) {
   std::ifstream in("/proc/" + std::to_string(pid) + "/comm");
   std::string name;
   if (!std::getline(in, name)) return {};
-  std::ranges::replace_if(name, [](char c) { return c < 0x20 || c > 0x7e; }, '?');
+  std::ranges::replace_if(
+      name, [](char c) { return c < 0x20 || c > 0x7e; }, '?');
   return name;
 }
 

@@ -12,15 +12,10 @@
 
 namespace andros::link {
 
-std::string_view to_string(LinkState state) {
-  return state == LinkState::kUp ? "up" : "connecting";
-}
+std::string_view to_string(LinkState state) { return state == LinkState::kUp ? "up" : "connecting"; }
 
 ReconnectingLink::ReconnectingLink(std::string name, int min_retry_ms, int max_retry_ms)
-    : name_(std::move(name)),
-      min_retry_ms_(min_retry_ms),
-      max_retry_ms_(max_retry_ms),
-      retry_ms_(min_retry_ms) {}
+    : name_(std::move(name)), min_retry_ms_(min_retry_ms), max_retry_ms_(max_retry_ms), retry_ms_(min_retry_ms) {}
 
 long ReconnectingLink::write_bytes(const std::uint8_t* data, std::size_t size) {
   return ::write(fd_.get(), data, size);

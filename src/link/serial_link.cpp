@@ -4,8 +4,8 @@
 #include <sys/file.h>
 #include <sys/ioctl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 #include <termios.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -64,8 +64,8 @@ void check_serial_port(const std::string& path, const SourcePos& pos) {
   }
   // A device that is not a terminal (/dev/null, /dev/zero) never becomes one: it would be retried for ever.
   if (isatty(fd.get()) == 0) {
-    throw InputError(pos, "serial port " + quote_name(path) +
-                              " is not a serial device (a character device that is not a terminal)");
+    throw InputError(
+        pos, "serial port " + quote_name(path) + " is not a serial device (a character device that is not a terminal)");
   }
   // Held by another bridge, or another program: waiting for it would hand the
   // port over the moment that program exits. The lock taken here goes with fd.

@@ -38,8 +38,8 @@ TcpAddress parse_tcp_spec(std::string_view spec, const SourcePos& pos) {
     out.port = std::string(rest.substr(colon + 1));
   }
   // Digits only (no sign), at most 5 of them.
-  const bool digits = !out.port.empty() && out.port.size() <= 5 &&
-                      out.port.find_first_not_of("0123456789") == std::string::npos;
+  const bool digits =
+      !out.port.empty() && out.port.size() <= 5 && out.port.find_first_not_of("0123456789") == std::string::npos;
   const auto port = to_integer(out.port);
   if (out.host.empty() || !digits || !port || *port < 1 || *port > 65535) {
     throw InputError(pos, "'" + std::string(spec) + "' is not tcp:HOST:PORT (PORT 1..65535)");

@@ -5,9 +5,7 @@
 
 namespace andros::mapping {
 
-double normalise_axis(std::int16_t value) {
-  return value >= 0 ? value / 32767.0 : value / 32768.0;
-}
+double normalise_axis(std::int16_t value) { return value >= 0 ? value / 32767.0 : value / 32768.0; }
 
 double shape_axis(double x, const AxisShape& shape) {
   if (shape.invert) x = -x;

@@ -24,7 +24,8 @@ std::string_view describe(EnableState state) {
     case EnableState::kNoController: return "no controller";
     case EnableState::kDeadmanReleased: return "deadman released";
     case EnableState::kDeadmanNotFresh: return "deadman held since connect or start-up: release and press it again";
-    case EnableState::kPanic: return "deadman squeezed past its panic point: release the trigger fully, then press it again";
+    case EnableState::kPanic:
+      return "deadman squeezed past its panic point: release the trigger fully, then press it again";
     case EnableState::kTimedOut: return "enable timeout (no input changed): release the deadman and press it again";
   }
   return "?";
@@ -83,7 +84,9 @@ Engine::Engine(ValidMapping mapping, EngineOptions options)
 const EngineStatus& Engine::status() const { return status_; }
 const Mapping& Engine::mapping() const { return *mapping_; }
 
-std::size_t Engine::slot(BindingRef ref) const { return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index; }
+std::size_t Engine::slot(BindingRef ref) const {
+  return slot_base_[static_cast<std::size_t>(ref.layer + 1)] + ref.index;
+}
 
 void Engine::clear_toggles() { toggled_.reset(); }
 
@@ -323,15 +326,17 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    if (up && !down) v += b.rate * dt_ms;
                    if (down && !up) v -= b.rate * dt_ms;
                    // A tap between two ticks nudges by one unit.
-                   if (!up && !down) v += (new_presses(input, b.increase) > 0 ? kMilli : 0) -
-                                          (new_presses(input, b.decrease) > 0 ? kMilli : 0);
+                   if (!up && !down)
+                     v += (new_presses(input, b.increase) > 0 ? kMilli : 0) -
+                          (new_presses(input, b.decrease) > 0 ? kMilli : 0);
                    v = std::clamp<std::int64_t>(v, 0, kLevelMax);
                    out[b.analog] = static_cast<std::uint8_t>((v + kMilli / 2) / kMilli);
                  },
                  [&](const SelectorBinding& b) {
                    const int n = static_cast<int>(b.positions.size());
-                   const int steps = static_cast<int>(new_presses(input, b.next) % static_cast<std::uint32_t>(n)) -
-                                     (b.prev ? static_cast<int>(new_presses(input, *b.prev) % static_cast<std::uint32_t>(n)) : 0);
+                   const int steps =
+                       static_cast<int>(new_presses(input, b.next) % static_cast<std::uint32_t>(n)) -
+                       (b.prev ? static_cast<int>(new_presses(input, *b.prev) % static_cast<std::uint32_t>(n)) : 0);
                    auto& pos = selector_[k];
                    const auto& old_bits = b.positions[static_cast<std::size_t>(pos)];
                    for (const auto id : old_bits) out[id] = 0;
@@ -344,8 +349,8 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
 
 void Engine::held_stops(const input::InputState& input, EngineStatus& status) const {
   status.supervisor_stop = mapping_->supervisor && input.supervisor().button(mapping_->supervisor->stop.key).down;
-  status.stop_held = status.supervisor_stop ||
-                     (mapping_->estop && input.connected() && input.button(mapping_->estop->key).down);
+  status.stop_held =
+      status.supervisor_stop || (mapping_->estop && input.connected() && input.button(mapping_->estop->key).down);
 }
 
 void Engine::read_stops(const input::InputState& input) {

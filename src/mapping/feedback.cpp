@@ -43,7 +43,8 @@ input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
   return {};
 }
 
-input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern, std::size_t speed_level) {
+input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern,
+                                        std::size_t speed_level) {
   auto out = pattern;
   if (event == FeedbackEvent::kSpeedLevel) out.pulses = static_cast<int>(speed_level) + 1;
   return out;

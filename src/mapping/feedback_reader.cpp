@@ -37,8 +37,9 @@ void read_feedback(const yaml::Reader& r, const YAML::Node& node, FeedbackTable&
     return;
   }
   if (!node.IsMap()) r.fail(node, "feedback is 'off' or a map of events to patterns");
-  r.expect_keys(node, {"deadman_refused", "link_lost", "disabled", "weapons_on", "weapons_off", "enabled", "controller_back",
-                      "speed_level"},
+  r.expect_keys(node,
+                {"deadman_refused", "link_lost", "disabled", "weapons_on", "weapons_off", "enabled", "controller_back",
+                 "speed_level"},
                 "feedback");
   for (std::size_t i = 0; i < kFeedbackEventCount; ++i) {
     const auto event = static_cast<FeedbackEvent>(i);

@@ -31,7 +31,9 @@ bool is_pad_trigger(InputKey key) {
 Binding& binding_of(Mapping& m, const LearnStep& s) {
   return s.layer < 0 ? m.bindings.at(s.binding) : m.layers.at(static_cast<std::size_t>(s.layer)).bindings.at(s.binding);
 }
-const Binding& binding_of(const Mapping& m, const LearnStep& s) { return binding_at(m, BindingRef{s.layer, s.binding}); }
+const Binding& binding_of(const Mapping& m, const LearnStep& s) {
+  return binding_at(m, BindingRef{s.layer, s.binding});
+}
 
 int slot_count(const Binding& b) {
   if (std::holds_alternative<WeaponBinding>(b.rule) || std::holds_alternative<KnobBinding>(b.rule)) return 2;
@@ -46,12 +48,24 @@ Gesture slot_value(const Mapping& m, const LearnStep& s) {
   if (s.role == Role::kLayerKey) return {m.layers.at(static_cast<std::size_t>(s.layer)).input.key, false};
   const auto& b = binding_of(m, s);
   return std::visit(Overload{
-                        [&](const ButtonBinding& r) { return Gesture{r.input, !r.input.is_button() && r.invert}; },
-                        [&](const WeaponBinding& r) { return Gesture{s.slot == 0 ? r.input : *r.arm, false}; },
-                        [&](const PairBinding& r) { return Gesture{r.axis, !r.invert}; },
-                        [&](const AxisBinding& r) { return Gesture{r.axis, r.shape.invert}; },
-                        [&](const KnobBinding& r) { return Gesture{s.slot == 0 ? r.increase : r.decrease, false}; },
-                        [&](const SelectorBinding& r) { return Gesture{s.slot == 0 ? r.next : *r.prev, false}; },
+                        [&](const ButtonBinding& r) {
+                          return Gesture{r.input, !r.input.is_button() && r.invert};
+                        },
+                        [&](const WeaponBinding& r) {
+                          return Gesture{s.slot == 0 ? r.input : *r.arm, false};
+                        },
+                        [&](const PairBinding& r) {
+                          return Gesture{r.axis, !r.invert};
+                        },
+                        [&](const AxisBinding& r) {
+                          return Gesture{r.axis, r.shape.invert};
+                        },
+                        [&](const KnobBinding& r) {
+                          return Gesture{s.slot == 0 ? r.increase : r.decrease, false};
+                        },
+                        [&](const SelectorBinding& r) {
+                          return Gesture{s.slot == 0 ? r.next : *r.prev, false};
+                        },
                     },
                     b.rule);
 }
@@ -95,37 +109,40 @@ std::string target(const Mapping& m, const LearnStep& s) {
     return "the key of layer " + quote_name(layer.name) + (layer.toggle ? " (toggle)" : " (hold)");
   }
   const auto& b = binding_of(m, s);
-  return std::visit(Overload{
-                        [&](const ButtonBinding& r) { return name_of(r.signal) + (r.toggle ? " (toggle)" : ""); },
-                        [&](const WeaponBinding& r) { return name_of(r.signal) + (s.slot == 0 ? "" : " arming input"); },
-                        [&](const PairBinding& r) { return name_of(r.signals[0]) + " / " + name_of(r.signals[1]); },
-                        [&](const AxisBinding& r) { return name_of(r.analog); },
-                        [&](const KnobBinding& r) { return name_of(r.analog) + (s.slot == 0 ? " up" : " down"); },
-                        [&](const SelectorBinding& r) { return "selector " + printable_text(r.name) + (s.slot == 0 ? " next" : " prev"); },
-                    },
-                    b.rule);
+  return std::visit(
+      Overload{
+          [&](const ButtonBinding& r) { return name_of(r.signal) + (r.toggle ? " (toggle)" : ""); },
+          [&](const WeaponBinding& r) { return name_of(r.signal) + (s.slot == 0 ? "" : " arming input"); },
+          [&](const PairBinding& r) { return name_of(r.signals[0]) + " / " + name_of(r.signals[1]); },
+          [&](const AxisBinding& r) { return name_of(r.analog); },
+          [&](const KnobBinding& r) { return name_of(r.analog) + (s.slot == 0 ? " up" : " down"); },
+          [&](const SelectorBinding& r) {
+            return "selector " + printable_text(r.name) + (s.slot == 0 ? " next" : " prev");
+          },
+      },
+      b.rule);
 }
 
 /// What the step's target does in the operator's words, " (front articulators
 /// up)", when they say more than its name; "" otherwise.
 std::string words_note(const Mapping& m, const LearnStep& s) {
   if (s.role != Role::kBinding) return {};
-  const auto note = std::visit(
-      Overload{
-          [&](const ButtonBinding& r) { return words_of(r.signal); },
-          [&](const WeaponBinding& r) { return s.slot == 0 ? "fire " + words_of(r.signal) : std::string(); },
-          [&](const PairBinding& r) { return words_of(r.signals[0]) + " / " + words_of(r.signals[1]); },
-          [&](const AxisBinding& r) {
-            const auto& w = protocol::words(r.analog);
-            return std::string(w.words) + " " + std::string(w.more) + "/" + std::string(w.less);
-          },
-          [&](const KnobBinding& r) {
-            const auto& w = protocol::words(r.analog);
-            return std::string(w.words) + " " + std::string(s.slot == 0 ? w.more : w.less);
-          },
-          [&](const SelectorBinding&) { return std::string(); },
-      },
-      binding_of(m, s).rule);
+  const auto note =
+      std::visit(Overload{
+                     [&](const ButtonBinding& r) { return words_of(r.signal); },
+                     [&](const WeaponBinding& r) { return s.slot == 0 ? "fire " + words_of(r.signal) : std::string(); },
+                     [&](const PairBinding& r) { return words_of(r.signals[0]) + " / " + words_of(r.signals[1]); },
+                     [&](const AxisBinding& r) {
+                       const auto& w = protocol::words(r.analog);
+                       return std::string(w.words) + " " + std::string(w.more) + "/" + std::string(w.less);
+                     },
+                     [&](const KnobBinding& r) {
+                       const auto& w = protocol::words(r.analog);
+                       return std::string(w.words) + " " + std::string(s.slot == 0 ? w.more : w.less);
+                     },
+                     [&](const SelectorBinding&) { return std::string(); },
+                 },
+                 binding_of(m, s).rule);
   return note.empty() || note == target(m, s) ? std::string() : " (" + note + ")";
 }
 
@@ -152,7 +169,9 @@ std::optional<std::string> used_by(const Mapping& m, const std::vector<LearnStep
     return s.role == Role::kBinding && s.slot == 1 && std::holds_alternative<WeaponBinding>(binding_of(m, s).rule);
   };
   for (const auto& other : steps) {
-    if (other.role == step.role && other.layer == step.layer && other.binding == step.binding && other.slot == step.slot) continue;
+    if (other.role == step.role && other.layer == step.layer && other.binding == step.binding &&
+        other.slot == step.slot)
+      continue;
     if (slot_value(m, other).key != key) continue;
     if (step.role == Role::kBinding && other.role == Role::kBinding &&
         (other.layer != step.layer || (is_arm(step) && is_arm(other)))) {
@@ -185,14 +204,15 @@ LearnAccepts LearnPlan::accepts(std::size_t i) const {
   const auto& s = steps_.at(i);
   if (s.role == Role::kDeadman) return LearnAccepts::kButtonOrTrigger;
   if (s.role == Role::kLayerKey) return LearnAccepts::kButton;
-  return std::visit(Overload{
-                        [](const ButtonBinding& r) { return r.toggle ? LearnAccepts::kButton : LearnAccepts::kButtonOrAxis; },
-                        [&](const WeaponBinding&) { return s.slot == 0 ? LearnAccepts::kButton : LearnAccepts::kButtonOrTrigger; },
-                        [](const PairBinding&) { return LearnAccepts::kAxis; },
-                        [](const AxisBinding&) { return LearnAccepts::kAxis; },
-                        [](const auto&) { return LearnAccepts::kButton; },
-                    },
-                    binding_of(learned_, s).rule);
+  return std::visit(
+      Overload{
+          [](const ButtonBinding& r) { return r.toggle ? LearnAccepts::kButton : LearnAccepts::kButtonOrAxis; },
+          [&](const WeaponBinding&) { return s.slot == 0 ? LearnAccepts::kButton : LearnAccepts::kButtonOrTrigger; },
+          [](const PairBinding&) { return LearnAccepts::kAxis; },
+          [](const AxisBinding&) { return LearnAccepts::kAxis; },
+          [](const auto&) { return LearnAccepts::kButton; },
+      },
+      binding_of(learned_, s).rule);
 }
 
 std::string LearnPlan::current(std::size_t i) const { return describe(slot_value(learned_, steps_.at(i))); }
@@ -203,7 +223,9 @@ std::string LearnPlan::prompt(std::size_t i) const {
   switch (accepts(i)) {
     case LearnAccepts::kButton: ask = "press a button"; break;
     case LearnAccepts::kButtonOrTrigger: ask = "press a button or pull a trigger"; break;
-    case LearnAccepts::kButtonOrAxis: ask = "press a button, or push a stick or trigger the way that sets it and let go"; break;
+    case LearnAccepts::kButtonOrAxis:
+      ask = "press a button, or push a stick or trigger the way that sets it and let go";
+      break;
     case LearnAccepts::kAxis: {
       const auto& rule = binding_of(learned_, s).rule;
       if (const auto* p = std::get_if<PairBinding>(&rule)) {

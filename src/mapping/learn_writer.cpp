@@ -81,7 +81,8 @@ std::string binding_lines(const Binding& b) {
                    axis_extras(r.invert, r.threshold);
           },
           [&](const AxisBinding& r) {
-            return "analog: " + name_of(r.analog) + "\naxis: " + in(r.axis) + axis_extras(r.shape.invert, std::nullopt) +
+            return "analog: " + name_of(r.analog) + "\naxis: " + in(r.axis) +
+                   axis_extras(r.shape.invert, std::nullopt) +
                    (r.shape.deadzone != 0 ? "\ndeadzone: " + number(r.shape.deadzone) : "") +
                    (r.shape.expo != 0 ? "\nexpo: " + number(r.shape.expo) : "");
           },
@@ -97,7 +98,8 @@ std::string binding_lines(const Binding& b) {
               positions += (positions.empty() ? "[" : ", [") + names + "]";
             }
             return "selector: " + quoted(r.name) + "\nnext: " + in(r.next) + (r.prev ? "\nprev: " + in(*r.prev) : "") +
-                   "\npositions: [" + positions + "]" + (r.initial != 0 ? "\ninitial: " + std::to_string(r.initial) : "");
+                   "\npositions: [" + positions + "]" +
+                   (r.initial != 0 ? "\ninitial: " + std::to_string(r.initial) : "");
           },
       },
       b.rule);
@@ -157,8 +159,9 @@ std::string list_yaml(const std::vector<Binding>& base, const std::vector<Bindin
     again = false;
     for (std::size_t i = 0; i < base.size(); ++i) {
       if (!kept[i]) continue;
-      const bool dropped = emitted_conflict(base[i]) ||
-                           std::any_of(unbinds.begin(), unbinds.end(), [&](const Unbind& u) { return unbind_matches(u, base[i]); });
+      const bool dropped =
+          emitted_conflict(base[i]) ||
+          std::any_of(unbinds.begin(), unbinds.end(), [&](const Unbind& u) { return unbind_matches(u, base[i]); });
       if (!dropped) continue;
       for (std::size_t j = 0; j < learned.size(); ++j) {
         if (!emit[j] && text(learned[j]) == text(base[i])) {
@@ -214,7 +217,8 @@ std::string LearnPlan::extending_yaml(std::string_view extends, const Mapping& o
   out += "robot: " + learned_.robot.value_or("") + "\n";
   out += "extends: " + quoted(extends) + "\n";
   if (learned_.center != over.center) out += "center: " + std::to_string(learned_.center) + "\n";
-  if (learned_.brake != over.brake) out += std::string("brake: ") + (learned_.brake == BrakeMode::kMoving ? "moving" : "enabled") + "\n";
+  if (learned_.brake != over.brake)
+    out += std::string("brake: ") + (learned_.brake == BrakeMode::kMoving ? "moving" : "enabled") + "\n";
   if (learned_.deadman && over.deadman) {
     const auto before = input::input_name(over.deadman->key);
     const auto now = input::input_name(learned_.deadman->key);
@@ -224,7 +228,8 @@ std::string LearnPlan::extending_yaml(std::string_view extends, const Mapping& o
   if (!base_list.empty()) out += "bindings:\n" + base_list;
   std::string layers;
   for (const auto& now : learned_.layers) {
-    const auto it = std::find_if(over.layers.begin(), over.layers.end(), [&](const Layer& l) { return l.name == now.name; });
+    const auto it =
+        std::find_if(over.layers.begin(), over.layers.end(), [&](const Layer& l) { return l.name == now.name; });
     static const std::vector<Binding> kNone;
     const auto& before_list = it == over.layers.end() ? kNone : it->bindings;
     const auto list = list_yaml(before_list, now.bindings, "      ");

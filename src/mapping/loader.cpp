@@ -9,8 +9,8 @@
 #include <optional>
 #include <set>
 
-#include "andros/base/text.hpp"
 #include "andros/base/error_list.hpp"
+#include "andros/base/text.hpp"
 #include "andros/protocol/robots.hpp"
 #include "feedback_reader.hpp"
 #include "merge.hpp"
@@ -28,7 +28,8 @@ constexpr std::size_t kMaxExtendsChain = 16;
 
 /// A trim of drive and pivot's rest while enabled, within the band of model.hpp.
 int read_center(const Reader& r, const YAML::Node& node) {
-  const auto value = r.integer(node, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max(), "center");
+  const auto value =
+      r.integer(node, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max(), "center");
   if (value < kCenterTrimMin || value > kCenterTrimMax) r.fail(node, center_out_of_band(r.text(node, "center")));
   return static_cast<int>(value);
 }
@@ -45,14 +46,16 @@ SpeedScale read_scale(const Reader& r, const YAML::Node& n) {
   r.expect_list(levels, "levels");
   if (levels.size() == 0) r.fail(levels, "levels lists at least one fraction of full speed");
   if (levels.size() > kMaxSpeedLevels) {
-    r.fail(levels, "at most " + std::to_string(kMaxSpeedLevels) + " levels (a change is counted out in as many rumble pulses)");
+    r.fail(levels,
+           "at most " + std::to_string(kMaxSpeedLevels) + " levels (a change is counted out in as many rumble pulses)");
   }
   s.levels.clear();
   for (const auto& l : levels) {
     const double v = r.number(l, 0.0, 1.0, false, "a level");
     if (v <= 0.0) r.fail(l, "a level is a fraction of full speed above 0, not " + r.text(l, "a level"));
     if (!s.levels.empty() && v <= s.levels.back()) {
-      r.fail(l, "levels go from the slowest to the fastest: " + r.text(l, "a level") + " is not above the one before it");
+      r.fail(l,
+             "levels go from the slowest to the fastest: " + r.text(l, "a level") + " is not above the one before it");
     }
     s.levels.push_back(v);
   }
@@ -61,8 +64,10 @@ SpeedScale read_scale(const Reader& r, const YAML::Node& n) {
     if (!s.up) r.fail(n, "scale has 'down' but no 'button' to step up");
     s.down = use(r, n["down"], r.button(n["down"]));
   }
-  if (s.levels.size() > 1 && !s.up) r.fail(n, "scale with more than one level needs 'button': the button that steps through them");
-  if (s.levels.size() == 1 && s.up) r.fail(n["button"], "scale has one level: there is nothing for 'button' to step to");
+  if (s.levels.size() > 1 && !s.up)
+    r.fail(n, "scale with more than one level needs 'button': the button that steps through them");
+  if (s.levels.size() == 1 && s.up)
+    r.fail(n["button"], "scale has one level: there is nothing for 'button' to step to");
   if (const auto i = n["initial"]) {
     const double v = r.number(i, 0.0, 1.0, false, "initial");
     const auto it = std::find(s.levels.begin(), s.levels.end(), v);
@@ -184,8 +189,8 @@ Binding read_selector_binding(const Reader& r, const YAML::Node& n, Binding b) {
   }
   b.target_pos = r.pos(positions);
   if (n["initial"]) {
-    s.initial = static_cast<int>(r.integer(n["initial"], 0, static_cast<long long>(s.positions.size()) - 1,
-                                           "initial position"));
+    s.initial = static_cast<int>(
+        r.integer(n["initial"], 0, static_cast<long long>(s.positions.size()) - 1, "initial position"));
   }
   b.rule = s;
   return b;
@@ -276,7 +281,6 @@ std::string unreadable(const fs::path& file) {
   return "it is not a regular file";
 }
 
-
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text = nullptr);
 
 /// `extends: ROBOT` (a robot's name, no folder): that robot's mapping as
@@ -289,12 +293,13 @@ fs::path robot_base(const Reader& r, const YAML::Node& node, std::string_view ro
     std::error_code ec;
     const auto candidate = dir / file;
     if (!fs::is_regular_file(candidate, ec)) continue;
-    if (std::find(chain.files.begin(), chain.files.end(), fs::weakly_canonical(candidate, ec)) != chain.files.end()) continue;
+    if (std::find(chain.files.begin(), chain.files.end(), fs::weakly_canonical(candidate, ec)) != chain.files.end())
+      continue;
     return candidate;
   }
   for (const auto& dir : mapping_search_path()) looked += (looked.empty() ? "" : ", ") + dir.string();
-  r.fail(node, "'extends: " + std::string(robot) + "': no " + file + " other than this file on the mapping search path (" +
-                   looked + ")");
+  r.fail(node, "'extends: " + std::string(robot) + "': no " + file +
+                   " other than this file on the mapping search path (" + looked + ")");
 }
 
 void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
@@ -329,8 +334,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   const Reader r(file.string(), text);
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout", "supervisor",
-                 "brake", "scale", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout",
+                 "supervisor", "brake", "scale", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -343,7 +348,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
     errors.attempt([&] {
       const auto name = r.text(root["robot"], "robot");
       m.robot = protocol::canonical_robot(name);
-      if (!m.robot) r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
+      if (!m.robot)
+        r.fail(root["robot"], "unknown robot " + quote(name) + " (expected " + protocol::robot_list() + ")");
       m.robot_pos = r.pos(root["robot"]);
     });
   }

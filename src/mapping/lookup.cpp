@@ -33,7 +33,8 @@ std::vector<fs::path> mapping_search_path() {
 fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>& search_path) {
   const auto canonical = protocol::canonical_robot(robot);
   if (!canonical) {
-    throw InputError(SourcePos{"--robot"}, "unknown robot " + quote(robot) + " (expected " + protocol::robot_list() + ")");
+    throw InputError(SourcePos{"--robot"},
+                     "unknown robot " + quote(robot) + " (expected " + protocol::robot_list() + ")");
   }
   const std::string file = to_lower(*canonical) + ".yaml";
   std::string looked;
@@ -43,7 +44,8 @@ fs::path find_robot_mapping(std::string_view robot, const std::vector<fs::path>&
     // A folder that cannot be looked into (a HOME the user may not read) is passed over, and said if nothing is found.
     looked += (looked.empty() ? "" : ", ") + dir.string() + (ec ? " (" + ec.message() + ")" : "");
   }
-  throw InputError(SourcePos{"--robot"}, "no mapping " + file + " for robot " + *canonical + " (looked in " + looked + ")");
+  throw InputError(SourcePos{"--robot"},
+                   "no mapping " + file + " for robot " + *canonical + " (looked in " + looked + ")");
 }
 
 ValidMapping load_robot_mapping(std::string_view robot) {
@@ -51,7 +53,8 @@ ValidMapping load_robot_mapping(std::string_view robot) {
   auto mapping = load_mapping(path);
   const auto canonical = protocol::canonical_robot(robot);
   if (mapping->robot != canonical) {
-    throw InputError(mapping->robot_pos, "this file is for robot " + mapping->robot.value_or("?") + ", not " + *canonical);
+    throw InputError(mapping->robot_pos,
+                     "this file is for robot " + mapping->robot.value_or("?") + ", not " + *canonical);
   }
   return mapping;
 }

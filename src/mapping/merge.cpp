@@ -23,8 +23,8 @@ bool unbind_matches(const Unbind& unbind, const Binding& binding) {
 void merge_bindings(std::vector<Binding>& base, std::vector<Binding> over, const std::vector<Unbind>& unbinds) {
   for (const auto& unbind : unbinds) {
     if (std::erase_if(base, [&](const Binding& old) { return unbind_matches(unbind, old); }) == 0) {
-      throw InputError(unbind.pos, "'unbind: " + unbind.name +
-                                       "': the file this one extends binds nothing to it in this layer");
+      throw InputError(unbind.pos,
+                       "'unbind: " + unbind.name + "': the file this one extends binds nothing to it in this layer");
     }
   }
   std::erase_if(base, [&](const Binding& old) {

@@ -64,8 +64,11 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                    if (protocol::info(r.signal).kind != protocol::SignalKind::kWeapon) {
                      throw InputError(at, "'arm' is only for weapon signals; " + quoted(r.signal) + " is not one");
                    }
-                   if (!r.arm) throw InputError(b.pos, "weapon binding for " + quoted(r.signal) + " needs 'arm': a second button held to fire");
-                   if (*r.arm == r.input) throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
+                   if (!r.arm)
+                     throw InputError(b.pos, "weapon binding for " + quoted(r.signal) +
+                                                 " needs 'arm': a second button held to fire");
+                   if (*r.arm == r.input)
+                     throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
                    if (deadman && *r.arm == deadman->key) {
                      throw InputError(b.arm->pos, "'arm' must be a second button, not the deadman");
                    }
@@ -81,7 +84,8 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                  [&](const PairBinding& r) {
                    check_motion(r.signals[0], at);
                    check_motion(r.signals[1], at);
-                   if (r.signals[0] == r.signals[1]) throw InputError(at, "an opposing pair names two different signals");
+                   if (r.signals[0] == r.signals[1])
+                     throw InputError(at, "an opposing pair names two different signals");
                    check_threshold(r.threshold);
                  },
                  [&](const AxisBinding& r) {
@@ -107,8 +111,8 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                    for (const auto& position : r.positions) {
                      for (const auto id : position) {
                        if (protocol::info(id).kind != protocol::SignalKind::kSelector) {
-                         throw InputError(at, "selector positions set selector-like signals only; " + quoted(id) +
-                                                  " is not one");
+                         throw InputError(
+                             at, "selector positions set selector-like signals only; " + quoted(id) + " is not one");
                        }
                        const auto partner = protocol::partner_of(id);
                        if (partner && std::find(position.begin(), position.end(), *partner) != position.end()) {
@@ -169,8 +173,8 @@ void check_arms(const Mapping& m, int layer, ErrorList& errors) {
           errors.add(InputError(b.arm->pos, "arming input " + name + " is also bound at " + line_of(u.pos, b.arm->pos) +
                                                 "; pressing it would do both"));
         } else {
-          errors.add(InputError(u.pos, name + " is the arming input at " + line_of(b.arm->pos, u.pos) +
-                                           "; pressing it would do both"));
+          errors.add(InputError(
+              u.pos, name + " is the arming input at " + line_of(b.arm->pos, u.pos) + "; pressing it would do both"));
         }
       }
     }
@@ -211,14 +215,16 @@ void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
   }
   for (std::size_t i = 0; i < s.levels.size(); ++i) {
     check_range(s.levels[i] > 0.0 && s.levels[i] <= 1.0, s.pos, "speed level");
-    if (i > 0 && s.levels[i] <= s.levels[i - 1]) throw InputError(s.pos, "speed levels go from the slowest to the fastest");
+    if (i > 0 && s.levels[i] <= s.levels[i - 1])
+      throw InputError(s.pos, "speed levels go from the slowest to the fastest");
   }
   check_range(s.initial < s.levels.size(), s.pos, "initial speed level");
   if ((s.levels.size() > 1) != s.up.has_value()) {
     throw InputError(s.pos, "scale has a 'button' exactly when it has more than one level");
   }
   if (s.down && !s.up) throw InputError(s.down->pos, "scale has 'down' but no 'button' to step up");
-  if (s.up && s.down && s.up->key == s.down->key) throw InputError(s.down->pos, "'down' must be a different button from 'button'");
+  if (s.up && s.down && s.up->key == s.down->key)
+    throw InputError(s.down->pos, "'down' must be a different button from 'button'");
   for (const auto& key : {s.up, s.down}) {
     if (!key) continue;
     const auto name = "'" + input::input_name(key->key) + "'";
@@ -237,12 +243,14 @@ void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
       for (const auto& u : b.inputs) {
         if (u.key == key->key) {
           throw InputError(key->pos, name + " steps the speed level in every layer; it is also bound at line " +
-                                         std::to_string(u.pos.line) + (u.pos.file == key->pos.file ? "" : " of " + u.pos.file));
+                                         std::to_string(u.pos.line) +
+                                         (u.pos.file == key->pos.file ? "" : " of " + u.pos.file));
         }
       }
       if (b.arm && b.arm->key == key->key) {
         throw InputError(key->pos, name + " steps the speed level in every layer; it also arms a weapon at line " +
-                                       std::to_string(b.arm->pos.line) + (b.arm->pos.file == key->pos.file ? "" : " of " + b.arm->pos.file));
+                                       std::to_string(b.arm->pos.line) +
+                                       (b.arm->pos.file == key->pos.file ? "" : " of " + b.arm->pos.file));
       }
     }
   }
@@ -252,7 +260,8 @@ void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
 
 std::string center_out_of_band(std::string_view value) {
   return "center " + std::string(value) + " is out of range " + std::to_string(kCenterTrimMin) + ".." +
-         std::to_string(kCenterTrimMax) + " (it only trims drive and pivot's rest while enabled; neutral frames carry " +
+         std::to_string(kCenterTrimMax) +
+         " (it only trims drive and pivot's rest while enabled; neutral frames carry " +
          std::to_string(kDefaultCenter) + ")";
 }
 
@@ -306,8 +315,8 @@ std::vector<BindingRef> effective_bindings(const Mapping& mapping, int layer) {
   }
   for (std::size_t i = 0; i < mapping.bindings.size(); ++i) {
     const auto& b = mapping.bindings[i];
-    const bool replaced =
-        own != nullptr && std::any_of(own->begin(), own->end(), [&](const Binding& o) { return bindings_conflict(b, o); });
+    const bool replaced = own != nullptr && std::any_of(own->begin(), own->end(),
+                                                        [&](const Binding& o) { return bindings_conflict(b, o); });
     if (!replaced) refs.push_back({-1, i});
   }
   return refs;
@@ -341,12 +350,13 @@ void check_estop(const Mapping& m) {
 void check_deadman_panic(const Mapping& m) {
   if (!m.deadman_panic) return;
   if (!m.deadman || m.deadman->key.is_button()) {
-    throw InputError(m.deadman_panic_pos, "deadman_panic needs a trigger deadman (lefttrigger, righttrigger)" +
-                                              (m.deadman ? "; '" + input::input_name(m.deadman->key) + "' is a button"
-                                                         : std::string()));
+    throw InputError(m.deadman_panic_pos,
+                     "deadman_panic needs a trigger deadman (lefttrigger, righttrigger)" +
+                         (m.deadman ? "; '" + input::input_name(m.deadman->key) + "' is a button" : std::string()));
   }
   if (*m.deadman_panic <= kDeadmanPanicMin || *m.deadman_panic >= 1.0) {
-    throw InputError(m.deadman_panic_pos, "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
+    throw InputError(m.deadman_panic_pos,
+                     "deadman_panic must lie above the trigger's press point (0.5) and below full travel (1.0)");
   }
 }
 
@@ -371,8 +381,9 @@ ValidMapping validate(Mapping m, bool require_robot) {
   std::vector<InputUse> reserved;
   if (m.deadman) {
     const auto k = m.deadman->key;
-    if (k.kind == input::InputKind::kJoyAxis || (k.kind == input::InputKind::kPadAxis && input::input_name(k) != "lefttrigger" &&
-                                          input::input_name(k) != "righttrigger")) {
+    if (k.kind == input::InputKind::kJoyAxis ||
+        (k.kind == input::InputKind::kPadAxis && input::input_name(k) != "lefttrigger" &&
+         input::input_name(k) != "righttrigger")) {
       errors.add(InputError(m.deadman->pos, "the deadman is a button or a trigger (lefttrigger, righttrigger)"));
     }
     reserved.push_back(*m.deadman);
@@ -390,9 +401,10 @@ ValidMapping validate(Mapping m, bool require_robot) {
     reserved.push_back(layer.input);
   }
   if (m.supervisor && m.supervisor->weapons_consent && m.supervisor->weapons_consent->key == m.supervisor->stop.key) {
-    throw InputError(m.supervisor->weapons_consent->pos, "the supervisor's 'weapons_consent' must be a different button "
-                                                         "from its 'stop' (line " +
-                                                             std::to_string(m.supervisor->stop.pos.line) + ")");
+    throw InputError(m.supervisor->weapons_consent->pos,
+                     "the supervisor's 'weapons_consent' must be a different button "
+                     "from its 'stop' (line " +
+                         std::to_string(m.supervisor->stop.pos.line) + ")");
   }
   std::map<protocol::SignalId, SourcePos> selector_signals;
   const auto check_bindings = [&](const std::vector<Binding>& list) {

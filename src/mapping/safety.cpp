@@ -27,7 +27,8 @@ protocol::ControlState apply_safety(protocol::ControlState state, const SafetyCo
       case protocol::SignalKind::kConstant: break;
     }
   }
-  const bool moving = state[protocol::signal_id("drive")] != ctx.center || state[protocol::signal_id("pivot")] != ctx.center;
+  const bool moving =
+      state[protocol::signal_id("drive")] != ctx.center || state[protocol::signal_id("pivot")] != ctx.center;
   state[protocol::signal_id("safety")] = ctx.enabled ? 1 : 0;
   state[protocol::signal_id("drive_brake")] = ctx.enabled && (ctx.brake == BrakeMode::kEnabled || moving) ? 1 : 0;
 
@@ -53,8 +54,12 @@ RestRule::RestRule(const Mapping& mapping) {
       // A button rests released whoever reads it; an axis rests where its binding sends nothing.
       Reader r{{ref.layer, ref.index}, Reader::Rest::kReleased, false, 0.0};
       std::visit(Overload{
-                     [&](const ButtonBinding& x) { r = {r.binding, Reader::Rest::kBelow, x.invert, x.threshold}; },
-                     [&](const PairBinding& x) { r = {r.binding, Reader::Rest::kInsideBand, false, x.threshold}; },
+                     [&](const ButtonBinding& x) {
+                       r = {r.binding, Reader::Rest::kBelow, x.invert, x.threshold};
+                     },
+                     [&](const PairBinding& x) {
+                       r = {r.binding, Reader::Rest::kInsideBand, false, x.threshold};
+                     },
                      [&](const AxisBinding& x) {
                        const bool centred = protocol::info(x.analog).kind == protocol::SignalKind::kCentred;
                        r = {r.binding, centred ? Reader::Rest::kInsideDeadzone : Reader::Rest::kNotPositive,
@@ -101,7 +106,8 @@ bool RestRule::at_rest(const input::InputState& input, input::InputKey key, cons
   });
 }
 
-void RestRule::update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen) {
+void RestRule::update(const input::InputState& input, int layer, bool enabled,
+                      std::map<input::InputKey, std::uint32_t>& seen) {
   update_consent(input, layer, enabled);  // before hold_back: it reads the last frame's enabled_, connection_, layer_
   if (enabled) {
     hold_back(input, layer, seen);

@@ -106,7 +106,8 @@ std::optional<YAML::Mark> second_document(const std::string& text) {
   }
   if (starts.marks[1].pos <= starts.marks[0].pos) {
     const auto at = static_cast<std::size_t>(starts.marks[1].pos);
-    throw YAML::ParserException(starts.marks[1], "unexpected " + (at < text.size() ? quote(text.substr(at, 1)) : "text"));
+    throw YAML::ParserException(starts.marks[1],
+                                "unexpected " + (at < text.size() ? quote(text.substr(at, 1)) : "text"));
   }
   return starts.marks[1];
 }
@@ -139,9 +140,7 @@ SourcePos Reader::pos(const YAML::Node& node) const {
   return SourcePos{file_, mark.line + 1, mark.column + 1};
 }
 
-void Reader::fail(const YAML::Node& node, const std::string& message) const {
-  throw InputError(pos(node), message);
-}
+void Reader::fail(const YAML::Node& node, const std::string& message) const { throw InputError(pos(node), message); }
 
 void Reader::expect_map(const YAML::Node& node, std::string_view what) const {
   if (!node.IsMap()) fail(node, std::string(what) + " must be a map of 'key: value' lines");
@@ -259,12 +258,14 @@ protocol::SignalId Reader::signal(const YAML::Node& node) const {
     }
     if (ok) {
       if (byte == protocol::kTrailerByte) fail(node, "byte 15 is fixed at 0x02 by the protocol; it cannot be a target");
-      if (bit != protocol::kWholeByte && protocol::is_fixed_bit(static_cast<std::uint8_t>(byte), static_cast<std::uint8_t>(bit))) {
+      if (bit != protocol::kWholeByte &&
+          protocol::is_fixed_bit(static_cast<std::uint8_t>(byte), static_cast<std::uint8_t>(bit))) {
         fail(node, "byte " + std::to_string(byte) + " bit " + std::to_string(bit) +
                        " is a fixed validation bit; it cannot be a target");
       }
       for (std::size_t i = 0; i < protocol::kSignals.size(); ++i) {
-        if (protocol::kSignals[i].byte == byte && protocol::kSignals[i].bit == bit) return static_cast<protocol::SignalId>(i);
+        if (protocol::kSignals[i].byte == byte && protocol::kSignals[i].bit == bit)
+          return static_cast<protocol::SignalId>(i);
       }
       fail(node, "'" + name + "' is a whole data byte of bit signals; name one bit (byte" + std::to_string(byte) +
                      ".0 .. byte" + std::to_string(byte) + ".7) or a signal");

@@ -34,15 +34,13 @@ class Reader {
   [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
 
   /// A mapping node whose keys are all in `allowed` and none repeated.
-  void expect_keys(const YAML::Node& map, std::initializer_list<std::string_view> allowed,
-                   std::string_view what) const;
+  void expect_keys(const YAML::Node& map, std::initializer_list<std::string_view> allowed, std::string_view what) const;
   void expect_map(const YAML::Node& node, std::string_view what) const;
   void expect_list(const YAML::Node& node, std::string_view what) const;
 
   [[nodiscard]] std::string text(const YAML::Node& node, std::string_view what) const;
   /// Decimal or 0x-prefixed hex, within [min, max].
-  [[nodiscard]] long long integer(const YAML::Node& node, long long min, long long max,
-                                  std::string_view what) const;
+  [[nodiscard]] long long integer(const YAML::Node& node, long long min, long long max, std::string_view what) const;
   /// A decimal number within [min, max] (max_open: strictly below max).
   [[nodiscard]] double number(const YAML::Node& node, double min, double max, bool max_open,
                               std::string_view what) const;

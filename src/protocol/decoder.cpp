@@ -30,23 +30,19 @@ void Decoder::emit(std::size_t pos, const Sink& sink, bool* lost_checksum) {
   DecodedFrame f;
   f.offset = buf_offset_ + pos;
   for (std::size_t i = 0; i < kDataBytes; ++i) {
-    f.data[i] = static_cast<std::uint8_t>(nibble(buf_[pos + 2 + 2 * i]) << 4 |
-                                          nibble(buf_[pos + 3 + 2 * i]));
+    f.data[i] = static_cast<std::uint8_t>(nibble(buf_[pos + 2 + 2 * i]) << 4 | nibble(buf_[pos + 3 + 2 * i]));
   }
   f.checksum_computed = checksum(std::span(buf_).subspan(pos + 2, kDigits));
-  f.checksum_sent = static_cast<std::uint16_t>(buf_[pos + kChecksumAt] |
-                                               buf_[pos + kChecksumAt + 1] << 8);
+  f.checksum_sent = static_cast<std::uint16_t>(buf_[pos + kChecksumAt] | buf_[pos + kChecksumAt + 1] << 8);
   f.checksum_ok = f.checksum_sent == f.checksum_computed;
   if (!f.checksum_ok) {
-    f.errors.push_back("checksum " + hex16(f.checksum_sent) + ", computed " +
-                       hex16(f.checksum_computed));
+    f.errors.push_back("checksum " + hex16(f.checksum_sent) + ", computed " + hex16(f.checksum_computed));
   }
   auto rules = validation_errors(f.data);
   f.errors.insert(f.errors.end(), rules.begin(), rules.end());
   if (expected_code_ && f.data[kCodeByte] != *expected_code_) {
     char text[48];
-    std::snprintf(text, sizeof text, "byte 11 code 0x%02X, expected 0x%02X", f.data[kCodeByte],
-                  *expected_code_);
+    std::snprintf(text, sizeof text, "byte 11 code 0x%02X, expected 0x%02X", f.data[kCodeByte], *expected_code_);
     f.errors.emplace_back(text);
   }
   f.valid = f.errors.empty();
@@ -62,8 +58,8 @@ void Decoder::emit(std::size_t pos, const Sink& sink, bool* lost_checksum) {
   // A checksum slot holding an F1 may really be the start of the next frame
   // (a frame that lost its checksum): then the slot is scanned again. A good
   // checksum's F1 is never rescanned, since a good frame is consumed whole.
-  *lost_checksum = !f.checksum_ok &&
-                   (buf_[pos + kChecksumAt] == kStartByte || buf_[pos + kChecksumAt + 1] == kStartByte);
+  *lost_checksum =
+      !f.checksum_ok && (buf_[pos + kChecksumAt] == kStartByte || buf_[pos + kChecksumAt + 1] == kStartByte);
   sink(f);
 }
 

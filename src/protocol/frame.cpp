@@ -35,8 +35,7 @@ std::string to_hex(std::span<const std::uint8_t> bytes) {
 
 DataBytes parse_data_hex(std::string_view text) {
   if (text.size() != 2 * kDataBytes) {
-    throw InputError("expected 32 hex digits (16 data bytes), got " + std::to_string(text.size()) +
-                     " characters");
+    throw InputError("expected 32 hex digits (16 data bytes), got " + std::to_string(text.size()) + " characters");
   }
   DataBytes data{};
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -53,8 +52,7 @@ ControlState read_signals(const DataBytes& data) {
   ControlState state;
   for (std::size_t i = 0; i < kSignals.size(); ++i) {
     const auto& s = kSignals[i];
-    state.values[i] = s.is_bit() ? static_cast<std::uint8_t>((data[s.byte] >> s.bit) & 1U)
-                                 : data[s.byte];
+    state.values[i] = s.is_bit() ? static_cast<std::uint8_t>((data[s.byte] >> s.bit) & 1U) : data[s.byte];
   }
   return state;
 }
@@ -63,8 +61,8 @@ std::vector<std::string> validation_errors(const DataBytes& data) {
   std::vector<std::string> errors;
   for (const auto& f : kFixedBits) {
     if (((data[f.byte] >> f.bit) & 1U) != f.value) {
-      errors.push_back("byte " + std::to_string(f.byte) + " bit " + std::to_string(f.bit) +
-                       " must be " + std::to_string(f.value));
+      errors.push_back("byte " + std::to_string(f.byte) + " bit " + std::to_string(f.bit) + " must be " +
+                       std::to_string(f.value));
     }
   }
   if (data[kTrailerByte] != kTrailerValue) {

@@ -11,9 +11,12 @@ FeedbackStatus feedback_status(const TickReport& report) {
   // Enabled as the state machine says, never as the engine alone sees it: the
   // pad's light cannot say "enabled" while nothing reaches the vehicle.
   // A weapons mode only while enabled, too.
-  return {report.connected, report.engine.enable, report.enabled(),
+  return {report.connected,
+          report.engine.enable,
+          report.enabled(),
           report.link.state == link::LinkState::kUp && report.link.motion_allowed,
-          report.enabled() && report.engine.weapons_mode, report.state == OpState::kStopped,
+          report.enabled() && report.engine.weapons_mode,
+          report.state == OpState::kStopped,
           report.engine.speed.index};
 }
 
@@ -52,8 +55,8 @@ std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& sta
     played = *it;
     pattern = mapping::feedback_pattern(*it, *table_[*it], status.speed_level);
     // An enabled colour (weapons_off's green too) is for an enabled bridge only.
-    const bool enabled_colour = *it == FeedbackEvent::kEnabled || *it == FeedbackEvent::kWeaponsOn ||
-                                *it == FeedbackEvent::kWeaponsOff;
+    const bool enabled_colour =
+        *it == FeedbackEvent::kEnabled || *it == FeedbackEvent::kWeaponsOn || *it == FeedbackEvent::kWeaponsOff;
     if (enabled_colour && !status.enabled) pattern->led.reset();
   }
   // The light keeps the last colour set. Green (or a weapons colour) left on
@@ -63,8 +66,8 @@ std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& sta
   if (enabled_light_ && !status.enabled && status.connected && !(pattern && pattern->led)) {
     if (!pattern) pattern = input::FeedbackPattern{.low = 0.0, .high = 0.0, .ms = 1, .pulses = 1, .led = std::nullopt};
     const auto& disabled = table_[FeedbackEvent::kDisabled];
-    pattern->led = disabled && disabled->led ? disabled->led
-                                             : mapping::default_feedback_pattern(FeedbackEvent::kDisabled).led;
+    pattern->led =
+        disabled && disabled->led ? disabled->led : mapping::default_feedback_pattern(FeedbackEvent::kDisabled).led;
   }
   if (!pattern) return played;
   if (pattern->led) enabled_light_ = status.enabled;

@@ -146,7 +146,8 @@ bool SessionWriter::close(int timeout_ms) {
   std::unique_lock lock(shared_->mutex);
   shared_->closing = true;
   shared_->wake.notify_all();
-  const bool done = shared_->finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return shared_->done; });
+  const bool done =
+      shared_->finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return shared_->done; });
   lock.unlock();
   if (done) {
     thread_.join();

@@ -30,8 +30,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   ReloadableFrames frames(make_engine_frames(std::move(engine)));
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
   Bridge bridge(clock, input, frames, link,
-                BridgeOptions{.rate_millihertz = options.rate_millihertz,
-                              .neutral_tail_at_end = false});
+                BridgeOptions{.rate_millihertz = options.rate_millihertz, .neutral_tail_at_end = false});
 
   // A reload is read at once (the clock waits for it) and applied after its neutral frames.
   std::optional<mapping::ValidMapping> loaded;

@@ -30,10 +30,18 @@ std::string_view result_name(const FrameRecord& f) {
 nlohmann::json settings_json(const SessionSettings& s) {
   nlohmann::json files = nlohmann::json::array();
   for (const auto& f : s.sources) files.push_back({{"path", f.path}, {"sha256", sha256_hex(f.text)}, {"text", f.text}});
-  return {{"robot", s.robot},     {"mapping", s.mapping_file}, {"rate_mhz", s.rate_millihertz},
-          {"weapons", s.weapons}, {"code", hex_byte(s.code)},  {"center", s.center},
-          {"port", s.port},       {"baud", s.baud},            {"input", s.input},
-          {"config", s.config},   {"supervised", s.supervised}, {"files", files}};
+  return {{"robot", s.robot},
+          {"mapping", s.mapping_file},
+          {"rate_mhz", s.rate_millihertz},
+          {"weapons", s.weapons},
+          {"code", hex_byte(s.code)},
+          {"center", s.center},
+          {"port", s.port},
+          {"baud", s.baud},
+          {"input", s.input},
+          {"config", s.config},
+          {"supervised", s.supervised},
+          {"files", files}};
 }
 
 /// Splits `PAYLOAD HASH` (HASH: 64 hex digits); false when the line is not one.
@@ -77,7 +85,8 @@ class SessionLines {
       return false;
     }
     ++line_no_;
-    if (line.size() > kMaxSessionLine) throw InputError(SourcePos{path_.string(), line_no_}, "line too long for a session");
+    if (line.size() > kMaxSessionLine)
+      throw InputError(SourcePos{path_.string(), line_no_}, "line too long for a session");
     return true;
   }
   [[nodiscard]] int line_no() const { return line_no_; }
@@ -154,7 +163,9 @@ std::string frame(const TickReport& r, std::int64_t gap) {
   return "frame " + std::to_string(r.tick) + " " + std::to_string(r.t_ms) + " " + std::string(result_name(f)) + " " +
          protocol::to_hex(r.data) + " gap=" + std::to_string(gap);
 }
-std::string state(std::int64_t t_ms, OpState s) { return "state " + std::to_string(t_ms) + " " + std::string(to_string(s)); }
+std::string state(std::int64_t t_ms, OpState s) {
+  return "state " + std::to_string(t_ms) + " " + std::string(to_string(s));
+}
 std::string layer(std::int64_t t_ms, std::string_view layer) {
   return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();
 }
@@ -189,7 +200,8 @@ VerifyResult verify_session(const std::filesystem::path& path) {
     if (!split_record(line, payload, hash) || !seq_of(payload)) {
       return fail("record " + std::to_string(want) + " (line " + std::to_string(at) + ") altered: not a record line");
     }
-    if (want == 0 && !is_session_start(line)) return fail("not a session: its first line is not '0 andros-session ...'");
+    if (want == 0 && !is_session_start(line))
+      return fail("not a session: its first line is not '0 andros-session ...'");
     const std::uint64_t seq = *seq_of(payload);
     if (seq > want) {
       // Either the records before it were removed, or they come later: moved.

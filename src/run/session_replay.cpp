@@ -34,7 +34,8 @@ class Playback {
   // The input.
   void pump(input::InputState& state, std::int64_t now_ms) {
     now_ms_ = now_ms;
-    while (next_event_ < s_.events.size() && s_.events[next_event_].t_ms <= now_ms) state.apply(s_.events[next_event_++]);
+    while (next_event_ < s_.events.size() && s_.events[next_event_].t_ms <= now_ms)
+      state.apply(s_.events[next_event_++]);
   }
   [[nodiscard]] bool finished(std::int64_t now_ms) const { return s_.input_end && now_ms >= *s_.input_end; }
 
@@ -86,8 +87,8 @@ class Playback {
   }
 
   std::unique_ptr<FrameSource> engine_frames(const SessionSettings& settings) {
-    return make_engine_frames(
-        mapping::Engine(load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
+    return make_engine_frames(mapping::Engine(
+        load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   }
 
  private:

@@ -35,7 +35,8 @@ std::optional<std::pair<InputKey, AxisUse>> read_by(const mapping::BindingRule& 
     return Use{a->axis, {R::kDeadzone, a->shape.deadzone, a->shape.invert, signal_name(a->analog), ""}};
   }
   if (const auto* p = std::get_if<mapping::PairBinding>(&rule)) {
-    return Use{p->axis, {R::kBand, p->threshold, p->invert, signal_name(p->signals[0]) + "/" + signal_name(p->signals[1]), ""}};
+    return Use{p->axis,
+               {R::kBand, p->threshold, p->invert, signal_name(p->signals[0]) + "/" + signal_name(p->signals[1]), ""}};
   }
   if (const auto* b = std::get_if<mapping::ButtonBinding>(&rule); b != nullptr && is_axis(b->input)) {
     return Use{b->input, {R::kThreshold, b->threshold, b->invert, signal_name(b->signal), ""}};
@@ -69,7 +70,7 @@ std::string limit_text(const AxisUse& use) {
 std::string input_label(InputKey key) {
   const std::string name = input::input_name(key);
   return key.kind == InputKind::kPadButton || key.kind == InputKind::kPadAxis ? name + " #" + std::to_string(key.index)
-                                                                             : name;
+                                                                              : name;
 }
 
 std::string hat_text(int mask) {
@@ -184,11 +185,12 @@ std::string render_inputs_screen(const input::InputState& state, const std::opti
   // The grid and the bars follow the width.
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
   const auto per_row = std::max<std::size_t>(1, width / kButtonWidth);
-  const int half = std::clamp(static_cast<int>(width > kAxisFixed ? (width - kAxisFixed) / 2 : 0), kMinBarHalf,
-                              kMaxBarHalf);
+  const int half =
+      std::clamp(static_cast<int>(width > kAxisFixed ? (width - kAxisFixed) / 2 : 0), kMinBarHalf, kMaxBarHalf);
   // The GUID apart: a long name must not push it off the screen.
-  out += "controller: " + printable_text(layout->name) + (layout->game_controller ? " (game controller)" : " (joystick)") +
-         "\n  GUID " + printable_text(layout->guid) + "\n\nbuttons (* held)\n";
+  out += "controller: " + printable_text(layout->name) +
+         (layout->game_controller ? " (game controller)" : " (joystick)") + "\n  GUID " + printable_text(layout->guid) +
+         "\n\nbuttons (* held)\n";
   std::size_t column = 0;
   for (const auto key : layout->buttons) {
     out += fmt(" %c%3u %-13s", state.button(key).down ? '*' : ' ', static_cast<unsigned>(key.index),

@@ -8,9 +8,9 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -66,8 +66,8 @@ int syslog_priority(spdlog::level::level_enum level) {
 }
 
 bool same_file(int a, int b) {
-  struct stat sa{};
-  struct stat sb{};
+  struct stat sa {};
+  struct stat sb {};
   return fstat(a, &sa) == 0 && fstat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
@@ -97,8 +97,8 @@ void FdLogSink::write_out(const std::shared_ptr<Queue>& q) {
       q->dropped += q->lines.size();
       q->lines.clear();
       if (q->note_fd >= 0) {
-        const std::string note = "andros-bridge: log: " + q->name + ": " + std::strerror(error) +
-                                 "; no more log lines go there\n";
+        const std::string note =
+            "andros-bridge: log: " + q->name + ": " + std::strerror(error) + "; no more log lines go there\n";
         lock.unlock();
         write_fully(q->note_fd, note);
         lock.lock();
@@ -164,9 +164,8 @@ void FdLogSink::write_line(std::string line, int priority) {
 
 bool FdLogSink::flush_for(int timeout_ms) {
   std::unique_lock lock(queue_->mutex);
-  return queue_->idle.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] {
-    return queue_->exited || (queue_->lines.empty() && !queue_->writing);
-  });
+  return queue_->idle.wait_for(lock, std::chrono::milliseconds(timeout_ms),
+                               [this] { return queue_->exited || (queue_->lines.empty() && !queue_->writing); });
 }
 
 bool FdLogSink::failed() const {

@@ -17,7 +17,7 @@ namespace {
 // The page, in CSS px at 96 per inch: A4 landscape.
 constexpr double kWidth = 1123;
 constexpr double kHeight = 794;
-constexpr double kLeft = 150;   // signal names left of it
+constexpr double kLeft = 150;  // signal names left of it
 constexpr double kRight = 1095;
 constexpr double kBandTop = 78;
 constexpr double kBandHeight = 22;
@@ -35,10 +35,10 @@ struct Band {
   const char* colour;
 };
 constexpr std::array<Band, 5> kBands = {{{"not enabled", "#c9c9c9"},
-                                          {"enabled", "#4caf50"},
-                                          {"stopped", "#e57373"},
-                                          {"link down", "#ffb74d"},
-                                          {"reloading", "#64b5f6"}}};
+                                         {"enabled", "#4caf50"},
+                                         {"stopped", "#e57373"},
+                                         {"link down", "#ffb74d"},
+                                         {"reloading", "#64b5f6"}}};
 
 std::size_t band_of(run::OpState s) {
   using S = run::OpState;
@@ -55,7 +55,6 @@ std::size_t band_of(run::OpState s) {
   return 0;
 }
 
-
 class Page {
  public:
   Page(std::int64_t from, std::int64_t to) : from_(from), to_(std::max(to, from + 1)) {}
@@ -71,8 +70,9 @@ class Page {
     out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n", x, y, attrs, sheet_detail::xml_escape(text));
   }
   void line(double x0, double y0, double x1, double y1, std::string_view stroke, double width = 1) {
-    out_ += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"{}\"/>\n",
-                        x0, y0, x1, y1, stroke, width);
+    out_ += fmt::format(
+        "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"{}\"/>\n", x0, y0,
+        x1, y1, stroke, width);
   }
   [[nodiscard]] const std::string& svg() const { return out_; }
   [[nodiscard]] std::int64_t from() const { return from_; }
@@ -114,9 +114,8 @@ std::vector<std::size_t> signals_on(const std::vector<const PlotSample*>& s) {
   for (std::size_t i = 0; i < protocol::kSignals.size(); ++i) {
     const auto& sig = protocol::kSignals[i];
     if (!sig.is_bit()) continue;
-    const bool seen = std::any_of(s.begin(), s.end(), [&sig](const PlotSample* p) {
-      return p->sent && (p->data[sig.byte] >> sig.bit & 1) != 0;
-    });
+    const bool seen = std::any_of(
+        s.begin(), s.end(), [&sig](const PlotSample* p) { return p->sent && (p->data[sig.byte] >> sig.bit & 1) != 0; });
     if (seen) on.push_back(i);
   }
   return on;
@@ -141,10 +140,11 @@ void draw_time_grid(Page& page, double bottom) {
 
 void draw_bands(Page& page, const std::vector<const PlotSample*>& s) {
   page.text(kLeft - 8, kBandTop + 15, "state", " font-size=\"11\" text-anchor=\"end\"");
-  runs(s, page.to(), [](const PlotSample& p) { return band_of(p.state); },
-       [&](const PlotSample& first, std::int64_t end, std::size_t band) {
-         page.rect(page.x(std::max(first.t_ms, page.from())), kBandTop, page.x(end), kBandHeight, kBands[band].colour);
-       });
+  runs(
+      s, page.to(), [](const PlotSample& p) { return band_of(p.state); },
+      [&](const PlotSample& first, std::int64_t end, std::size_t band) {
+        page.rect(page.x(std::max(first.t_ms, page.from())), kBandTop, page.x(end), kBandHeight, kBands[band].colour);
+      });
   double x = kLeft;
   for (const auto& b : kBands) {  // the legend
     page.rect(x, kBandTop + kBandHeight + 6, x + 10, 10, b.colour);
@@ -156,16 +156,17 @@ void draw_bands(Page& page, const std::vector<const PlotSample*>& s) {
 void draw_layers(Page& page, const std::vector<const PlotSample*>& s) {
   page.text(kLeft - 8, kLayerTop + 12, "layer", " font-size=\"11\" text-anchor=\"end\"");
   page.rect(kLeft, kLayerTop, kRight, kLayerHeight, "#f4f4f4");
-  runs(s, page.to(), [](const PlotSample& p) -> const std::string& { return p.layer; },
-       [&](const PlotSample& first, std::int64_t end, const std::string& layer) {
-         if (layer.empty()) return;
-         const double x0 = page.x(std::max(first.t_ms, page.from()));
-         const double x1 = page.x(end);
-         page.rect(x0, kLayerTop, x1, kLayerHeight, "#9575cd");
-         if (x1 - x0 > 7.0 * static_cast<double>(layer.size())) {
-           page.text(x0 + 3, kLayerTop + 12, layer, " font-size=\"10\" fill=\"white\"");
-         }
-       });
+  runs(
+      s, page.to(), [](const PlotSample& p) -> const std::string& { return p.layer; },
+      [&](const PlotSample& first, std::int64_t end, const std::string& layer) {
+        if (layer.empty()) return;
+        const double x0 = page.x(std::max(first.t_ms, page.from()));
+        const double x1 = page.x(end);
+        page.rect(x0, kLayerTop, x1, kLayerHeight, "#9575cd");
+        if (x1 - x0 > 7.0 * static_cast<double>(layer.size())) {
+          page.text(x0 + 3, kLayerTop + 12, layer, " font-size=\"10\" fill=\"white\"");
+        }
+      });
   page.text(kRight, kLayerTop + 12, "(blank: base layer)", " font-size=\"9\" fill=\"#777\" text-anchor=\"end\"");
 }
 
@@ -247,14 +248,16 @@ void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std
               weapon ? " font-size=\"10\" text-anchor=\"end\" fill=\"#c62828\" font-weight=\"bold\""
                      : " font-size=\"10\" text-anchor=\"end\"");
     const char* colour = weapon ? "#d32f2f" : sig.kind == protocol::SignalKind::kSelector ? "#90a4ae" : "#37474f";
-    runs(s, page.to(), [&sig](const PlotSample& p) { return p.sent && (p.data[sig.byte] >> sig.bit & 1) != 0; },
-         [&](const PlotSample& first, std::int64_t end, bool bit) {
-           if (bit) page.rect(page.x(std::max(first.t_ms, page.from())), y + 2, page.x(end), kRowHeight - 4, colour);
-         });
+    runs(
+        s, page.to(), [&sig](const PlotSample& p) { return p.sent && (p.data[sig.byte] >> sig.bit & 1) != 0; },
+        [&](const PlotSample& first, std::int64_t end, bool bit) {
+          if (bit) page.rect(page.x(std::max(first.t_ms, page.from())), y + 2, page.x(end), kRowHeight - 4, colour);
+        });
   }
   if (shown < on.size()) {
     std::string rest;
-    for (std::size_t r = shown; r < on.size(); ++r) rest += std::string(r == shown ? "" : ", ") + std::string(protocol::kSignals[on[r]].name);
+    for (std::size_t r = shown; r < on.size(); ++r)
+      rest += std::string(r == shown ? "" : ", ") + std::string(protocol::kSignals[on[r]].name);
     page.text(kLeft, kSignalsTop + kRowHeight * static_cast<double>(shown) + 10, "and " + rest, " font-size=\"10\"");
   }
 }
@@ -279,8 +282,10 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
     const std::int64_t through = i + 1 < frames.size() ? frames[i + 1].tick - frames[i + 1].gap - 1 : last;
     for (std::int64_t tick = f.tick; tick <= through; ++tick) {
       const std::int64_t t = schedule.tick_ms(tick);
-      while (state_at < session.states.size() && session.states[state_at].t_ms <= t) state = session.states[state_at++].state;
-      while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t) layer = session.layers[layer_at++].text;
+      while (state_at < session.states.size() && session.states[state_at].t_ms <= t)
+        state = session.states[state_at++].state;
+      while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
+        layer = session.layers[layer_at++].text;
       out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer});
     }
   }
@@ -295,10 +300,10 @@ std::string render_plot_svg(const PlotInput& in) {
   for (const auto& s : in.samples) {
     if (s.t_ms >= in.from_ms && s.t_ms <= to) shown.push_back(&s);
   }
-  page.add(fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 {} {}\" "
-      "font-family=\"DejaVu Sans, Arial, sans-serif\">\n",
-      kWidth, kHeight));
+  page.add(
+      fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 {} {}\" "
+                  "font-family=\"DejaVu Sans, Arial, sans-serif\">\n",
+                  kWidth, kHeight));
   page.rect(0, 0, kWidth, kHeight, "white");
   page.text(kLeft, 30, in.title, " font-size=\"17\" font-weight=\"bold\"");
   page.text(kLeft, 48, in.settings, " font-size=\"11\" fill=\"#333\"");
@@ -307,7 +312,8 @@ std::string render_plot_svg(const PlotInput& in) {
                         seconds_text(page.to()), shown.size()),
             " font-size=\"10\" fill=\"#555\"");
   const auto on = signals_on(shown);
-  const double bottom = kSignalsTop + kRowHeight * static_cast<double>(std::max<std::size_t>(signal_rows(on.size()), 1));
+  const double bottom =
+      kSignalsTop + kRowHeight * static_cast<double>(std::max<std::size_t>(signal_rows(on.size()), 1));
   draw_time_grid(page, bottom);
   draw_bands(page, shown);
   draw_layers(page, shown);

@@ -66,7 +66,8 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     return;
   }
   if (before.motion_allowed != after.motion_allowed) {
-    if (after.motion_allowed) spdlog::info("link {}: the server is reading again: frames follow the controller", after.link_name);
+    if (after.motion_allowed)
+      spdlog::info("link {}: the server is reading again: frames follow the controller", after.link_name);
     else spdlog::warn("link {}: {}", after.link_name, kNeutralOnly);
   }
   if (first_tick_ || before.connected != after.connected) {
@@ -79,7 +80,8 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
-    else if (after.state == run::OpState::kStopped) spdlog::warn("STOP: stopped by the operator: {}", after.enable_text);
+    else if (after.state == run::OpState::kStopped)
+      spdlog::warn("STOP: stopped by the operator: {}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
@@ -122,7 +124,8 @@ std::string state_text(const run::TickReport& r) {
   using run::OpState;
   switch (r.state) {
     case OpState::kNoLink:
-      return "nothing reaches the vehicle (link " + (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
+      return "nothing reaches the vehicle (link " +
+             (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
              "); once it is up, press the deadman afresh";
     case OpState::kNoController:
       if (r.connected && r.supervised && !r.supervisor_connected) {
@@ -131,7 +134,8 @@ std::string state_text(const run::TickReport& r) {
       return "connect a controller, then press the deadman";
     case OpState::kNotEnabled:
       // The engine saw the deadman held, but driving was interrupted since (link, reload, resume).
-      if (r.engine.enable == mapping::EnableState::kEnabled) return "driving was interrupted: release and press the deadman again";
+      if (r.engine.enable == mapping::EnableState::kEnabled)
+        return "driving was interrupted: release and press the deadman again";
       return std::string(describe(r.engine.enable));
     case OpState::kEnabled: return enable_text(r.engine);
     case OpState::kStopped: return std::string(kStoppedText);

@@ -50,14 +50,16 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
   constexpr std::string_view kLabel = "state       ";
   std::vector<Line> out;
   if (s.enabled()) {
-    out.push_back(Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
+    out.push_back(
+        Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
   } else {
-    const auto text = s.shutting_down() ? "SHUTTING DOWN: sending neutral frames" : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
+    const auto text = s.shutting_down() ? "SHUTTING DOWN: sending neutral frames"
+                                        : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);
     const std::string indent(kLabel.size(), ' ');
     for (const auto& part : wrap(text, room)) {
-      out.push_back(Line(out.empty() ? std::string(kLabel) : indent)
-                        .add(part, s.shutting_down() ? Style::kWarn : Style::kAlert));
+      out.push_back(
+          Line(out.empty() ? std::string(kLabel) : indent).add(part, s.shutting_down() ? Style::kWarn : Style::kAlert));
     }
   }
   if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);
@@ -99,7 +101,8 @@ Line controller_line(const RunStatus& s) {
   if (s.connected) line.add(s.controller, Style::kBold);
   else line.add("none connected", Style::kAlert);
   if (s.connected && s.game_controller == false) {
-    line.add("  (a plain joystick to SDL)", joystick_note(s.pad_names, s.game_controller).empty() ? Style::kPlain : Style::kWarn);
+    line.add("  (a plain joystick to SDL)",
+             joystick_note(s.pad_names, s.game_controller).empty() ? Style::kPlain : Style::kWarn);
   }
   return s.input == "controller" ? line : line.add("  (script " + s.input + ")");
 }

@@ -21,10 +21,27 @@ using input::InputKey;
 using input::InputKind;
 using mapping::Binding;
 
-constexpr std::array<std::string_view, input::kPadButtonNames.size()> kButtonLabels = {
-    "A",  "B",  "X",        "Y",          "Back",        "Guide",       "Start",
-    "left stick click",      "right stick click", "LB", "RB", "D-pad up", "D-pad down", "D-pad left",
-    "D-pad right", "Misc",   "paddle 1",  "paddle 2",    "paddle 3",    "paddle 4",    "touchpad"};
+constexpr std::array<std::string_view, input::kPadButtonNames.size()> kButtonLabels = {"A",
+                                                                                       "B",
+                                                                                       "X",
+                                                                                       "Y",
+                                                                                       "Back",
+                                                                                       "Guide",
+                                                                                       "Start",
+                                                                                       "left stick click",
+                                                                                       "right stick click",
+                                                                                       "LB",
+                                                                                       "RB",
+                                                                                       "D-pad up",
+                                                                                       "D-pad down",
+                                                                                       "D-pad left",
+                                                                                       "D-pad right",
+                                                                                       "Misc",
+                                                                                       "paddle 1",
+                                                                                       "paddle 2",
+                                                                                       "paddle 3",
+                                                                                       "paddle 4",
+                                                                                       "touchpad"};
 constexpr std::array<std::string_view, input::kPadAxisNames.size()> kAxisLabels = {
     "left stick left/right", "left stick up/down", "right stick left/right", "right stick up/down", "LT", "RT"};
 
@@ -68,9 +85,7 @@ std::string figure(double value) {
   return text;
 }
 
-std::string percent(double fraction) {
-  return std::to_string(static_cast<int>(std::lround(fraction * 100))) + "%";
-}
+std::string percent(double fraction) { return std::to_string(static_cast<int>(std::lround(fraction * 100))) + "%"; }
 
 /// A fraction as a percentage to three significant figures: "25%", "12.5%".
 std::string exact_percent(double fraction) {
@@ -198,12 +213,12 @@ std::string speed_levels(const mapping::SpeedScale& scale) {
 /// The speed levels, and how they differ from the vehicle's speed range.
 std::string speed_note(const mapping::Mapping& m) {
   const auto& s = m.scale;
-  std::string out = "Speed levels (drive and pivot), " + label(s.up->key) + " steps up" +
-                    (s.down ? ", " + label(s.down->key) + " down" : std::string(", after the fastest back to the slowest")) +
-                    ": " + speed_levels(s) + " of the stick's travel from rest; starts at " +
-                    exact_percent(s.levels.at(s.initial)) +
-                    ", again after the controller is lost or driving was interrupted; kept while the deadman is "
-                    "released. A stick held when the level changes waits until it is back at rest.";
+  std::string out =
+      "Speed levels (drive and pivot), " + label(s.up->key) + " steps up" +
+      (s.down ? ", " + label(s.down->key) + " down" : std::string(", after the fastest back to the slowest")) + ": " +
+      speed_levels(s) + " of the stick's travel from rest; starts at " + exact_percent(s.levels.at(s.initial)) +
+      ", again after the controller is lost or driving was interrupted; kept while the deadman is "
+      "released. A stick held when the level changes waits until it is back at rest.";
   const auto refs = mapping::all_bindings(m);
   const bool range = std::any_of(refs.begin(), refs.end(), [&](mapping::BindingRef ref) {
     const auto* sel = std::get_if<mapping::SelectorBinding>(&mapping::binding_at(m, ref).rule);
@@ -214,7 +229,10 @@ std::string speed_note(const mapping::Mapping& m) {
       });
     });
   });
-  if (range) out += " Not the speed_low/speed_high selector: that sets the vehicle's own speed range; the level scales the stick within it.";
+  if (range)
+    out +=
+        " Not the speed_low/speed_high selector: that sets the vehicle's own speed range; the level scales the stick "
+        "within it.";
   return out;
 }
 
@@ -232,8 +250,8 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
       const auto& w = protocol::words(k->analog);
       out.push_back(name(k->analog) + " knob" + where(m, ref.layer) + ": " + label(k->increase) + " " +
                     std::string(w.more) + ", " + label(k->decrease) + " " + std::string(w.less) + ", " +
-                    std::to_string(k->rate) + " units/s; starts at " +
-                    std::to_string(k->initial.value_or(0)) + ", kept while not enabled");
+                    std::to_string(k->rate) + " units/s; starts at " + std::to_string(k->initial.value_or(0)) +
+                    ", kept while not enabled");
     } else if (const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule); w != nullptr && w->arm) {
       arms.insert(label(*w->arm));
     } else if (const auto* a = std::get_if<mapping::AxisBinding>(&b.rule)) {
@@ -245,7 +263,8 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   }
   if (m.scale.up) out.push_back(speed_note(m));
   else if (m.scale.levels.front() != 1.0) {
-    out.push_back("Drive and pivot move " + exact_percent(m.scale.levels.front()) + " of the stick's travel from rest (scale).");
+    out.push_back("Drive and pivot move " + exact_percent(m.scale.levels.front()) +
+                  " of the stick's travel from rest (scale).");
   }
   if (!shapes.empty()) out.push_back("Analog inputs: " + shapes + ".");
   if (!arms.empty()) {
@@ -278,8 +297,9 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
                   static_cast<double>(*m.enable_timeout_ms) / 1000.0);
     out.emplace_back(timeout);
   }
-  out.push_back("Releasing the deadman switches toggles and toggled layers off. After the deadman press or a layer "
-                "change, an input with a new meaning acts only once seen at rest.");
+  out.push_back(
+      "Releasing the deadman switches toggles and toggled layers off. After the deadman press or a layer "
+      "change, an input with a new meaning acts only once seen at rest.");
   const auto numbered = [](const mapping::InputUse& u) { return u.key.kind >= InputKind::kJoyButton; };
   bool joystick = (m.deadman && numbered(*m.deadman)) ||
                   std::any_of(m.layers.begin(), m.layers.end(), [&](const auto& l) { return numbered(l.input); });
@@ -288,8 +308,9 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
     joystick = joystick || std::any_of(b.inputs.begin(), b.inputs.end(), numbered) || (b.arm && numbered(*b.arm));
   }
   if (joystick) {
-    out.push_back("Joystick buttons, axes and hats are numbered from 0, as SDL numbers them and 'andros-bridge "
-                  "inputs' shows them: button 0 is the first, which the device may print as 1.");
+    out.push_back(
+        "Joystick buttons, axes and hats are numbered from 0, as SDL numbers them and 'andros-bridge "
+        "inputs' shows them: button 0 is the first, which the device may print as 1.");
   }
   return out;
 }
@@ -314,7 +335,8 @@ void add_layer_keys(const mapping::Mapping& m, int panel, PanelBuilder& out) {
   }
   // The speed buttons step the level in every layer.
   const auto& scale = m.scale;
-  if (scale.up) out.add(scale.up->key, SheetMark::kSpeed, "speed level up", scale.down ? "" : "then back to the slowest");
+  if (scale.up)
+    out.add(scale.up->key, SheetMark::kSpeed, "speed level up", scale.down ? "" : "then back to the slowest");
   if (scale.down) out.add(scale.down->key, SheetMark::kSpeed, "speed level down");
 }
 

@@ -52,10 +52,10 @@ std::string stick(double cx, double cy) {
 std::string dpad() {
   const double arm = kDpadArm;
   const double len = kDpadLength;
-  return "<path fill=\"#ffffff\" d=\"M" + num(kDpadX - arm / 2) + " " + num(kDpadY - len / 2) + " h" + num(arm) +
-         " v" + num((len - arm) / 2) + " h" + num((len - arm) / 2) + " v" + num(arm) + " h" + num(-(len - arm) / 2) +
-         " v" + num((len - arm) / 2) + " h" + num(-arm) + " v" + num(-(len - arm) / 2) + " h" +
-         num(-(len - arm) / 2) + " v" + num(-arm) + " h" + num((len - arm) / 2) + " Z\"/>";
+  return "<path fill=\"#ffffff\" d=\"M" + num(kDpadX - arm / 2) + " " + num(kDpadY - len / 2) + " h" + num(arm) + " v" +
+         num((len - arm) / 2) + " h" + num((len - arm) / 2) + " v" + num(arm) + " h" + num(-(len - arm) / 2) + " v" +
+         num((len - arm) / 2) + " h" + num(-arm) + " v" + num(-(len - arm) / 2) + " h" + num(-(len - arm) / 2) + " v" +
+         num(-arm) + " h" + num((len - arm) / 2) + " Z\"/>";
 }
 
 }  // namespace
@@ -111,10 +111,11 @@ std::string draw_pad(double x, double y, double scale) {
          circle(kGuideX, kGuideY, kGuideRadius) + circle(kFaceX, kFaceY - kFaceStep, kFaceRadius) +
          circle(kFaceX - kFaceStep, kFaceY, kFaceRadius) + circle(kFaceX + kFaceStep, kFaceY, kFaceRadius) +
          circle(kFaceX, kFaceY + kFaceStep, kFaceRadius) + "</g>";
-  out += "<g fill=\"#333333\" stroke=\"none\" font-weight=\"bold\">" + text(kFaceX, kFaceY - kFaceStep + 1.3, 3.6, "Y") +
-         text(kFaceX - kFaceStep, kFaceY + 1.3, 3.6, "X") + text(kFaceX + kFaceStep, kFaceY + 1.3, 3.6, "B") +
-         text(kFaceX, kFaceY + kFaceStep + 1.3, 3.6, "A") + text(24, 5.2, 3.2, "LT") + text(76, 5.2, 3.2, "RT") +
-         text(25, 10.6, 3.2, "LB") + text(75, 10.6, 3.2, "RB") + "</g>";
+  out += "<g fill=\"#333333\" stroke=\"none\" font-weight=\"bold\">" +
+         text(kFaceX, kFaceY - kFaceStep + 1.3, 3.6, "Y") + text(kFaceX - kFaceStep, kFaceY + 1.3, 3.6, "X") +
+         text(kFaceX + kFaceStep, kFaceY + 1.3, 3.6, "B") + text(kFaceX, kFaceY + kFaceStep + 1.3, 3.6, "A") +
+         text(24, 5.2, 3.2, "LT") + text(76, 5.2, 3.2, "RT") + text(25, 10.6, 3.2, "LB") + text(75, 10.6, 3.2, "RB") +
+         "</g>";
   out += "<g fill=\"#555555\" stroke=\"none\">" + text(kBackX, kSmallY + 5.4, 2.4, "back") +
          text(kStartX, kSmallY + 5.4, 2.4, "start") + text(kGuideX, kGuideY + 7, 2.4, "guide") + "</g>";
   return out + "</g>";

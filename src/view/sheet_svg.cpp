@@ -59,8 +59,8 @@ double text_width(const SheetEntry& e, double size) {
 std::string label(const SheetEntry& e, double x, double y, std::string_view anchor, double width) {
   const double scale = std::min(1.0, width / text_width(e, kLabelSize));
   const double size = kLabelSize * scale;
-  std::string out = "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" font-size=\"" + num(size) +
-                    "\" text-anchor=\"" + std::string(anchor) + "\"" + (e.inherited ? " fill-opacity=\"0.55\"" : "") + ">";
+  std::string out = "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" font-size=\"" + num(size) + "\" text-anchor=\"" +
+                    std::string(anchor) + "\"" + (e.inherited ? " fill-opacity=\"0.55\"" : "") + ">";
   if (e.mark != SheetMark::kPlain) {
     out += "<tspan font-weight=\"bold\" fill=\"" + std::string(mark_colour(e.mark)) + "\">" +
            std::string(mark_name(e.mark)) + " </tspan>";
@@ -68,14 +68,16 @@ std::string label(const SheetEntry& e, double x, double y, std::string_view anch
   out += "<tspan fill=\"" + std::string(e.inherited ? "#555555" : "#111111") + "\"" +
          (e.inherited ? " font-style=\"italic\"" : "") + ">" + xml_escape(e.function) + "</tspan>";
   if (!e.detail.empty()) {
-    out += "<tspan fill=\"#555555\" font-size=\"" + num(kSmallSize * scale) + "\"> (" + xml_escape(e.detail) + ")</tspan>";
+    out +=
+        "<tspan fill=\"#555555\" font-size=\"" + num(kSmallSize * scale) + "\"> (" + xml_escape(e.detail) + ")</tspan>";
   }
   return out + "</text>";
 }
 
 std::string panel_frame(const SheetPanel& panel, double width, double height) {
   std::string title = panel.title;
-  std::transform(title.begin(), title.end(), title.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  std::transform(title.begin(), title.end(), title.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return "<rect x=\"0.3\" y=\"0.3\" width=\"" + num(width - 0.6) + "\" height=\"" + num(height - 0.6) +
          "\" rx=\"2\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.3\"/><rect x=\"0.3\" y=\"0.3\" width=\"" +
          num(width - 0.6) + "\" height=\"" + num(kTitleBand) +
@@ -107,7 +109,8 @@ std::string pad_panel(const SheetPanel& panel) {
   std::string dots;
   std::string labels;
   for (const auto& slot : sheet_detail::pad_slots()) {
-    const auto it = std::find_if(panel.entries.begin(), panel.entries.end(), [&](const auto& e) { return e.key == slot.key; });
+    const auto it =
+        std::find_if(panel.entries.begin(), panel.entries.end(), [&](const auto& e) { return e.key == slot.key; });
     if (it == panel.entries.end()) continue;
     const double y = pad_y + slot.label_y * kPadScale;
     const double text_x = slot.right ? pad_x + pad_w + 2 : pad_x - 2;
@@ -170,8 +173,8 @@ std::string legend(const Sheet& sheet, double y) {
   std::string out = "<text x=\"0\" y=\"" + num(y) + "\" font-size=\"" + num(kNoteSize) + "\">";
   for (const auto mark : kLegendMarks) {
     if (mark == SheetMark::kSpeed && !sheet.speed) continue;
-    out += "<tspan font-weight=\"bold\" fill=\"" + std::string(mark_colour(mark)) + "\">" + std::string(mark_name(mark)) +
-           "</tspan>   ";
+    out += "<tspan font-weight=\"bold\" fill=\"" + std::string(mark_colour(mark)) + "\">" +
+           std::string(mark_name(mark)) + "</tspan>   ";
   }
   return out + "<tspan fill=\"#555555\" font-style=\"italic\">grey: a base binding the layer keeps</tspan>" +
          "</text><text x=\"0\" y=\"" + num(y + kNoteRow) + "\" font-size=\"" + num(kNoteSize) +
@@ -192,29 +195,32 @@ std::string render_sheet_svg(const Sheet& sheet) {
   const std::string robot = sheet.robot.empty() ? "base mapping" : sheet.robot;
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
                     num(kPageWidth) + "mm\" height=\"" + num(kPageHeight) + "mm\" viewBox=\"0 0 " + num(kPageWidth) +
-                    " " + num(kPageHeight) + "\" xml:space=\"preserve\" font-family=\"DejaVu Sans, Arial, Helvetica, sans-serif\">\n";
+                    " " + num(kPageHeight) +
+                    "\" xml:space=\"preserve\" font-family=\"DejaVu Sans, Arial, Helvetica, sans-serif\">\n";
   out += "<title>" + xml_escape(robot + " cheat sheet (" + sheet.file + ")") + "</title>\n";
   out += "<rect width=\"" + num(kPageWidth) + "\" height=\"" + num(kPageHeight) + "\" fill=\"#ffffff\"/>\n";
   out += "<text x=\"0\" y=\"6\" font-size=\"5.5\" font-weight=\"bold\">" + xml_escape(robot) +
-         " cheat sheet</text><text x=\"" + num(kPageWidth) + "\" y=\"6\" font-size=\"2.6\" text-anchor=\"end\" "
-         "fill=\"#555555\">" + xml_escape(sheet.file) + ", made by andros-bridge sheet</text>\n";
+         " cheat sheet</text><text x=\"" + num(kPageWidth) +
+         "\" y=\"6\" font-size=\"2.6\" text-anchor=\"end\" "
+         "fill=\"#555555\">" +
+         xml_escape(sheet.file) + ", made by andros-bridge sheet</text>\n";
   if (!sheet.deadman.empty()) {
-    out += "<text x=\"0\" y=\"11.5\" font-size=\"3\">Hold <tspan font-weight=\"bold\" fill=\"#c62828\">" +
-           xml_escape(sheet.deadman) +
-           (sheet.stop.empty()
-                ? std::string("</tspan> (the deadman) to move anything; after connecting, press it afresh. "
-                              "Releasing it stops everything.")
-                : "</tspan> (the deadman) to move anything; press it afresh after connecting. "
-                  "<tspan font-weight=\"bold\" fill=\"#d50000\">" + xml_escape(sheet.stop) +
-                      "</tspan> = STOP (latched: see the notes).") +
-           "</text>\n";
+    out +=
+        "<text x=\"0\" y=\"11.5\" font-size=\"3\">Hold <tspan font-weight=\"bold\" fill=\"#c62828\">" +
+        xml_escape(sheet.deadman) +
+        (sheet.stop.empty() ? std::string("</tspan> (the deadman) to move anything; after connecting, press it afresh. "
+                                          "Releasing it stops everything.")
+                            : "</tspan> (the deadman) to move anything; press it afresh after connecting. "
+                              "<tspan font-weight=\"bold\" fill=\"#d50000\">" +
+                                  xml_escape(sheet.stop) + "</tspan> = STOP (latched: see the notes).") +
+        "</text>\n";
   }
   const double x = (kPageWidth - kPageWidth * scale) / 2;
   for (std::size_t i = 0; i < sheet.panels.size(); ++i) {
     const auto& at = placements[i];
     out += "<g transform=\"translate(" + num(x + at.x * scale) + " " + num(kHeaderHeight + at.y * scale) + ") scale(" +
-           num(scale) + ")\">" + (sheet.pad ? pad_panel(sheet.panels[i]) : list_panel(sheet, sheet.panels[i], at.width)) +
-           "</g>\n";
+           num(scale) + ")\">" +
+           (sheet.pad ? pad_panel(sheet.panels[i]) : list_panel(sheet, sheet.panels[i], at.width)) + "</g>\n";
   }
   double y = kPageHeight - footer + kNoteRow;
   out += legend(sheet, y) + "\n";

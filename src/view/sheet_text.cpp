@@ -18,7 +18,8 @@ std::string padded(std::string text, std::size_t width) {
 }
 
 std::string upper(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return text;
 }
 
@@ -45,12 +46,14 @@ std::string render_sheet_text(const Sheet& sheet) {
   }
   out += "\nNOTES\n";
   auto notes = sheet.notes;
-  notes.emplace_back("Marks: DEADMAN enables motion, STOP stops until released with the deadman, LAYER switches "
-                     "layers, ARMING is held to fire a WEAPON, TOGGLE flips on each press, KNOB moves a level while "
-                     "held, SELECTOR steps a rotary switch" +
-                     std::string(sheet.speed ? ", SPEED steps the speed level" : "") + ". [base]: "
-                     "a base binding the layer keeps. Stick and trigger switches act past half way unless a figure "
-                     "is given.");
+  notes.emplace_back(
+      "Marks: DEADMAN enables motion, STOP stops until released with the deadman, LAYER switches "
+      "layers, ARMING is held to fire a WEAPON, TOGGLE flips on each press, KNOB moves a level while "
+      "held, SELECTOR steps a rotary switch" +
+      std::string(sheet.speed ? ", SPEED steps the speed level" : "") +
+      ". [base]: "
+      "a base binding the layer keeps. Stick and trigger switches act past half way unless a figure "
+      "is given.");
   for (const auto& note : notes) {
     const auto lines = sheet_detail::wrap(note, kNoteWidth);
     for (std::size_t i = 0; i < lines.size(); ++i) out += (i == 0 ? "- " : "  ") + lines[i] + "\n";

@@ -18,7 +18,7 @@
 namespace andros::view {
 namespace {
 
-constexpr int kFinalDrawMs = 300;  ///< the last screen's time limit: exit never waits longer on the terminal
+constexpr int kFinalDrawMs = 300;      ///< the last screen's time limit: exit never waits longer on the terminal
 constexpr std::size_t kLogLines = 64;  ///< kept for the screen: more than a tall terminal's spare rows
 constexpr int kLogPriority = -1;       ///< below every block of a view
 

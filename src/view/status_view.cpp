@@ -52,18 +52,17 @@ bool shows_speed(const mapping::SpeedLevel& speed) { return speed.count > 1 || s
 
 const std::vector<SignalGroup>& signal_groups() {
   static const std::vector<SignalGroup> groups = {
-      {"drive", ids({"safety", "drive_brake", "speed_high", "speed_low", "front_art_up",
-                     "front_art_down", "rear_art_up", "rear_art_down", "fiber_unwind", "fiber_takeup"})},
-      {"arm", ids({"tool_on", "shoulder_cw", "shoulder_ccw", "torso_left", "torso_right", "elbow_cw",
-                   "elbow_ccw", "wrist_cw", "wrist_ccw", "wrist_extend_left", "wrist_extend_right",
-                   "gripper_rot_ccw", "gripper_rot_cw", "gripper_open", "gripper_close"})},
-      {"camera", ids({"pt_left", "pt_right", "pt_up", "pt_down", "pt_extend_up", "pt_extend_down",
-                      "focus_down", "focus_up", "iris_up", "iris_down", "zoom_down", "zoom_up",
-                      "graphics_down", "graphics_up"})},
-      {"video", ids({"inset_3", "inset_4", "inset_video_1", "inset_video_2", "main_video_2",
-                     "main_video_3", "main_video_4"})},
-      {"weapons", ids({"weapon_1", "weapon_2", "weapon_3", "weapon_4", "weapon_5", "weapon_6",
-                       "shotgun", "laser", "enable_key"})},
+      {"drive", ids({"safety", "drive_brake", "speed_high", "speed_low", "front_art_up", "front_art_down",
+                     "rear_art_up", "rear_art_down", "fiber_unwind", "fiber_takeup"})},
+      {"arm", ids({"tool_on", "shoulder_cw", "shoulder_ccw", "torso_left", "torso_right", "elbow_cw", "elbow_ccw",
+                   "wrist_cw", "wrist_ccw", "wrist_extend_left", "wrist_extend_right", "gripper_rot_ccw",
+                   "gripper_rot_cw", "gripper_open", "gripper_close"})},
+      {"camera", ids({"pt_left", "pt_right", "pt_up", "pt_down", "pt_extend_up", "pt_extend_down", "focus_down",
+                      "focus_up", "iris_up", "iris_down", "zoom_down", "zoom_up", "graphics_down", "graphics_up"})},
+      {"video",
+       ids({"inset_3", "inset_4", "inset_video_1", "inset_video_2", "main_video_2", "main_video_3", "main_video_4"})},
+      {"weapons",
+       ids({"weapon_1", "weapon_2", "weapon_3", "weapon_4", "weapon_5", "weapon_6", "shotgun", "laser", "enable_key"})},
   };
   return groups;
 }
@@ -111,8 +110,7 @@ std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
   if (protocol::read_signals(data)[protocol::signal_id("safety")] == 0) center = protocol::kNeutralCentre;
   return {gauge("drive", byte_of(data, "drive"), center), gauge("pivot", byte_of(data, "pivot"), center),
           gauge("arm_speed", byte_of(data, "arm_speed"), std::nullopt),
-          gauge("light", byte_of(data, "light"), std::nullopt),
-          Line("  frame     " + protocol::to_hex(data))};
+          gauge("light", byte_of(data, "light"), std::nullopt), Line("  frame     " + protocol::to_hex(data))};
 }
 
 Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& v, bool live, TermSize size) {
@@ -125,20 +123,19 @@ Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot&
                    .add(fmt(" (period %.2f ms, jitter %.2f ms, worst %.2f ms off)", v.timing.period_ms,
                             v.timing.jitter_ms, v.timing.worst_ms)));
   }
-  screen.pin(Line(fmt("frames      %llu, valid %llu, bad checksum %llu, invalid %llu, bytes skipped %llu of %llu",
-                      static_cast<unsigned long long>(v.stats.frames), static_cast<unsigned long long>(v.stats.valid),
-                      static_cast<unsigned long long>(v.stats.bad_checksum),
-                      static_cast<unsigned long long>(v.stats.invalid),
-                      static_cast<unsigned long long>(v.stats.bytes_skipped),
-                      static_cast<unsigned long long>(v.stats.bytes_total))));
+  screen.pin(Line(fmt(
+      "frames      %llu, valid %llu, bad checksum %llu, invalid %llu, bytes skipped %llu of %llu",
+      static_cast<unsigned long long>(v.stats.frames), static_cast<unsigned long long>(v.stats.valid),
+      static_cast<unsigned long long>(v.stats.bad_checksum), static_cast<unsigned long long>(v.stats.invalid),
+      static_cast<unsigned long long>(v.stats.bytes_skipped), static_cast<unsigned long long>(v.stats.bytes_total))));
   if (!v.last) {
     screen.pin(Line("last frame  none yet"));
     return screen;
   }
   std::string errors;
   for (const auto& e : v.last_errors) errors += (errors.empty() ? "" : "; ") + e;
-  screen.pin(Line("last frame  ").add(v.last_valid ? "valid" : "INVALID: " + errors,
-                                      v.last_valid ? Style::kGood : Style::kAlert));
+  screen.pin(Line("last frame  ")
+                 .add(v.last_valid ? "valid" : "INVALID: " + errors, v.last_valid ? Style::kGood : Style::kAlert));
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
   const auto rows_left = size.rows - 4;
   auto switches = switch_lines(*v.last, width, false);

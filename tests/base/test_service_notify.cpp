@@ -107,7 +107,7 @@ TEST(ServiceNotifier, AWatchdogPeriodAboveADayIsADay) {
       {"9223372036854775", ServiceNotifier::kMaxWatchdogNs},  // INT64_MAX ns, in us
       {"9300000000000000", ServiceNotifier::kMaxWatchdogNs},
       {"9223372036854775807", ServiceNotifier::kMaxWatchdogNs},
-      {"18446744073709551615", ServiceNotifier::kMaxWatchdogNs},  // 2^64-1
+      {"18446744073709551615", ServiceNotifier::kMaxWatchdogNs},        // 2^64-1
       {"99999999999999999999999999", ServiceNotifier::kMaxWatchdogNs},  // beyond 64 bits: still a number
   };
   EXPECT_EQ(ServiceNotifier::kMaxWatchdogNs, kDayUs * 1'000);
@@ -126,8 +126,8 @@ TEST(ServiceNotifier, AClampedWatchdogStillPingsEveryHalfPeriod) {
     auto notifier = ServiceNotifier::from_environment();
     std::string pings;
     // (now, whether it pings): the first at once, then every half day, up to the latest time there is.
-    for (const std::int64_t now : {std::int64_t{0}, kHalf - 1, kHalf, 2 * kHalf - 1, 2 * kHalf,
-                                   kLatest - kHalf, kLatest - 1, kLatest}) {
+    for (const std::int64_t now :
+         {std::int64_t{0}, kHalf - 1, kHalf, 2 * kHalf - 1, 2 * kHalf, kLatest - kHalf, kLatest - 1, kLatest}) {
       notifier.watchdog(now);
       pings += manager.next() == "WATCHDOG=1" ? 'p' : '.';
     }

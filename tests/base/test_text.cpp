@@ -61,22 +61,30 @@ TEST(Text, PrintableTextKeepsPrintableUtf8AndEscapesTheRest) {
   EXPECT_EQ(printable_text("\x1B[2J\x1B]0;title\x07"), "\\x1B[2J\\x1B]0;title\\x07");
   EXPECT_EQ(printable_text("\x7F"), "\\x7F");
   EXPECT_EQ(printable_text("back\\slash"), "back\\\\slash");
-  EXPECT_EQ(printable_text("\xC2\x9B" "2J"), "\\xC2\\x9B2J");                   // C1 CSI
-  EXPECT_EQ(printable_text("\xEF\xBB\xBFpad"), "\\xEF\\xBB\\xBFpad");            // BOM
-  EXPECT_EQ(printable_text("a\xE2\x80\xAE" "z"), "a\\xE2\\x80\\xAEz");              // right-to-left override
-  EXPECT_EQ(printable_text("a\xE2\x80\xA8" "z"), "a\\xE2\\x80\\xA8z");              // line separator
-  EXPECT_EQ(printable_text("\xFF\xC3(\xE2\x82"), "\\xFF\\xC3(\\xE2\\x82");       // invalid, cut short
+  EXPECT_EQ(printable_text("\xC2\x9B"
+                           "2J"),
+            "\\xC2\\x9B2J");                                           // C1 CSI
+  EXPECT_EQ(printable_text("\xEF\xBB\xBFpad"), "\\xEF\\xBB\\xBFpad");  // BOM
+  EXPECT_EQ(printable_text("a\xE2\x80\xAE"
+                           "z"),
+            "a\\xE2\\x80\\xAEz");  // right-to-left override
+  EXPECT_EQ(printable_text("a\xE2\x80\xA8"
+                           "z"),
+            "a\\xE2\\x80\\xA8z");                                                  // line separator
+  EXPECT_EQ(printable_text("\xFF\xC3(\xE2\x82"), "\\xFF\\xC3(\\xE2\\x82");         // invalid, cut short
   EXPECT_EQ(printable_text("\xC0\xAF\xED\xA0\x80"), "\\xC0\\xAF\\xED\\xA0\\x80");  // overlong, surrogate
-  EXPECT_EQ(printable_line("C:\\pad\n"), "C:\\pad\\n");  // a backslash kept, the newline not
+  EXPECT_EQ(printable_line("C:\\pad\n"), "C:\\pad\\n");                            // a backslash kept, the newline not
 }
 
 TEST(Text, UnescapeTextGivesBackTheBytes) {
   for (const std::string& raw : {std::string("Gamepad\n500 button leftshoulder 0\n#"), std::string("a\0b\x1B\\", 6),
-                                std::string("\xFF\xEF\xBB\xBFok \xC3\xA9")}) {
+                                 std::string("\xFF\xEF\xBB\xBFok \xC3\xA9")}) {
     EXPECT_EQ(unescape_text(printable_text(raw), SourcePos{}), raw);
   }
   EXPECT_EQ(unescape_text("\\x41\\x6a", SourcePos{}), "Aj");
-  EXPECT_EQ(input_error_text([] { unescape_text("ab\\q", SourcePos{"x.events", 3, 10}); }),
+  EXPECT_EQ(input_error_text([] {
+              unescape_text("ab\\q", SourcePos{"x.events", 3, 10});
+            }),
             "x.events:3:12: error: unknown escape '\\\\q' (a backslash starts \\\\, \\n, \\r, \\t or \\xNN)");
   EXPECT_NE(input_error_text([] { unescape_text("\\x4", SourcePos{}); }), "no error");
   EXPECT_NE(input_error_text([] { unescape_text("end\\", SourcePos{}); }), "no error");
@@ -95,8 +103,9 @@ TEST(Text, ParseCodeTakesOneOrTwoHexDigits) {
   EXPECT_EQ(parse_code("0x3c", SourcePos{}), 0x3C);
   EXPECT_EQ(parse_code("F", SourcePos{}), 0x0F);
   for (const char* bad : {"", "1FF", "-1", "-0", "0x", "0x100", "G1", "+1"}) {
-    EXPECT_EQ(input_error_text([&] { parse_code(bad, SourcePos{"--code"}); }),
-              "--code: error: code '" + std::string(bad) + "' is not a byte in hex (one or two hex digits, e.g. 01 or 3C)")
+    EXPECT_EQ(
+        input_error_text([&] { parse_code(bad, SourcePos{"--code"}); }),
+        "--code: error: code '" + std::string(bad) + "' is not a byte in hex (one or two hex digits, e.g. 01 or 3C)")
         << bad;
   }
 }

@@ -73,18 +73,14 @@ TEST(Config, BadLinesNameFileAndLine) {
   EXPECT_EQ(error_of("speed=3\n"),
             "dir/test.conf:1:1: error: unknown key 'speed' (known: baudrate, serialport, robot, code, "
             "rate, mapping, weapons, input, supervisor, record, record_dir, record_max_mb, record_max_days)");
-  EXPECT_NE(error_of("\n\nrobot=R2D2\n").find("dir/test.conf:3:7: error: unknown robot 'R2D2'"),
-            std::string::npos);
+  EXPECT_NE(error_of("\n\nrobot=R2D2\n").find("dir/test.conf:3:7: error: unknown robot 'R2D2'"), std::string::npos);
   EXPECT_EQ(error_of("supervisor = 256\n"), "dir/test.conf:1:14: error: controller index 256 is out of range 0..255");
   EXPECT_NE(error_of("code=XYZ\n").find("dir/test.conf:1:6: error: code 'XYZ'"), std::string::npos);
-  EXPECT_NE(error_of("just words\n").find("dir/test.conf:1:1: error: expected key=value"),
-            std::string::npos);
-  EXPECT_NE(error_of("serialport=\n").find("dir/test.conf:1: error: 'serialport' has no value"),
-            std::string::npos);
+  EXPECT_NE(error_of("just words\n").find("dir/test.conf:1:1: error: expected key=value"), std::string::npos);
+  EXPECT_NE(error_of("serialport=\n").find("dir/test.conf:1: error: 'serialport' has no value"), std::string::npos);
   EXPECT_NE(error_of("weapons=maybe\n").find("dir/test.conf:1:9: error: weapons"), std::string::npos);
   EXPECT_NE(error_of("rate=0\n").find("dir/test.conf:1:6: error: rate '0' is below 1 Hz"), std::string::npos);
-  EXPECT_NE(error_of("rate=fast\n").find("dir/test.conf:1:6: error: rate 'fast' is not a number"),
-            std::string::npos);
+  EXPECT_NE(error_of("rate=fast\n").find("dir/test.conf:1:6: error: rate 'fast' is not a number"), std::string::npos);
 }
 
 TEST(Config, AKeyGivenTwiceIsAnErrorAtTheSecondNamingTheFirst) {
@@ -92,7 +88,8 @@ TEST(Config, AKeyGivenTwiceIsAnErrorAtTheSecondNamingTheFirst) {
   EXPECT_EQ(error_of("weapons=disabled\n# later\nrobot=hd1\n  weapons = enabled\n"),
             "dir/test.conf:4:3: error: key 'weapons' given twice (first at line 1)");
   // Keys are case-insensitive, so are their repeats; the same value twice is still twice.
-  EXPECT_EQ(error_of("\nRobot=HD1\nROBOT=hd1\n"), "dir/test.conf:3:1: error: key 'robot' given twice (first at line 2)");
+  EXPECT_EQ(error_of("\nRobot=HD1\nROBOT=hd1\n"),
+            "dir/test.conf:3:1: error: key 'robot' given twice (first at line 2)");
 }
 
 TEST(Config, RefusesARateThatCannotFitWhereItWasSet) {

@@ -63,7 +63,9 @@ class LearnLive : public ::testing::Test {
     EXPECT_EQ(after.c_lflag, before_.c_lflag);
     EXPECT_EQ(after.c_iflag, before_.c_iflag);
   }
-  void type(const char* keys) { ASSERT_EQ(write(master_, keys, std::strlen(keys)), static_cast<ssize_t>(std::strlen(keys))); }
+  void type(const char* keys) {
+    ASSERT_EQ(write(master_, keys, std::strlen(keys)), static_cast<ssize_t>(std::strlen(keys)));
+  }
   /// A push seen by one read of the controller, then the release by the next.
   static void push(VirtualDevice& pad, LearnSession& session, int axis, int value) {
     pad.axis(axis, value);
@@ -107,8 +109,9 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
     for (int i = 0; i < 10; ++i) session.step(1);
     type("\r");
     until(session, "  kept leftshoulder\n");
-    until(session, "base layer, drive (drive forward/back): push a stick or trigger the way for drive forward and let go "
-                   "(Enter keeps lefty up)");
+    until(session,
+          "base layer, drive (drive forward/back): push a stick or trigger the way for drive forward and let go "
+          "(Enter keeps lefty up)");
     push(pad, session, SDL_CONTROLLER_AXIS_LEFTY, 32767);
     until(session, "  drive: lefty up -> lefty down\n");
     type("\r");  // pivot
@@ -122,8 +125,9 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
     press(pad, session, SDL_CONTROLLER_BUTTON_PADDLE1);
     until(session, "  front_art_up: dpup -> paddle1\n");
     type("b");  // back: the step shows what was just chosen
-    until(session, "[6/61] base layer, front_art_up (front articulators up): press a button, or push a stick or "
-                   "trigger the way that sets it and let go (Enter keeps paddle1)\n");
+    until(session,
+          "[6/61] base layer, front_art_up (front articulators up): press a button, or push a stick or "
+          "trigger the way that sets it and let go (Enter keeps paddle1)\n");
     type("\r");
     until(session, "  kept paddle1\n");
     type("s");
@@ -140,7 +144,8 @@ TEST_F(LearnLive, PressesAndKeysMakeAFileTheLoaderReadsBack) {
   EXPECT_TRUE(plan.matches(loaded));
   std::stringstream text;
   text << std::ifstream(output).rdbuf();
-  EXPECT_NE(text.str().find("  - signal: front_art_up    # was dpup\n    button: paddle1\n"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("  - signal: front_art_up    # was dpup\n    button: paddle1\n"), std::string::npos)
+      << text.str();
   EXPECT_NE(text.str().find("  - analog: drive    # was lefty\n    axis: lefty\n"), std::string::npos) << text.str();
   EXPECT_EQ(plan.learned().bindings.size(), loaded.bindings.size());
   const auto check = std::string(ANDROS_BIN) + " check '" + output.string() + "' >/dev/null 2>&1";

@@ -122,7 +122,8 @@ TEST_F(FreshAccount, AFileTheMappingExtendsIsRefusedAndANameIsNeverCut) {
                 "' is a file the mapping learned from extends: it would extend itself; write to another file");
   const auto notes = home_.path() / "notes.txt";
   std::ofstream(notes) << "an operator's notes\n";
-  EXPECT_NE(input_error_text([&] { learn_target(*base, notes, false); }).find("exists: give --force"), std::string::npos);
+  EXPECT_NE(input_error_text([&] { learn_target(*base, notes, false); }).find("exists: give --force"),
+            std::string::npos);
   EXPECT_EQ(read_all(notes), "an operator's notes\n");
   std::ofstream(home_.path() / "afile") << "x";
   EXPECT_EQ(input_error_text([&] { learn_target(*base, home_.path() / "afile/mine.yaml", false); }),

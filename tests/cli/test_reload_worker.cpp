@@ -201,8 +201,7 @@ TEST_F(ReloadRead, RefusesWhatNeedsARestartAndABadFile) {
   EXPECT_EQ(read_reload(flags, running).error,
             "code 01 -> 3C: a reload changes the robot, mapping and weapons only; restart the bridge for these");
   dir_.write("bridge.conf", "weapons=disabled\nmapping=plain.yaml\nweapons=enabled\n");
-  EXPECT_EQ(read_reload(flags, running).error,
-            conf_ + ":3:1: error: key 'weapons' given twice (first at line 1)");
+  EXPECT_EQ(read_reload(flags, running).error, conf_ + ":3:1: error: key 'weapons' given twice (first at line 1)");
 }
 
 /// A frame source that says which one it is in its neutral frame.
@@ -248,8 +247,8 @@ TEST_F(ReloadRead, RunReloadSwapsOnTheCallersThreadOnlyWhenFinishGivesTheOutcome
   const auto ok = wait_for(reload);
   ASSERT_TRUE(ok);
   EXPECT_TRUE(ok->ok) << ok->message;
-  EXPECT_EQ(ok->message,
-            "reloaded (SIGHUP): mapping " + mapping_ + ", WEAPONS ENABLED; not enabled until the deadman is pressed again");
+  EXPECT_EQ(ok->message, "reloaded (SIGHUP): mapping " + mapping_ +
+                             ", WEAPONS ENABLED; not enabled until the deadman is pressed again");
   EXPECT_NE(frames.neutral()[0], 0xAA);
   EXPECT_TRUE(settings.weapons);
   EXPECT_TRUE(board.snapshot().weapons);

@@ -91,10 +91,10 @@ TEST(Settings, FlagsBeatTheFileWhichBeatsTheDefaults) {
   const testing::TempDir dir;
   const auto conf = dir.write("a.conf", "baudrate=19200\ncode=3C\nrobot=rav\nmapping=m.yaml\nrate=20\n").string();
   auto s = from_flags(kRun, "--config " + conf + " --code 5A");
-  EXPECT_EQ(s.baud, 19200);                                   // the file
-  EXPECT_EQ(s.code, 0x5A);                                    // the flag over the file
-  EXPECT_EQ(s.mapping, (dir.path() / "m.yaml").string());    // relative to the file
-  EXPECT_EQ(s.port, "sim");                                   // the default
+  EXPECT_EQ(s.baud, 19200);                                // the file
+  EXPECT_EQ(s.code, 0x5A);                                 // the flag over the file
+  EXPECT_EQ(s.mapping, (dir.path() / "m.yaml").string());  // relative to the file
+  EXPECT_EQ(s.port, "sim");                                // the default
   EXPECT_EQ(s.rate.pos.line, 5);
   // A robot on the command line drops the file's mapping; a mapping flag stays.
   EXPECT_EQ(from_flags(kRun, "--config " + conf + " --robot hd1").mapping, "");

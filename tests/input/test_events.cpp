@@ -67,12 +67,15 @@ TEST_P(EventScriptErrors, NameFileLineAndColumn) {
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, EventScriptErrors,
     ::testing::Values(
-        BadScript{"0 connect\n10 jump\n", 2, 4, "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, reload, stop or supervisor)"},
+        BadScript{"0 connect\n10 jump\n", 2, 4,
+                  "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, "
+                  "reload, stop or supervisor)"},
         BadScript{"0 connect\n10 link sideways\n", 2, 9, "unknown link event 'sideways' (expected down, up or taken)"},
         BadScript{"0 connect\n10 link\n", 2, 4, "expected 'link down|up|taken'"},
         BadScript{"0 connect\n10 suspend now\n", 2, 12, "expected 'suspend'"},
         BadScript{"0 connect\n10 reload a.yaml b.yaml\n", 2, 18, "expected 'reload [MAPPING]'"},
-        BadScript{"0 connect\n100 button a 1\n50 button a 0\n", 3, 1, "time 50 ms goes backwards (previous event at 100 ms)"},
+        BadScript{"0 connect\n100 button a 1\n50 button a 0\n", 3, 1,
+                  "time 50 ms goes backwards (previous event at 100 ms)"},
         BadScript{"0 connect\n1 button trigger 1\n", 2, 10, "unknown button 'trigger'"},
         BadScript{"0 connect\n1 axis leftz 0\n", 2, 8, "unknown axis 'leftz'"},
         BadScript{"0 connect\n1 axis leftx 32768\n", 2, 14, "axis value 32768 is out of range -32768..32767"},
@@ -82,8 +85,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{"x connect\n", 1, 1, "time 'x' is not a whole number"},
         BadScript{"-5 connect\n", 1, 1, "time -5 is out of range 0..4611686018427387903"},
         BadScript{"0 hat 0 sideways\n", 1, 9, "unknown hat position 'sideways'"},
-        BadScript{"0 end\n5 connect\n", 2, 1, "event after 'end'"},
-        BadScript{"0 end now\n", 1, 7, "expected 'end'"},
+        BadScript{"0 end\n5 connect\n", 2, 1, "event after 'end'"}, BadScript{"0 end now\n", 1, 7, "expected 'end'"},
         BadScript{"12\n", 1, 1, "missing event after the time"},
         BadScript{"0 supervisor stop\n", 1, 14,
                   "'supervisor' takes connect, disconnect, button, axis or hat, not 'stop': the other events are "
@@ -107,8 +109,9 @@ TEST(EventScript, AControllerNameIsOneLineOfPrintableText) {
   connect.type = T::kConnect;
   connect.name = hostile;
   const auto line = format_event(connect);
-  EXPECT_EQ(line, "0       connect     Gamepad\\n500 button leftshoulder 0\\n600 button leftshoulder 1\\n700 axis lefty "
-                  "-32768\\n\\x23");
+  EXPECT_EQ(line,
+            "0       connect     Gamepad\\n500 button leftshoulder 0\\n600 button leftshoulder 1\\n700 axis lefty "
+            "-32768\\n\\x23");
   const auto events = parse_event_script(line + "\n900 end\n", "recorded.events");
   ASSERT_EQ(events.size(), 2U);
   EXPECT_EQ(events[0].name, hostile);

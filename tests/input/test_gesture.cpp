@@ -19,7 +19,9 @@ InputEvent ev(std::int64_t t, T type, InputKey key = {}, int value = 0) {
 class GestureTest : public ::testing::Test {
  protected:
   void SetUp() override { EXPECT_FALSE(detector_.feed(ev(0, T::kConnect))); }
-  std::optional<Gesture> feed(T type, InputKey key, int value) { return detector_.feed(ev(t_ += 10, type, key, value)); }
+  std::optional<Gesture> feed(T type, InputKey key, int value) {
+    return detector_.feed(ev(t_ += 10, type, key, value));
+  }
   GestureDetector detector_;
   std::int64_t t_ = 0;
 };
@@ -72,7 +74,7 @@ TEST_F(GestureTest, ResetDropsAPushUnderWayUntilTheAxisIsBackAtRest) {
 
 TEST_F(GestureTest, AHatDirectionIsAButton) {
   const InputKey hat1{InputKind::kHat, 4};
-  EXPECT_EQ(feed(T::kHat, hat1, 2), (Gesture{InputKey{InputKind::kHat, 5}, false}));  // hat1right
+  EXPECT_EQ(feed(T::kHat, hat1, 2), (Gesture{InputKey{InputKind::kHat, 5}, false}));      // hat1right
   EXPECT_EQ(feed(T::kHat, hat1, 2 | 4), (Gesture{InputKey{InputKind::kHat, 6}, false}));  // down added
   EXPECT_FALSE(feed(T::kHat, hat1, 0));
 }

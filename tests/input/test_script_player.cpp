@@ -46,10 +46,8 @@ TEST_P(ScriptEnding, LastFrameIsTheFirstAtOrAfterTheEnd) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, ScriptEnding,
                          ::testing::Values(Ending{"0 connect\n90 button a 1\n", 120},  // no end: the last event
-                                           Ending{"# nothing\n", 0},
-                                           Ending{"0 connect\n80 end\n", 80},
-                                           Ending{"0 connect\n81 end\n", 120},
-                                           Ending{"0 end\n", 0}));
+                                           Ending{"# nothing\n", 0}, Ending{"0 connect\n80 end\n", 80},
+                                           Ending{"0 connect\n81 end\n", 120}, Ending{"0 end\n", 0}));
 
 // A supervisor's line anywhere configures one for the whole run, from its start.
 TEST(ScriptPlayer, ASupervisorLineAnywhereMakesTheScriptSupervised) {

@@ -16,7 +16,6 @@
 namespace andros::link {
 namespace {
 
-
 /// A TCP listener on 127.0.0.1, on a port the kernel picks. With rcvbuf set,
 /// its connections have that fixed receive buffer (an embedded serial
 /// server's), so their window shows what waits unread.

@@ -40,7 +40,8 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   EXPECT_EQ(protocol::read_signals(engine.step(in, 160))[protocol::signal_id("drive")], 128);
   EXPECT_TRUE(engine.status().held_back.empty());
   apply_script(in, "165 axis lefty -32768\n");
-  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("drive")], 255);  // full forward: 128 + round(1 * 127)
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("drive")],
+            255);  // full forward: 128 + round(1 * 127)
 
   apply_script(in, "210 disconnect\n");
   f = protocol::read_signals(engine.step(in, 240));
@@ -53,11 +54,12 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
 TEST(Engine, PivotContractValue) {
   Mapping m = *hd1_mapping();
   for (auto& b : m.bindings) {
-    if (auto* a = std::get_if<AxisBinding>(&b.rule); a && a->analog == protocol::signal_id("pivot")) a->shape = {false, 0.1, 0.5};
+    if (auto* a = std::get_if<AxisBinding>(&b.rule); a && a->analog == protocol::signal_id("pivot"))
+      a->shape = {false, 0.1, 0.5};
   }
   Engine engine(validate(std::move(m)), EngineOptions{});
   input::InputState in;
-  start_enabled(engine, in);  // the start-up tick first: presses before it would not count
+  start_enabled(engine, in);                  // the start-up tick first: presses before it would not count
   apply_script(in, "50 axis leftx 16384\n");  // after the enabling frame: not held back
   const auto f = protocol::read_signals(engine.step(in, 80));
   EXPECT_EQ(f[protocol::signal_id("pivot")], 162);
@@ -88,7 +90,7 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
   ASSERT_EQ(f[protocol::signal_id("drive")], 255);
   ASSERT_EQ(f[protocol::signal_id("tool_on")], 1);
   apply_script(in, "50 button y 1\n");  // a press while stopped is history too
-  engine.restart(in);  // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
+  engine.restart(in);                   // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
   f = protocol::read_signals(engine.step(in, 80));
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
@@ -136,7 +138,8 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
 // where drive and pivot rest while enabled; every frame that is not enabled,
 // and neutral(), carries 128.
 TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {
-  Engine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"), EngineOptions{});
+  Engine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"),
+                EngineOptions{});
   const auto drive = protocol::signal_id("drive");
   const auto pivot = protocol::signal_id("pivot");
   input::InputState in;
@@ -189,7 +192,8 @@ TEST(Engine, RefusesAnInvalidMappingBuiltByHand) {
 
 TEST(Engine, WithoutADeadmanOnlyNeutralFrames) {
   Mapping m;
-  m.bindings.push_back(Binding{ButtonBinding{protocol::signal_id("tool_on"), *input::parse_button_name("a")}, {}, {}, {}, {}});
+  m.bindings.push_back(
+      Binding{ButtonBinding{protocol::signal_id("tool_on"), *input::parse_button_name("a")}, {}, {}, {}, {}});
   Engine engine(validate(m, false), EngineOptions{});
   input::InputState in;
   apply_script(in, "0 connect\n10 button a 1\n");

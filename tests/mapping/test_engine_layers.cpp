@@ -131,9 +131,9 @@ TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
 
 TEST(Engine, OneToggleStatePerSignal) {
   Engine engine(mapping_from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
-                          "  - signal: tool_on\n    button: x\n    toggle: true\n"
-                          "layers:\n  cam:\n    toggle: back\n    bindings:\n"
-                          "      - signal: tool_on\n        button: y\n        toggle: true\n"),
+                                  "  - signal: tool_on\n    button: x\n    toggle: true\n"
+                                  "layers:\n  cam:\n    toggle: back\n    bindings:\n"
+                                  "      - signal: tool_on\n        button: y\n        toggle: true\n"),
                 EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
@@ -144,7 +144,8 @@ TEST(Engine, OneToggleStatePerSignal) {
   apply_script(in, "130 button y 1\n135 button y 0\n");
   EXPECT_EQ(protocol::read_signals(engine.step(in, 160))[protocol::signal_id("tool_on")], 1);
   apply_script(in, "170 button back 1\n175 button back 0\n");
-  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("tool_on")], 1);  // stays on in the base layer
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("tool_on")],
+            1);  // stays on in the base layer
   apply_script(in, "210 button x 1\n215 button x 0\n");
   EXPECT_EQ(protocol::read_signals(engine.step(in, 240))[protocol::signal_id("tool_on")], 0);
 }

@@ -26,8 +26,12 @@ std::string speed_yaml(const std::string& extra = "") {
 
 const std::string kScale = "scale: {button: y, down: a, levels: [0.25, 0.5, 1.0]}\n";
 
-std::uint8_t drive(const protocol::DataBytes& data) { return protocol::read_signals(data)[protocol::signal_id("drive")]; }
-std::uint8_t pivot(const protocol::DataBytes& data) { return protocol::read_signals(data)[protocol::signal_id("pivot")]; }
+std::uint8_t drive(const protocol::DataBytes& data) {
+  return protocol::read_signals(data)[protocol::signal_id("drive")];
+}
+std::uint8_t pivot(const protocol::DataBytes& data) {
+  return protocol::read_signals(data)[protocol::signal_id("pivot")];
+}
 
 struct Scaled {
   int center;
@@ -51,8 +55,8 @@ TEST(EngineSpeed, EachLevelScalesTheDistanceFromRestExactly) {
   const std::array<const char*, 3> levels = {"0.25", "0.5", "1.0"};
   for (const auto& c : cases) {
     for (std::size_t i = 0; i < levels.size(); ++i) {
-      const auto extra = "center: " + std::to_string(c.center) + "\nscale: {button: y, levels: [0.25, 0.5, 1.0], initial: " +
-                         levels[i] + "}\n";
+      const auto extra = "center: " + std::to_string(c.center) +
+                         "\nscale: {button: y, levels: [0.25, 0.5, 1.0], initial: " + levels[i] + "}\n";
       Engine engine(mapping_from_yaml(speed_yaml(extra)), EngineOptions{});
       input::InputState in;
       start_enabled(engine, in);
@@ -61,7 +65,8 @@ TEST(EngineSpeed, EachLevelScalesTheDistanceFromRestExactly) {
       apply_script(in, std::string("90 axis ") + c.axis + " " + std::to_string(c.raw) + "\n");
       const auto data = engine.step(in, 120);
       const auto byte = std::string(c.axis) == "lefty" ? drive(data) : pivot(data);
-      EXPECT_EQ(byte, c.bytes[i]) << "centre " << c.center << ", " << c.axis << " " << c.raw << " at level " << levels[i];
+      EXPECT_EQ(byte, c.bytes[i]) << "centre " << c.center << ", " << c.axis << " " << c.raw << " at level "
+                                  << levels[i];
       EXPECT_EQ(drive(engine.neutral()), 128);
     }
   }
@@ -82,7 +87,8 @@ TEST(EngineSpeed, UpWrapsToTheSlowestDownStopsThere) {
   input::InputState in;
   start_enabled(engine, in);
   const auto press = [&](const char* button, std::int64_t t) {
-    apply_script(in, std::to_string(t) + " button " + button + " 1\n" + std::to_string(t + 5) + " button " + button + " 0\n");
+    apply_script(
+        in, std::to_string(t) + " button " + button + " 1\n" + std::to_string(t + 5) + " button " + button + " 0\n");
     engine.step(in, t + 30);
     return engine.status().speed.index;
   };
@@ -104,17 +110,17 @@ TEST(EngineSpeed, AStickHeldAtAChangeOfLevelWaitsUntilSeenAtRest) {
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 axis lefty -32768\n");
-  EXPECT_EQ(drive(engine.step(in, 80)), 160);  // 0.25
+  EXPECT_EQ(drive(engine.step(in, 80)), 160);          // 0.25
   apply_script(in, "90 button y 1\n95 button y 0\n");  // the stick still full forward
   auto data = engine.step(in, 120);
   EXPECT_EQ(engine.status().speed.index, 1U);
   EXPECT_EQ(drive(data), 128);  // held back: not a jump from 160 to 192
   EXPECT_EQ(pivot(data), 128);
   EXPECT_EQ(engine.status().held_back, std::vector{*input::parse_axis_name("lefty")});  // leftx was at rest
-  EXPECT_EQ(drive(engine.step(in, 160)), 128);  // still held
+  EXPECT_EQ(drive(engine.step(in, 160)), 128);                                          // still held
   apply_script(in, "170 axis lefty -16000\n");
   EXPECT_EQ(drive(engine.step(in, 200)), 128);  // moved, not at rest: still held
-  apply_script(in, "210 axis leftx 16384\n");  // the pivot stick was at rest at the change: it acts
+  apply_script(in, "210 axis leftx 16384\n");   // the pivot stick was at rest at the change: it acts
   EXPECT_EQ(pivot(engine.step(in, 240)), 160);
   apply_script(in, "250 axis lefty 0\n");
   EXPECT_EQ(drive(engine.step(in, 280)), 128);

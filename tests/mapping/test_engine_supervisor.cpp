@@ -17,11 +17,13 @@ constexpr EngineOptions kWeapons{true, 0x01};
 
 // weapon_1: b with rightshoulder held; the supervisor's stop is x, its consent a.
 const std::string kHead = "robot: HD1\ndeadman: leftshoulder\nsupervisor:\n  stop: x\n  weapons_consent: a\n";
-const std::string kBase = kHead + "bindings:\n  - signal: weapon_1\n    button: b\n    arm: rightshoulder\n"
-                                  "  - signal: front_art_up\n    button: dpup\n";
+const std::string kBase = kHead +
+                          "bindings:\n  - signal: weapon_1\n    button: b\n    arm: rightshoulder\n"
+                          "  - signal: front_art_up\n    button: dpup\n";
 // The weapon in a layer held with y.
-const std::string kHeld = kHead + "layers:\n  weapons:\n    hold: y\n    bindings:\n      - signal: weapon_1\n"
-                                  "        button: b\n        arm: rightshoulder\n";
+const std::string kHeld = kHead +
+                          "layers:\n  weapons:\n    hold: y\n    bindings:\n      - signal: weapon_1\n"
+                          "        button: b\n        arm: rightshoulder\n";
 
 std::uint8_t weapon_1(const protocol::DataBytes& data) {
   return protocol::read_signals(data)[protocol::signal_id("weapon_1")];
@@ -134,8 +136,9 @@ TEST(EngineSupervisor, AConsentHeldSinceBeforeCountsOnlyOnceReleasedAndPressedAg
   Engine tap(mapping_from_yaml(kBase), kWeapons);
   input::InputState pad;
   tap.step(pad, 0);
-  apply_script(pad, "0 connect\n0 supervisor connect\n0 supervisor button a 1\n10 button leftshoulder 1\n"
-                    "20 button rightshoulder 1\n");
+  apply_script(pad,
+               "0 connect\n0 supervisor connect\n0 supervisor button a 1\n10 button leftshoulder 1\n"
+               "20 button rightshoulder 1\n");
   tap.step(pad, 40);
   EXPECT_EQ(tap.status().consent, ConsentState::kHeldBack);  // held at its connect
   apply_script(pad, "50 supervisor button a 0\n55 supervisor button a 1\n");

@@ -23,11 +23,14 @@ const std::string kHeld = kHead + "bindings:\n  - signal: front_art_up\n    butt
                           "layers:\n  weapons:\n    hold: y\n    bindings:\n      - signal: weapon_1\n"
                           "        button: b\n        arm: rightshoulder\n";
 // Two toggled layers, one with the weapon.
-const std::string kToggled = kHead + "layers:\n  weapons:\n    toggle: y\n    bindings:\n      - signal: weapon_1\n"
+const std::string kToggled = kHead +
+                             "layers:\n  weapons:\n    toggle: y\n    bindings:\n      - signal: weapon_1\n"
                              "        button: b\n        arm: rightshoulder\n"
                              "  cam:\n    toggle: back\n    bindings:\n      - signal: focus_up\n        button: a\n";
 
-std::uint8_t weapon_1(const protocol::DataBytes& data) { return protocol::read_signals(data)[protocol::signal_id("weapon_1")]; }
+std::uint8_t weapon_1(const protocol::DataBytes& data) {
+  return protocol::read_signals(data)[protocol::signal_id("weapon_1")];
+}
 
 std::vector<input::InputKey> buttons(std::initializer_list<const char*> names) {
   std::vector<input::InputKey> keys;
@@ -44,8 +47,9 @@ TEST(EngineWeapons, ABaseLayerWeaponFiresAsALayersDoes) {
     Engine engine(mapping_from_yaml(yaml), kWeapons);
     input::InputState in;
     engine.step(in, 0);
-    apply_script(in, "0 connect\n" + std::string(layer_key) + "10 button leftshoulder 1\n20 button rightshoulder 1\n"
-                     "30 button b 1\n");
+    apply_script(in, "0 connect\n" + std::string(layer_key) +
+                         "10 button leftshoulder 1\n20 button rightshoulder 1\n"
+                         "30 button b 1\n");
     EXPECT_EQ(weapon_1(engine.step(in, 40)), 0);
     EXPECT_EQ(engine.status().held_back, buttons({"b"}));  // not rightshoulder: it arms
     EXPECT_EQ(weapon_1(engine.step(in, 80)), 0);

@@ -25,8 +25,9 @@ TEST(LearnPlan, WalksTheDeadmanThenEachLayersKeyAndEveryInputOfEveryBinding) {
   }
   inputs += m.layers.size();
   ASSERT_EQ(plan.steps().size(), inputs);
-  EXPECT_EQ(plan.prompt(0), "[1/" + std::to_string(inputs) +
-                                "] base layer, the deadman: press a button or pull a trigger (Enter keeps leftshoulder)");
+  EXPECT_EQ(plan.prompt(0),
+            "[1/" + std::to_string(inputs) +
+                "] base layer, the deadman: press a button or pull a trigger (Enter keeps leftshoulder)");
   const auto up = step_of(plan, "base layer, front_art_up");
   EXPECT_NE(plan.prompt(up).find("(Enter keeps dpup)"), std::string::npos);
   EXPECT_EQ(plan.current(step_of(plan, "base layer, drive")), "lefty up");
@@ -35,7 +36,8 @@ TEST(LearnPlan, WalksTheDeadmanThenEachLayersKeyAndEveryInputOfEveryBinding) {
   EXPECT_EQ(plan.current(step_of(plan, "layer 'weapons', weapon_1 arming input")), "lefttrigger");
   const auto arm_key = step_of(plan, "layer 'arm', the key of layer 'arm' (toggle)");
   EXPECT_EQ(plan.next_layer(up), arm_key);
-  EXPECT_LT(step_of(plan, "layer 'arm', arm_speed"), step_of(plan, "layer 'camera', the key of layer 'camera' (toggle)"));
+  EXPECT_LT(step_of(plan, "layer 'arm', arm_speed"),
+            step_of(plan, "layer 'camera', the key of layer 'camera' (toggle)"));
 }
 
 TEST(LearnPlan, AFreeButtonIsTakenAndTheSameInputIsKept) {
@@ -90,7 +92,8 @@ TEST(LearnPlan, AnAxisPushSetsTheDirection) {
   const auto drive = step_of(plan, "base layer, drive");
   EXPECT_EQ(plan.assign(drive, axis("lefty", true)).kind, Kind::kKept);
   EXPECT_EQ(plan.assign(drive, axis("lefty", false)).kind, Kind::kChanged);
-  EXPECT_EQ(binding_yaml(plan.learned().bindings[drive - 1], ""), "- analog: drive\n  axis: lefty\n  deadzone: 0.1\n  expo: 0.3\n");
+  EXPECT_EQ(binding_yaml(plan.learned().bindings[drive - 1], ""),
+            "- analog: drive\n  axis: lefty\n  deadzone: 0.1\n  expo: 0.3\n");
 }
 
 TEST(LearnPlan, EachStepTakesItsKindOfInputOnly) {
@@ -114,7 +117,8 @@ TEST(LearnPlan, WeaponsShareAnArmButAnArmMayFireNothingElse) {
   // layer it replaces that binding there, as any layer binding does.
   EXPECT_EQ(plan.assign(arm1, axis("righttrigger", false)).kind, Kind::kChanged);
   EXPECT_EQ(plan.assign(arm1, button("paddle1")).kind, Kind::kChanged);
-  EXPECT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_2 arming input"), button("paddle1")).kind, Kind::kChanged);
+  EXPECT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_2 arming input"), button("paddle1")).kind,
+            Kind::kChanged);
   EXPECT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_3"), button("paddle1")).message,
             "'paddle1' is already used for weapon_1 arming input in the layer 'weapons'");
 }

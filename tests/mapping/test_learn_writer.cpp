@@ -49,7 +49,8 @@ TEST(LearnWriter, ABindingThatKeepsAnInputOrItsByteNeedsNoUnbind) {
   LearnPlan plan(*load_mapping(kHd1));
   ASSERT_EQ(plan.assign(step_of(plan, "base layer, drive"), axis("lefty", false)).kind, Kind::kChanged);
   ASSERT_EQ(plan.assign(step_of(plan, "layer 'camera', light up"), button("paddle2")).kind, Kind::kChanged);
-  ASSERT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_1 arming input"), button("paddle1")).kind, Kind::kChanged);
+  ASSERT_EQ(plan.assign(step_of(plan, "layer 'weapons', weapon_1 arming input"), button("paddle1")).kind,
+            Kind::kChanged);
   const auto text = plan.extending_yaml(kHd1);
   EXPECT_EQ(text.find("unbind"), std::string::npos) << text;
   EXPECT_NE(text.find("  \"camera\":\n    toggle: leftstick\n    bindings:\n"
@@ -64,10 +65,12 @@ TEST(LearnWriter, TheDeadmanAndALayerKeyAreWrittenWithTheirLayer) {
   LearnPlan plan(*load_mapping(kHd1));
   ASSERT_EQ(plan.assign(0, axis("righttrigger", false)).kind, Kind::kRefused);  // fiber_unwind reads it
   ASSERT_EQ(plan.assign(0, button("misc1")).kind, Kind::kChanged);
-  ASSERT_EQ(plan.assign(step_of(plan, "layer 'arm', the key of layer 'arm' (toggle)"), button("paddle3")).kind, Kind::kChanged);
+  ASSERT_EQ(plan.assign(step_of(plan, "layer 'arm', the key of layer 'arm' (toggle)"), button("paddle3")).kind,
+            Kind::kChanged);
   const auto text = plan.extending_yaml(kHd1);
   EXPECT_NE(text.find("deadman: misc1    # was leftshoulder\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("  \"arm\":\n    toggle: paddle3    # was rightstick\n    bindings: []\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  \"arm\":\n    toggle: paddle3    # was rightstick\n    bindings: []\n"), std::string::npos)
+      << text;
   testing::TempDir dir;
   const auto loaded = write_and_load(plan, dir);
   EXPECT_EQ(input::input_name(loaded.deadman->key), "misc1");
@@ -111,7 +114,8 @@ TEST(LearnWriter, AnUnbindOfANumberWritesTheOtherBindingOfThatNumberAgain) {
   ASSERT_EQ(plan.assign(1, button("4")).kind, Kind::kChanged);
   const auto text = plan.extending_yaml("stick.yaml");
   EXPECT_NE(text.find("  - unbind: 3\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("  - signal: [pt_left, pt_right]    # unchanged\n    axis: 3\n    threshold: 0.25\n"), std::string::npos)
+  EXPECT_NE(text.find("  - signal: [pt_left, pt_right]    # unchanged\n    axis: 3\n    threshold: 0.25\n"),
+            std::string::npos)
       << text;
   write_and_load(plan, dir, "stick.yaml");
 }

@@ -56,14 +56,16 @@ TEST(ShippedMappings, EveryRobotTypeIsFoundByName) {
 std::set<protocol::SignalId> targets(const Mapping& m) {
   std::set<protocol::SignalId> out;
   for (const auto ref : all_bindings(m)) {
-    std::visit([&](const auto& r) {
-      using R = std::decay_t<decltype(r)>;
-      if constexpr (std::is_same_v<R, PairBinding>) out.insert(r.signals.begin(), r.signals.end());
-      else if constexpr (std::is_same_v<R, AxisBinding> || std::is_same_v<R, KnobBinding>) out.insert(r.analog);
-      else if constexpr (std::is_same_v<R, SelectorBinding>) {
-        for (const auto& p : r.positions) out.insert(p.begin(), p.end());
-      } else out.insert(r.signal);
-    }, binding_at(m, ref).rule);
+    std::visit(
+        [&](const auto& r) {
+          using R = std::decay_t<decltype(r)>;
+          if constexpr (std::is_same_v<R, PairBinding>) out.insert(r.signals.begin(), r.signals.end());
+          else if constexpr (std::is_same_v<R, AxisBinding> || std::is_same_v<R, KnobBinding>) out.insert(r.analog);
+          else if constexpr (std::is_same_v<R, SelectorBinding>) {
+            for (const auto& p : r.positions) out.insert(p.begin(), p.end());
+          } else out.insert(r.signal);
+        },
+        binding_at(m, ref).rule);
   }
   return out;
 }
@@ -75,7 +77,8 @@ TEST(ShippedMappings, EverySignalIsReachableFromAStandardPad) {
     for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
       const auto kind = protocol::kSignals[i].kind;
       if (kind == protocol::SignalKind::kInterlock || kind == protocol::SignalKind::kConstant) continue;
-      EXPECT_TRUE(reached.count(static_cast<protocol::SignalId>(i))) << robot << ": " << protocol::kSignals[i].name << " is not bound";
+      EXPECT_TRUE(reached.count(static_cast<protocol::SignalId>(i)))
+          << robot << ": " << protocol::kSignals[i].name << " is not bound";
     }
     // Only the inputs an Xbox-layout pad has (no guide, paddles, touchpad, numbers).
     for (const auto ref : all_bindings(m)) {
@@ -126,8 +129,7 @@ TEST_P(StandardSession, ReplaysTheSameThroughEveryRobotType) {
   const auto robot = GetParam();
   for (const bool weapons : {false, true}) {
     SCOPED_TRACE(weapons ? "--weapons" : "no --weapons");
-    testing::expect_replay(shipped(robot), weapons, timing::kDefaultRateMillihertz,
-                           kData + "/standard_session.events",
+    testing::expect_replay(shipped(robot), weapons, timing::kDefaultRateMillihertz, kData + "/standard_session.events",
                            kData + (weapons ? "/standard_session_weapons.expected" : "/standard_session.expected"));
   }
 }

@@ -25,7 +25,9 @@ TEST(Safety, NotEnabledIsNeutralKeepingSelectorsAndLevels) {
       case protocol::SignalKind::kWeapon:
       case protocol::SignalKind::kInterlock: EXPECT_EQ(s.values[i], 0) << sig.name; break;
       case protocol::SignalKind::kCentred: EXPECT_EQ(s.values[i], 128) << sig.name; break;
-      case protocol::SignalKind::kSelector: EXPECT_EQ(s.values[i], sig.name.starts_with("speed") ? 0 : 1) << sig.name; break;
+      case protocol::SignalKind::kSelector:
+        EXPECT_EQ(s.values[i], sig.name.starts_with("speed") ? 0 : 1) << sig.name;
+        break;
       default: break;
     }
   }

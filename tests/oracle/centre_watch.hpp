@@ -14,7 +14,8 @@ namespace andros::test {
 
 /// The binding driving the centred byte `analog` in `layer` ("" = base): the
 /// layer's own, else the base's unless a layer binding takes its axis.
-inline const mapping::Binding* centre_driver(const mapping::Mapping& m, const std::string& layer, protocol::SignalId analog) {
+inline const mapping::Binding* centre_driver(const mapping::Mapping& m, const std::string& layer,
+                                             protocol::SignalId analog) {
   const auto drives = [&](const mapping::Binding& b) {
     const auto* a = std::get_if<mapping::AxisBinding>(&b.rule);
     return a != nullptr && a->analog == analog;

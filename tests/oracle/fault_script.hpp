@@ -82,7 +82,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       default: t += 150 + pick.below(800); break;
     }
   };
-  const auto rearm = [&] {  // the operator lets go of the deadman and presses it again, stick forward
+  const auto rearm = [&] {     // the operator lets go of the deadman and presses it again, stick forward
     if (pick.below(3) == 0) {  // a trigger deadman (some mappings): released, squeezed to the middle
       add(T::kAxis, arm, 0);
       wait();
@@ -114,7 +114,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   };
   add(T::kConnect);
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
-  const bool supervised = pick.below(4) == 0;  // a supervisor's controller, now and then
+  const bool supervised = pick.below(4) == 0;           // a supervisor's controller, now and then
   if (supervised) supervisor(T::kConnect);
   const int n = 30 + static_cast<int>(pick.below(70));
   int after_stop = -1;  // events still to come once a stop is in
@@ -141,8 +141,8 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           static_cast<int>(pick.below(2)));
     } else if (roll < 80) {  // rest (0) often: an input acts after a change of meaning only once seen at rest
       const std::array<int, 9> values = {-32768, -16384, -3000, 0, 0, 0, 3000, 16384, 32767};
-      const int v = pick.below(2) == 0 ? values[pick.below(values.size())]
-                                       : static_cast<int>(pick.below(65536)) - 32768;
+      const int v =
+          pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
       switch (pick.below(22)) {
@@ -185,7 +185,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           break;
         case 18:
         case 19: t += 900 + pick.below(1200); break;  // nothing changes for a while (an enable timeout)
-        case 20:  // the supervisor's controller: its stop tapped, or lost and back
+        case 20:                                      // the supervisor's controller: its stop tapped, or lost and back
           if (!supervised) {
             rearm();
           } else if (pick.below(2) == 0) {

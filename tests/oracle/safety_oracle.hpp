@@ -36,14 +36,29 @@ namespace andros::test {
 /// An event that ends "enabled": the last one is what a message names, and
 /// the last that is not a deadman release is what the coverage counts motion after.
 enum class Ending : std::uint8_t {
-  kStart, kConnect, kDisconnect, kRelease, kLinkDown, kLinkUp, kSuspend, kResume,
-  kReloadSame, kReloadGood, kReloadBad, kStop, kStopButton, kPanic, kTimeout, kCount
+  kStart,
+  kConnect,
+  kDisconnect,
+  kRelease,
+  kLinkDown,
+  kLinkUp,
+  kSuspend,
+  kResume,
+  kReloadSame,
+  kReloadGood,
+  kReloadBad,
+  kStop,
+  kStopButton,
+  kPanic,
+  kTimeout,
+  kCount
 };
 
 inline const char* to_string(Ending e) {
-  constexpr const char* kNames[] = {"start",   "connect", "disconnect",  "deadman release", "link down",
-                                    "link up", "suspend", "resume",      "reload (same)",   "reload (good file)",
-                                    "reload (bad file)",  "stop",    "stop button", "panic squeeze",   "enable timeout"};
+  constexpr const char* kNames[] = {
+      "start",       "connect",       "disconnect",    "deadman release",    "link down",         "link up",
+      "suspend",     "resume",        "reload (same)", "reload (good file)", "reload (bad file)", "stop",
+      "stop button", "panic squeeze", "enable timeout"};
   return kNames[static_cast<std::size_t>(e)];
 }
 
@@ -51,18 +66,18 @@ inline const char* to_string(Ending e) {
 /// property was really exercised, not vacuously true.
 struct OracleCoverage {
   std::int64_t frames = 0;
-  std::int64_t motion = 0;                              ///< frames with drive/pivot off centre or a motion bit
+  std::int64_t motion = 0;  ///< frames with drive/pivot off centre or a motion bit
   /// by the last interruption (an ending event other than a release) before the press that enabled
   std::array<std::int64_t, static_cast<std::size_t>(Ending::kCount)> motion_after{};
-  std::int64_t weapons = 0;                             ///< frames with a weapon bit
-  std::int64_t stops_with_frames = 0;                   ///< stops that owed (and got) 3 neutral frames
-  std::int64_t suspend_frames = 0;                      ///< neutral frames of a suspend
-  std::int64_t reload_frames = 0;                       ///< neutral frames of a reload
-  std::int64_t stop_latches = 0;                        ///< stops by a stop button
-  std::int64_t panics = 0;                              ///< squeezes past the panic point
-  std::int64_t timeouts = 0;                            ///< enable timeouts that ended motion
-  std::int64_t supervisor_stops = 0;                    ///< presses of a supervisor's stop button
-  std::int64_t supervised_frames = 0;                   ///< frames of scripts with a supervisor's controller
+  std::int64_t weapons = 0;            ///< frames with a weapon bit
+  std::int64_t stops_with_frames = 0;  ///< stops that owed (and got) 3 neutral frames
+  std::int64_t suspend_frames = 0;     ///< neutral frames of a suspend
+  std::int64_t reload_frames = 0;      ///< neutral frames of a reload
+  std::int64_t stop_latches = 0;       ///< stops by a stop button
+  std::int64_t panics = 0;             ///< squeezes past the panic point
+  std::int64_t timeouts = 0;           ///< enable timeouts that ended motion
+  std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
+  std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
     frames += o.frames;
@@ -87,11 +102,11 @@ class SafetyOracle {
   using Lookup = std::function<const mapping::Mapping*(const std::string& file)>;
 
   struct Options {
-    bool weapons = false;        ///< --weapons
-    std::uint8_t code = 0x01;    ///< --code
-    std::int64_t period_ms = 40; ///< 1000 / rate
-    int stop_frames = 3;         ///< contract section 5: at least 3 neutral frames on a stop
-    int stop_ticks = 8;          ///< the ticks a stop may take when the link refuses some (3 + 5 tries)
+    bool weapons = false;         ///< --weapons
+    std::uint8_t code = 0x01;     ///< --code
+    std::int64_t period_ms = 40;  ///< 1000 / rate
+    int stop_frames = 3;          ///< contract section 5: at least 3 neutral frames on a stop
+    int stop_ticks = 8;           ///< the ticks a stop may take when the link refuses some (3 + 5 tries)
   };
 
   /// Drive and pivot in every neutral frame: the protocol's centre, whatever a mapping says.
@@ -118,7 +133,8 @@ class SafetyOracle {
     at_tick(t);
     last_t_ = t;
     const auto s = protocol::read_signals(data);
-    if (const auto errors = protocol::validation_errors(data); !errors.empty()) return "invalid frame: " + errors.front();
+    if (const auto errors = protocol::validation_errors(data); !errors.empty())
+      return "invalid frame: " + errors.front();
     if (data[protocol::kCodeByte] != options_.code) return "byte 11 is not the code";
 
     if (!link_up_) return "delivered while the link is down (script)";
@@ -154,7 +170,8 @@ class SafetyOracle {
       ++coverage_.weapons;
       if (!options_.weapons) return std::string(sig.name) + " = 1 without --weapons";
       if (!enabled()) return std::string(sig.name) + " = 1 while " + why;
-      if (!armed(static_cast<protocol::SignalId>(i))) return std::string(sig.name) + " = 1 without its arming input held";
+      if (!armed(static_cast<protocol::SignalId>(i)))
+        return std::string(sig.name) + " = 1 without its arming input held";
     }
     const auto moving = motion(s);
     if (moving) {
@@ -221,10 +238,10 @@ class SafetyOracle {
   // here a fresh squeeze from below the press point is enough (permissive).
   void at_tick(std::int64_t t) {
     if (stop_latched_) {
-      const bool can_clear = t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
-                             !(estop_ && held(*estop_)) && !supervisor_stop_held() &&
-                             std::none_of(common_deadmen_.begin(), common_deadmen_.end(),
-                                          [this](input::InputKey k) { return down(k); });
+      const bool can_clear =
+          t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
+          !(estop_ && held(*estop_)) && !supervisor_stop_held() &&
+          std::none_of(common_deadmen_.begin(), common_deadmen_.end(), [this](input::InputKey k) { return down(k); });
       if (can_clear) stop_latched_ = false;
     } else if (stop_pending_) {
       stop_latched_ = true;
@@ -259,8 +276,7 @@ class SafetyOracle {
       if (!value || (!first_mapping_ && !have)) have.reset();
       else have = have && !first_mapping_ ? std::max(*have, *value) : *value;
     };
-    const std::optional<input::InputKey> sup_stop =
-        m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt;
+    const std::optional<input::InputKey> sup_stop = m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt;
     sup_stop_ = first_mapping_ || sup_stop_ == sup_stop ? sup_stop : std::nullopt;
     lenient(timeout_ms_, m.enable_timeout_ms);
     std::optional<int> panic;
@@ -368,7 +384,9 @@ class SafetyOracle {
         break;
       case T::kReload: {
         const mapping::Mapping* loaded = e.name.empty() ? nullptr : lookup_(e.name);
-        end_enabled(e.name.empty() ? Ending::kReloadSame : loaded != nullptr ? Ending::kReloadGood : Ending::kReloadBad);
+        end_enabled(e.name.empty()      ? Ending::kReloadSame
+                    : loaded != nullptr ? Ending::kReloadGood
+                                        : Ending::kReloadBad);
         if (loaded != nullptr) add_possible(*loaded);
         // Answered at once; while suspended, after the resume.
         const std::int64_t tick = tick_of(e.t_ms);
@@ -531,20 +549,20 @@ class SafetyOracle {
   std::int64_t end_tick_ = 0;
   std::int64_t last_t_ = -1;
 
-  std::set<input::InputKey> deadmen_;  ///< every possible mapping's
+  std::set<input::InputKey> deadmen_;         ///< every possible mapping's
   std::set<input::InputKey> common_deadmen_;  ///< the deadmen every possible mapping has (the stop's clearing)
   std::map<protocol::SignalId, std::set<input::InputKey>> arms_;
 
   static constexpr int kTriggerPressed = 16384;  ///< 0.5 of 32767, as the engine rounds it
 
-  std::optional<input::InputKey> estop_;  ///< the stop button every possible mapping has
+  std::optional<input::InputKey> estop_;     ///< the stop button every possible mapping has
   std::optional<input::InputKey> sup_stop_;  ///< the supervisor's stop button every possible mapping has
   bool supervised_ = false;
   bool sup_connected_ = false;
   std::int64_t sup_connect_t_ = -1;
   std::map<input::InputKey, bool> sup_buttons_;
   std::optional<std::int64_t> timeout_ms_;
-  std::optional<int> panic_;              ///< the raw trigger value of the panic point
+  std::optional<int> panic_;  ///< the raw trigger value of the panic point
   bool first_mapping_ = true;
   bool stop_pending_ = false;  ///< pressed since the last tick
   bool stop_latched_ = false;
@@ -564,7 +582,7 @@ class SafetyOracle {
   bool suspended_ = false;
   std::optional<std::int64_t> suspend_tick_;  ///< the tick of the last suspend's first neutral frame
   std::optional<std::int64_t> reload_tick_;
-  int reload_sent_ = 0;  ///< its neutral frames delivered so far
+  int reload_sent_ = 0;               ///< its neutral frames delivered so far
   bool reload_after_resume_ = false;  ///< a reload asked for while suspended
   bool stopped_ = false;
   std::int64_t stop_tick_ = 0;

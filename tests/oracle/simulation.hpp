@@ -68,15 +68,16 @@ struct SimulationOutcome {
 
 /// Replays script (as its text: what `andros-bridge replay` would read)
 /// through mapping_file and checks every delivered frame and the end.
-inline SimulationOutcome simulate(MappingCache& mappings, const std::string& mapping_file,
-                                  const std::vector<input::InputEvent>& script, bool weapons, std::uint8_t code,
-                                  const run::Bridge::Observer& observe = [](const run::TickReport&) {}) {
+inline SimulationOutcome simulate(
+    MappingCache& mappings, const std::string& mapping_file, const std::vector<input::InputEvent>& script, bool weapons,
+    std::uint8_t code, const run::Bridge::Observer& observe = [](const run::TickReport&) {}) {
   const std::string text = script_text(script);
   TextReader in(text, "simulation.events", kEventScriptLimits);
   input::ScriptPlayer player(in);
   const mapping::ValidMapping& valid = mappings.load(mapping_file);
-  SafetyOracle oracle(*valid, script, [&mappings](const std::string& f) { return mappings.find(f); },
-                      SafetyOracle::Options{.weapons = weapons, .code = code});
+  SafetyOracle oracle(
+      *valid, script, [&mappings](const std::string& f) { return mappings.find(f); },
+      SafetyOracle::Options{.weapons = weapons, .code = code});
   run::ReplayOptions options{.engine = {weapons, code}};
   options.load = [&mappings](const std::string& file) { return mappings.load(file); };
   options.observe = observe;
@@ -85,7 +86,8 @@ inline SimulationOutcome simulate(MappingCache& mappings, const std::string& map
     run::replay(player, mapping::Engine(valid, options.engine), options,
                 [&](std::int64_t t, const protocol::DataBytes& data) {
                   if (!out.violation.empty()) return;
-                  if (auto v = oracle.frame(t, data); !v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
+                  if (auto v = oracle.frame(t, data); !v.empty())
+                    out.violation = "frame at t=" + std::to_string(t) + ": " + v;
                 });
   } catch (const std::exception& e) {
     out.violation = std::string("replay threw: ") + e.what();

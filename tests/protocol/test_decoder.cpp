@@ -24,9 +24,7 @@ std::vector<Seen> decode_in_chunks(const Bytes& stream, const std::vector<std::s
                                    DecoderStats* stats = nullptr) {
   Decoder decoder;
   std::vector<Seen> seen;
-  const auto sink = [&](const DecodedFrame& f) {
-    seen.push_back({f.offset, f.data, f.checksum_ok, f.valid});
-  };
+  const auto sink = [&](const DecodedFrame& f) { seen.push_back({f.offset, f.data, f.checksum_ok, f.valid}); };
   std::size_t pos = 0, i = 0;
   while (pos < stream.size()) {
     const std::size_t n = std::min(chunks[i++ % chunks.size()], stream.size() - pos);
@@ -238,7 +236,9 @@ TEST(Decoder, MixedCaptureFile) {
   }
   for (const auto& f : decode_all(s)) {
     got.push_back(std::to_string(f.offset) + " " + to_hex(f.data) + " " +
-                  (f.valid ? "valid" : f.checksum_ok ? "invalid" : "bad_checksum"));
+                  (f.valid         ? "valid"
+                   : f.checksum_ok ? "invalid"
+                                   : "bad_checksum"));
   }
   EXPECT_EQ(got, want);
 }

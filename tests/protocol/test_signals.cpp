@@ -32,8 +32,8 @@ TEST(Signals, WholeBytesAreTheAnalogAndConstantOnes) {
   std::set<int> bytes;
   for (const auto& s : kSignals) {
     if (!s.is_bit()) bytes.insert(s.byte);
-    EXPECT_EQ(!s.is_bit(), s.kind == SignalKind::kCentred || s.kind == SignalKind::kLevel ||
-                               s.kind == SignalKind::kConstant)
+    EXPECT_EQ(!s.is_bit(),
+              s.kind == SignalKind::kCentred || s.kind == SignalKind::kLevel || s.kind == SignalKind::kConstant)
         << s.name;
   }
   EXPECT_EQ(bytes, (std::set<int>{6, 7, 8, 9, 11, 12, 14}));
@@ -41,15 +41,24 @@ TEST(Signals, WholeBytesAreTheAnalogAndConstantOnes) {
 
 TEST(Signals, OpposingPairsOfTheContract) {
   const std::pair<const char*, const char*> pairs[] = {
-      {"front_art_up", "front_art_down"}, {"rear_art_up", "rear_art_down"},
-      {"pt_left", "pt_right"},            {"pt_up", "pt_down"},
-      {"focus_down", "focus_up"},         {"iris_up", "iris_down"},
-      {"zoom_down", "zoom_up"},           {"fiber_unwind", "fiber_takeup"},
-      {"shoulder_cw", "shoulder_ccw"},    {"torso_left", "torso_right"},
-      {"wrist_cw", "wrist_ccw"},          {"gripper_rot_ccw", "gripper_rot_cw"},
-      {"gripper_open", "gripper_close"},  {"elbow_cw", "elbow_ccw"},
-      {"pt_extend_up", "pt_extend_down"}, {"wrist_extend_left", "wrist_extend_right"},
-      {"graphics_down", "graphics_up"},   {"speed_high", "speed_low"},
+      {"front_art_up", "front_art_down"},
+      {"rear_art_up", "rear_art_down"},
+      {"pt_left", "pt_right"},
+      {"pt_up", "pt_down"},
+      {"focus_down", "focus_up"},
+      {"iris_up", "iris_down"},
+      {"zoom_down", "zoom_up"},
+      {"fiber_unwind", "fiber_takeup"},
+      {"shoulder_cw", "shoulder_ccw"},
+      {"torso_left", "torso_right"},
+      {"wrist_cw", "wrist_ccw"},
+      {"gripper_rot_ccw", "gripper_rot_cw"},
+      {"gripper_open", "gripper_close"},
+      {"elbow_cw", "elbow_ccw"},
+      {"pt_extend_up", "pt_extend_down"},
+      {"wrist_extend_left", "wrist_extend_right"},
+      {"graphics_down", "graphics_up"},
+      {"speed_high", "speed_low"},
   };
   std::size_t with_partner = 0;
   for (const auto& s : kSignals) with_partner += s.partner.empty() ? 0 : 1;
@@ -67,13 +76,10 @@ TEST(Signals, WeaponsAndSelectorsAreTheContractsLists) {
     if (s.kind == SignalKind::kWeapon) weapons.insert(s.name);
     if (s.kind == SignalKind::kSelector) selectors.insert(s.name);
   }
-  EXPECT_EQ(weapons, (std::set<std::string_view>{"weapon_1", "weapon_2", "weapon_3", "weapon_4",
-                                                  "weapon_5", "weapon_6", "shotgun", "laser",
-                                                  "enable_key"}));
-  EXPECT_EQ(selectors, (std::set<std::string_view>{"speed_high", "speed_low", "inset_3", "inset_4",
-                                                    "inset_video_1", "inset_video_2",
-                                                    "main_video_2", "main_video_3",
-                                                    "main_video_4"}));
+  EXPECT_EQ(weapons, (std::set<std::string_view>{"weapon_1", "weapon_2", "weapon_3", "weapon_4", "weapon_5", "weapon_6",
+                                                 "shotgun", "laser", "enable_key"}));
+  EXPECT_EQ(selectors, (std::set<std::string_view>{"speed_high", "speed_low", "inset_3", "inset_4", "inset_video_1",
+                                                   "inset_video_2", "main_video_2", "main_video_3", "main_video_4"}));
 }
 
 TEST(Signals, Lookup) {
@@ -90,7 +96,8 @@ TEST(SignalWords, DocsRobotsListsTheTableRowForRow) {
   std::ifstream in(ANDROS_DOCS_DIR "/robots.md");
   ASSERT_TRUE(in) << "docs/robots.md";
   std::string line;
-  while (std::getline(in, line) && line != "## Operator words") {}
+  while (std::getline(in, line) && line != "## Operator words") {
+  }
   ASSERT_EQ(line, "## Operator words");
   std::vector<std::string> rows;
   while (std::getline(in, line) && !line.starts_with("## ")) {

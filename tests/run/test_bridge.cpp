@@ -7,8 +7,8 @@
 
 #include "andros/base/error.hpp"
 #include "andros/input/script_input.hpp"
-#include "andros/link/pty_pair.hpp"
 #include "andros/link/fault_link.hpp"
+#include "andros/link/pty_pair.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "support/frame_reader.hpp"
@@ -65,8 +65,8 @@ struct OnSink {
 };
 
 std::string write_script(const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("andros-bridge-test-" + std::to_string(getpid()) + ".events");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("andros-bridge-test-" + std::to_string(getpid()) + ".events");
   std::ofstream(path) << text;
   return path;
 }
@@ -273,8 +273,8 @@ TEST(Bridge, ALinkThatComesBackLandsInNotEnabledUntilAFreshPress) {
   for (const auto& r : ticks) {
     if (r.result == link::SendResult::kSent && !r.shutting_down()) delivered.emplace_back(r.t_ms, r.data[7]);
   }
-  const std::vector<std::pair<std::int64_t, int>> want = {
-      {0, 128}, {40, 200}, {80, 200}, {200, 128}, {240, 128}, {280, 128}, {320, 200}, {360, 200}, {400, 200}};
+  const std::vector<std::pair<std::int64_t, int>> want = {{0, 128},   {40, 200},  {80, 200},  {200, 128}, {240, 128},
+                                                          {280, 128}, {320, 200}, {360, 200}, {400, 200}};
   EXPECT_EQ(delivered, want);
   EXPECT_EQ(ticks[3].state, OpState::kNoLink);
   EXPECT_EQ(ticks[3].link.detail, "held down by the event script");
@@ -283,8 +283,7 @@ TEST(Bridge, ALinkThatComesBackLandsInNotEnabledUntilAFreshPress) {
 
 TEST(Bridge, APortTakenAndRegainedIsANewLink) {
   PressToDrive frames;
-  const auto ticks =
-      run_script("0 connect pad\n40 button a 1\n80 link taken\n160 link up\n240 end\n", frames);
+  const auto ticks = run_script("0 connect pad\n40 button a 1\n80 link taken\n160 link up\n240 end\n", frames);
   for (const auto& r : ticks) {
     if (r.t_ms >= 80 && !r.shutting_down()) {
       EXPECT_EQ(r.data[7], 128) << r.t_ms;
@@ -296,8 +295,7 @@ TEST(Bridge, APortTakenAndRegainedIsANewLink) {
 
 TEST(Bridge, AScriptSuspendSendsNeutralFramesClosesTheLinkAndSendsNothingUntilResumed) {
   PressToDrive frames;
-  const auto ticks =
-      run_script("0 connect pad\n40 button a 1\n80 suspend\n400 resume\n600 end\n", frames);
+  const auto ticks = run_script("0 connect pad\n40 button a 1\n80 suspend\n400 resume\n600 end\n", frames);
   std::vector<std::int64_t> sent_at;
   for (const auto& r : ticks) {
     if (r.sent && r.result == link::SendResult::kSent) sent_at.push_back(r.t_ms);
@@ -353,9 +351,10 @@ TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
   Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
   std::vector<TickReport> ticks;
-  bridge.run([&] { return ticks.size() >= 6; }, [&](const TickReport& r) {
-    if (!r.shutting_down()) ticks.push_back(r);
-  });
+  bridge.run([&] { return ticks.size() >= 6; },
+             [&](const TickReport& r) {
+               if (!r.shutting_down()) ticks.push_back(r);
+             });
   ASSERT_EQ(ticks.size(), 6u);
   EXPECT_EQ(ticks[2].tick, 2);
   // 130 ms after tick 2's time (80 ms) ticks 3..5 (120, 160, 200) are past:

@@ -83,7 +83,9 @@ void trace(const TickReport& r) {
   const auto s = protocol::read_signals(r.data);
   std::printf("%6lld %-13s %s safety=%d drive=%d\n", static_cast<long long>(r.t_ms),
               std::string(to_string(r.state)).c_str(),
-              !r.sent ? "not offered" : r.result == link::SendResult::kSent ? "delivered  " : "refused    ",
+              !r.sent                               ? "not offered"
+              : r.result == link::SendResult::kSent ? "delivered  "
+                                                    : "refused    ",
               s[protocol::signal_id("safety")], s[protocol::signal_id("drive")]);
 }
 
@@ -96,8 +98,9 @@ std::string describe_failure(std::uint64_t seed, const std::string& mapping_file
   return "seed " + std::to_string(seed) + ", " + mapping_file + (weapons ? ", --weapons" : "") + ": " + violation +
          "\nagain: ANDROS_SIM_SEED_BASE=" + std::to_string(seed) +
          " ANDROS_SIM_SCRIPTS=1 andros_simulation_tests, or\n"
-         "       andros-bridge replay --mapping " + mapping_file + (weapons ? " --weapons" : "") +
-         " --code 5A " + saved.string() + "\nthe script:\n" + test::script_text(script);
+         "       andros-bridge replay --mapping " +
+         mapping_file + (weapons ? " --weapons" : "") + " --code 5A " + saved.string() + "\nthe script:\n" +
+         test::script_text(script);
 }
 
 TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
@@ -129,17 +132,18 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
     after += (after.empty() ? "" : ", ") + std::string(to_string(static_cast<test::Ending>(i))) + " " +
              std::to_string(coverage.motion_after[i]);
   }
-  std::printf("fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
-              "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
-              "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-              "%lld frames with a supervisor's controller\n",
-              static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
-              static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
-              static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
-              static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
-              static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
-              static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-              static_cast<long long>(coverage.supervised_frames));
+  std::printf(
+      "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
+      "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
+      "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
+      "%lld frames with a supervisor's controller\n",
+      static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
+      static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
+      static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
+      static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
+      static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
+      static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
+      static_cast<long long>(coverage.supervised_frames));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -190,9 +194,10 @@ class OracleTest : public ::testing::Test {
   OracleTest() : valid_(library_.load(mapping::find_robot_mapping("HD1", {ANDROS_MAPPINGS_DIR}).string())) {}
 
   test::SafetyOracle oracle(const std::string& script, bool weapons = false) {
-    return test::SafetyOracle(*valid_, input::parse_event_script(script, "oracle.events"),
-                              [this](const std::string& f) { return library_.find(f); },
-                              test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
+    return test::SafetyOracle(
+        *valid_, input::parse_event_script(script, "oracle.events"),
+        [this](const std::string& f) { return library_.find(f); },
+        test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
   }
   static protocol::DataBytes frame(std::initializer_list<std::pair<protocol::SignalId, int>> set = {}) {
     protocol::ControlState s;
@@ -202,7 +207,8 @@ class OracleTest : public ::testing::Test {
     return protocol::FrameBuilder(kCode).build(s);
   }
   static protocol::DataBytes moving() {
-    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive_brake"), 1},
+    return frame({{protocol::signal_id("safety"), 1},
+                  {protocol::signal_id("drive_brake"), 1},
                   {protocol::signal_id("drive"), 255}});
   }
 
@@ -251,7 +257,8 @@ TEST_F(OracleTest, RefusesFramesPastASuspendsNeutralOnes) {
 }
 
 TEST_F(OracleTest, RefusesMotionDuringAReload) {
-  auto o = oracle(std::string(kDriving) + "100 reload\n110 button leftshoulder 0\n115 button leftshoulder 1\n400 end\n");
+  auto o =
+      oracle(std::string(kDriving) + "100 reload\n110 button leftshoulder 0\n115 button leftshoulder 1\n400 end\n");
   for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
   EXPECT_NE(o.frame(120, moving()).find("a reload's neutral frame"), std::string::npos);
 }

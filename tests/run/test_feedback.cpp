@@ -140,9 +140,10 @@ TEST(FeedbackNotifier, AWeaponsModePlaysItsOwnPatterns) {
 
 TEST(FeedbackEvents, ASpeedLevelChangeIsToldWhileThePadStays) {
   EXPECT_EQ(feedback_events(kEnabled, level(kEnabled, 1)), Events{E::kSpeedLevel});
-  EXPECT_EQ(feedback_events(level(kEnabled, 2), kEnabled), Events{E::kSpeedLevel});  // up past the fastest, or a restart
+  EXPECT_EQ(feedback_events(level(kEnabled, 2), kEnabled),
+            Events{E::kSpeedLevel});  // up past the fastest, or a restart
   EXPECT_EQ(feedback_events(level(kEnabled, 2), level(kConnected, 0)), (Events{E::kDisabled, E::kSpeedLevel}));
-  EXPECT_TRUE(feedback_events(level(kEnabled, 2), kIdle).empty());                            // a lost pad: told nothing
+  EXPECT_TRUE(feedback_events(level(kEnabled, 2), kIdle).empty());                      // a lost pad: told nothing
   EXPECT_EQ(feedback_events(level(kIdle, 2), kConnected), Events{E::kControllerBack});  // a new pad: its own event
 }
 

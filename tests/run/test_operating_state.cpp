@@ -19,10 +19,10 @@ using E = OpEvent;
 
 constexpr std::array kStates = {S::kNoLink,  S::kNoController, S::kNotEnabled, S::kEnabled,
                                 S::kStopped, S::kSuspended,    S::kReloading,  S::kStopping};
-constexpr std::array kEvents = {E::kLinkUp,       E::kLinkDown,       E::kLinkTaken,   E::kControllerUp,
+constexpr std::array kEvents = {E::kLinkUp,         E::kLinkDown,     E::kLinkTaken,   E::kControllerUp,
                                 E::kControllerDown, E::kFreshPress,   E::kRelease,     E::kPanic,
-                                E::kEnableTimeout, E::kOperatorStop,  E::kStopCleared, E::kReloadBegin,
-                                E::kReloadDone,   E::kSuspend,        E::kResume,      E::kShutdown};
+                                E::kEnableTimeout,  E::kOperatorStop, E::kStopCleared, E::kReloadBegin,
+                                E::kReloadDone,     E::kSuspend,      E::kResume,      E::kShutdown};
 
 /// The conditions a machine can be in while in `state`: link up or not, controller up or not.
 struct Start {
@@ -51,8 +51,10 @@ OperatingState reach(const Start& start) {
 
 /// Every way to be in each state (the driving ones have one each; the others any).
 std::vector<Start> starts() {
-  std::vector<Start> out = {{S::kNoLink, false, false},     {S::kNoLink, false, true},
-                            {S::kNoController, true, false}, {S::kNotEnabled, true, true},
+  std::vector<Start> out = {{S::kNoLink, false, false},
+                            {S::kNoLink, false, true},
+                            {S::kNoController, true, false},
+                            {S::kNotEnabled, true, true},
                             {S::kEnabled, true, true}};
   for (const auto s : {S::kStopped, S::kSuspended, S::kReloading, S::kStopping}) {
     for (const bool link : {false, true}) {
@@ -73,7 +75,8 @@ S settled(bool link, bool controller) {
 TEST(OperatingState, ReachesEveryStartItClaims) {
   for (const auto& start : starts()) {
     const auto m = reach(start);
-    EXPECT_EQ(m.state(), start.state) << to_string(start.state) << " link " << start.link << " pad " << start.controller;
+    EXPECT_EQ(m.state(), start.state) << to_string(start.state) << " link " << start.link << " pad "
+                                      << start.controller;
     EXPECT_EQ(m.link_up(), start.link);
     EXPECT_EQ(m.controller_up(), start.controller);
   }
@@ -87,14 +90,15 @@ TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
       if (start.state != row.from) continue;
       auto m = reach(start);
       const Effect effect = m.on(row.event);
-      const bool link = row.event == E::kLinkUp     ? true
+      const bool link = row.event == E::kLinkUp                                   ? true
                         : row.event == E::kLinkDown || row.event == E::kLinkTaken ? false
-                                                                                 : start.link;
+                                                                                  : start.link;
       const bool pad = row.event == E::kControllerUp     ? true
                        : row.event == E::kControllerDown ? false
                                                          : start.controller;
       // A stop latched before the row (or by it) still holds after it, unless the row clears it.
-      const bool latched = (start.state == S::kStopped || row.event == E::kOperatorStop) && row.event != E::kStopCleared;
+      const bool latched =
+          (start.state == S::kStopped || row.event == E::kOperatorStop) && row.event != E::kStopCleared;
       const S want = row.settle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
       EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);
@@ -148,9 +152,8 @@ TEST(OperatingState, TheOnlyWayIntoEnabledIsAFreshPressInNotEnabled) {
 
 TEST(OperatingState, WhateverInterruptsDrivingEndsEnabledAndComesBackThroughARebase) {
   // Each of these, from enabled, leaves a state that is not enabled.
-  for (const auto event : {E::kLinkDown, E::kLinkTaken, E::kControllerDown, E::kRelease, E::kPanic,
-                           E::kEnableTimeout, E::kOperatorStop, E::kReloadBegin, E::kSuspend, E::kResume,
-                           E::kShutdown}) {
+  for (const auto event : {E::kLinkDown, E::kLinkTaken, E::kControllerDown, E::kRelease, E::kPanic, E::kEnableTimeout,
+                           E::kOperatorStop, E::kReloadBegin, E::kSuspend, E::kResume, E::kShutdown}) {
     auto m = reach({S::kEnabled, true, true});
     m.on(event);
     EXPECT_FALSE(m.motion_allowed()) << to_string(event);
@@ -179,7 +182,8 @@ TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
         EXPECT_TRUE(m.stop_latched());
         m.on(first);
         m.on(second);
-        EXPECT_FALSE(m.motion_allowed()) << to_string(start.state) << ": " << to_string(first) << ", " << to_string(second);
+        EXPECT_FALSE(m.motion_allowed()) << to_string(start.state) << ": " << to_string(first) << ", "
+                                         << to_string(second);
         EXPECT_TRUE(m.stop_latched());
         const S s = m.state();
         EXPECT_TRUE(s == S::kStopped || s == S::kSuspended || s == S::kReloading) << to_string(s);

@@ -193,7 +193,8 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
     ASSERT_EQ(s[protocol::signal_id("safety")], enabled ? 1 : 0) << where();
     for (const auto id : {protocol::signal_id("drive"), protocol::signal_id("pivot")}) {
       if (centre.must_centre(id, last.engine.layer, enabled)) {
-        ASSERT_EQ(s[id], mapping.center) << protocol::info(id).name << " before its stick was seen at rest, " << where();
+        ASSERT_EQ(s[id], mapping.center) << protocol::info(id).name << " before its stick was seen at rest, "
+                                         << where();
       } else if (enabled && s[id] != mapping.center) {
         ++coverage[id];
       }
@@ -216,10 +217,16 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       if (enabled) continue;
       switch (sig.kind) {
         case protocol::SignalKind::kMotion:
-        case protocol::SignalKind::kInterlock: ASSERT_EQ(s[id], 0) << sig.name << " while not enabled, " << where(); break;
-        case protocol::SignalKind::kCentred: ASSERT_EQ(s[id], protocol::kNeutralCentre) << sig.name << ", " << where(); break;
+        case protocol::SignalKind::kInterlock:
+          ASSERT_EQ(s[id], 0) << sig.name << " while not enabled, " << where();
+          break;
+        case protocol::SignalKind::kCentred:
+          ASSERT_EQ(s[id], protocol::kNeutralCentre) << sig.name << ", " << where();
+          break;
         case protocol::SignalKind::kLevel:
-        case protocol::SignalKind::kSelector: ASSERT_EQ(s[id], previous[id]) << sig.name << " changed while not enabled, " << where(); break;
+        case protocol::SignalKind::kSelector:
+          ASSERT_EQ(s[id], previous[id]) << sig.name << " changed while not enabled, " << where();
+          break;
         default: break;
       }
     }

@@ -71,8 +71,8 @@ std::string busy_script(int seconds) {
 /// clock; with the recorder writing to writer when given.
 std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWriter* writer) {
   input::ScriptInput script(script_path);
-  ReloadableFrames frames(make_engine_frames(
-      mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
+  ReloadableFrames frames(
+      make_engine_frames(mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
   std::vector<protocol::Frame> got;
   link::SinkLink link([&got](std::int64_t, const protocol::Frame& f) { got.push_back(f); });
   VirtualClock clock;
@@ -81,9 +81,10 @@ std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWri
   if (writer != nullptr) recorded.emplace(script, recorder.emplace(*writer));
   input::InputSource& input = recorded ? static_cast<input::InputSource&>(*recorded) : script;
   Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
-  bridge.run([] { return false; }, [&](const TickReport& r) {
-    if (recorder) recorder->observe(r);
-  });
+  bridge.run([] { return false; },
+             [&](const TickReport& r) {
+               if (recorder) recorder->observe(r);
+             });
   if (recorder) recorder->end("end of the input");
   return got;
 }
@@ -145,11 +146,19 @@ struct RecordedRun {
     input::ScriptInput script(script_path);
     const auto engine_for = [](const std::string& file, bool weapons) {
       auto m = mapping::load_mapping(file);
-      SessionSettings s{.robot = m->robot.value_or("HD1"), .mapping_file = m->file, .rate_millihertz = 25'000,
-                        .weapons = weapons, .code = 0x01, .center = m->center, .port = "test", .baud = 9600,
-                        .input = "script", .config = "", .sources = read_mapping_sources(m->chain)};
-      return std::make_pair(make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})),
-                            s);
+      SessionSettings s{.robot = m->robot.value_or("HD1"),
+                        .mapping_file = m->file,
+                        .rate_millihertz = 25'000,
+                        .weapons = weapons,
+                        .code = 0x01,
+                        .center = m->center,
+                        .port = "test",
+                        .baud = 9600,
+                        .input = "script",
+                        .config = "",
+                        .sources = read_mapping_sources(m->chain)};
+      return std::make_pair(
+          make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})), s);
     };
     auto [first, settings] = engine_for(kMappings + "/hd1.yaml", false);
     ReloadableFrames frames(std::move(first));
@@ -166,7 +175,7 @@ struct RecordedRun {
     SessionSettings reloaded;
     RunControl control;
     control.poll = [&] { return ++polls == 150 ? Request::kSuspend : Request::kNone; };  // Ctrl-Z at 6 s
-    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };  // stopped 1.23 s
+    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };                        // stopped 1.23 s
     control.begin_reload = [&](const std::string&) { reload_ticks = 0; };
     control.finish_reload = [&]() -> std::optional<ReloadOutcome> {
       if (++reload_ticks < 4) return std::nullopt;  // the worker still reads
@@ -223,8 +232,10 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
   EXPECT_EQ(std::count_if(s.frames.begin(), s.frames.end(), [](const FrameRecord& f) { return f.gap == 2; }), 2);
   EXPECT_EQ(s.pauses.size(), 1u);
   EXPECT_EQ(s.reloads.size(), 1u);
-  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kNoLink; }));
-  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kEnabled; }));
+  EXPECT_TRUE(
+      std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kNoLink; }));
+  EXPECT_TRUE(
+      std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kEnabled; }));
   ASSERT_TRUE(s.end);
   EXPECT_EQ(s.end->frames_sent, live.delivered.size());
 

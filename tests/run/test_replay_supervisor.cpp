@@ -26,9 +26,10 @@ std::vector<TickReport> replay_reports(const std::string& script, const std::str
 const std::string kSupervisorMapping = ANDROS_TEST_DATA_DIR "/mappings/supervisor.yaml";
 
 TEST(ReplaySupervisor, EachReportNamesBothControllersAndTheStateWaitsForBoth) {
-  const auto r = replay_reports("0 connect Pad A\n10 button leftshoulder 1\n90 supervisor connect Pad B\n"
-                                "130 supervisor disconnect\n160 end\n",
-                                kSupervisorMapping);
+  const auto r = replay_reports(
+      "0 connect Pad A\n10 button leftshoulder 1\n90 supervisor connect Pad B\n"
+      "130 supervisor disconnect\n160 end\n",
+      kSupervisorMapping);
   ASSERT_EQ(r.size(), 5U);  // 0 .. 160
   for (const auto& t : r) EXPECT_TRUE(t.supervised) << t.t_ms;
   EXPECT_EQ(r[1].state, OpState::kNoController);  // the operator's deadman, but no supervisor yet
@@ -69,9 +70,10 @@ TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
                 .back(),
             S::kStopped);
   // While stopped the engine is not stepped, but what the screen says is held is now's.
-  const auto r = replay_reports("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
-                                "90 supervisor button x 1\n130 supervisor button x 0\n200 end\n",
-                                kSupervisorMapping);
+  const auto r = replay_reports(
+      "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
+      "90 supervisor button x 1\n130 supervisor button x 0\n200 end\n",
+      kSupervisorMapping);
   ASSERT_GE(r.size(), 5U);
   EXPECT_EQ(r[3].state, S::kStopped);  // 120
   EXPECT_TRUE(r[3].engine.supervisor_stop);

@@ -129,20 +129,30 @@ TEST(Session, AnEventScriptIsNotASession) {
 TEST(Session, RecordsReadBack) {
   testing::TempDir dir;
   RecordChain chain;
-  SessionSettings settings{.robot = "HD1", .mapping_file = "/m/hd1.yaml", .rate_millihertz = 25'000, .weapons = true,
-                           .code = 0x3C, .center = 130, .port = "sim", .baud = 9600, .input = "sdl", .config = "",
-                           .sources = {{"/m/hd1.yaml", "robot: HD1\nextends: common.yaml\n"}, {"/m/common.yaml", "x: 1\n"}}};
+  SessionSettings settings{
+      .robot = "HD1",
+      .mapping_file = "/m/hd1.yaml",
+      .rate_millihertz = 25'000,
+      .weapons = true,
+      .code = 0x3C,
+      .center = 130,
+      .port = "sim",
+      .baud = 9600,
+      .input = "sdl",
+      .config = "",
+      .sources = {{"/m/hd1.yaml", "robot: HD1\nextends: common.yaml\n"}, {"/m/common.yaml", "x: 1\n"}}};
   TickReport r;
   r.tick = 7;
   r.t_ms = 280;
   r.data[3] = 0xAB;
   r.result = link::SendResult::kBusy;
   std::string text;
-  for (const auto& p : {record::header(), record::program("1.0"), record::started("2024-05-01T12:00:00+0200", 42, "bench"),
-                        record::settings(settings), record::link(-1, link::LinkStatus{}), record::frame(r, 2),
-                        record::request(280, Request::kSuspend), record::pause(1300), record::layer(280, "arm"),
-                        record::state(280, OpState::kNotEnabled), record::input_end(400),
-                        record::end(400, 10, 9, "end of the input")}) {
+  for (const auto& p :
+       {record::header(), record::program("1.0"), record::started("2024-05-01T12:00:00+0200", 42, "bench"),
+        record::settings(settings), record::link(-1, link::LinkStatus{}), record::frame(r, 2),
+        record::request(280, Request::kSuspend), record::pause(1300), record::layer(280, "arm"),
+        record::state(280, OpState::kNotEnabled), record::input_end(400),
+        record::end(400, 10, 9, "end of the input")}) {
     text += chain.line(p);
   }
   const auto s = read_session(dir.write("r.andros-session", text));

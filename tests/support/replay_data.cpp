@@ -44,8 +44,10 @@ std::vector<ExpectedFrame> read_expected(const std::string& path, std::uint8_t c
       while (parts >> assignment) {
         const auto eq = assignment.find('=');
         const auto id = protocol::find_signal(assignment.substr(0, eq));
-        if (eq == std::string::npos || !id) throw std::runtime_error(path + ":" + std::to_string(line_no) + ": bad " + assignment);
-        f.state[*id] = static_cast<std::uint8_t>(parse_integer(assignment.substr(eq + 1), 0, 255, "value", SourcePos{path, line_no}));
+        if (eq == std::string::npos || !id)
+          throw std::runtime_error(path + ":" + std::to_string(line_no) + ": bad " + assignment);
+        f.state[*id] = static_cast<std::uint8_t>(
+            parse_integer(assignment.substr(eq + 1), 0, 255, "value", SourcePos{path, line_no}));
       }
     }
     frames.push_back(f);
@@ -72,7 +74,8 @@ void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rat
   TextReader in(read_text(events), events, kEventScriptLimits);
   input::ScriptPlayer player(in);
   std::vector<std::pair<std::int64_t, protocol::DataBytes>> got;
-  run::replay(player, std::move(engine), run::ReplayOptions{.rate_millihertz = rate_millihertz, .engine = {weapons, code}},
+  run::replay(player, std::move(engine),
+              run::ReplayOptions{.rate_millihertz = rate_millihertz, .engine = {weapons, code}},
               [&](std::int64_t t, const protocol::DataBytes& d) { got.emplace_back(t, d); });
 
   const auto want = read_expected(expected, code);
@@ -82,7 +85,8 @@ void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rat
     EXPECT_TRUE(protocol::validation_errors(got[i].second).empty());
     const auto built = protocol::FrameBuilder(code).build(want[i].state);
     EXPECT_EQ(got[i].second, built) << expected << ":" << want[i].line << " t=" << want[i].t << ": "
-                                    << describe_difference(protocol::read_signals(built), protocol::read_signals(got[i].second));
+                                    << describe_difference(protocol::read_signals(built),
+                                                           protocol::read_signals(got[i].second));
   }
 }
 

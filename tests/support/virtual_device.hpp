@@ -29,16 +29,16 @@ class VirtualDevice {
   /// i and axis i to SDL_GameControllerAxis i. With a log, it has rumble and
   /// a light, and records what it is asked to do.
   static VirtualDevice pad(const char* name, std::uint16_t product = 1, FeedbackLog* log = nullptr) {
-    return VirtualDevice(name, SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX,
-                         SDL_CONTROLLER_BUTTON_MAX, 0, product, log);
+    return VirtualDevice(name, SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX, SDL_CONTROLLER_BUTTON_MAX, 0,
+                         product, log);
   }
   /// A flight stick SDL has no mapping for: numbered buttons, axes, a hat.
   static VirtualDevice stick(const char* name, std::uint16_t product = 2) {
     return VirtualDevice(name, SDL_JOYSTICK_TYPE_FLIGHT_STICK, 4, 12, 1, product);
   }
 
-  VirtualDevice(const char* name, SDL_JoystickType type, int axes, int buttons, int hats,
-                std::uint16_t product, FeedbackLog* log = nullptr) {
+  VirtualDevice(const char* name, SDL_JoystickType type, int axes, int buttons, int hats, std::uint16_t product,
+                FeedbackLog* log = nullptr) {
     SDL_VirtualJoystickDesc desc;
     SDL_zero(desc);
     desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
@@ -83,9 +83,7 @@ class VirtualDevice {
   }
 
   void button(int b, bool down) { EXPECT_EQ(SDL_JoystickSetVirtualButton(joystick_, b, down ? 1 : 0), 0); }
-  void axis(int a, int value) {
-    EXPECT_EQ(SDL_JoystickSetVirtualAxis(joystick_, a, static_cast<Sint16>(value)), 0);
-  }
+  void axis(int a, int value) { EXPECT_EQ(SDL_JoystickSetVirtualAxis(joystick_, a, static_cast<Sint16>(value)), 0); }
   void hat(int h, int mask) { EXPECT_EQ(SDL_JoystickSetVirtualHat(joystick_, h, static_cast<Uint8>(mask)), 0); }
   /// What a real driver does between two pumps: hands SDL what has changed,
   /// so that a press and a release in one tick are two queued events.

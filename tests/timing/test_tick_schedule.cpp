@@ -8,7 +8,7 @@ namespace {
 TEST(TickSchedule, TicksAreExactMultiplesOfThePeriod) {
   const TickSchedule s(25'000);
   EXPECT_EQ(s.tick_ns(1), 40'000'000);
-  EXPECT_EQ(s.tick_ns(90'000), 3'600'000'000'000);  // one hour: no drift
+  EXPECT_EQ(s.tick_ns(90'000), 3'600'000'000'000);                                      // one hour: no drift
   EXPECT_EQ(s.tick_ns(25LL * 86'400 * 365 * 10), 86'400LL * 365 * 10 * 1'000'000'000);  // ten years
   EXPECT_EQ(s.tick_ms(3), 120);
   const TickSchedule t(30'000);

@@ -32,7 +32,8 @@ InputEvent event(std::int64_t t, T type, InputKey key = {}, int value = 0, std::
 
 input::DeviceLayout pad_layout() {
   input::DeviceLayout d{"Test Pad", "0300aaaa", true, {}, {}, 0, {}};
-  for (std::uint16_t b = 0; b < 15; ++b) d.buttons.push_back({InputKind::kPadButton, b});  // no misc1, paddles, touchpad
+  for (std::uint16_t b = 0; b < 15; ++b)
+    d.buttons.push_back({InputKind::kPadButton, b});  // no misc1, paddles, touchpad
   for (std::uint16_t a = 0; a < 6; ++a) d.axes.push_back({InputKind::kPadAxis, a});
   return d;
 }
@@ -57,15 +58,15 @@ TEST(InputsView, AxisUsesAreTheBindingsThatReadEachAxis) {
 TEST(InputsView, AxisUsesFindLayersAndTriggerDeadmen) {
   testing::TempDir dir;
   const auto uses = axis_uses(*mapping::load_mapping(dir.write("m.yaml",
-                                                              "robot: HD1\n"
-                                                              "deadman: lefttrigger\n"
-                                                              "layers:\n"
-                                                              "  arm:\n"
-                                                              "    hold: a\n"
-                                                              "    bindings:\n"
-                                                              "      - analog: drive\n"
-                                                              "        axis: righty\n"
-                                                              "        deadzone: 0.2\n")));
+                                                               "robot: HD1\n"
+                                                               "deadman: lefttrigger\n"
+                                                               "layers:\n"
+                                                               "  arm:\n"
+                                                               "    hold: a\n"
+                                                               "    bindings:\n"
+                                                               "      - analog: drive\n"
+                                                               "        axis: righty\n"
+                                                               "        deadzone: 0.2\n")));
   const auto deadman = uses.at(InputKey{InputKind::kPadAxis, 4});
   EXPECT_EQ(deadman.rest, AxisUse::Rest::kThreshold);
   EXPECT_DOUBLE_EQ(deadman.limit, 0.5);
@@ -104,10 +105,10 @@ TEST(InputsView, OneLinePerChangeByNameAndNumber) {
 TEST(InputsView, TheScreenShowsEveryInputOfThePad) {
   InputsBoard board(core_uses(), "heading line");
   EXPECT_NE(board.compose().find("none connected"), std::string::npos);
-  const auto lines = board.update({event(0, T::kConnect, {}, 0, "Test Pad"),
-                                   event(0, T::kButton, {InputKind::kPadButton, 9}, 1),
-                                   event(0, T::kAxis, kLeftY, -32768)},
-                                  pad_layout());
+  const auto lines =
+      board.update({event(0, T::kConnect, {}, 0, "Test Pad"), event(0, T::kButton, {InputKind::kPadButton, 9}, 1),
+                    event(0, T::kAxis, kLeftY, -32768)},
+                   pad_layout());
   EXPECT_EQ(lines.size(), 3U);
   const auto screen = board.compose();
   EXPECT_EQ(screen.rfind("heading line\n", 0), 0U);
@@ -178,20 +179,23 @@ TEST(InputsView, TheScreenReflowsToTheTerminal) {
   const auto small = lines_of(board.compose({60, 20}));
   EXPECT_LE(small.size(), 20U);
   const auto has = [](const std::vector<std::string>& lines, const std::string& what) {
-    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(what) != std::string::npos; });
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(what) != std::string::npos; });
   };
   EXPECT_TRUE(has(small, "    5 righttrigger")) << board.compose({60, 20});
   EXPECT_TRUE(has(small, "* 14 dpright")) << board.compose({60, 20});  // the last button, in its column
   for (const auto& line : small) EXPECT_LE(line.size(), 60U) << line;
   // Three columns of buttons at 60 columns: a row holds a, b, x, not y.
-  const auto row = std::find_if(small.begin(), small.end(), [](const std::string& l) { return l.find(" 0 a ") != std::string::npos; });
+  const auto row = std::find_if(small.begin(), small.end(),
+                                [](const std::string& l) { return l.find(" 0 a ") != std::string::npos; });
   ASSERT_NE(row, small.end());
   EXPECT_NE(row->find(" 2 x"), std::string::npos) << *row;
   EXPECT_EQ(row->find(" 3 y"), std::string::npos) << *row;
   // 0.1 of the way: the value says it, whatever the bar's resolution.
   EXPECT_TRUE(has(small, "    0 leftx          3276  0.100 [     |     ] at rest")) << board.compose({60, 20});
   // Wide: a bar of 21 cells, a tenth of the way a cell.
-  EXPECT_TRUE(has(lines_of(board.compose({120, 40})), "    0 leftx          3276  0.100 [          |=         ] at rest"))
+  EXPECT_TRUE(
+      has(lines_of(board.compose({120, 40})), "    0 leftx          3276  0.100 [          |=         ] at rest"))
       << board.compose({120, 40});
 }
 

@@ -306,7 +306,8 @@ TEST(RunView, TheRecorderSaysWhereItWritesOrWhatItDropped) {
   auto s = driving(false);
   const auto line = [&s] {
     const auto lines = shown(s, TermSize{100, 40});
-    const auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) { return l.starts_with("recorder"); });
+    const auto it =
+        std::find_if(lines.begin(), lines.end(), [](const std::string& l) { return l.starts_with("recorder"); });
     return it == lines.end() ? std::string() : *it;
   };
   EXPECT_EQ(line(), "");  // off
@@ -315,8 +316,8 @@ TEST(RunView, TheRecorderSaysWhereItWritesOrWhatItDropped) {
   s.recorder = "12 records dropped (No space left on device): the session is incomplete";
   s.recorder_failing = true;
   const auto screen = render_run_view(s, TermSize{100, 40}).fit(TermSize{100, 40});
-  const auto it = std::find_if(screen.begin(), screen.end(),
-                               [](const auto& l) { return plain(l, 100).starts_with("recorder"); });
+  const auto it =
+      std::find_if(screen.begin(), screen.end(), [](const auto& l) { return plain(l, 100).starts_with("recorder"); });
   ASSERT_NE(it, screen.end());
   EXPECT_EQ(it->pieces().back().style, Style::kAlert);
 }

@@ -50,8 +50,7 @@ TEST(Screen, BlocksByPriorityShownInTheirOwnOrder) {
   // 1 + 3 rows: only the high block fits whole; the low one (not shrinkable) is dropped.
   EXPECT_EQ(texts(s, {80, 4}), (std::vector<std::string>{"head", "high0", "high1", "high2"}));
   // With room for both, the low block keeps its place before the high one.
-  EXPECT_EQ(texts(s, {80, 7}),
-            (std::vector<std::string>{"head", "low0", "low1", "low2", "high0", "high1", "high2"}));
+  EXPECT_EQ(texts(s, {80, 7}), (std::vector<std::string>{"head", "low0", "low1", "low2", "high0", "high1", "high2"}));
 }
 
 TEST(Screen, AShrinkableBlockGivesItsFirstLines) {
@@ -113,9 +112,11 @@ TEST(Screen, WrapTextBreaksAtSpacesAndKeepsEveryCharacter) {
   }
   // Broken at spaces, or inside a word longer than a line: nothing lost.
   std::string squeezed;
-  for (const char c : joined) if (c != ' ') squeezed += c;
+  for (const char c : joined)
+    if (c != ' ') squeezed += c;
   std::string want;
-  for (const char c : line) if (c != ' ') want += c;
+  for (const char c : line)
+    if (c != ' ') want += c;
   EXPECT_EQ(squeezed, want);
   EXPECT_EQ(parts[0], "12:00:01 warning: reload refused:");
   EXPECT_EQ(wrap_text("short", 40, 9), std::vector<std::string>{"short"});

@@ -71,8 +71,19 @@ TEST(Sheet, EntriesFollowTheDrawingsOrder) {
   const auto s = kinds_sheet();
   std::vector<std::string> inputs;
   for (const auto& e : s.panels[0].entries) inputs.push_back(e.input);
-  const std::vector<std::string> want = {"LT", "LB", "Back", "left stick up/down", "D-pad up", "RT", "RB", "Start",
-                                         "B", "X", "A", "right stick up/down", "right stick left/right"};
+  const std::vector<std::string> want = {"LT",
+                                         "LB",
+                                         "Back",
+                                         "left stick up/down",
+                                         "D-pad up",
+                                         "RT",
+                                         "RB",
+                                         "Start",
+                                         "B",
+                                         "X",
+                                         "A",
+                                         "right stick up/down",
+                                         "right stick left/right"};
   EXPECT_EQ(inputs, want);
 }
 
@@ -82,27 +93,34 @@ TEST(Sheet, NotesGiveSelectorPositionsKnobsAndTheWeaponsRule) {
     return std::any_of(s.notes.begin(), s.notes.end(), [&](const std::string& n) { return n == text; });
   };
   // A position without a bit says what it means on the switchbox.
-  EXPECT_TRUE(has("speed selector, Start steps, Back back: speed low > speed medium > speed high; starts at speed medium"));
+  EXPECT_TRUE(
+      has("speed selector, Start steps, Back back: speed low > speed medium > speed high; starts at speed medium"));
   EXPECT_TRUE(has("light knob: B brighter, A dimmer, 64 units/s; starts at 10, kept while not enabled"));
-  EXPECT_TRUE(has("Analog inputs: drive (left stick up/down): deadzone 0.1, expo 0; arm speed (RT, arm layer): "
-                  "deadzone 0, expo 0."));
-  EXPECT_FALSE(std::any_of(s.notes.begin(), s.notes.end(), [](const std::string& n) { return n.find("numbered from 0") != std::string::npos; }));
-  EXPECT_TRUE(has("Weapons fire only when the run has --weapons, the deadman (LT) is held and the arming input "
-                  "(left stick click) is held."));
+  EXPECT_TRUE(
+      has("Analog inputs: drive (left stick up/down): deadzone 0.1, expo 0; arm speed (RT, arm layer): "
+          "deadzone 0, expo 0."));
+  EXPECT_FALSE(std::any_of(s.notes.begin(), s.notes.end(),
+                           [](const std::string& n) { return n.find("numbered from 0") != std::string::npos; }));
+  EXPECT_TRUE(
+      has("Weapons fire only when the run has --weapons, the deadman (LT) is held and the arming input "
+          "(left stick click) is held."));
 }
 
 // The shipped layout with speed levels on the one button it leaves free in every layer.
 Sheet speed_sheet(const std::string& scale) {
   const testing::TempDir dir;
   return build_sheet(*mapping::load_mapping(
-      dir.write("speed.yaml", "robot: HD1\ndeadman: leftshoulder\nbindings:\n  - {analog: drive, axis: lefty}\n"
-                              "  - {selector: speed, next: start, positions: [[speed_low], [], [speed_high]]}\n"
-                              "layers:\n  arm:\n    hold: rightshoulder\n    bindings:\n      - {analog: pivot, axis: leftx}\n"
-                              "scale: " + scale + "\n")));
+      dir.write("speed.yaml",
+                "robot: HD1\ndeadman: leftshoulder\nbindings:\n  - {analog: drive, axis: lefty}\n"
+                "  - {selector: speed, next: start, positions: [[speed_low], [], [speed_high]]}\n"
+                "layers:\n  arm:\n    hold: rightshoulder\n    bindings:\n      - {analog: pivot, axis: leftx}\n"
+                "scale: " +
+                    scale + "\n")));
 }
 
 std::string note_starting(const Sheet& sheet, std::string_view start) {
-  const auto it = std::find_if(sheet.notes.begin(), sheet.notes.end(), [&](const std::string& n) { return n.starts_with(start); });
+  const auto it =
+      std::find_if(sheet.notes.begin(), sheet.notes.end(), [&](const std::string& n) { return n.starts_with(start); });
   return it == sheet.notes.end() ? "no such note" : *it;
 }
 
@@ -134,7 +152,8 @@ TEST(Sheet, TheSpeedButtonsAreInEveryPanelAndTheLevelsInTheNotes) {
 
   const auto capped = speed_sheet("{levels: [0.5]}");
   EXPECT_FALSE(capped.speed);
-  EXPECT_EQ(note_starting(capped, "Drive and pivot"), "Drive and pivot move 50% of the stick's travel from rest (scale).");
+  EXPECT_EQ(note_starting(capped, "Drive and pivot"),
+            "Drive and pivot move 50% of the stick's travel from rest (scale).");
 }
 
 TEST(Sheet, WithoutSpeedLevelsNoWordOfThem) {
@@ -150,11 +169,13 @@ TEST(Sheet, NotesGiveTheSupervisorsButtons) {
   const auto has = [&](std::string_view text) {
     return std::any_of(s.notes.begin(), s.notes.end(), [&](const std::string& n) { return n == text; });
   };
-  EXPECT_TRUE(has("Weapons fire only when the run has --weapons, the deadman (LB) is held and the arming input "
-                  "(RB) is held, and the supervisor holds its consent."));
-  EXPECT_TRUE(has("Supervisor's controller (run --supervisor): X stops (latched until released, then the deadman "
-                  "pressed afresh); A held is the weapons consent (a two-person rule: pressed after the weapons "
-                  "became possible). Losing either controller stops motion."));
+  EXPECT_TRUE(
+      has("Weapons fire only when the run has --weapons, the deadman (LB) is held and the arming input "
+          "(RB) is held, and the supervisor holds its consent."));
+  EXPECT_TRUE(
+      has("Supervisor's controller (run --supervisor): X stops (latched until released, then the deadman "
+          "pressed afresh); A held is the weapons consent (a two-person rule: pressed after the weapons "
+          "became possible). Losing either controller stops motion."));
   EXPECT_NE(render_sheet_text(s).find("Supervisor's controller"), std::string::npos);
   EXPECT_NE(render_sheet_svg(s).find("Supervisor"), std::string::npos);
   for (const auto& n : kinds_sheet().notes) EXPECT_EQ(n.find("upervisor"), std::string::npos) << n;
@@ -200,7 +221,8 @@ TEST(Sheet, TextIsATablePerLayer) {
 
 TEST(Sheet, SvgIsOnePageAndEscapesNames) {
   testing::TempDir dir;
-  const auto file = dir.write("a&<b>.yaml", "robot: HD1\ndeadman: a\nlayers:\n  l\"1:\n    hold: b\n    bindings: []\n");
+  const auto file =
+      dir.write("a&<b>.yaml", "robot: HD1\ndeadman: a\nlayers:\n  l\"1:\n    hold: b\n    bindings: []\n");
   const auto svg = render_sheet_svg(build_sheet(*mapping::load_mapping(file)));
   EXPECT_NE(svg.find("width=\"190mm\" height=\"260mm\" viewBox=\"0 0 190 260\""), std::string::npos);
   EXPECT_NE(svg.find("a&amp;&lt;b&gt;.yaml"), std::string::npos);

@@ -89,8 +89,7 @@ TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
   s.enable_text = "enabled";
   EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
   s.enable_text = "enabled; at rest first: lefty";
-  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"),
-            std::string::npos);
+  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"), std::string::npos);
 }
 
 TEST(FrameTiming, MeasuresRateAndJitter) {

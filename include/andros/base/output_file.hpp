@@ -88,11 +88,11 @@ class OutputFile {
   std::string path_;
   WriteFn write_;
   int fd_ = -1;
-  bool own_fd_ = false;       ///< false for standard output
-  std::string target_;        ///< the file a temporary replaces (links followed)
-  std::string temporary_;     ///< empty: written in place
-  std::string pending_;       ///< written, not yet handed to the descriptor
-  int error_ = 0;             ///< the first failed write's errno
+  bool own_fd_ = false;    ///< false for standard output
+  std::string target_;     ///< the file a temporary replaces (links followed)
+  std::string temporary_;  ///< empty: written in place
+  std::string pending_;    ///< written, not yet handed to the descriptor
+  int error_ = 0;          ///< the first failed write's errno
   bool committed_ = false;
   Buffer buffer_{*this};
   std::ostream stream_{&buffer_};

@@ -37,8 +37,8 @@ inline constexpr int kDefaultReadRateHz = static_cast<int>(timing::kDefaultRateM
 
 /// Every setting's typed value. A default-constructed Settings holds the defaults.
 struct Settings {
-  std::string config;                          ///< `run --config`; empty: the default paths
-  std::string config_file;                     ///< the config file read; empty: none
+  std::string config;       ///< `run --config`; empty: the default paths
+  std::string config_file;  ///< the config file read; empty: none
   /// What the config file was when it was not a regular file ("a pipe",
   /// "a terminal"): read once at start, never again by a reload. Empty for a
   /// regular file.
@@ -53,16 +53,16 @@ struct Settings {
   /// line or flag that set it.
   timing::Rate rate{timing::kDefaultRateMillihertz, "", SourcePos{"--rate"}};
   bool weapons = false;
-  std::string input{kSdlInput};                ///< "sdl" or an event script's path
-  std::string supervisor;                      ///< the supervisor's controller (INDEX|NAME|GUID); empty: none
-  SourcePos supervisor_pos{"--supervisor"};    ///< where it was set, for errors about it
-  std::optional<std::uint8_t> expected_code;   ///< `monitor --code`
-  int read_rate_hz = kDefaultReadRateHz;       ///< `record --rate`
+  std::string input{kSdlInput};               ///< "sdl" or an event script's path
+  std::string supervisor;                     ///< the supervisor's controller (INDEX|NAME|GUID); empty: none
+  SourcePos supervisor_pos{"--supervisor"};   ///< where it was set, for errors about it
+  std::optional<std::uint8_t> expected_code;  ///< `monitor --code`
+  int read_rate_hz = kDefaultReadRateHz;      ///< `record --rate`
   protocol::ReplayFormat format = protocol::ReplayFormat::kHex;
-  std::string output;                          ///< `replay --output`; empty: standard output
-  std::string script_output = "-";            ///< `record --output`; "-": standard output
-  bool record = true;                          ///< the flight recorder (docs/recording.md)
-  std::string record_dir;                      ///< where sessions go; empty: the state folder
+  std::string output;               ///< `replay --output`; empty: standard output
+  std::string script_output = "-";  ///< `record --output`; "-": standard output
+  bool record = true;               ///< the flight recorder (docs/recording.md)
+  std::string record_dir;           ///< where sessions go; empty: the state folder
   std::int64_t record_max_mb = kDefaultRecordMaxMb;
   int record_max_days = kDefaultRecordMaxDays;
 };

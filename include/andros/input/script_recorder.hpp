@@ -31,16 +31,15 @@ struct RecordStatus {
   std::int64_t events = 0;
   bool connected = false;
   bool supervisor_connected = false;  ///< the supervisor's controller (record --supervisor)
-  bool at_limit = false;  ///< ended at RecordOptions::max_ms, not by keep_going
+  bool at_limit = false;              ///< ended at RecordOptions::max_ms, not by keep_going
 };
 
 /// Reads input every period on absolute time (a TickGrid: missed ticks are
 /// skipped, not burst) and writes each event as a script line, t_ms from the
 /// start (with a supervisor's controller not there at the start, `0
-/// supervisor disconnect`, so that the script has one configured), until a stop request (which also ends the wait between two ticks)
-/// or keep_going returning false; then writes `T end`. keep_going runs after
-/// every tick. Throws RuntimeError when out fails. Ends by itself at
-/// options.max_ms. Returns where it ended.
+/// supervisor disconnect`, so that the script has one configured), until a stop request (which also ends the wait
+/// between two ticks) or keep_going returning false; then writes `T end`. keep_going runs after every tick. Throws
+/// RuntimeError when out fails. Ends by itself at options.max_ms. Returns where it ended.
 RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, StopRequest& stop,
                            const std::function<bool(const RecordStatus&)>& keep_going);
 

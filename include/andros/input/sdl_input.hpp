@@ -35,9 +35,9 @@ struct SdlInputOptions {
 
 /// One attached device, as `andros-bridge controllers` lists it.
 struct ControllerInfo {
-  int index = 0;              ///< SDL device index: what --controller INDEX means
+  int index = 0;  ///< SDL device index: what --controller INDEX means
   std::string name;
-  std::string guid;           ///< 32 hex digits
+  std::string guid;              ///< 32 hex digits
   bool game_controller = false;  ///< false: a plain joystick (numbered buttons, axes, hats)
 };
 

@@ -15,14 +15,31 @@
 namespace andros::input {
 
 /// SDL game-controller button names, in SDL_GameControllerButton order.
-inline constexpr std::array<std::string_view, 21> kPadButtonNames = {
-    "a",          "b",             "x",      "y",      "back",    "guide",   "start",
-    "leftstick",  "rightstick",    "leftshoulder", "rightshoulder", "dpup", "dpdown", "dpleft",
-    "dpright",    "misc1",         "paddle1", "paddle2", "paddle3", "paddle4", "touchpad"};
+inline constexpr std::array<std::string_view, 21> kPadButtonNames = {"a",
+                                                                     "b",
+                                                                     "x",
+                                                                     "y",
+                                                                     "back",
+                                                                     "guide",
+                                                                     "start",
+                                                                     "leftstick",
+                                                                     "rightstick",
+                                                                     "leftshoulder",
+                                                                     "rightshoulder",
+                                                                     "dpup",
+                                                                     "dpdown",
+                                                                     "dpleft",
+                                                                     "dpright",
+                                                                     "misc1",
+                                                                     "paddle1",
+                                                                     "paddle2",
+                                                                     "paddle3",
+                                                                     "paddle4",
+                                                                     "touchpad"};
 
 /// SDL game-controller axis names, in SDL_GameControllerAxis order.
-inline constexpr std::array<std::string_view, 6> kPadAxisNames = {
-    "leftx", "lefty", "rightx", "righty", "lefttrigger", "righttrigger"};
+inline constexpr std::array<std::string_view, 6> kPadAxisNames = {"leftx",  "lefty",       "rightx",
+                                                                  "righty", "lefttrigger", "righttrigger"};
 
 /// Hat directions, in the order of the bits of SDL_HAT_* (up 1, right 2, down 4, left 8).
 inline constexpr std::array<std::string_view, 4> kHatDirectionNames = {"up", "right", "down", "left"};
@@ -64,7 +81,12 @@ enum class Pad : std::uint8_t {
 
 struct InputEvent {
   enum class Type : std::uint8_t {
-    kConnect, kDisconnect, kButton, kAxis, kHat, kEnd,
+    kConnect,
+    kDisconnect,
+    kButton,
+    kAxis,
+    kHat,
+    kEnd,
     // Fault events (docs/event-scripts.md): what happens around the
     // controller, for the run loop to answer as it answers the real thing.
     kLinkDown,   ///< `link down`: the link is lost
@@ -80,10 +102,10 @@ struct InputEvent {
 
   std::int64_t t_ms = 0;
   Type type = Type::kEnd;
-  InputKey key{};       ///< button or axis; for kHat, {kHat, hat * 4}
-  int value = 0;        ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
-  std::string name;     ///< controller name, for kConnect; the mapping file, for kReload
-  int line = 0;         ///< source line in an event script, 0 when live
+  InputKey key{};    ///< button or axis; for kHat, {kHat, hat * 4}
+  int value = 0;     ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
+  std::string name;  ///< controller name, for kConnect; the mapping file, for kReload
+  int line = 0;      ///< source line in an event script, 0 when live
   /// Whose controller a connect, disconnect, button, axis or hat event is
   /// for; always the operator's for the others (they are the run's, not a pad's).
   Pad pad = Pad::kOperator;

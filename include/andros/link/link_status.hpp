@@ -16,15 +16,16 @@ enum class LinkState : std::uint8_t {
 
 enum class SendResult : std::uint8_t {
   kSent,  ///< the whole frame was handed to the driver
-  kBusy,  ///< the driver (or a TCP server, as its window shows) still held bytes: this tick skipped, so that no stale frame queues
+  kBusy,  ///< the driver (or a TCP server, as its window shows) still held bytes: this tick skipped, so that no stale
+          ///< frame queues
   kDown,  ///< no connection this tick
 };
 
 struct LinkCounters {
   std::uint64_t sent = 0;
-  std::uint64_t busy = 0;   ///< ticks skipped because the output queue (or the server) was not empty
-  std::uint64_t down = 0;   ///< ticks with no connection
-  std::uint64_t losses = 0; ///< times an open link was lost
+  std::uint64_t busy = 0;    ///< ticks skipped because the output queue (or the server) was not empty
+  std::uint64_t down = 0;    ///< ticks with no connection
+  std::uint64_t losses = 0;  ///< times an open link was lost
 };
 
 /// A link at one moment (Link::status()).

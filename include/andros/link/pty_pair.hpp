@@ -9,9 +9,9 @@
 namespace andros::link {
 
 struct PtyPair {
-  UniqueFd master;  ///< the far (vehicle's) end
-  UniqueFd slave;   ///< the near end; whoever holds it open keeps the master from hanging up
-  std::string path; ///< the near end's path, to open like a serial device
+  UniqueFd master;   ///< the far (vehicle's) end
+  UniqueFd slave;    ///< the near end; whoever holds it open keeps the master from hanging up
+  std::string path;  ///< the near end's path, to open like a serial device
 };
 
 /// Opens a pair with the master raw (bytes pass untouched) and both ends

@@ -59,12 +59,12 @@ class TcpLink final : public ReconnectingLink {
  private:
   /// What the server's acknowledgements have shown on this connection.
   struct Progress {
-    std::uint64_t first_edge = 0;   ///< the edge when the connection came up
-    std::uint64_t edge = 0;         ///< right edge of its window: bytes acknowledged + window
-    std::uint32_t max_window = 0;   ///< the widest window it has offered
-    std::int64_t since_ns = 0;      ///< when the edge last moved, or nothing was waiting
-    std::int64_t probe_ns = 0;      ///< when a held-back frame last went anyway
-    std::int64_t written = 0;       ///< bytes written on this connection
+    std::uint64_t first_edge = 0;  ///< the edge when the connection came up
+    std::uint64_t edge = 0;        ///< right edge of its window: bytes acknowledged + window
+    std::uint32_t max_window = 0;  ///< the widest window it has offered
+    std::int64_t since_ns = 0;     ///< when the edge last moved, or nothing was waiting
+    std::int64_t probe_ns = 0;     ///< when a held-back frame last went anyway
+    std::int64_t written = 0;      ///< bytes written on this connection
   };
   OpenResult opened();
 

@@ -12,7 +12,7 @@
 namespace andros::link {
 
 struct VehicleSnapshot {
-  std::optional<protocol::DataBytes> last;     ///< the last frame decoded, valid or not
+  std::optional<protocol::DataBytes> last;  ///< the last frame decoded, valid or not
   bool last_valid = false;
   std::vector<std::string> last_errors;
   protocol::DecoderStats stats;

@@ -16,8 +16,7 @@ namespace andros::link {
 
 class VehicleView {
  public:
-  explicit VehicleView(std::optional<std::uint8_t> expected_code = std::nullopt)
-      : decoder_(expected_code) {}
+  explicit VehicleView(std::optional<std::uint8_t> expected_code = std::nullopt) : decoder_(expected_code) {}
 
   /// Bytes that arrived at now_ns.
   void push(std::span<const std::uint8_t> bytes, std::int64_t now_ns);

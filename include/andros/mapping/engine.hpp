@@ -20,8 +20,8 @@
 namespace andros::mapping {
 
 struct EngineOptions {
-  bool weapons = false;       ///< --weapons / weapons=enabled
-  std::uint8_t code = 0x01;   ///< byte 11, the dip-switch code
+  bool weapons = false;      ///< --weapons / weapons=enabled
+  std::uint8_t code = 0x01;  ///< byte 11, the dip-switch code
 };
 
 class Engine {
@@ -96,30 +96,30 @@ class Engine {
   std::vector<BindingRef> all_;                     ///< every binding; its slot is its index here
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
-  std::vector<input::InputKey> buttons_;                   ///< every button the mapping reads
-  std::vector<input::InputKey> axes_;                      ///< every axis the mapping reads
+  std::vector<input::InputKey> buttons_;            ///< every button the mapping reads
+  std::vector<input::InputKey> axes_;               ///< every axis the mapping reads
   std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
   // State carried from tick to tick.
   bool started_ = false;
   std::uint32_t connection_ = 0;
-  std::uint32_t supervisor_connection_ = 0;  ///< the supervisor's controller session
-  std::uint32_t stop_connection_ = 0;        ///< the supervisor's session its stop presses are counted in
-  std::uint32_t stop_presses_ = 0;           ///< the supervisor's stop presses already reported
+  std::uint32_t supervisor_connection_ = 0;                ///< the supervisor's controller session
+  std::uint32_t stop_connection_ = 0;                      ///< the supervisor's session its stop presses are counted in
+  std::uint32_t stop_presses_ = 0;                         ///< the supervisor's stop presses already reported
   std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
-  std::uint32_t deadman_base_ = 0;       ///< deadman presses that are not fresh
-  bool deadman_released_seen_ = false;   ///< a trigger deadman was seen released this session
-  bool panic_latched_ = false;           ///< squeezed past the panic point, not yet fully released
-  bool timed_out_ = false;               ///< the enable timeout ran out, the deadman not yet released
-  bool was_enabled_ = false;             ///< at the last step
-  std::uint32_t estop_seen_ = 0;         ///< stop-button presses already acted on
-  std::int64_t last_activity_ms_ = 0;    ///< the last step that saw an input change
+  std::uint32_t deadman_base_ = 0;                         ///< deadman presses that are not fresh
+  bool deadman_released_seen_ = false;                     ///< a trigger deadman was seen released this session
+  bool panic_latched_ = false;                             ///< squeezed past the panic point, not yet fully released
+  bool timed_out_ = false;                                 ///< the enable timeout ran out, the deadman not yet released
+  bool was_enabled_ = false;                               ///< at the last step
+  std::uint32_t estop_seen_ = 0;                           ///< stop-button presses already acted on
+  std::int64_t last_activity_ms_ = 0;                      ///< the last step that saw an input change
   std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that step
   std::map<input::InputKey, std::int16_t> activity_axes_;
-  int layer_ = -1;                       ///< active layer, -1 = base
-  int toggled_layer_ = -1;               ///< layer switched on by a toggle button
-  std::bitset<protocol::kSignalCount> toggled_;    ///< one toggle state per signal, whichever input flips it
+  int layer_ = -1;                               ///< active layer, -1 = base
+  int toggled_layer_ = -1;                       ///< layer switched on by a toggle button
+  std::bitset<protocol::kSignalCount> toggled_;  ///< one toggle state per signal, whichever input flips it
   RestRule rest_;
-  std::vector<int> selector_;            ///< per binding slot: a selector's position
+  std::vector<int> selector_;                                       ///< per binding slot: a selector's position
   std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;
 };

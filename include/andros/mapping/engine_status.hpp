@@ -44,7 +44,7 @@ enum class ConsentState : std::uint8_t {
 
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
-  std::string layer;  ///< the active layer's name ("" for the base layer)
+  std::string layer;                       ///< the active layer's name ("" for the base layer)
   std::vector<input::InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
   /// Enabled, weapons enabled for the run, and the active layer has weapon
   /// bindings: an armed fire input fires (what the banner and the pad announce).

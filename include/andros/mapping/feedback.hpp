@@ -45,7 +45,8 @@ struct FeedbackTable {
 
 /// The pattern an event plays now: its table pattern, except that
 /// kSpeedLevel pulses once per level up to `speed_level` (0 = the slowest).
-input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern, std::size_t speed_level);
+input::FeedbackPattern feedback_pattern(FeedbackEvent event, const input::FeedbackPattern& pattern,
+                                        std::size_t speed_level);
 
 /// The built-in pattern of an event (what a mapping without `feedback:` plays).
 input::FeedbackPattern default_feedback_pattern(FeedbackEvent event);

@@ -41,8 +41,7 @@ std::vector<std::filesystem::path> mapping_search_path();
 
 /// The first `<robot in lower case>.yaml` on the search path. Throws
 /// InputError for an unknown robot or when no directory has the file.
-std::filesystem::path find_robot_mapping(std::string_view robot,
-                                         const std::vector<std::filesystem::path>& search_path);
+std::filesystem::path find_robot_mapping(std::string_view robot, const std::vector<std::filesystem::path>& search_path);
 
 /// Finds, loads and validates a robot type's mapping; its `robot` must match.
 ValidMapping load_robot_mapping(std::string_view robot);

@@ -102,8 +102,7 @@ struct SelectorBinding {
   int initial = 0;
 };
 
-using BindingRule =
-    std::variant<ButtonBinding, WeaponBinding, PairBinding, AxisBinding, KnobBinding, SelectorBinding>;
+using BindingRule = std::variant<ButtonBinding, WeaponBinding, PairBinding, AxisBinding, KnobBinding, SelectorBinding>;
 
 /// An input a binding reads, and where the file names it (for errors).
 struct InputUse {
@@ -113,10 +112,10 @@ struct InputUse {
 
 struct Binding {
   BindingRule rule;
-  SourcePos pos;                ///< the binding's first line
-  SourcePos target_pos;         ///< where its signal/analog/selector is named
-  std::vector<InputUse> inputs; ///< inputs it is triggered by (not `arm`)
-  std::optional<InputUse> arm;  ///< a weapon's arming input
+  SourcePos pos;                 ///< the binding's first line
+  SourcePos target_pos;          ///< where its signal/analog/selector is named
+  std::vector<InputUse> inputs;  ///< inputs it is triggered by (not `arm`)
+  std::optional<InputUse> arm;   ///< a weapon's arming input
 };
 
 /// A second set of bindings, active while its button is held (hold) or after
@@ -183,7 +182,7 @@ struct Mapping {
   BrakeMode brake = BrakeMode::kEnabled;
   SpeedScale scale;
   FeedbackTable feedback = default_feedback();  ///< rumble and light per event
-  std::vector<Binding> bindings;  ///< the base layer
+  std::vector<Binding> bindings;                ///< the base layer
   std::vector<Layer> layers;
 };
 

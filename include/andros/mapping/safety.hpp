@@ -20,8 +20,8 @@
 namespace andros::mapping {
 
 struct SafetyContext {
-  bool enabled = false;   ///< connected + deadman held + pressed fresh
-  bool weapons = false;   ///< weapons enabled for the run
+  bool enabled = false;                       ///< connected + deadman held + pressed fresh
+  bool weapons = false;                       ///< weapons enabled for the run
   std::bitset<protocol::kSignalCount> armed;  ///< weapon signals whose arming input is held
   int center = kDefaultCenter;  ///< drive and pivot's rest while enabled (the trim): `brake: moving` measures from it
   BrakeMode brake = BrakeMode::kEnabled;
@@ -84,9 +84,7 @@ class RestRule {
   /// The supervisor's consent at the last update (kNotAsked without one in the mapping).
   [[nodiscard]] ConsentState consent_state() const { return consent_; }
   /// Weapons may fire as far as the supervisor is concerned: consent given, or none asked.
-  [[nodiscard]] bool consent() const {
-    return consent_ == ConsentState::kNotAsked || consent_ == ConsentState::kGiven;
-  }
+  [[nodiscard]] bool consent() const { return consent_ == ConsentState::kNotAsked || consent_ == ConsentState::kGiven; }
 
  private:
   /// What "at rest" is for one binding reading one input.
@@ -101,21 +99,22 @@ class RestRule {
   /// A layer's weapons by arming input: the fire inputs each arming input arms.
   using Arms = std::map<input::InputKey, std::vector<input::InputKey>>;
 
-  [[nodiscard]] static bool at_rest(const input::InputState& input, input::InputKey key, const std::vector<Reader>& readers);
+  [[nodiscard]] static bool at_rest(const input::InputState& input, input::InputKey key,
+                                    const std::vector<Reader>& readers);
   void hold_back(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
   void hold_back_fire_inputs(const input::InputState& input, int layer, std::map<input::InputKey, std::uint32_t>& seen);
   void update_consent(const input::InputState& input, int layer, bool enabled);
   void hold(const input::InputState& input, input::InputKey key, bool rest);
   [[nodiscard]] bool pressed_this_frame(const input::InputState& input, input::InputKey arm) const;
 
-  std::vector<Readers> readers_;  ///< [layer + 1]: every input the layer's bindings read
-  std::vector<Arms> arms_;        ///< [layer + 1]
-  Readers arm_readers_;           ///< every arming input of any layer, read as its weapons read it
+  std::vector<Readers> readers_;                   ///< [layer + 1]: every input the layer's bindings read
+  std::vector<Arms> arms_;                         ///< [layer + 1]
+  Readers arm_readers_;                            ///< every arming input of any layer, read as its weapons read it
   std::map<input::InputKey, std::uint32_t> held_;  ///< held-back input -> its press count when held back
   bool enabled_ = false;
   std::uint32_t connection_ = 0;
   int layer_ = -1;
-  std::set<input::InputKey> armed_;      ///< arming inputs that armed their weapons at the last enabled frame
+  std::set<input::InputKey> armed_;  ///< arming inputs that armed their weapons at the last enabled frame
   // The arming inputs at the last frame, enabled or not: the triggers held, the buttons' press counts.
   std::set<input::InputKey> arms_down_;
   std::map<input::InputKey, std::uint32_t> arm_presses_;

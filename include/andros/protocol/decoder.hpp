@@ -38,8 +38,7 @@ class Decoder {
 
   /// With an expected code, frames whose byte 11 differs are invalid too (the
   /// vehicle software can be built to drop them).
-  explicit Decoder(std::optional<std::uint8_t> expected_code = std::nullopt)
-      : expected_code_(expected_code) {}
+  explicit Decoder(std::optional<std::uint8_t> expected_code = std::nullopt) : expected_code_(expected_code) {}
 
   /// Feeds bytes; calls sink for every frame completed by them.
   void push(std::span<const std::uint8_t> bytes, const Sink& sink);

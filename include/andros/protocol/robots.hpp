@@ -9,7 +9,7 @@
 namespace andros::protocol {
 
 inline constexpr std::array<std::string_view, 7> kRobotTypes = {"F6A",     "VA1", "WOLVERINE", "HD1",
-                                                                  "PROWLER", "RAV", "RONS"};
+                                                                "PROWLER", "RAV", "RONS"};
 inline constexpr std::string_view kDefaultRobot = "HD1";
 
 /// A robot type under the vehicle's own name (docs/robots.md): what an

@@ -59,20 +59,20 @@ class FrameSource {
 /// the loop: whoever reads a report never reaches back into the loop, the
 /// engine or the link (docs/architecture.md).
 struct TickReport {
-  std::int64_t tick = 0;     ///< index on the clock
-  std::int64_t t_ms = 0;     ///< the tick's time, ms since start
-  std::int64_t skipped = 0;  ///< ticks skipped before this one after a stall
+  std::int64_t tick = 0;       ///< index on the clock
+  std::int64_t t_ms = 0;       ///< the tick's time, ms since start
+  std::int64_t skipped = 0;    ///< ticks skipped before this one after a stall
   protocol::DataBytes data{};  ///< the frame offered to the link (result: whether it took it)
   link::SendResult result = link::SendResult::kDown;
-  bool sent = true;          ///< false: nothing was offered this tick (suspended, link closed)
-  OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
-  bool connected = false;    ///< a controller is connected
-  std::string controller;    ///< its name (may be empty)
-  bool supervised = false;   ///< a supervisor's controller is configured (InputSource::supervised)
+  bool sent = true;                   ///< false: nothing was offered this tick (suspended, link closed)
+  OpState state = OpState::kNoLink;   ///< after this tick: what the screen, pad, log and service say
+  bool connected = false;             ///< a controller is connected
+  std::string controller;             ///< its name (may be empty)
+  bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
   bool supervisor_connected = false;  ///< and it is connected
-  std::string supervisor;    ///< its name (may be empty)
-  mapping::EngineStatus engine;  ///< after this tick's step (the last step's when none ran)
-  link::LinkStatus link;     ///< after this tick's send
+  std::string supervisor;             ///< its name (may be empty)
+  mapping::EngineStatus engine;       ///< after this tick's step (the last step's when none ran)
+  link::LinkStatus link;              ///< after this tick's send
 
   [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
@@ -81,8 +81,8 @@ struct TickReport {
 
 struct BridgeOptions {
   std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;
-  int shutdown_frames = 3;     ///< neutral frames sent at a stop, a suspend and a reload
-  int shutdown_extra_ticks = 5;///< ticks allowed beyond those for frames the link refused
+  int shutdown_frames = 3;       ///< neutral frames sent at a stop, a suspend and a reload
+  int shutdown_extra_ticks = 5;  ///< ticks allowed beyond those for frames the link refused
   int drain_timeout_ms = 300;
   /// The end of the input ends the run on neutral frames (run); false: on
   /// the last frame, as replay's contract has it (a script's `stop` still
@@ -191,17 +191,17 @@ class Bridge {
   mapping::EngineStatus engine_status_;  ///< the last step's
   ShutdownReport shutdown_report_;
   Nanos start_{0};
-  std::int64_t tick_ = 0;     ///< the tick to run next
+  std::int64_t tick_ = 0;  ///< the tick to run next
   std::int64_t skipped_ = 0;
-  std::int64_t latched_tick_ = -1;  ///< the tick of the last stop button answered: a stop clears on a later one
-  int sequence_sent_ = 0;      ///< neutral frames of the current stop, suspend or reload the link took
-  int sequence_ticks_ = 0;     ///< and ticks it has had
+  std::int64_t latched_tick_ = -1;    ///< the tick of the last stop button answered: a stop clears on a later one
+  int sequence_sent_ = 0;             ///< neutral frames of the current stop, suspend or reload the link took
+  int sequence_ticks_ = 0;            ///< and ticks it has had
   bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames
   bool suspend_frames_due_ = false;   ///< suspended, its neutral frames not sent yet
   bool suspend_pending_ = false;      ///< asked for during a reload
   bool resume_pending_ = false;
   std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)
-  bool input_failed_ = false;         ///< the input threw: the stop's frames go without it
+  bool input_failed_ = false;                  ///< the input threw: the stop's frames go without it
 };
 
 }  // namespace andros::run

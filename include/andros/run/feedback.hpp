@@ -14,12 +14,12 @@ namespace andros::run {
 
 /// What the events are read from, once per tick.
 struct FeedbackStatus {
-  bool connected = false;  ///< a controller is connected
+  bool connected = false;                                             ///< a controller is connected
   mapping::EnableState enable = mapping::EnableState::kNoController;  ///< the engine's view of the deadman
-  bool enabled = false;  ///< the operating state is "enabled": frames follow the controller
-  bool link_up = false;  ///< the link is up and frames follow the controller
-  bool weapons_mode = false;  ///< EngineStatus::weapons_mode
-  bool stopped = false;  ///< the operating state is "stopped by the operator"
+  bool enabled = false;         ///< the operating state is "enabled": frames follow the controller
+  bool link_up = false;         ///< the link is up and frames follow the controller
+  bool weapons_mode = false;    ///< EngineStatus::weapons_mode
+  bool stopped = false;         ///< the operating state is "stopped by the operator"
   std::size_t speed_level = 0;  ///< EngineStatus::speed's index
 
   bool operator==(const FeedbackStatus&) const = default;
@@ -49,7 +49,7 @@ class FeedbackNotifier {
  private:
   mapping::FeedbackTable table_;
   input::InputSource& input_;
-  FeedbackStatus last_;  ///< before the first tick: nothing connected, not enabled, link down
+  FeedbackStatus last_;         ///< before the first tick: nothing connected, not enabled, link down
   bool enabled_light_ = false;  ///< the last colour set was set while enabled (green, the weapons colours)
 };
 

@@ -156,7 +156,7 @@ struct Session {
   std::string host;
   SessionSettings settings;
   std::vector<input::InputEvent> events;
-  std::vector<TimedText> requests;  ///< "stop", "suspend", "resumed", "reload"
+  std::vector<TimedText> requests;   ///< "stop", "suspend", "resumed", "reload"
   std::vector<std::int64_t> pauses;  ///< the time the loop went on after each job-control stop
   std::vector<ReloadRecord> reloads;
   std::vector<FrameRecord> frames;

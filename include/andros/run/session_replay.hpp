@@ -20,7 +20,7 @@ namespace andros::run {
 struct SessionReplayResult {
   std::uint64_t compared = 0;  ///< frames sent live that the replay reproduced byte for byte
   bool identical = false;
-  std::string difference;      ///< the first difference, when not identical
+  std::string difference;  ///< the first difference, when not identical
 };
 
 /// The mapping a session's files make (the first file is the mapping).

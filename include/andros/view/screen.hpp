@@ -21,10 +21,10 @@ enum class Style : std::uint8_t {
   kBold,
   kDim,
   kReverse,
-  kGood,   ///< green: enabled, link up
-  kWarn,   ///< yellow: connecting, held back
-  kAlert,  ///< red: not enabled, link down
-  kBanner, ///< white on red, bold: WEAPONS ENABLED
+  kGood,    ///< green: enabled, link up
+  kWarn,    ///< yellow: connecting, held back
+  kAlert,   ///< red: not enabled, link down
+  kBanner,  ///< white on red, bold: WEAPONS ENABLED
 };
 
 struct Piece {

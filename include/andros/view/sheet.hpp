@@ -32,17 +32,17 @@ enum class SheetMark : std::uint8_t {
 std::string_view mark_name(SheetMark mark);
 
 /// The marks the legend explains, in its order.
-inline constexpr std::array kLegendMarks = {SheetMark::kDeadman, SheetMark::kStop, SheetMark::kLayerKey, SheetMark::kArming,
-                                            SheetMark::kWeapon,  SheetMark::kToggle,   SheetMark::kKnob,
-                                            SheetMark::kSelector, SheetMark::kSpeed};
+inline constexpr std::array kLegendMarks = {SheetMark::kDeadman, SheetMark::kStop,     SheetMark::kLayerKey,
+                                            SheetMark::kArming,  SheetMark::kWeapon,   SheetMark::kToggle,
+                                            SheetMark::kKnob,    SheetMark::kSelector, SheetMark::kSpeed};
 
 /// One input's meaning in one layer.
 struct SheetEntry {
   input::InputKey key{};
-  std::string input;     ///< the input as an operator names it: "LB", "left stick up/down", "button 4"
+  std::string input;  ///< the input as an operator names it: "LB", "left stick up/down", "button 4"
   SheetMark mark = SheetMark::kPlain;
-  std::string function;  ///< what it does: "fire weapon_1", "up: pt_up, down: pt_down"
-  std::string detail;    ///< a qualifier, or empty: "analog, up = above 128", "needs --weapons + LT"
+  std::string function;    ///< what it does: "fire weapon_1", "up: pt_up, down: pt_down"
+  std::string detail;      ///< a qualifier, or empty: "analog, up = above 128", "needs --weapons + LT"
   bool inherited = false;  ///< a base binding a layer keeps
 };
 
@@ -54,12 +54,12 @@ struct SheetPanel {
 };
 
 struct Sheet {
-  std::string robot;  ///< "HD1", or "" for a base mapping
-  std::string file;   ///< the mapping's file name, without its directory
+  std::string robot;    ///< "HD1", or "" for a base mapping
+  std::string file;     ///< the mapping's file name, without its directory
   std::string deadman;  ///< the deadman input as an operator names it ("LB")
   std::string stop;     ///< the stop button as an operator names it, or "" when none
-  bool pad = true;    ///< every input is one the pad drawing shows; else list panels
-  bool speed = false; ///< the mapping has speed levels (the SPEED mark is used)
+  bool pad = true;      ///< every input is one the pad drawing shows; else list panels
+  bool speed = false;   ///< the mapping has speed levels (the SPEED mark is used)
   std::vector<SheetPanel> panels;
   std::vector<std::string> notes;  ///< selectors' positions, knobs, the weapons rule
 };

@@ -25,7 +25,7 @@ namespace spdlog::sinks {
 class sink;
 template <typename Mutex>
 class ringbuffer_sink;
-}
+}  // namespace spdlog::sinks
 
 namespace andros::view {
 
@@ -54,13 +54,13 @@ class StatusDisplay {
 
   Compose compose_;
   int period_ms_;
-  int fd_ = -1;        ///< the terminal, opened anew (non-blocking) or stdout
+  int fd_ = -1;  ///< the terminal, opened anew (non-blocking) or stdout
   bool own_fd_ = false;
   bool colour_ = false;
   bool broken_ = false;  ///< a write failed (terminal gone): nothing more is drawn
   std::shared_ptr<spdlog::sinks::ringbuffer_sink<std::mutex>> log_;
   std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_sinks_;  ///< the log's sinks before start()
-  std::optional<StopRequest> stop_;  ///< a new one for each start()
+  std::optional<StopRequest> stop_;                                ///< a new one for each start()
   std::thread thread_;
 };
 

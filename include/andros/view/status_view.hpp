@@ -52,40 +52,40 @@ std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center);
 /// What `run` knows at one moment.
 struct RunStatus {
   std::string robot;
-  std::string mapping_file;      ///< the mapping the run uses
-  bool weapons = false;          ///< weapon signals may be sent in this run (--weapons)
+  std::string mapping_file;  ///< the mapping the run uses
+  bool weapons = false;      ///< weapon signals may be sent in this run (--weapons)
   std::uint8_t code = 0;
   int center = mapping::kDefaultCenter;  ///< the mapping's rest of drive and pivot while enabled (its trim)
-  double rate_hz = 0;            ///< the configured rate
+  double rate_hz = 0;                    ///< the configured rate
   std::int64_t t_ms = 0;
-  std::string input;             ///< "sdl" or the script's path
-  std::string controller;        ///< its name; empty when none is connected
+  std::string input;       ///< "sdl" or the script's path
+  std::string controller;  ///< its name; empty when none is connected
   bool connected = false;
-  bool supervised = false;       ///< a supervisor's controller is configured
-  std::string supervisor;        ///< its name; empty when none is connected
+  bool supervised = false;  ///< a supervisor's controller is configured
+  std::string supervisor;   ///< its name; empty when none is connected
   bool supervisor_connected = false;
-  bool supervisor_stop = false;  ///< the supervisor holds its stop
+  bool supervisor_stop = false;                                      ///< the supervisor holds its stop
   mapping::ConsentState consent = mapping::ConsentState::kNotAsked;  ///< the supervisor's weapons consent
   /// The live controller is a game controller to SDL (false: a plain
   /// joystick, numbered inputs only); nullopt: none connected, or a script.
   std::optional<bool> game_controller;
-  bool pad_names = true;         ///< the mapping reads game-controller names (leftshoulder, leftx...)
+  bool pad_names = true;                       ///< the mapping reads game-controller names (leftshoulder, leftx...)
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
-  std::string enable_text;       ///< the state in words: why not enabled, or what enabled still holds back
-  std::string layer;             ///< the mapping layer in use, "" for the base
-  bool weapons_mode = false;     ///< enabled in a layer with weapons: the WEAPONS LAYER banner
-  mapping::SpeedLevel speed;     ///< the speed level (the mapping's `scale:`)
-  bool armed = false;            ///< in a weapons mode, an arming input held: a fire button fires
+  std::string enable_text;    ///< the state in words: why not enabled, or what enabled still holds back
+  std::string layer;          ///< the mapping layer in use, "" for the base
+  bool weapons_mode = false;  ///< enabled in a layer with weapons: the WEAPONS LAYER banner
+  mapping::SpeedLevel speed;  ///< the speed level (the mapping's `scale:`)
+  bool armed = false;         ///< in a weapons mode, an arming input held: a fire button fires
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;
-  bool motion_allowed = true;    ///< false: the link gets neutral frames only (Link::motion_allowed)
+  bool motion_allowed = true;  ///< false: the link gets neutral frames only (Link::motion_allowed)
   link::LinkCounters link;
-  timing::TimingSummary sent_timing;     ///< frames handed to the link
-  protocol::DataBytes sent{};              ///< the last frame computed
+  timing::TimingSummary sent_timing;             ///< frames handed to the link
+  protocol::DataBytes sent{};                    ///< the last frame computed
   std::optional<link::VehicleSnapshot> vehicle;  ///< the simulated vehicle's view
-  std::string recorder;          ///< the flight recorder: its session, or what it dropped; "" when off
-  bool recorder_failing = false; ///< records were dropped: the session is incomplete
+  std::string recorder;                          ///< the flight recorder: its session, or what it dropped; "" when off
+  bool recorder_failing = false;                 ///< records were dropped: the session is incomplete
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }
@@ -110,7 +110,6 @@ Screen render_run_view(const RunStatus& status, TermSize size);
 /// counts and the last frame's validity, then its switches and gauges. A
 /// frame does not say which mapping made it: drive and pivot are drawn around
 /// the default centre.
-Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live,
-                           TermSize size);
+Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live, TermSize size);
 
 }  // namespace andros::view

@@ -13,8 +13,7 @@ namespace andros::input {
 namespace {
 
 bool all_of(const std::string& text, int (*pred)(int)) {
-  return !text.empty() &&
-         std::all_of(text.begin(), text.end(), [pred](unsigned char c) { return pred(c) != 0; });
+  return !text.empty() && std::all_of(text.begin(), text.end(), [pred](unsigned char c) { return pred(c) != 0; });
 }
 
 std::string nonnull(const char* text) { return text != nullptr ? text : ""; }

@@ -21,7 +21,8 @@ struct Slot {
 
   /// "controller 1", "the supervisor's controller (controller 1)": what the log says.
   [[nodiscard]] std::string describe() const {
-    return pad == Pad::kSupervisor ? "the supervisor's controller (" + selection.describe() + ")" : selection.describe();
+    return pad == Pad::kSupervisor ? "the supervisor's controller (" + selection.describe() + ")"
+                                   : selection.describe();
   }
 
   Pad pad;
@@ -86,8 +87,7 @@ void SdlInput::Impl::drain(std::int64_t now_ms) {
   std::array<SDL_Event, 32> batch;
   int got = 0;
   do {
-    got = SDL_PeepEvents(batch.data(), static_cast<int>(batch.size()), SDL_GETEVENT, SDL_FIRSTEVENT,
-                         SDL_LASTEVENT);
+    got = SDL_PeepEvents(batch.data(), static_cast<int>(batch.size()), SDL_GETEVENT, SDL_FIRSTEVENT, SDL_LASTEVENT);
     for (int i = 0; i < got; ++i) handle(batch[static_cast<std::size_t>(i)], now_ms);
   } while (got == static_cast<int>(batch.size()));
 }

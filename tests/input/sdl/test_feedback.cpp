@@ -158,7 +158,8 @@ TEST_F(SdlFeedbackTest, EachEventPlaysItsPatternAndNothingElsePlaysAnything) {
   EXPECT_TRUE(log_.leds.empty());
 
   step("disabled", E::kDisabled, [&] { pad->button(kDeadman, false); });
-  step("link lost", E::kLinkLost, [] {}, false);
+  step(
+      "link lost", E::kLinkLost, [] {}, false);
   EXPECT_EQ(run.tick(true), std::nullopt);  // the link back: nothing
   log_ = {};
   pad.reset();  // unplugged: the lost pad cannot be told

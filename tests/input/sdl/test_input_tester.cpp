@@ -62,7 +62,8 @@ TEST_F(InputTesterTest, APadShowsEveryNamedInputWithItsNumber) {
   EXPECT_NE(screen.find("* 11 dpup"), std::string::npos) << screen;
   EXPECT_NE(screen.find("    1 b "), std::string::npos) << screen;
   EXPECT_NE(screen.find("touchpad"), std::string::npos);
-  EXPECT_NE(screen.find("righttrigger  32767  1.000 [|==========] moves   deadzone 0.00 arm_speed\n"), std::string::npos)
+  EXPECT_NE(screen.find("righttrigger  32767  1.000 [|==========] moves   deadzone 0.00 arm_speed\n"),
+            std::string::npos)
       << screen;
 
   pad.unplug();
@@ -97,7 +98,8 @@ TEST_F(InputTesterTest, AJoystickShowsNumberedButtonsAxesAndHats) {
 // Issue 19, finding 8: a hat the pad's SDL mapping leaves out is read as a
 // hat (SDL's game-controller events never report it), shown and reported.
 TEST_F(InputTesterTest, APadsHatOutsideItsMappingShows) {
-  VirtualDevice pad("Hat Pad", SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX, SDL_CONTROLLER_BUTTON_MAX, 1, 3);
+  VirtualDevice pad("Hat Pad", SDL_JOYSTICK_TYPE_GAMECONTROLLER, SDL_CONTROLLER_AXIS_MAX, SDL_CONTROLLER_BUTTON_MAX, 1,
+                    3);
   SdlInput input(SdlInputOptions{});
   view::InputsBoard board({}, "h");
   ASSERT_EQ(poll(input, board).size(), 1U);

@@ -51,10 +51,13 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
     auto line = format_event(e);
     lines.push_back(line.substr(line.find_first_not_of("0123456789 ")));
   }
-  const std::vector<std::string> expected = {
-      "connect     Test Pad",     "button      leftshoulder 1", "button      a 1",
-      "axis        lefty -32768", "button      a 0",            "disconnect",
-      "end"};
+  const std::vector<std::string> expected = {"connect     Test Pad",
+                                             "button      leftshoulder 1",
+                                             "button      a 1",
+                                             "axis        lefty -32768",
+                                             "button      a 0",
+                                             "disconnect",
+                                             "end"};
   EXPECT_EQ(lines, expected) << text;
   EXPECT_EQ(events[0].t_ms, 0);
   EXPECT_EQ(events[1].t_ms, 0);  // held at connect: the connect's time
@@ -96,10 +99,13 @@ TEST(ScriptRecorder, TheSupervisorsEventsCarryThePrefix) {
     auto line = format_event(e);
     lines.push_back(line.substr(line.find_first_not_of("0123456789 ")));
   }
-  const std::vector<std::string> expected = {
-      "connect     Operator Pad",          "supervisor disconnect",         "supervisor connect     Supervisor Pad",
-      "supervisor button      b 1",        "button      b 1",               "supervisor disconnect",
-      "end"};
+  const std::vector<std::string> expected = {"connect     Operator Pad",
+                                             "supervisor disconnect",
+                                             "supervisor connect     Supervisor Pad",
+                                             "supervisor button      b 1",
+                                             "button      b 1",
+                                             "supervisor disconnect",
+                                             "end"};
   EXPECT_EQ(lines, expected) << out.str();
   EXPECT_EQ(parse_event_script(out.str(), "recorded")[1].t_ms, 0);
 }
@@ -144,7 +150,8 @@ TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
   options.max_ms = 100;
   int calls = 0;
   StopRequest stop;
-  const auto ended = record_script(rig.input, out, options, stop, [&](const RecordStatus&) { return ++calls < 10'000; });
+  const auto ended =
+      record_script(rig.input, out, options, stop, [&](const RecordStatus&) { return ++calls < 10'000; });
   EXPECT_TRUE(ended.at_limit);
   EXPECT_LE(ended.t_ms, 100);
   const auto events = parse_event_script(out.str(), "recorded");
