@@ -97,7 +97,7 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
 
 int run_bridge(const RunOptions& opt) {
   Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
-  const std::int64_t rate_mhz = config.rate.millihertz;
+  const std::int64_t rate_millihertz = config.rate.millihertz;
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
   // write error, never a signal that ends the run between two frames. (The
@@ -148,7 +148,7 @@ int run_bridge(const RunOptions& opt) {
   initial.code = config.code;
   initial.center = engine.center;
   initial.pad_names = engine.pad_names;
-  initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
+  initial.rate_hz = static_cast<double>(rate_millihertz) / 1000.0;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
@@ -165,7 +165,7 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   RealClock clock;
-  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_millihertz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());

@@ -24,7 +24,10 @@ namespace andros::run {
 
 /// The first record's kind: a file whose first line is `0 andros-session ...` is a session.
 inline constexpr std::string_view kSessionMagic = "andros-session";
-inline constexpr int kSessionFormat = 1;
+/// The format written. 2: the settings' rate is `rate_millihertz`; format 1
+/// named it `rate_mhz` (read as megahertz by everyone), and is still read.
+inline constexpr int kSessionFormat = 2;
+inline constexpr int kOldestSessionFormat = 1;
 inline constexpr std::string_view kSessionExtension = ".andros-session";
 
 /// True when text (a file's first line, or more) starts a session.
