@@ -18,7 +18,7 @@
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
 #include "andros/run/session.hpp"
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 #include "run_service.hpp"
 
 namespace andros::cli {

@@ -82,7 +82,7 @@ proc.send_signal(signal.SIGTSTP)
 ok = ok and wait_stopped(proc)
 time.sleep(0.4)
 proc.send_signal(signal.SIGCONT)
-n = len(port.snapshot())
+n = len(port.received())
 ok = ok and port.wait(lambda f: len(f) >= n + 10, 5)
 proc.send_signal(signal.SIGTERM)
 ok = wait_exit(proc, 10) == 0 and ok

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "andros/input/events.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

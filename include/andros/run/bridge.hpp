@@ -15,7 +15,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/input/input_source.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "andros/base/sha256.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/link/link_status.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/bridge.hpp"

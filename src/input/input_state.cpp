@@ -1,4 +1,4 @@
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 #include "andros/base/text.hpp"
 

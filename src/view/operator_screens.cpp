@@ -1,4 +1,6 @@
-#include "andros/view/status_view.hpp"
+// The pieces both screens draw (switch groups, selectors, gauges) and
+// `monitor`'s screen; `run`'s is run_screen.cpp.
+#include "andros/view/operator_screens.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -113,7 +115,7 @@ std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
           gauge("light", byte_of(data, "light"), std::nullopt), Line("  frame     " + protocol::to_hex(data))};
 }
 
-Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& v, bool live, TermSize size) {
+Screen render_monitor_screen(std::string_view source, const link::VehicleStatus& v, bool live, TermSize size) {
   Screen screen;
   screen.pin(Line("andros-bridge monitor", Style::kBold).add("  " + std::string(source)));
   if (live) {
