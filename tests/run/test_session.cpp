@@ -200,10 +200,12 @@ std::string session_text(const std::string& header, const SessionSettings& setti
 }
 
 SessionSettings small_settings() {
-  return SessionSettings{.robot = "HD1",
-                         .mapping_file = "/m/hd1.yaml",
-                         .rate_millihertz = 12'500,
-                         .sources = {{"/m/hd1.yaml", "robot: HD1\n"}}};
+  SessionSettings s;
+  s.robot = "HD1";
+  s.mapping_file = "/m/hd1.yaml";
+  s.rate_millihertz = 12'500;
+  s.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
+  return s;
 }
 
 // The rate is written in millihertz under a name that says so.
