@@ -12,6 +12,7 @@
 
 namespace {
 
+using andros::kNsPerSecond;
 using andros::monotonic_ns;
 
 struct Phase {
@@ -37,7 +38,7 @@ Phase run_phase(double seconds, Work&& work) {
     andros::sleep_until_ns_uninterrupted(start + kGrid.tick_ns(k));
     work(k * 40);
   }
-  return Phase{static_cast<double>(monotonic_ns() - start) / 1e9, cpu_seconds() - cpu0, ticks};
+  return Phase{static_cast<double>(monotonic_ns() - start) / kNsPerSecond, cpu_seconds() - cpu0, ticks};
 }
 
 void print(const char* name, const Phase& p) {

@@ -34,8 +34,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // error at the line that set it.
     andros::timing::check_rate_fits(config.rate, config.baud);
     const auto millihertz = config.rate.millihertz;
-    check(millihertz >= 1000 &&
-          millihertz * andros::timing::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
+    check(millihertz >= andros::timing::kMillihertzPerHz &&
+          millihertz * andros::timing::kBitsPerFrame <=
+              static_cast<std::int64_t>(config.baud) * andros::timing::kMillihertzPerHz);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" && e.pos().line >= 1);
   }

@@ -148,7 +148,7 @@ int run_bridge(const RunOptions& opt) {
   initial.code = config.code;
   initial.center = engine.center;
   initial.pad_names = engine.pad_names;
-  initial.rate_hz = static_cast<double>(rate_millihertz) / 1000.0;
+  initial.rate_hz = static_cast<double>(rate_millihertz) / timing::kMillihertzPerHz;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only

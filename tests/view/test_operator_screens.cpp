@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "andros/base/clock.hpp"
 #include "andros/timing/frame_timing.hpp"
 #include "andros/view/operator_screens.hpp"
 
@@ -95,8 +96,8 @@ TEST(OperatorScreens, StateLineNamesTheInputsHeldBackUntilAtRest) {
 
 TEST(FrameTiming, MeasuresRateAndJitter) {
   timing::FrameTiming t;
-  const std::int64_t p = 40'000'000;
-  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
+  const std::int64_t p = 40 * kNsPerMs;
+  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : kNsPerMs));
   const auto s = t.summary(49 * p);
   EXPECT_EQ(s.count, 50u);
   EXPECT_NEAR(s.rate_hz, 25.0, 0.02);  // 1 / the mean period
