@@ -27,8 +27,8 @@ constexpr double kPeriodMs = static_cast<double>(kMsPerSecond) / kRate;
 
 protocol::DataBytes neutral_frame() {
   protocol::ControlState s;
-  s[protocol::signal_id("drive")] = 128;
-  s[protocol::signal_id("pivot")] = 128;
+  s[protocol::signal_id("drive")] = protocol::kNeutralCentre;
+  s[protocol::signal_id("pivot")] = protocol::kNeutralCentre;
   s[protocol::signal_id("battery")] = 0xCC;
   return protocol::FrameBuilder(0x01).build(s);
 }

@@ -31,7 +31,9 @@ constexpr std::int64_t kWaitNs = 5'000'000'000;  ///< the bound on every wait
 /// Deadman pressed fresh at 100 ms, full drive from 200 ms.
 constexpr const char* kDrive = "0 connect pad\n100 button leftshoulder 1\n200 axis lefty -32768\n";
 
-bool is_neutral(const protocol::DataBytes& d) { return d[7] == 128 && d[6] == 128 && (d[0] & 0x02) == 0; }
+bool is_neutral(const protocol::DataBytes& d) {
+  return d[7] == protocol::kNeutralCentre && d[6] == protocol::kNeutralCentre && (d[0] & 0x02) == 0;
+}
 
 double seconds_of(const timeval& tv) { return static_cast<double>(tv.tv_sec) + static_cast<double>(tv.tv_usec) / 1e6; }
 

@@ -15,6 +15,8 @@ namespace {
 using andros::kNsPerSecond;
 using andros::monotonic_ns;
 
+constexpr std::int64_t kAxisValues = andros::input::kAxisMax - andros::input::kAxisMin + 1;
+
 struct Phase {
   double wall_s = 0;
   double cpu_s = 0;
@@ -57,7 +59,8 @@ int main(int argc, char** argv) {
   const Phase pumped = run_phase(seconds, [&](std::int64_t t) { rig.input.pump(state, t); });
   // The operator holding a stick that moves every tick.
   const Phase moving = run_phase(seconds, [&](std::int64_t t) {
-    SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY, static_cast<Sint16>((t * 97) % 65536 - 32768));
+    SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY,
+                               static_cast<Sint16>((t * 97) % kAxisValues + andros::input::kAxisMin));
     rig.input.pump(state, t);
   });
   if (!state.connected()) {

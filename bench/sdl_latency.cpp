@@ -92,7 +92,8 @@ int main(int argc, char** argv) {
     input.pump(state, k * 40);
     const std::int64_t seen = monotonic_ns();
     andros::protocol::ControlState control;
-    control[andros::protocol::signal_id("drive")] = static_cast<std::uint8_t>(128 + state.axis(kLeftY) / 256);
+    control[andros::protocol::signal_id("drive")] =
+        static_cast<std::uint8_t>(andros::protocol::kNeutralCentre + state.axis(kLeftY) / 256);
     const auto frame = andros::protocol::encode(builder.build(control));
     if (write(slave, frame.data(), frame.size()) != static_cast<ssize_t>(frame.size())) {
       std::perror("write");

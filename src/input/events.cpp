@@ -145,7 +145,7 @@ std::optional<InputEvent> EventReader::next() {
       const auto key = parse_axis_name(arg(1).text);
       if (!key) throw fail(arg(1), "unknown axis " + quote(arg(1).text));
       ev.key = *key;
-      ev.value = static_cast<int>(parse_integer(arg(2).text, -32768, 32767, "axis value", at(arg(2))));
+      ev.value = static_cast<int>(parse_integer(arg(2).text, kAxisMin, kAxisMax, "axis value", at(arg(2))));
     } else if (kind.text == "hat") {
       want_args(2, "hat N centered|up|down|left|right|leftup|leftdown|rightup|rightdown");
       ev.type = T::kHat;

@@ -46,6 +46,11 @@ inline constexpr std::array<std::string_view, 4> kHatDirectionNames = {"up", "ri
 
 inline constexpr int kMaxJoystickIndex = 255;
 
+/// An axis's range as SDL reports it (Sint16): -32768 is one end, 32767 the
+/// other, so that the two halves differ by one (docs/mapping.md).
+inline constexpr int kAxisMin = -32768;
+inline constexpr int kAxisMax = 32767;
+
 enum class InputKind : std::uint8_t {
   kPadButton,  ///< index into kPadButtonNames
   kPadAxis,    ///< index into kPadAxisNames

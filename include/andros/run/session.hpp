@@ -16,6 +16,7 @@
 #include "andros/base/sha256.hpp"
 #include "andros/input/input_state.hpp"
 #include "andros/link/link_status.hpp"
+#include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/operating_state.hpp"
@@ -64,7 +65,7 @@ struct SessionSettings {
   std::int64_t rate_millihertz = 0;
   bool weapons = false;
   std::uint8_t code = 0;
-  int center = 128;
+  int center = mapping::kDefaultCenter;
   std::string port;
   int baud = 0;
   std::string input;
