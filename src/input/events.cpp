@@ -149,7 +149,7 @@ std::optional<InputEvent> EventReader::next() {
     } else if (kind.text == "hat") {
       want_args(2, "hat N centered|up|down|left|right|leftup|leftdown|rightup|rightdown");
       ev.type = T::kHat;
-      const auto hat = parse_integer(arg(1).text, 0, kMaxJoystickIndex / 4, "hat number", at(arg(1)));
+      const auto hat = parse_integer(arg(1).text, 0, kMaxHatIndex, "hat number", at(arg(1)));
       ev.key = InputKey{InputKind::kHat, static_cast<std::uint16_t>(hat * 4)};
       bool found = false;
       for (const auto& [name, mask] : kHatValues) {

@@ -45,6 +45,8 @@ inline constexpr std::array<std::string_view, 6> kPadAxisNames = {"leftx",  "lef
 inline constexpr std::array<std::string_view, 4> kHatDirectionNames = {"up", "right", "down", "left"};
 
 inline constexpr int kMaxJoystickIndex = 255;
+/// A hat's four directions are buttons hat * 4 + direction, within kMaxJoystickIndex.
+inline constexpr int kMaxHatIndex = kMaxJoystickIndex / 4;
 
 /// An axis's range as SDL reports it (Sint16): -32768 is one end, 32767 the
 /// other, so that the two halves differ by one (docs/mapping.md).
