@@ -30,7 +30,7 @@ std::vector<Arrival> read_arrivals(int fd, std::int64_t stop_ns, std::size_t max
   std::vector<Arrival> out;
   std::uint8_t buf[512];
   while (out.size() < max_frames) {
-    const auto left_ms = (stop_ns - monotonic_ns()) / 1'000'000;
+    const auto left_ms = (stop_ns - monotonic_ns()) / kNsPerMs;
     if (left_ms <= 0) break;
     pollfd p{fd, POLLIN, 0};
     // Short polls while waiting for a child's exit, so that its time is measured closely.

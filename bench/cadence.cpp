@@ -23,12 +23,12 @@ namespace {
 using namespace andros;
 
 constexpr int kRate = 25;
-constexpr double kPeriodMs = 1000.0 / kRate;
+constexpr double kPeriodMs = static_cast<double>(kMsPerSecond) / kRate;
 
 protocol::DataBytes neutral_frame() {
   protocol::ControlState s;
-  s[protocol::signal_id("drive")] = 128;
-  s[protocol::signal_id("pivot")] = 128;
+  s[protocol::signal_id("drive")] = protocol::kNeutralCentre;
+  s[protocol::signal_id("pivot")] = protocol::kNeutralCentre;
   s[protocol::signal_id("battery")] = 0xCC;
   return protocol::FrameBuilder(0x01).build(s);
 }
@@ -61,7 +61,7 @@ Result analyse(const std::vector<bench::Arrival>& a) {
   std::vector<double> periods;
   std::vector<double> devs;
   for (std::size_t i = 1; i < a.size(); ++i) {
-    const double p = static_cast<double>(a[i].t_ns - a[i - 1].t_ns) / 1e6;
+    const double p = static_cast<double>(a[i].t_ns - a[i - 1].t_ns) / kNsPerMs;
     periods.push_back(p);
     devs.push_back(std::abs(p - kPeriodMs));
   }
@@ -72,7 +72,7 @@ Result analyse(const std::vector<bench::Arrival>& a) {
   double st = 0, so = 0, stt = 0, sto = 0;
   const double n = static_cast<double>(a.size());
   for (const auto& f : a) {
-    const double t = static_cast<double>(f.t_ns - a[0].t_ns) / 1e6;
+    const double t = static_cast<double>(f.t_ns - a[0].t_ns) / kNsPerMs;
     const double off = t - std::round(t / kPeriodMs) * kPeriodMs;
     st += t;
     so += off;
@@ -100,12 +100,13 @@ int main(int argc, char** argv) {
   FixedFrames frames;
   link::SerialLink link(bridge_pty.path, 9600);
   RealClock clock;
-  run::Bridge bridge(clock, input, frames, link, run::BridgeOptions{.rate_millihertz = kRate * 1000});
+  run::Bridge bridge(clock, input, frames, link,
+                     run::BridgeOptions{.rate_millihertz = kRate * timing::kMillihertzPerHz});
   UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
   link::configure_raw_8n1(plain_fd.get(), 9600);
   const protocol::Frame frame = protocol::encode(neutral_frame());
 
-  const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * 1'000'000'000;
+  const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * kNsPerSecond;
   StopRequest stop;
   std::vector<bench::Arrival> bridge_got;
   std::vector<bench::Arrival> plain_got;

@@ -31,7 +31,9 @@ constexpr std::int64_t kWaitNs = 5'000'000'000;  ///< the bound on every wait
 /// Deadman pressed fresh at 100 ms, full drive from 200 ms.
 constexpr const char* kDrive = "0 connect pad\n100 button leftshoulder 1\n200 axis lefty -32768\n";
 
-bool is_neutral(const protocol::DataBytes& d) { return d[7] == 128 && d[6] == 128 && (d[0] & 0x02) == 0; }
+bool is_neutral(const protocol::DataBytes& d) {
+  return d[7] == protocol::kNeutralCentre && d[6] == protocol::kNeutralCentre && (d[0] & 0x02) == 0;
+}
 
 double seconds_of(const timeval& tv) { return static_cast<double>(tv.tv_sec) + static_cast<double>(tv.tv_usec) / 1e6; }
 
@@ -40,7 +42,7 @@ void first_frame(const std::string& bin) {
   for (int i = 0; i < kStartRuns; ++i) {
     bench::BridgeProcess run(bin, "0 connect pad\n200 end\n");
     const auto got = bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 1);
-    if (!got.empty()) ms.push_back(static_cast<double>(got[0].t_ns - run.t0) / 1e6);
+    if (!got.empty()) ms.push_back(static_cast<double>(got[0].t_ns - run.t0) / kNsPerMs);
     bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, SIZE_MAX, run.pid);  // let it finish
     bench::wait_child(run.pid, nullptr);
   }
@@ -62,7 +64,7 @@ void controller_loss(const std::string& bin) {
   }
   const bool drove = got.size() > 25 && !is_neutral(got[25].data);
   const double after_ms =
-      first_neutral > 0 ? static_cast<double>(got[first_neutral].t_ns - got[0].t_ns) / 1e6 - 1010.0 : 0;
+      first_neutral > 0 ? static_cast<double>(got[first_neutral].t_ns - got[0].t_ns) / kNsPerMs - 1010.0 : 0;
   std::printf(
       "| controller loss to neutral | tick %zu (t = %.0f ms) is neutral, %zu tick(s) after the loss, "
       "%.1f ms after it | the next tick | %s |\n",
@@ -77,7 +79,7 @@ void shutdown_time(const std::string& bin) {
   kill(run.pid, SIGTERM);
   const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);
   const int status = bench::wait_child(run.pid, nullptr);
-  const double ms = static_cast<double>(monotonic_ns() - t_term) / 1e6;
+  const double ms = static_cast<double>(monotonic_ns() - t_term) / kNsPerMs;
   std::size_t neutral_tail = 0;
   for (auto it = tail.rbegin(); it != tail.rend() && is_neutral(it->data); ++it) ++neutral_tail;
   std::printf(
@@ -100,7 +102,7 @@ void first_neutral_after_stop(const std::string& bin) {
     bench::wait_child(run.pid, nullptr);
     for (const auto& a : tail) {
       if (is_neutral(a.data)) {
-        ms.push_back(static_cast<double>(a.t_ns - t_term) / 1e6);
+        ms.push_back(static_cast<double>(a.t_ns - t_term) / kNsPerMs);
         break;
       }
     }
@@ -126,7 +128,7 @@ void replug(const std::string& bin) {
   const auto t_plug = monotonic_ns();
   if (symlink(second.path.c_str(), link.c_str()) != 0) return;
   const auto got = bench::read_arrivals(second.master.get(), t_plug + kWaitNs, 1);
-  const double ms = got.empty() ? -1 : static_cast<double>(got[0].t_ns - t_plug) / 1e6;
+  const double ms = got.empty() ? -1 : static_cast<double>(got[0].t_ns - t_plug) / kNsPerMs;
   kill(run.pid, SIGTERM);
   bench::read_arrivals(second.master.get(), t_plug + kWaitNs, SIZE_MAX, run.pid);
   bench::wait_child(run.pid, nullptr);
@@ -138,11 +140,11 @@ void replug(const std::string& bin) {
 void cost(const std::string& bin, int seconds, bool sim) {
   bench::BridgeProcess run(bin, std::string(kDrive) + std::to_string(seconds * 1000) + " end\n", sim ? "sim" : "");
   if (!sim)
-    bench::read_arrivals(run.pty.master.get(), run.t0 + std::int64_t{seconds} * 1'000'000'000 + kWaitNs, SIZE_MAX,
+    bench::read_arrivals(run.pty.master.get(), run.t0 + std::int64_t{seconds} * kNsPerSecond + kWaitNs, SIZE_MAX,
                          run.pid);
   rusage usage{};
   bench::wait_child(run.pid, &usage);
-  const double wall = static_cast<double>(monotonic_ns() - run.t0) / 1e9;
+  const double wall = static_cast<double>(monotonic_ns() - run.t0) / kNsPerSecond;
   const double user = seconds_of(usage.ru_utime);
   const double sys = seconds_of(usage.ru_stime);
   const double pct = 100.0 * (user + sys) / wall;

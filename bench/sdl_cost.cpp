@@ -12,7 +12,10 @@
 
 namespace {
 
+using andros::kNsPerSecond;
 using andros::monotonic_ns;
+
+constexpr std::int64_t kAxisValues = andros::input::kAxisMax - andros::input::kAxisMin + 1;
 
 struct Phase {
   double wall_s = 0;
@@ -37,7 +40,7 @@ Phase run_phase(double seconds, Work&& work) {
     andros::sleep_until_ns_uninterrupted(start + kGrid.tick_ns(k));
     work(k * 40);
   }
-  return Phase{static_cast<double>(monotonic_ns() - start) / 1e9, cpu_seconds() - cpu0, ticks};
+  return Phase{static_cast<double>(monotonic_ns() - start) / kNsPerSecond, cpu_seconds() - cpu0, ticks};
 }
 
 void print(const char* name, const Phase& p) {
@@ -56,7 +59,8 @@ int main(int argc, char** argv) {
   const Phase pumped = run_phase(seconds, [&](std::int64_t t) { rig.input.pump(state, t); });
   // The operator holding a stick that moves every tick.
   const Phase moving = run_phase(seconds, [&](std::int64_t t) {
-    SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY, static_cast<Sint16>((t * 97) % 65536 - 32768));
+    SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY,
+                               static_cast<Sint16>((t * 97) % kAxisValues + andros::input::kAxisMin));
     rig.input.pump(state, t);
   });
   if (!state.connected()) {

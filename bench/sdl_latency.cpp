@@ -23,6 +23,8 @@
 
 namespace {
 
+using andros::kNsPerMs;
+using andros::kNsPerSecond;
 using andros::monotonic_ns;
 using andros::bench::quantile;
 
@@ -38,7 +40,7 @@ void row(const char* name, const std::vector<double>& ms) {
 /// The vehicle's side: waits (bounded) until a whole frame is readable on the
 /// master, notes when, and consumes it. 0 when it never came.
 std::int64_t wait_for_frame(int master) {
-  const std::int64_t give_up = monotonic_ns() + 1'000'000'000;
+  const std::int64_t give_up = monotonic_ns() + kNsPerSecond;
   int queued = 0;
   while (monotonic_ns() < give_up) {
     if (ioctl(master, FIONREAD, &queued) == 0 && queued >= static_cast<int>(andros::protocol::kFrameSize)) {
@@ -90,7 +92,8 @@ int main(int argc, char** argv) {
     input.pump(state, k * 40);
     const std::int64_t seen = monotonic_ns();
     andros::protocol::ControlState control;
-    control[andros::protocol::signal_id("drive")] = static_cast<std::uint8_t>(128 + state.axis(kLeftY) / 256);
+    control[andros::protocol::signal_id("drive")] =
+        static_cast<std::uint8_t>(andros::protocol::kNeutralCentre + state.axis(kLeftY) / 256);
     const auto frame = andros::protocol::encode(builder.build(control));
     if (write(slave, frame.data(), frame.size()) != static_cast<ssize_t>(frame.size())) {
       std::perror("write");
@@ -99,8 +102,8 @@ int main(int argc, char** argv) {
     frame_done[static_cast<std::size_t>(k)] = wait_for_frame(master);
     if (k == 0) continue;  // the connect's tick: initial state, not a change
     if (state.axis(kLeftY) != value) ++missed;
-    set_to_state.push_back(static_cast<double>(seen - set) / 1e6);
-    tick_to_state.push_back(static_cast<double>(seen - tick_at[static_cast<std::size_t>(k)]) / 1e6);
+    set_to_state.push_back(static_cast<double>(seen - set) / kNsPerMs);
+    tick_to_state.push_back(static_cast<double>(seen - tick_at[static_cast<std::size_t>(k)]) / kNsPerMs);
   }
   // Loss: unplug between ticks; how many ticks until the disconnect?
   const int index = [&] {
@@ -121,10 +124,10 @@ int main(int argc, char** argv) {
   for (long k = 1; k <= ticks; ++k) {
     const auto done = frame_done[static_cast<std::size_t>(k)];
     if (done == 0) continue;
-    tick_to_bytes.push_back(static_cast<double>(done - tick_at[static_cast<std::size_t>(k)]) / 1e6);
-    deadline_to_bytes.push_back(static_cast<double>(done - (start + kGrid.tick_ns(k))) / 1e6);
+    tick_to_bytes.push_back(static_cast<double>(done - tick_at[static_cast<std::size_t>(k)]) / kNsPerMs);
+    deadline_to_bytes.push_back(static_cast<double>(done - (start + kGrid.tick_ns(k))) / kNsPerMs);
     wake_lateness.push_back(static_cast<double>(tick_at[static_cast<std::size_t>(k)] - (start + kGrid.tick_ns(k))) /
-                            1e6);
+                            kNsPerMs);
   }
 
   std::printf("| %-34s | %8s | %8s | %8s | %5s |\n", "latency (ms)", "median", "p99", "max", "n");

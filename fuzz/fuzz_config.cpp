@@ -33,8 +33,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Merged with the flags' defaults: either a rate the link carries or an
     // error at the line that set it.
     andros::timing::check_rate_fits(config.rate, config.baud);
-    const auto mhz = config.rate.millihertz;
-    check(mhz >= 1000 && mhz * andros::timing::kBitsPerFrame <= static_cast<std::int64_t>(config.baud) * 1000);
+    const auto millihertz = config.rate.millihertz;
+    check(millihertz >= andros::timing::kMillihertzPerHz &&
+          millihertz * andros::timing::kBitsPerFrame <=
+              static_cast<std::int64_t>(config.baud) * andros::timing::kMillihertzPerHz);
   } catch (const andros::InputError& e) {
     check(e.pos().file == "fuzz.conf" && e.pos().line >= 1);
   }

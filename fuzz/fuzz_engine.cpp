@@ -70,7 +70,7 @@ input::InputEvent next_event(const std::uint8_t* p, std::int64_t t) {
       e.type = input::InputEvent::Type::kAxis;
       e.key =
           input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(p[1] % input::kPadAxisNames.size())};
-      e.value = static_cast<int>(p[2] * 257) - 32768;
+      e.value = static_cast<int>(p[2] * 257) + input::kAxisMin;  // 0..255 over the whole axis
       break;
   }
   return e;

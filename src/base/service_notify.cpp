@@ -27,14 +27,14 @@ bool parse_number(std::string_view text, T& out) {
 /// WATCHDOG_USEC in ns, clamped to kMaxWatchdogNs (a number too long for
 /// 64 bits too); 0 for anything that is not a number of microseconds.
 std::int64_t watchdog_period_ns(std::string_view usec_text) {
-  constexpr std::uint64_t kMaxUsec = ServiceNotifier::kMaxWatchdogNs / 1000;
+  constexpr std::uint64_t kMaxUsec = ServiceNotifier::kMaxWatchdogNs / kNsPerUs;
   std::uint64_t usec = 0;
   const char* const last = usec_text.data() + usec_text.size();
   const auto [end, error] = std::from_chars(usec_text.data(), last, usec);
   if (usec_text.empty() || end != last) return 0;
   if (error == std::errc::result_out_of_range) return ServiceNotifier::kMaxWatchdogNs;
   if (error != std::errc()) return 0;
-  return usec >= kMaxUsec ? ServiceNotifier::kMaxWatchdogNs : static_cast<std::int64_t>(usec) * 1000;
+  return usec >= kMaxUsec ? ServiceNotifier::kMaxWatchdogNs : static_cast<std::int64_t>(usec) * kNsPerUs;
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 namespace andros {
 
 int write_fully(int fd, std::string_view text, int timeout_ms) {
-  const std::int64_t deadline = monotonic_ns() + std::int64_t{timeout_ms} * 1'000'000;
+  const std::int64_t deadline = monotonic_ns() + std::int64_t{timeout_ms} * kNsPerMs;
   std::size_t done = 0;
   while (done < text.size()) {
     const long n = ::write(fd, text.data() + done, text.size() - done);
@@ -23,7 +23,7 @@ int write_fully(int fd, std::string_view text, int timeout_ms) {
     if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) return errno;
     int wait_ms = -1;
     if (timeout_ms >= 0) {
-      const std::int64_t left_ms = (deadline - monotonic_ns()) / 1'000'000;
+      const std::int64_t left_ms = (deadline - monotonic_ns()) / kNsPerMs;
       if (left_ms <= 0) return ETIMEDOUT;
       wait_ms = static_cast<int>(left_ms);
     }

@@ -14,7 +14,7 @@
 #include "andros/input/sdl_input.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/view/inputs_view.hpp"
-#include "andros/view/status_display.hpp"
+#include "andros/view/terminal_display.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
 
@@ -65,7 +65,7 @@ int run_inputs(const InputsOptions& opt) {
   }
   auto& input = *sdl;
   view::InputsBoard board(std::move(uses), "andros-bridge inputs: " + input.selection() + " (Ctrl-C ends)\n" + source);
-  std::optional<view::StatusDisplay> display;
+  std::optional<view::TerminalDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) {
     display.emplace([&board](view::TermSize size) { return view::text_screen(board.compose(size)); },
                     kRedrawsPerSecond);

@@ -21,8 +21,8 @@
 #include "andros/cli/command_line.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/link/vehicle_view.hpp"
-#include "andros/view/status_display.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
+#include "andros/view/terminal_display.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {
@@ -34,7 +34,7 @@ struct MonitorOptions {
 };
 
 constexpr int kRedrawsPerSecond = 4;
-constexpr std::int64_t kQuietNs = 1'000'000'000;  ///< no frame for this long: the stream stopped
+constexpr std::int64_t kQuietNs = kNsPerSecond;  ///< no frame for this long: the stream stopped
 /// After a stop, what has already arrived is still read, up to these bounds.
 constexpr std::size_t kDrainBytes = 256 * 1024;
 constexpr std::int64_t kDrainNs = 200'000'000;
@@ -42,7 +42,7 @@ constexpr std::int64_t kDrainNs = 200'000'000;
 /// Off a terminal: one line when frames start or stop arriving or errors grow.
 class MonitorLog {
  public:
-  void update(const link::VehicleSnapshot& v, std::int64_t now_ns, std::int64_t last_frame_ns) {
+  void update(const link::VehicleStatus& v, std::int64_t now_ns, std::int64_t last_frame_ns) {
     const bool flowing = v.stats.frames > 0 && now_ns - last_frame_ns < kQuietNs;
     const auto errors = v.stats.bad_checksum + v.stats.invalid;
     if (flowing != flowing_) {
@@ -72,7 +72,7 @@ int monitor_file(const std::string& path, link::VehicleView& view) {
   }
   if (n < 0) throw RuntimeError(path + ": read error: " + std::strerror(errno));
   view.finish();
-  std::fputs(view::render_monitor_view(path, view.snapshot(0), false, view::TermSize{}).text().c_str(), stdout);
+  std::fputs(view::render_monitor_screen(path, view.status(0), false, view::TermSize{}).text().c_str(), stdout);
   return kExitOk;
 }
 
@@ -82,13 +82,13 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   StopRequest stop(kStopSignals);  // before the display's thread starts
   std::mutex mutex;
   const bool interactive = view::is_interactive(STDOUT_FILENO);
-  std::optional<view::StatusDisplay> display;
+  std::optional<view::TerminalDisplay> display;
   if (interactive) {
     display.emplace(
         [&](view::TermSize size) {
           const auto now = monotonic_ns();
           const std::lock_guard lock(mutex);
-          return view::render_monitor_view(name, view.snapshot(now), true, size);
+          return view::render_monitor_screen(name, view.status(now), true, size);
         },
         kRedrawsPerSecond);
     display->start();
@@ -117,7 +117,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
     }
     if (!interactive) {
       const std::lock_guard lock(mutex);
-      log.update(view.snapshot(now), now, last_frame_ns);
+      log.update(view.status(now), now, last_frame_ns);
     }
   }
   {
@@ -138,7 +138,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   if (display) {
     display->stop();  // draws the last screen, taking the lock itself
   } else {
-    const auto screen = view::render_monitor_view(name, view.snapshot(monotonic_ns()), true, view::TermSize{});
+    const auto screen = view::render_monitor_screen(name, view.status(monotonic_ns()), true, view::TermSize{});
     std::fputs(screen.text().c_str(), stdout);
   }
   return failed ? kExitRuntime : kExitOk;

@@ -20,8 +20,8 @@
 #include "andros/link/tcp_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/feedback.hpp"
-#include "andros/view/run_status.hpp"
-#include "andros/view/status_display.hpp"
+#include "andros/view/status_board.hpp"
+#include "andros/view/terminal_display.hpp"
 #include "commands.hpp"
 #include "run_input.hpp"
 #include "run_recording.hpp"
@@ -78,7 +78,7 @@ std::string failed_neutral_frames(const run::ShutdownReport& shut, const std::st
 /// Ctrl-Z, after the neutral frames: the terminal back to the shell, the log
 /// out, then stop until continued (fg, bg, SIGCONT), and redraw. A SIGCONT
 /// during the neutral frames means it does not stop at all.
-void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>& display,
+void suspend_process(JobControlSignals& job, std::optional<view::TerminalDisplay>& display,
                      const run::ShutdownReport& neutral, const std::string& link) {
   if (display) display->stop();
   if (neutral.ok()) {
@@ -97,7 +97,7 @@ void suspend_process(JobControlSignals& job, std::optional<view::StatusDisplay>&
 
 int run_bridge(const RunOptions& opt) {
   Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
-  const std::int64_t rate_mhz = config.rate.millihertz;
+  const std::int64_t rate_millihertz = config.rate.millihertz;
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
   // write error, never a signal that ends the run between two frames. (The
@@ -148,24 +148,24 @@ int run_bridge(const RunOptions& opt) {
   initial.code = config.code;
   initial.center = engine.center;
   initial.pad_names = engine.pad_names;
-  initial.rate_hz = static_cast<double>(rate_mhz) / 1000.0;
+  initial.rate_hz = static_cast<double>(rate_millihertz) / timing::kMillihertzPerHz;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
   const auto compose = [&board, &sim, &recording](view::TermSize size) {
-    view::RunStatus status = board.snapshot();
-    if (sim) status.vehicle = sim->snapshot();
+    view::RunStatus status = board.status();
+    if (sim) status.vehicle = sim->status();
     if (recording) recording->describe(status);
-    return view::render_run_view(status, size);
+    return view::render_run_screen(status, size);
   };
-  std::optional<view::StatusDisplay> display;
+  std::optional<view::TerminalDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   RealClock clock;
-  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_mhz});
+  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_millihertz});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
@@ -187,12 +187,12 @@ int run_bridge(const RunOptions& opt) {
     board.observe(r, *input);  // on the loop's thread, which owns SDL: it asks what kind a new controller is
     feedback.observe(run::feedback_status(r));
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
-    if (service.active()) service.observe(r, board.snapshot());
+    if (service.active()) service.observe(r, board.status());
   });
   display.reset();
   service.stopping();
 
-  const auto end = board.snapshot();
+  const auto end = board.status();
   std::string why = "end of the input";
   if (stop.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(stop.signal_number());
   if (recording) recording->finish(why);
@@ -200,7 +200,7 @@ int run_bridge(const RunOptions& opt) {
                end.link.busy, end.link.down);
   if (sim) {
     sim->stop();
-    const auto v = sim->snapshot();
+    const auto v = sim->status();
     spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames, v.stats.valid,
                  v.stats.bad_checksum, v.stats.invalid);
   }

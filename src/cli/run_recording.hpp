@@ -11,7 +11,7 @@
 #include "andros/input/input_source.hpp"
 #include "andros/link/link.hpp"
 #include "andros/run/recorder.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
 #include "run_reload.hpp"
 #include "session_files.hpp"
 

@@ -58,8 +58,8 @@ std::string needs_restart(const Settings& running, const Settings& fresh) {
   note("serialport", running.port, fresh.port);
   note("baudrate", std::to_string(running.baud), std::to_string(fresh.baud));
   note("code", fmt::format("{:02X}", running.code), fmt::format("{:02X}", fresh.code));
-  note("rate", fmt::format("{:g}", static_cast<double>(running.rate.millihertz) / 1000.0),
-       fmt::format("{:g}", static_cast<double>(fresh.rate.millihertz) / 1000.0));
+  note("rate", fmt::format("{:g}", static_cast<double>(running.rate.millihertz) / timing::kMillihertzPerHz),
+       fmt::format("{:g}", static_cast<double>(fresh.rate.millihertz) / timing::kMillihertzPerHz));
   note("input", running.input, fresh.input);
   note("supervisor", running.supervisor, fresh.supervisor);
   if (changed.empty()) return {};

@@ -18,7 +18,7 @@
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
 #include "andros/run/session.hpp"
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 #include "run_service.hpp"
 
 namespace andros::cli {
@@ -27,10 +27,10 @@ namespace andros::cli {
 /// view and the rumble need from the mapping.
 struct EngineSetup {
   std::unique_ptr<run::FrameSource> frames;
-  std::string robot;         ///< its robot type (the settings' when the mapping names none)
-  std::string mapping_file;  ///< the file loaded
-  int center = 128;          ///< drive and pivot's rest value (for the gauges)
-  bool pad_names = true;     ///< it reads game-controller names (a plain joystick sends none)
+  std::string robot;                     ///< its robot type (the settings' when the mapping names none)
+  std::string mapping_file;              ///< the file loaded
+  int center = mapping::kDefaultCenter;  ///< drive and pivot's rest value (for the gauges)
+  bool pad_names = true;                 ///< it reads game-controller names (a plain joystick sends none)
   mapping::FeedbackTable feedback;
   bool supervisor_buttons = false;          ///< the mapping has a `supervisor:` section
   std::vector<run::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
@@ -143,7 +143,7 @@ class RunReload {
   struct Applied {
     std::string robot;
     std::string mapping_file;
-    int center = 128;
+    int center = mapping::kDefaultCenter;
     std::vector<run::MappingSource> sources;
   };
   [[nodiscard]] const Applied& applied() const { return applied_; }

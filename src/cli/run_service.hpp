@@ -7,7 +7,7 @@
 
 #include "andros/base/service_notify.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
 
 namespace andros::cli {
 

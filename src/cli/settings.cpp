@@ -3,7 +3,7 @@
 #include <array>
 
 #include "andros/base/text.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::cli {
 namespace {

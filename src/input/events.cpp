@@ -145,11 +145,11 @@ std::optional<InputEvent> EventReader::next() {
       const auto key = parse_axis_name(arg(1).text);
       if (!key) throw fail(arg(1), "unknown axis " + quote(arg(1).text));
       ev.key = *key;
-      ev.value = static_cast<int>(parse_integer(arg(2).text, -32768, 32767, "axis value", at(arg(2))));
+      ev.value = static_cast<int>(parse_integer(arg(2).text, kAxisMin, kAxisMax, "axis value", at(arg(2))));
     } else if (kind.text == "hat") {
       want_args(2, "hat N centered|up|down|left|right|leftup|leftdown|rightup|rightdown");
       ev.type = T::kHat;
-      const auto hat = parse_integer(arg(1).text, 0, kMaxJoystickIndex / 4, "hat number", at(arg(1)));
+      const auto hat = parse_integer(arg(1).text, 0, kMaxHatIndex, "hat number", at(arg(1)));
       ev.key = InputKey{InputKind::kHat, static_cast<std::uint16_t>(hat * 4)};
       bool found = false;
       for (const auto& [name, mask] : kHatValues) {

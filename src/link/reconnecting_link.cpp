@@ -27,7 +27,7 @@ void ReconnectingLink::fail_open(const std::string& why, std::int64_t now_ns) {
   close_fd();
   if (why != detail_) spdlog::warn("link {}: cannot open: {}; retrying", name_, why);
   detail_ = why;
-  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * 1'000'000;
+  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * kNsPerMs;
   retry_ms_ = std::min(retry_ms_ * 2, max_retry_ms_);
 }
 
@@ -43,7 +43,7 @@ void ReconnectingLink::lose(const std::string& why, std::int64_t now_ns) {
   state_ = LinkState::kConnecting;
   detail_ = why;
   if (now_ns - up_since_ns_ >= kStableNs) retry_ms_ = min_retry_ms_;
-  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * 1'000'000;
+  next_attempt_ns_ = now_ns + static_cast<std::int64_t>(retry_ms_) * kNsPerMs;
   retry_ms_ = std::min(retry_ms_ * 2, max_retry_ms_);
 }
 
@@ -105,7 +105,7 @@ SendResult ReconnectingLink::send(const protocol::Frame& frame, std::int64_t now
 bool ReconnectingLink::drain_and_close(int timeout_ms) {
   bool drained = false;
   if (state_ == LinkState::kUp && fd_) {
-    const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
+    const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * kNsPerMs;
     // Bounded, unlike a bare tcdrain, which waits for ever on a pty nobody reads.
     while (undelivered_bytes() > 0 && monotonic_ns() < deadline) {
       const timespec pause{0, 2'000'000};

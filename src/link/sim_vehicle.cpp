@@ -37,9 +37,9 @@ void SimVehicle::start() {
   pthread_setname_np(thread_.native_handle(), "andros-sim");
 }
 
-VehicleSnapshot SimVehicle::snapshot() const {
+VehicleStatus SimVehicle::status() const {
   const std::lock_guard lock(mutex_);
-  return view_.snapshot(monotonic_ns());
+  return view_.status(monotonic_ns());
 }
 
 bool SimVehicle::read_ready() {

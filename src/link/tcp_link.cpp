@@ -150,7 +150,7 @@ int TcpLink::backlog(std::int64_t now_ns, std::string& stalled) {
     const linger abort{1, 0};
     setsockopt(fd_.get(), SOL_SOCKET, SO_LINGER, &abort, sizeof abort);
     suspect_ = true;
-    stalled = "stalled: the server took nothing for " + std::to_string(kTcpStallNs / 1'000'000) + " ms";
+    stalled = "stalled: the server took nothing for " + std::to_string(kTcpStallNs / kNsPerMs) + " ms";
     return 0;
   }
   if (unsent > 0) return unsent;

@@ -11,8 +11,8 @@ void VehicleView::push(std::span<const std::uint8_t> bytes, std::int64_t now_ns)
   });
 }
 
-VehicleSnapshot VehicleView::snapshot(std::int64_t now_ns) const {
-  return VehicleSnapshot{last_, last_valid_, last_errors_, decoder_.stats(), timing_.summary(now_ns)};
+VehicleStatus VehicleView::status(std::int64_t now_ns) const {
+  return VehicleStatus{last_, last_valid_, last_errors_, decoder_.stats(), timing_.summary(now_ns)};
 }
 
 }  // namespace andros::link

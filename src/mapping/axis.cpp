@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "andros/input/input_state.hpp"
+#include "andros/protocol/signals.hpp"
+
 namespace andros::mapping {
 
-double normalise_axis(std::int16_t value) { return value >= 0 ? value / 32767.0 : value / 32768.0; }
+double normalise_axis(std::int16_t value) {
+  return value >= 0 ? value / static_cast<double>(input::kAxisMax) : value / -static_cast<double>(input::kAxisMin);
+}
 
 double shape_axis(double x, const AxisShape& shape) {
   if (shape.invert) x = -x;
@@ -19,12 +24,14 @@ double shape_axis(double x, const AxisShape& shape) {
 long round_half_away(double value) { return std::lround(value); }
 
 std::uint8_t centred_byte(double z, int center) {
-  const long out = z >= 0 ? center + round_half_away(z * (255 - center)) : center + round_half_away(z * center);
-  return static_cast<std::uint8_t>(std::clamp<long>(out, 0, 255));
+  const long out =
+      z >= 0 ? center + round_half_away(z * (protocol::kWholeByteMax - center)) : center + round_half_away(z * center);
+  return static_cast<std::uint8_t>(std::clamp<long>(out, 0, protocol::kWholeByteMax));
 }
 
 std::uint8_t level_byte(double z) {
-  return static_cast<std::uint8_t>(std::clamp<long>(round_half_away(255.0 * z), 0, 255));
+  return static_cast<std::uint8_t>(
+      std::clamp<long>(round_half_away(protocol::kWholeByteMax * z), 0, protocol::kWholeByteMax));
 }
 
 }  // namespace andros::mapping

@@ -10,7 +10,7 @@ namespace andros::mapping {
 namespace {
 
 constexpr std::int64_t kMilli = 1000;
-constexpr std::int64_t kLevelMax = 255 * kMilli;
+constexpr std::int64_t kLevelMax = protocol::kWholeByteMax * kMilli;
 /// For the enable timeout an axis has changed once it has moved this far
 /// (of -32768..32767) from where it was at the last change: a pad's noise
 /// does not keep the bridge enabled, a hand does.

@@ -140,7 +140,7 @@ Binding read_analog_binding(const Reader& r, const YAML::Node& n, Binding b) {
     k.increase = r.button(n["increase"]);
     k.decrease = r.button(n["decrease"]);
     k.rate = static_cast<int>(r.integer(n["rate"], 1, kMaxKnobRate, "rate (units per second)"));
-    if (n["initial"]) k.initial = static_cast<int>(r.integer(n["initial"], 0, 255, "initial"));
+    if (n["initial"]) k.initial = static_cast<int>(r.integer(n["initial"], 0, protocol::kWholeByteMax, "initial"));
     b.inputs.push_back(use(r, n["increase"], k.increase));
     b.inputs.push_back(use(r, n["decrease"], k.decrease));
     b.rule = k;
@@ -357,8 +357,10 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   if (const auto c = root["constants"]) {
     errors.attempt([&] {
       r.expect_keys(c, {"byte12", "battery"}, "constants");
-      if (c["byte12"]) m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, 255, "byte12"));
-      if (c["battery"]) m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, 255, "battery"));
+      if (c["byte12"])
+        m.byte12 = static_cast<std::uint8_t>(r.integer(c["byte12"], 0, protocol::kWholeByteMax, "byte12"));
+      if (c["battery"])
+        m.battery = static_cast<std::uint8_t>(r.integer(c["battery"], 0, protocol::kWholeByteMax, "battery"));
     });
   }
   if (root["deadman"]) {

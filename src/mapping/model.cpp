@@ -11,6 +11,8 @@
 namespace andros::mapping {
 namespace {
 
+using protocol::kWholeByteMax;
+
 std::string quoted(protocol::SignalId id) { return "'" + std::string(protocol::info(id).name) + "'"; }
 
 // Why a signal cannot be the target of a plain button, pair or analog binding.
@@ -102,7 +104,7 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                                               " must return to centre, so bind it to an axis");
                    }
                    check_range(r.rate > 0 && r.rate <= kMaxKnobRate, b.pos, "rate");
-                   check_range(!r.initial || (*r.initial >= 0 && *r.initial <= 255), b.pos, "initial");
+                   check_range(!r.initial || (*r.initial >= 0 && *r.initial <= kWholeByteMax), b.pos, "initial");
                  },
                  [&](const SelectorBinding& r) {
                    check_range(r.positions.size() >= 2, at, "the number of positions");

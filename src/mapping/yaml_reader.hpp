@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "andros/base/error.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/protocol/signals.hpp"
 
 namespace andros::mapping::yaml {

@@ -32,7 +32,7 @@ nlohmann::json settings_json(const SessionSettings& s) {
   for (const auto& f : s.sources) files.push_back({{"path", f.path}, {"sha256", sha256_hex(f.text)}, {"text", f.text}});
   return {{"robot", s.robot},
           {"mapping", s.mapping_file},
-          {"rate_mhz", s.rate_millihertz},
+          {"rate_millihertz", s.rate_millihertz},
           {"weapons", s.weapons},
           {"code", hex_byte(s.code)},
           {"center", s.center},
@@ -274,7 +274,8 @@ SessionSettings parse_settings(const nlohmann::json& j, const SourcePos& pos) {
     SessionSettings s;
     s.robot = j.at("robot").get<std::string>();
     s.mapping_file = j.at("mapping").get<std::string>();
-    s.rate_millihertz = j.at("rate_mhz").get<std::int64_t>();
+    // Format 1 wrote the same value as `rate_mhz`.
+    s.rate_millihertz = j.at(j.contains("rate_millihertz") ? "rate_millihertz" : "rate_mhz").get<std::int64_t>();
     s.weapons = j.at("weapons").get<bool>();
     s.code = parse_code(j.at("code").get<std::string>(), pos);
     s.center = j.at("center").get<int>();
@@ -308,7 +309,10 @@ link::SendResult parse_result(std::string_view w, bool& offered, const SourcePos
 void read_record(std::string_view kind, Fields& f, Session& s, std::optional<SessionSettings>& pending) {
   const auto& pos = f.pos();
   if (kind == kSessionMagic) {
-    if (f.integer() != kSessionFormat) throw InputError(pos, "a session format this program does not read");
+    const auto format = f.integer();
+    if (format < kOldestSessionFormat || format > kSessionFormat) {
+      throw InputError(pos, "a session format this program does not read");
+    }
   } else if (kind == "program") {
     f.word();
     s.version = std::string(f.word());

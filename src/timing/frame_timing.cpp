@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "andros/base/clock.hpp"
+
 namespace andros::timing {
 
 void FrameTiming::add(std::int64_t t_ns) { times_[count_++ % kWindow] = t_ns; }
@@ -24,13 +26,14 @@ TimingSummary FrameTiming::summary(std::int64_t now_ns) const {
     sq += d * d;
     worst = std::max(worst, std::abs(d));
   }
-  out.period_ms = mean / 1e6;
+  out.period_ms = mean / kNsPerMs;
   // Over the whole window, not a count of the last second (which flips
   // between 25 and 26 with the phase); a stream that stopped shows 0.
   const auto quiet = static_cast<double>(now_ns - at(n - 1));
-  out.rate_hz = quiet > std::max(kStoppedPeriods * mean, 1e9) ? 0.0 : 1e9 / mean;
-  out.jitter_ms = std::sqrt(sq / static_cast<double>(n - 1)) / 1e6;
-  out.worst_ms = worst / 1e6;
+  constexpr auto kSecond = static_cast<double>(kNsPerSecond);
+  out.rate_hz = quiet > std::max(kStoppedPeriods * mean, kSecond) ? 0.0 : kSecond / mean;
+  out.jitter_ms = std::sqrt(sq / static_cast<double>(n - 1)) / kNsPerMs;
+  out.worst_ms = worst / kNsPerMs;
   return out;
 }
 

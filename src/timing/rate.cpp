@@ -26,29 +26,31 @@ Rate parse_rate(std::string_view text, const SourcePos& pos) {
   if (!digits_ok) throw bad_rate(text, pos, "is not a number of Hz (such as 25 or 12.5, at most 3 decimals)");
   std::int64_t milli = 0;
   for (std::size_t i = 0; i < 3; ++i) milli = milli * 10 + (i < frac.size() ? frac[i] - '0' : 0);
-  const std::int64_t mhz = *hz * 1000 + milli;
-  if (mhz < 1000) throw bad_rate(text, pos, "is below 1 Hz");
-  return Rate{mhz, std::string(text), pos};
+  const std::int64_t millihertz = *hz * kMillihertzPerHz + milli;
+  if (millihertz < kMillihertzPerHz) throw bad_rate(text, pos, "is below 1 Hz");
+  return Rate{millihertz, std::string(text), pos};
 }
 
-std::int64_t max_rate_millihertz(int baud) { return static_cast<std::int64_t>(baud) * 1000 / kBitsPerFrame; }
+std::int64_t max_rate_millihertz(int baud) {
+  return static_cast<std::int64_t>(baud) * kMillihertzPerHz / kBitsPerFrame;
+}
 
 void check_rate_fits(const Rate& rate, int baud) {
-  const std::int64_t max_mhz = max_rate_millihertz(baud);
-  if (rate.millihertz <= max_mhz) return;
+  const std::int64_t most_millihertz = max_rate_millihertz(baud);
+  if (rate.millihertz <= most_millihertz) return;
   char most[32];
-  std::snprintf(most, sizeof most, "%lld.%03lld", static_cast<long long>(max_mhz / 1000),
-                static_cast<long long>(max_mhz % 1000));
+  std::snprintf(most, sizeof most, "%lld.%03lld", static_cast<long long>(most_millihertz / kMillihertzPerHz),
+                static_cast<long long>(most_millihertz % kMillihertzPerHz));
   throw bad_rate(rate.text.empty() ? rate_text(rate.millihertz) : rate.text, rate.pos,
                  "does not fit the link: " + std::to_string(kBitsPerFrame) + "-bit frames at " + std::to_string(baud) +
                      " baud allow at most " + most + " Hz");
 }
 
 std::string rate_text(std::int64_t millihertz) {
-  std::string text = std::to_string(millihertz / 1000);
-  if (millihertz % 1000 == 0) return text;
+  std::string text = std::to_string(millihertz / kMillihertzPerHz);
+  if (millihertz % kMillihertzPerHz == 0) return text;
   char frac[8];
-  std::snprintf(frac, sizeof frac, ".%03lld", static_cast<long long>(millihertz % 1000));
+  std::snprintf(frac, sizeof frac, ".%03lld", static_cast<long long>(millihertz % kMillihertzPerHz));
   std::string_view digits(frac);
   while (digits.ends_with('0')) digits.remove_suffix(1);
   return text + std::string(digits);

@@ -19,7 +19,7 @@
 #include "andros/base/service_notify.hpp"
 #include "andros/base/write_fully.hpp"
 #include "andros/view/screen.hpp"
-#include "andros/view/status_display.hpp"
+#include "andros/view/terminal_display.hpp"
 
 namespace andros::view {
 

@@ -170,7 +170,7 @@ void draw_layers(Page& page, const std::vector<const PlotSample*>& s) {
   page.text(kRight, kLayerTop + 12, "(blank: base layer)", " font-size=\"9\" fill=\"#777\" text-anchor=\"end\"");
 }
 
-double value_y(int v) { return kDriveTop + kDriveHeight - kDriveHeight * v / 255.0; }
+double value_y(int v) { return kDriveTop + kDriveHeight - kDriveHeight * v / protocol::kWholeByteMax; }
 
 /// One byte's line: at most a min and a max point a pixel column, broken
 /// where no frame was sent.
@@ -213,8 +213,9 @@ std::string trace(const Page& page, const std::vector<const PlotSample*>& s, std
 
 void draw_drive(Page& page, const std::vector<const PlotSample*>& s) {
   page.rect(kLeft, kDriveTop, kRight, kDriveHeight, "none", " stroke=\"#999\" stroke-width=\"0.8\"");
-  for (const int v : {0, 64, 128, 192, 255}) {
-    page.line(kLeft, value_y(v), kRight, value_y(v), v == 128 ? "#999" : "#e6e6e6", v == 128 ? 0.8 : 0.6);
+  constexpr int kCentre = protocol::kNeutralCentre;
+  for (const int v : {0, 64, kCentre, 192, protocol::kWholeByteMax}) {
+    page.line(kLeft, value_y(v), kRight, value_y(v), v == kCentre ? "#999" : "#e6e6e6", v == kCentre ? 0.8 : 0.6);
     page.text(kLeft - 6, value_y(v) + 4, std::to_string(v), " font-size=\"10\" text-anchor=\"end\"");
   }
   page.text(kLeft - 40, kDriveTop + kDriveHeight / 2, "drive / pivot",

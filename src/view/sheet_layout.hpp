@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::view::sheet_detail {
 

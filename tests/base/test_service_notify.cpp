@@ -62,11 +62,10 @@ TEST(ServiceNotifier, PingsEveryHalfWatchdogPeriod) {
   ::setenv("WATCHDOG_USEC", "1000000", 1);
   ::setenv("WATCHDOG_PID", std::to_string(::getpid()).c_str(), 1);
   auto notifier = ServiceNotifier::from_environment();
-  EXPECT_EQ(notifier.watchdog_ns(), 1'000'000'000);
-  constexpr std::int64_t kMs = 1'000'000;
+  EXPECT_EQ(notifier.watchdog_ns(), kNsPerSecond);
   int pings = 0;
   for (std::int64_t t = 0; t <= 2000; t += 40) {  // 25 Hz ticks for 2 s
-    notifier.watchdog(t * kMs);
+    notifier.watchdog(t * kNsPerMs);
     while (manager.next() == "WATCHDOG=1") ++pings;
   }
   EXPECT_EQ(pings, 4);  // at 0, 520, 1040, 1560 ms

@@ -18,7 +18,7 @@ ap.add_argument("--neutral-tail", type=int, default=0)
 ap.add_argument("--code")
 ap.add_argument("--all-neutral", action="store_true", help="every frame neutral (a link regained: a fresh press first)")
 a = ap.parse_args()
-# Contract section 5: neutral = every motion, weapon and interlock bit 0, drive
+# docs/mapping.md's safety rules: neutral = every motion, weapon and interlock bit 0, drive
 # and pivot at centre. The kinds come from the signal table, not a copy of it.
 catalogue = [json.loads(l) for l in subprocess.check_output([a.bin, "frame", "signals", "--json"]).splitlines()]
 ZEROED = {s["name"] for s in catalogue if s["kind"] in ("motion", "weapon", "interlock")}

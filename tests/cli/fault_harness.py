@@ -26,7 +26,7 @@ def closed_log(bin_, data, port):
     os.close(r)
     if not port.wait(lambda f: driving(f) >= 5, 10):
         fail("no driving frames")
-    n = len(port.snapshot())
+    n = len(port.received())
     if not port.wait(lambda f: len(f) >= n + 5, 5):  # frames go on with the log gone
         fail(f"frames stopped after the log pipe closed (exit {proc.poll()})")
     proc.send_signal(signal.SIGTERM)  # its "stopping" line is the next log write
@@ -45,7 +45,7 @@ def stuck_log(bin_, data, port):
     code = wait_exit(proc, 10)
     os.close(r)
     if not ok:
-        fail(f"frames did not flow with the log pipe full: {len(port.snapshot())} frames")
+        fail(f"frames did not flow with the log pipe full: {len(port.received())} frames")
     if code != 0:
         fail(f"exit {code} after SIGTERM with the log pipe full, expected 0 within 10 s")
 
@@ -60,7 +60,7 @@ def stop_tick(bin_, data, port):
     sent = time.monotonic()
     code = wait_exit(proc, 10)
     time.sleep(0.2)  # the last frames in flight
-    frames = port.snapshot()
+    frames = port.received()
     last_driving = max(t for t, d, _ in frames if d != 128)
     first_neutral = min((t for t, d, _ in frames if t > last_driving), default=None)
     if code != 0 or first_neutral is None:
@@ -85,7 +85,7 @@ def job_control(bin_, data, port):
                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
     if not port.wait(lambda f: driving(f) >= 5, 10):
         fail("no driving frames")
-    t0 = port.snapshot()[0][0]  # tick 0: the script's time 0
+    t0 = port.received()[0][0]  # tick 0: the script's time 0
     proc.send_signal(signal.SIGTSTP)
     stopped = wait_stopped(proc)
     before = port.settled()
@@ -95,14 +95,14 @@ def job_control(bin_, data, port):
     if len(before) < 3 or tail != [128, 128, 128] or any(s for _, _, s in before[-3:]):
         fail(f"the frames before the stop do not end neutral: drive {[d for _, d, _ in before[-6:]]}")
     time.sleep(0.5)
-    if len(port.snapshot()) != len(before):
+    if len(port.received()) != len(before):
         fail("frames while stopped")
     proc.send_signal(signal.SIGCONT)
     resumed = time.monotonic()
     if resumed - t0 > 3.5:
         fail(f"too slow to tell: continued {resumed - t0:.1f} s into a script that re-presses at 4.0 s")
     code = wait_exit(proc, 15)
-    after = port.snapshot()[len(before):]
+    after = port.received()[len(before):]
     held = [d for t, d, _ in after if t < t0 + 3.9]
     pressed = [d for t, d, _ in after if t > t0 + 4.5]
     print(f"after SIGCONT: {len(held)} frames with the old press held, {driving([(0, d, 0) for d in pressed])} "
@@ -149,10 +149,10 @@ def continue_early(bin_, data, port):
     proc.send_signal(signal.SIGTSTP)
     time.sleep(0.08)  # the neutral frames take 3 periods (120 ms at 25 Hz) and a drain
     proc.send_signal(signal.SIGCONT)
-    n = len(port.snapshot())
+    n = len(port.received())
     going = port.wait(lambda f: len(f) >= n + 10, 5)  # frames after the neutral ones
     state = proc_state(proc.pid)
-    after = port.snapshot()[n:]
+    after = port.received()[n:]
     print(f"after SIGCONT: state {state}, {len(after)} frames, {driving(after)} driving")
     if not going or state == "T":
         fail(f"stopped for good after a SIGCONT during the neutral frames (state {state}, "
@@ -177,7 +177,7 @@ def paused_terminal(bin_, data, port):
         fail("no status view on the terminal")
     os.write(m, b"\x13")  # Ctrl-S: the terminal stops taking output (IXON)
     read_some(m, 0.3)
-    n = len(port.snapshot())
+    n = len(port.received())
     ok = port.wait(lambda f: len(f) >= n + 25, 5)
     proc.send_signal(signal.SIGTERM)
     sent = time.monotonic()

@@ -49,7 +49,7 @@ class Port:
                     self.frames.append((now, drive, safety))
                     del pending[:i + 36]
 
-    def snapshot(self):
+    def received(self):
         with self.lock:
             return list(self.frames)
 
@@ -57,10 +57,10 @@ class Port:
         """The frames once none has arrived for `quiet` seconds (at most `timeout`): what a
         stopped process sent, with the last frames read off the pty too."""
         deadline = time.monotonic() + timeout
-        last, since = self.snapshot(), time.monotonic()
+        last, since = self.received(), time.monotonic()
         while time.monotonic() < deadline:
             time.sleep(0.02)
-            now = self.snapshot()
+            now = self.received()
             if len(now) != len(last):
                 last, since = now, time.monotonic()
             elif time.monotonic() - since >= quiet:
@@ -71,7 +71,7 @@ class Port:
         """Waits until what(frames) is true; False after timeout seconds."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            if what(self.snapshot()):
+            if what(self.received()):
                 return True
             time.sleep(0.01)
         return False

@@ -1,5 +1,5 @@
 # `center:` only trims where drive and pivot rest while enabled, within
-# 120..136 (docs/mapping.md). Contract section 5, "neutral is the protocol's":
+# 120..136 (docs/mapping.md). Neutral is the protocol's (its safety rules):
 # drive and pivot are 128 in every neutral frame, whatever a mapping says.
 source "$(dirname "$0")/lib.sh"
 export XDG_CONFIG_HOME="$TMP/xdg"  # the user mapping below, and nothing else, is found by --robot

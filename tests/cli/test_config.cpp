@@ -19,7 +19,8 @@ std::string error_of(const std::string& text) {
   return testing::input_error_text([&] { parse(text); });
 }
 
-TEST(Config, DefaultsFollowTheContract) {
+// The defaults docs/running.md gives (the configuration file and the flags).
+TEST(Config, DefaultsAreTheDocumentedOnes) {
   const Settings c;
   EXPECT_EQ(c.robot, "HD1");
   EXPECT_EQ(c.port, "sim");

@@ -29,7 +29,7 @@ session=$(newest)
 grep -q "recording to $session" "$TMP/err" || fail "the log does not say where the session goes"
 grep -Eq "recorded [0-9]+ records to $session \(last hash [0-9a-f]{64}\)" "$TMP/err" || fail "no closing line"
 hash=$(grep -Eo "last hash [0-9a-f]{64}" "$TMP/err" | cut -d' ' -f3)
-head -1 "$session" | grep -q "^0 andros-session 1 " || fail "first line: $(head -1 "$session")"
+head -1 "$session" | grep -q "^0 andros-session 2 " || fail "first line: $(head -1 "$session")"
 
 expect_exit 0 "$BIN" verify "$session"
 head -1 "$TMP/out" | grep -Eqx "intact \([0-9]+ records\)" || fail "verify: $(cat "$TMP/out")"
@@ -82,7 +82,7 @@ proc.send_signal(signal.SIGTSTP)
 ok = ok and wait_stopped(proc)
 time.sleep(0.4)
 proc.send_signal(signal.SIGCONT)
-n = len(port.snapshot())
+n = len(port.received())
 ok = ok and port.wait(lambda f: len(f) >= n + 10, 5)
 proc.send_signal(signal.SIGTERM)
 ok = wait_exit(proc, 10) == 0 and ok

@@ -251,8 +251,8 @@ TEST_F(ReloadRead, RunReloadSwapsOnTheCallersThreadOnlyWhenFinishGivesTheOutcome
                              ", WEAPONS ENABLED; not enabled until the deadman is pressed again");
   EXPECT_NE(frames.neutral()[0], 0xAA);
   EXPECT_TRUE(settings.weapons);
-  EXPECT_TRUE(board.snapshot().weapons);
-  EXPECT_EQ(board.snapshot().mapping_file, mapping_);
+  EXPECT_TRUE(board.status().weapons);
+  EXPECT_EQ(board.status().mapping_file, mapping_);
   EXPECT_FALSE(reload.finish()) << "the outcome is given once";
 
   frames.replace(std::make_unique<Marked>(0xBB));

@@ -8,7 +8,8 @@ namespace {
 
 using T = InputEvent::Type;
 
-TEST(EventScript, ContractExampleParses) {
+// The first example of docs/event-scripts.md.
+TEST(EventScript, TheDocumentedExampleParses) {
   const auto events = parse_event_script(
       "# t_ms  event       arguments\n"
       "0       connect     Xbox 360 Controller\n"

@@ -67,8 +67,8 @@ TEST(ScriptPlayer, ASupervisorLineAnywhereMakesTheScriptSupervised) {
   EXPECT_FALSE(ScriptPlayer(without).supervised());
 }
 
-// The supervisor's events reach its own snapshot; the operator's stays as it was.
-TEST(InputState, EachControllersEventsReachItsOwnSnapshot) {
+// The supervisor's events reach its own pad's state; the operator's stays as it was.
+TEST(InputState, EachControllersEventsReachItsOwnPadState) {
   InputState s;
   for (const auto& e : parse_event_script("0 connect Pad A\n0 supervisor connect Pad B\n0 supervisor button b 1\n"
                                           "10 supervisor button a 1\n20 button x 1\n30 link down\n",

@@ -151,7 +151,7 @@ TEST(SerialLink, GivesUpExclusiveModeWhenItCloses) {
     EXPECT_EQ(exclusive_now(), 1);
     link.drain_and_close(200);
     EXPECT_EQ(exclusive_now(), 0);
-    ASSERT_EQ(link.send(test_frame(2), monotonic_ns() + 1'000'000'000), SendResult::kSent);
+    ASSERT_EQ(link.send(test_frame(2), monotonic_ns() + kNsPerSecond), SendResult::kSent);
   }
   EXPECT_EQ(exclusive_now(), 0);  // destroyed while open
 }

@@ -15,7 +15,7 @@ struct AxisCase {
 
 class AxisArithmetic : public ::testing::TestWithParam<AxisCase> {};
 
-TEST_P(AxisArithmetic, MatchesTheContract) {
+TEST_P(AxisArithmetic, MatchesTheDocumentedArithmetic) {
   const auto& c = GetParam();
   const double z = shape_axis(normalise_axis(static_cast<std::int16_t>(c.raw)), c.shape);
   EXPECT_EQ(c.centred ? centred_byte(z, 128) : level_byte(z), c.out) << "raw " << c.raw;

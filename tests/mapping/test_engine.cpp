@@ -51,7 +51,8 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   EXPECT_EQ(protocol::read_signals(engine.neutral())[protocol::signal_id("drive")], 128);
 }
 
-TEST(Engine, PivotContractValue) {
+// docs/mapping.md's pivot example: deadzone 0.1, expo 0.5, half right gives 162.
+TEST(Engine, PivotGivesTheDocumentedValue) {
   Mapping m = *hd1_mapping();
   for (auto& b : m.bindings) {
     if (auto* a = std::get_if<AxisBinding>(&b.rule); a && a->analog == protocol::signal_id("pivot"))
@@ -134,7 +135,8 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
 }
 
-// Contract section 5: neutral is the protocol's. A `center:` trim moves only
+// Neutral is the protocol's (docs/mapping.md, "`center`: a trim, never the
+// neutral"). A `center:` trim moves only
 // where drive and pivot rest while enabled; every frame that is not enabled,
 // and neutral(), carries 128.
 TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {

@@ -93,7 +93,7 @@ TEST(ShippedMappings, EverySignalIsReachableFromAStandardPad) {
   }
 }
 
-// Weapons are never latched (contract, section 5): a layer that holds a
+// Weapons are never latched past the deadman (docs/mapping.md's safety rules): a layer that holds a
 // weapon is a hold layer, and the base layer holds none.
 TEST(ShippedMappings, WeaponsAreOnlyInHeldLayers) {
   const auto is_weapon = [](const Binding& b) { return std::holds_alternative<WeaponBinding>(b.rule); };

@@ -1,5 +1,6 @@
 #pragma once
-// The fault simulation's oracle: contract section 5's safety rules and
+// The fault simulation's oracle: the safety rules (docs/mapping.md, "What a
+// mapping cannot change"; docs/safety-states.md) and
 // docs/event-scripts.md's fault events, read straight off an event script and
 // the frames a replay delivered. It knows nothing of the engine, the Bridge or
 // the operating-state machine: from the script alone it says when the bridge
@@ -11,7 +12,7 @@
 // panic point, the enable timeout and the weapons' arming inputs. It is deliberately more
 // permissive than the engine where the engine has further rules (the rest
 // rule, layers, a press and a fault within one frame): it never says "may
-// not move" where the contract lets the bridge move, so a complaint is a
+// not move" where those rules let the bridge move, so a complaint is a
 // broken rule, not a difference of detail.
 
 #include <algorithm>
@@ -105,7 +106,7 @@ class SafetyOracle {
     bool weapons = false;         ///< --weapons
     std::uint8_t code = 0x01;     ///< --code
     std::int64_t period_ms = 40;  ///< 1000 / rate
-    int stop_frames = 3;          ///< contract section 5: at least 3 neutral frames on a stop
+    int stop_frames = 3;          ///< a stop: neutral frames at its tick and the next two (docs/event-scripts.md)
     int stop_ticks = 8;           ///< the ticks a stop may take when the link refuses some (3 + 5 tries)
   };
 

@@ -39,7 +39,8 @@ TEST(Signals, WholeBytesAreTheAnalogAndConstantOnes) {
   EXPECT_EQ(bytes, (std::set<int>{6, 7, 8, 9, 11, 12, 14}));
 }
 
-TEST(Signals, OpposingPairsOfTheContract) {
+// The opposing pairs of docs/mapping.md's safety rules (never both 1).
+TEST(Signals, OpposingPairsOfTheSafetyRules) {
   const std::pair<const char*, const char*> pairs[] = {
       {"front_art_up", "front_art_down"},
       {"rear_art_up", "rear_art_down"},
@@ -70,7 +71,8 @@ TEST(Signals, OpposingPairsOfTheContract) {
   }
 }
 
-TEST(Signals, WeaponsAndSelectorsAreTheContractsLists) {
+// docs/protocol.md's signal kinds: weapons 0 in the neutral frame, selectors kept.
+TEST(Signals, WeaponsAndSelectorsAreTheDocumentedLists) {
   std::set<std::string_view> weapons, selectors;
   for (const auto& s : kSignals) {
     if (s.kind == SignalKind::kWeapon) weapons.insert(s.name);

@@ -67,7 +67,7 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
   return events;
 }
 
-// Contract section 5's `enabled`, read straight off the events: connected,
+// The safety rules' `enabled` (docs/mapping.md), read straight off the events: connected,
 // deadman down, and pressed (0 -> 1) after the connect, not at its instant;
 // and not stopped by the operator: the stop button (docs/mapping.md, "Stop")
 // pressed or held latches at a frame, which clears at a later frame once the

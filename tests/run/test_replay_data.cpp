@@ -15,7 +15,7 @@ struct Case {
   const char* name;
   std::string mapping;  // under tests/data/mappings/, or an absolute path
   bool weapons = false;
-  std::int64_t rate_mhz = timing::kDefaultRateMillihertz;
+  std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;
 };
 
 const std::string kData = ANDROS_TEST_DATA_DIR;
@@ -28,7 +28,8 @@ TEST_P(ReplayData, FramesMatchTheHandDerivedOnes) {
   const auto& c = GetParam();
   const std::string base = kData + "/replay/" + c.name;
   const auto mapping = c.mapping.starts_with('/') ? c.mapping : kData + "/mappings/" + c.mapping;
-  testing::expect_replay(mapping::load_mapping(mapping), c.weapons, c.rate_mhz, base + ".events", base + ".expected");
+  testing::expect_replay(mapping::load_mapping(mapping), c.weapons, c.rate_millihertz, base + ".events",
+                         base + ".expected");
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -161,6 +162,7 @@ TEST(Session, RecordsReadBack) {
   EXPECT_EQ(s.pid, 42);
   EXPECT_EQ(s.host, "bench");
   EXPECT_EQ(s.settings.robot, "HD1");
+  EXPECT_EQ(s.settings.rate_millihertz, 25'000);
   EXPECT_EQ(s.settings.code, 0x3C);
   EXPECT_TRUE(s.settings.weapons);
   EXPECT_EQ(s.settings.center, 130);
@@ -182,6 +184,54 @@ TEST(Session, RecordsReadBack) {
   ASSERT_TRUE(s.end);
   EXPECT_EQ(s.end->frames_sent, 9u);
   EXPECT_EQ(s.live_ticks(), 11 - 2);
+}
+
+/// The lines of a session whose settings record is made from `settings` and
+/// then rewritten by edit, the way an older recorder wrote it.
+std::string session_text(const std::string& header, const SessionSettings& settings,
+                         const std::function<std::string(std::string)>& edit) {
+  RecordChain chain;
+  std::string text;
+  for (const auto& p :
+       {header, record::program("0.1.0"), edit(record::settings(settings)), record::end(40, 1, 1, "x")}) {
+    text += chain.line(p);
+  }
+  return text;
+}
+
+SessionSettings small_settings() {
+  SessionSettings s;
+  s.robot = "HD1";
+  s.mapping_file = "/m/hd1.yaml";
+  s.rate_millihertz = 12'500;
+  s.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
+  return s;
+}
+
+// The rate is written in millihertz under a name that says so.
+TEST(Session, TheRateIsWrittenInMillihertz) {
+  const auto line = record::settings(small_settings());
+  EXPECT_NE(line.find("\"rate_millihertz\":12500"), std::string::npos) << line;
+  EXPECT_EQ(line.find("rate_mhz"), std::string::npos) << line;
+  EXPECT_EQ(record::header(), "andros-session 2");
+}
+
+// Format 1 named the same value `rate_mhz`: such a session still reads back.
+TEST(Session, AFormat1SessionReadsBack) {
+  testing::TempDir dir;
+  const auto old = session_text("andros-session 1", small_settings(), [](std::string payload) {
+    payload.replace(payload.find("rate_millihertz"), std::string("rate_millihertz").size(), "rate_mhz");
+    return payload;
+  });
+  ASSERT_NE(old.find("\"rate_mhz\":12500"), std::string::npos);
+  EXPECT_TRUE(verify_session(dir.write("old.andros-session", old)).intact);
+  EXPECT_EQ(read_session(dir.write("old.andros-session", old)).settings.rate_millihertz, 12'500);
+}
+
+TEST(Session, AFormatFromTheFutureIsRefused) {
+  testing::TempDir dir;
+  const auto text = session_text("andros-session 3", small_settings(), [](std::string p) { return p; });
+  EXPECT_THROW(read_session(dir.write("new.andros-session", text)), InputError);
 }
 
 }  // namespace

@@ -24,11 +24,11 @@ expect_refused() {  # FILE INCLUDE-LINE WHAT
 }
 expect_refused include/andros/protocol/frame.hpp '#include "andros/mapping/engine.hpp"' "protocol including mapping"
 expect_refused src/base/text.cpp '#include "andros/cli/config.hpp"' "base including cli"
-expect_refused src/run/bridge.cpp '#include "andros/view/status_view.hpp"' "run including view"
+expect_refused src/run/bridge.cpp '#include "andros/view/operator_screens.hpp"' "run including view"
 expect_refused src/link/tcp_link.cpp '#include "andros/io/link.hpp"' "an include outside the stage folders"
 
 # Same-stage and downward includes stay allowed.
 copy
-printf '%s\n' '#include "andros/base/error.hpp"' '#include "andros/view/status_view.hpp"' >>"$work/tree/src/cli/main.cpp"
+printf '%s\n' '#include "andros/base/error.hpp"' '#include "andros/view/operator_screens.hpp"' >>"$work/tree/src/cli/main.cpp"
 cmake -DROOT="$work/tree" -P "$work/tree/cmake/check_layers.cmake" || fail "a downward include was refused"
 echo "stage order checks: ok"

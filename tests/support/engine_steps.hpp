@@ -21,7 +21,7 @@ inline mapping::ValidMapping mapping_from_yaml(const std::string& text) {
   return mapping::load_mapping(dir.write("m.yaml", text));
 }
 
-/// Applies event-script lines ("T connect", "T button NAME 0|1", ...) to the snapshot.
+/// Applies event-script lines ("T connect", "T button NAME 0|1", ...) to the input state.
 inline void apply_script(input::InputState& state, const std::string& text) {
   for (const auto& e : input::parse_event_script(text, "t.events")) state.apply(e);
 }

@@ -12,10 +12,10 @@
 namespace andros::test {
 
 std::vector<protocol::DecodedFrame> FrameReader::next(std::size_t count, int timeout_ms) {
-  const std::int64_t deadline = monotonic_ns() + std::int64_t{timeout_ms} * 1'000'000;
+  const std::int64_t deadline = monotonic_ns() + std::int64_t{timeout_ms} * kNsPerMs;
   std::uint8_t buf[512];
   while (pending_.size() < count) {
-    const auto left_ms = (deadline - monotonic_ns()) / 1'000'000;
+    const auto left_ms = (deadline - monotonic_ns()) / kNsPerMs;
     if (left_ms <= 0) break;
     pollfd p{fd_, POLLIN, 0};
     if (poll(&p, 1, static_cast<int>(left_ms)) <= 0) continue;

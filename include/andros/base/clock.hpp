@@ -12,8 +12,11 @@ namespace andros {
 
 using Nanos = std::chrono::nanoseconds;
 
+/// The units of time, named once: a literal 1'000'000 is a count, never a time.
+inline constexpr std::int64_t kNsPerUs = 1'000;
 inline constexpr std::int64_t kNsPerMs = 1'000'000;
 inline constexpr std::int64_t kNsPerSecond = 1'000'000'000;
+inline constexpr std::int64_t kMsPerSecond = 1'000;
 
 /// The monotonic clock in ns.
 std::int64_t monotonic_ns();

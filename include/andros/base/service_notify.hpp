@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "andros/base/clock.hpp"
 #include "andros/base/unique_fd.hpp"
 
 namespace andros {
@@ -29,7 +30,7 @@ class ServiceNotifier {
   /// The longest watchdog period kept: a day. A manager that asks for more
   /// (up to systemd's 2^64-1 us) is pinged every half day, more often than it
   /// needs, and no time sum can overflow.
-  static constexpr std::int64_t kMaxWatchdogNs = 24LL * 60 * 60 * 1'000'000'000;
+  static constexpr std::int64_t kMaxWatchdogNs = 24LL * 60 * 60 * kNsPerSecond;
 
   [[nodiscard]] bool active() const { return static_cast<bool>(fd_); }
   /// The watchdog period the manager asked for (WATCHDOG_USEC), at most

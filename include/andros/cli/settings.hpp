@@ -33,7 +33,7 @@ inline constexpr int kDefaultRecordMaxDays = 30;
 inline constexpr int kBauds[] = {9600, 19200, 38400, 57600, 115200};
 /// How often `record` reads the controller: the bridge's frame rate, so that
 /// a replay sees each event in the frame the live bridge did.
-inline constexpr int kDefaultReadRateHz = static_cast<int>(timing::kDefaultRateMillihertz / 1000);
+inline constexpr int kDefaultReadRateHz = static_cast<int>(timing::kDefaultRateMillihertz / timing::kMillihertzPerHz);
 
 /// Every setting's typed value. A default-constructed Settings holds the defaults.
 struct Settings {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "andros/base/text_file.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <optional>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

@@ -9,7 +9,7 @@
 
 #include "andros/input/device_layout.hpp"
 #include "andros/input/feedback.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

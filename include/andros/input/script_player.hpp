@@ -1,14 +1,15 @@
 #pragma once
 /// Plays an event script into an InputState against a clock it is told, not
 /// one it reads: replay drives it with a virtual clock, `run --input` with
-/// the scheduler's tick times. Contract section 3's timing lives here once.
+/// the scheduler's tick times. The frame timing of docs/event-scripts.md (the
+/// frame at t reflects every event with a time <= t) lives here once.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
 #include "andros/input/events.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

@@ -14,7 +14,7 @@
 #include "andros/base/text_file.hpp"
 #include "andros/input/device_layout.hpp"
 #include "andros/input/input_source.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

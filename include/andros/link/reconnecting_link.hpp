@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "andros/base/clock.hpp"
 #include "andros/base/unique_fd.hpp"
 #include "andros/link/link.hpp"
 
@@ -57,7 +58,7 @@ class ReconnectingLink : public Link {
   int max_retry_ms_;
   int retry_ms_;
   std::int64_t next_attempt_ns_ = 0;
-  static constexpr std::int64_t kFlapNs = 1'000'000'000;
+  static constexpr std::int64_t kFlapNs = kNsPerSecond;
   /// A connection lost sooner than this after it came up (a server that
   /// accepts and closes, a stalled one) does not reset the back-off.
   static constexpr std::int64_t kStableNs = 5'000'000'000;

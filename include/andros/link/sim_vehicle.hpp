@@ -30,7 +30,7 @@ class SimVehicle {
   void start();
   /// Reads what is still in flight, then stops the thread (the destructor does too).
   void stop();
-  [[nodiscard]] VehicleSnapshot snapshot() const;
+  [[nodiscard]] VehicleStatus status() const;
 
  private:
   void run();

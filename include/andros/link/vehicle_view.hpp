@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "andros/link/vehicle_snapshot.hpp"
+#include "andros/link/vehicle_status.hpp"
 #include "andros/protocol/decoder.hpp"
 #include "andros/timing/frame_timing.hpp"
 
@@ -21,7 +21,7 @@ class VehicleView {
   /// Bytes that arrived at now_ns.
   void push(std::span<const std::uint8_t> bytes, std::int64_t now_ns);
   void finish() { decoder_.finish(); }
-  [[nodiscard]] VehicleSnapshot snapshot(std::int64_t now_ns) const;
+  [[nodiscard]] VehicleStatus status(std::int64_t now_ns) const;
   [[nodiscard]] const protocol::DecoderStats& stats() const { return decoder_.stats(); }
 
  private:

@@ -1,5 +1,5 @@
 #pragma once
-/// The mapping engine: a pure function of (input snapshot, its own previous
+/// The mapping engine: a pure function of (input state, its own previous
 /// state, tick time) to the frame's data bytes. No SDL, no clock reads, no I/O.
 /// The safety rules (docs/mapping.md) are applied in one place, the rest rule
 /// before the bindings and apply_safety() after them, so that no mapping can
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/mapping/safety.hpp"

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::mapping {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "andros/base/error.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/mapping/feedback.hpp"
 #include "andros/protocol/signals.hpp"
 

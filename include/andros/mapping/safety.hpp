@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"

@@ -25,6 +25,9 @@ enum class SignalKind : std::uint8_t {
 };
 
 inline constexpr std::int8_t kWholeByte = -1;
+/// The largest value of a whole byte: `drive` and `pivot` at full, a level,
+/// a constant.
+inline constexpr int kWholeByteMax = 255;
 
 /// `drive` and `pivot` in every neutral frame. The protocol's, not a
 /// mapping's: no `center:` trim reaches a frame sent while not enabled.

@@ -15,7 +15,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/input/input_source.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
@@ -85,7 +85,7 @@ struct BridgeOptions {
   int shutdown_extra_ticks = 5;  ///< ticks allowed beyond those for frames the link refused
   int drain_timeout_ms = 300;
   /// The end of the input ends the run on neutral frames (run); false: on
-  /// the last frame, as replay's contract has it (a script's `stop` still
+  /// the last frame, as replay has it (docs/event-scripts.md; a script's `stop` still
   /// gives them).
   bool neutral_tail_at_end = true;
 };

@@ -34,7 +34,7 @@ struct ReplayOptions {
 };
 
 /// Runs the loop from t = 0 through the first frame time >= the script's end
-/// (its `end`, or its last event: no neutral tail, as the contract's replay
+/// (its `end`, or its last event: no neutral tail, as docs/event-scripts.md
 /// has it; a `stop` event ends on a stop's neutral frames), each frame
 /// reflecting every event with a time <= its own; frames the link did not take (a `link down`, a suspend)
 /// are not delivered. Returns the count delivered.

@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "andros/base/sha256.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/link/link_status.hpp"
+#include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/operating_state.hpp"
@@ -24,7 +25,10 @@ namespace andros::run {
 
 /// The first record's kind: a file whose first line is `0 andros-session ...` is a session.
 inline constexpr std::string_view kSessionMagic = "andros-session";
-inline constexpr int kSessionFormat = 1;
+/// The format written. 2: the settings' rate is `rate_millihertz`; format 1
+/// named it `rate_mhz` (read as megahertz by everyone), and is still read.
+inline constexpr int kSessionFormat = 2;
+inline constexpr int kOldestSessionFormat = 1;
 inline constexpr std::string_view kSessionExtension = ".andros-session";
 
 /// True when text (a file's first line, or more) starts a session.
@@ -61,7 +65,7 @@ struct SessionSettings {
   std::int64_t rate_millihertz = 0;
   bool weapons = false;
   std::uint8_t code = 0;
-  int center = 128;
+  int center = mapping::kDefaultCenter;
   std::string port;
   int baud = 0;
   std::string input;

@@ -6,20 +6,25 @@
 #include <string>
 #include <string_view>
 
+#include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
 
 namespace andros::timing {
+
+inline constexpr std::int64_t kMillihertzPerHz = 1'000;
 
 /// Frame times for a rate given in millihertz, exactly: t_k = floor(k * 1000 / rate)
 /// ms, so 25 Hz gives 0, 40, 80, ... and 24 Hz gives 0, 41, 83, 125, ...
 class FrameClock {
  public:
-  explicit FrameClock(std::int64_t rate_millihertz) : rate_mhz_(rate_millihertz) {}
-  [[nodiscard]] std::int64_t time_of(std::int64_t k) const { return k * 1'000'000 / rate_mhz_; }
-  [[nodiscard]] std::int64_t rate_millihertz() const { return rate_mhz_; }
+  explicit FrameClock(std::int64_t rate_millihertz) : rate_millihertz_(rate_millihertz) {}
+  [[nodiscard]] std::int64_t time_of(std::int64_t k) const {
+    return k * kMsPerSecond * kMillihertzPerHz / rate_millihertz_;
+  }
+  [[nodiscard]] std::int64_t rate_millihertz() const { return rate_millihertz_; }
 
  private:
-  std::int64_t rate_mhz_;
+  std::int64_t rate_millihertz_;
 };
 
 inline constexpr std::int64_t kDefaultRateMillihertz = 25'000;

@@ -31,7 +31,7 @@ class TickSchedule {
 
  private:
   /// 1e12 ns: 1000 s, the time in which a rate of R millihertz gives R ticks.
-  static constexpr std::int64_t kNsPerMillihertzCycle = 1'000'000'000'000;
+  static constexpr std::int64_t kNsPerMillihertzCycle = kNsPerSecond * kMillihertzPerHz;
   FrameClock clock_;
   TickGrid grid_;
 };

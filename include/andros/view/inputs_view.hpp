@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "andros/input/device_layout.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/view/screen.hpp"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "andros/base/error.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 #include "andros/mapping/model.hpp"
 
 namespace andros::view {

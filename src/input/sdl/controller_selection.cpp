@@ -7,7 +7,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 namespace {

@@ -7,7 +7,7 @@
 namespace andros::input {
 namespace {
 
-// input.hpp names pad buttons and axes by SDL enum value; keep them in step.
+// input_state.hpp names pad buttons and axes by SDL enum value; keep them in step.
 static_assert(SDL_CONTROLLER_BUTTON_MAX == kPadButtonNames.size());
 static_assert(SDL_CONTROLLER_BUTTON_A == 0 && SDL_CONTROLLER_BUTTON_GUIDE == 5 &&
               SDL_CONTROLLER_BUTTON_LEFTSHOULDER == 9 && SDL_CONTROLLER_BUTTON_DPAD_UP == 11 &&
@@ -18,8 +18,6 @@ static_assert(SDL_CONTROLLER_AXIS_LEFTX == 0 && SDL_CONTROLLER_AXIS_RIGHTY == 3 
               SDL_CONTROLLER_AXIS_TRIGGERLEFT == 4 && SDL_CONTROLLER_AXIS_TRIGGERRIGHT == 5);
 // Hat directions are the bits of SDL_HAT_*, in kHatDirectionNames order.
 static_assert(SDL_HAT_UP == 1 && SDL_HAT_RIGHT == 2 && SDL_HAT_DOWN == 4 && SDL_HAT_LEFT == 8);
-
-constexpr int kMaxHatIndex = kMaxJoystickIndex / 4;
 
 InputEvent make_event(InputEvent::Type type, InputKey key, int value, std::int64_t t_ms) {
   InputEvent ev;

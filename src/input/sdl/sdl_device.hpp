@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "andros/input/device_layout.hpp"
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 namespace andros::input {
 

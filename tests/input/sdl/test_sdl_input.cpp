@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "andros/input/sdl_input.hpp"
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 #include "support/virtual_device.hpp"
 
 namespace andros::input {
@@ -194,9 +194,9 @@ TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
     r.state = run::OpState::kNotEnabled;
     r.engine.enable = mapping::EnableState::kDeadmanReleased;
     board.observe(r, input);
-    const auto status = board.snapshot();
+    const auto status = board.status();
     EXPECT_EQ(status.game_controller, std::optional<bool>(pad));
-    const auto screen = view::render_run_view(status, {80, 24}).render({80, 24}, false);
+    const auto screen = view::render_run_screen(status, {80, 24}).render({80, 24}, false);
     if (pad) {
       EXPECT_EQ(status.enable_text, "deadman released");
       EXPECT_EQ(screen.find("plain joystick"), std::string::npos) << screen;
@@ -210,14 +210,14 @@ TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
     // A mapping of numbered inputs (learned for this stick) needs no hint.
     board.set_pad_names(false);
     board.observe(r, input);
-    EXPECT_EQ(board.snapshot().enable_text, "deadman released");
+    EXPECT_EQ(board.status().enable_text, "deadman released");
     // Unplugged: nothing is said of a device that is not there.
     device.unplug();
     tick(input);
     r.connected = false;
     r.state = run::OpState::kNoController;
     board.observe(r, input);
-    EXPECT_EQ(board.snapshot().game_controller, std::nullopt);
+    EXPECT_EQ(board.status().game_controller, std::nullopt);
     state_ = InputState{};
   }
 }

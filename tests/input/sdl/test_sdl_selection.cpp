@@ -101,7 +101,7 @@ TEST_F(SdlSelectionTest, ListsEveryDeviceWithItsType) {
   EXPECT_EQ(find("Test Stick")->index, stick.device_index());
 }
 
-// --supervisor: a second controller, chosen the same ways, feeding its own snapshot.
+// --supervisor: a second controller, chosen the same ways, feeding its own pad's state.
 class SupervisorSelectionTest : public SdlSelectionTest {
  protected:
   void expect_beta_supervises(const std::function<std::string(const VirtualDevice& beta)>& choose) {
@@ -120,7 +120,7 @@ class SupervisorSelectionTest : public SdlSelectionTest {
     beta.button(SDL_CONTROLLER_BUTTON_A, true);
     tick(input);
     EXPECT_TRUE(state_.supervisor().button(kA).down);
-    EXPECT_FALSE(state_.button(kA).down) << "the supervisor's press reached the operator's snapshot";
+    EXPECT_FALSE(state_.button(kA).down) << "the supervisor's press reached the operator's state";
     alpha.button(SDL_CONTROLLER_BUTTON_A, true);
     tick(input);
     EXPECT_TRUE(state_.button(kA).down);

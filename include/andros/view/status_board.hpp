@@ -1,6 +1,6 @@
 #pragma once
 // What `run` tells the operator: the board that the run loop's reports feed,
-// every tick, and that the terminal view's thread reads a copy of; off a
+// every tick, and that the terminal display's thread reads a copy of; off a
 // terminal, one log line per change.
 
 #include <mutex>
@@ -10,7 +10,7 @@
 #include "andros/input/input_source.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/timing/frame_timing.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
 
 namespace andros::view {
 
@@ -36,7 +36,7 @@ class RunStatusBoard {
   void set_game_controller(std::optional<bool> game_controller);
   /// The last status, copied under the lock: for the display thread, and
   /// after the run for the closing line.
-  [[nodiscard]] RunStatus snapshot() const;
+  [[nodiscard]] RunStatus status() const;
 
  private:
   void log_changes(const RunStatus& before, const RunStatus& after) const;

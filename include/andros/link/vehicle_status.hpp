@@ -11,7 +11,7 @@
 
 namespace andros::link {
 
-struct VehicleSnapshot {
+struct VehicleStatus {
   std::optional<protocol::DataBytes> last;  ///< the last frame decoded, valid or not
   bool last_valid = false;
   std::vector<std::string> last_errors;

@@ -1,4 +1,4 @@
-#include "andros/input/snapshot.hpp"
+#include "andros/input/input_state.hpp"
 
 #include "andros/base/text.hpp"
 
@@ -29,7 +29,7 @@ std::optional<InputKey> parse_button_name(std::string_view name) {
     if (digits == 0 || digits == std::string_view::npos) return std::nullopt;
     const auto hat = parse_index(rest.substr(0, digits));
     const auto dir = find_name(kHatDirectionNames, rest.substr(digits));
-    if (!hat || !dir || *hat > kMaxJoystickIndex / 4) return std::nullopt;
+    if (!hat || !dir || *hat > kMaxHatIndex) return std::nullopt;
     return InputKey{InputKind::kHat, static_cast<std::uint16_t>(*hat * 4 + *dir)};
   }
   if (auto n = parse_index(name)) return InputKey{InputKind::kJoyButton, static_cast<std::uint16_t>(*n)};

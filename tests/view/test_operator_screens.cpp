@@ -2,8 +2,9 @@
 
 #include <set>
 
+#include "andros/base/clock.hpp"
 #include "andros/timing/frame_timing.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
 
 namespace andros::view {
 namespace {
@@ -20,7 +21,7 @@ std::string render_frame_panel(const protocol::DataBytes& data, int center) {
   return joined(switch_lines(data, 78, false)) + joined(gauge_lines(data, center));
 }
 
-TEST(StatusView, EveryBitSignalIsInExactlyOneGroup) {
+TEST(OperatorScreens, EveryBitSignalIsInExactlyOneGroup) {
   std::multiset<protocol::SignalId> seen;
   for (const auto& g : signal_groups()) seen.insert(g.signals.begin(), g.signals.end());
   for (protocol::SignalId id = 0; id < protocol::kSignalCount; ++id) {
@@ -29,7 +30,7 @@ TEST(StatusView, EveryBitSignalIsInExactlyOneGroup) {
   }
 }
 
-TEST(StatusView, PanelShowsActiveSwitchesAndGauges) {
+TEST(OperatorScreens, PanelShowsActiveSwitchesAndGauges) {
   protocol::ControlState s;
   s[protocol::signal_id("safety")] = 1;
   s[protocol::signal_id("pt_left")] = 1;
@@ -56,7 +57,7 @@ protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot, bool ena
   return protocol::FrameBuilder(1).build(s);
 }
 
-TEST(StatusView, CentredGaugesGrowFromTheCentreTheyAreHanded) {
+TEST(OperatorScreens, CentredGaugesGrowFromTheCentreTheyAreHanded) {
   // center: 120 (the lowest trim): 120 is at rest while enabled, 60 half way down, 255 and 0 the ends.
   auto text = render_frame_panel(drive_pivot(120, 60), 120);
   EXPECT_NE(text.find("drive      [          |          ] 120"), std::string::npos) << text;
@@ -68,12 +69,12 @@ TEST(StatusView, CentredGaugesGrowFromTheCentreTheyAreHanded) {
   RunStatus s;
   s.center = 120;
   s.sent = drive_pivot(120, 120);
-  text = render_run_view(s, {80, 40}).text();
+  text = render_run_screen(s, {80, 40}).text();
   EXPECT_NE(text.find("drive      [          |          ] 120"), std::string::npos) << text;
   EXPECT_NE(text.find("pivot      [          |          ] 120"), std::string::npos) << text;
 }
 
-TEST(StatusView, ANeutralFrameDrawsEmptyGaugesWhateverTheTrim) {
+TEST(OperatorScreens, ANeutralFrameDrawsEmptyGaugesWhateverTheTrim) {
   // Neutral frames carry the protocol's 128, not the trim: at rest, so empty.
   auto text = render_frame_panel(drive_pivot(128, 128, false), 120);
   EXPECT_NE(text.find("drive      [          |          ] 128"), std::string::npos) << text;
@@ -83,19 +84,20 @@ TEST(StatusView, ANeutralFrameDrawsEmptyGaugesWhateverTheTrim) {
   EXPECT_NE(text.find("drive      [          |#         ] 128"), std::string::npos) << text;
 }
 
-TEST(StatusView, StateLineNamesTheInputsHeldBackUntilAtRest) {
+TEST(OperatorScreens, StateLineNamesTheInputsHeldBackUntilAtRest) {
   RunStatus s;
   s.state = run::OpState::kEnabled;
   s.enable_text = "enabled";
-  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
+  EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
   s.enable_text = "enabled; at rest first: lefty";
-  EXPECT_NE(render_run_view(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"), std::string::npos);
+  EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"),
+            std::string::npos);
 }
 
 TEST(FrameTiming, MeasuresRateAndJitter) {
   timing::FrameTiming t;
-  const std::int64_t p = 40'000'000;
-  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : 1'000'000));
+  const std::int64_t p = 40 * kNsPerMs;
+  for (int i = 0; i < 50; ++i) t.add(i * p + (i % 2 == 0 ? 0 : kNsPerMs));
   const auto s = t.summary(49 * p);
   EXPECT_EQ(s.count, 50u);
   EXPECT_NEAR(s.rate_hz, 25.0, 0.02);  // 1 / the mean period

@@ -1,6 +1,6 @@
 #pragma once
 /// The controller as the mapping sees it: named inputs, the events that move
-/// them (from SDL or an event script), and the snapshot they build.
+/// them (from SDL or an event script), and the input state they build.
 
 #include <array>
 #include <compare>
@@ -45,6 +45,13 @@ inline constexpr std::array<std::string_view, 6> kPadAxisNames = {"leftx",  "lef
 inline constexpr std::array<std::string_view, 4> kHatDirectionNames = {"up", "right", "down", "left"};
 
 inline constexpr int kMaxJoystickIndex = 255;
+/// A hat's four directions are buttons hat * 4 + direction, within kMaxJoystickIndex.
+inline constexpr int kMaxHatIndex = kMaxJoystickIndex / 4;
+
+/// An axis's range as SDL reports it (Sint16): -32768 is one end, 32767 the
+/// other, so that the two halves differ by one (docs/mapping.md).
+inline constexpr int kAxisMin = -32768;
+inline constexpr int kAxisMax = 32767;
 
 enum class InputKind : std::uint8_t {
   kPadButton,  ///< index into kPadButtonNames
@@ -97,7 +104,7 @@ struct InputEvent {
     kReload,     ///< `reload [FILE]`: SIGHUP; name = the mapping file to load (empty: the same one)
     kStop,       ///< `stop`: SIGINT/SIGTERM, the run ends on neutral frames
   };
-  /// A fault event: one the controller's snapshot does not take.
+  /// A fault event: one no controller's state takes.
   [[nodiscard]] bool is_fault() const { return type >= Type::kLinkDown; }
 
   std::int64_t t_ms = 0;
@@ -119,7 +126,7 @@ struct ButtonState {
   std::uint32_t presses = 0;
 };
 
-/// One controller's snapshot.
+/// One controller's state: its buttons, axes and hats as the events left them.
 class PadState {
  public:
   /// Applies a connect, disconnect, button, axis or hat event (whoever's
@@ -149,7 +156,7 @@ class PadState {
   std::map<InputKey, std::int16_t> axes_;
 };
 
-/// The snapshot a frame is computed from: the operator's controller (read
+/// The input state a frame is computed from: the operator's controller (read
 /// through the members below, which are its PadState's), the supervisor's
 /// (supervisor()), and the fault events for the run loop.
 class InputState {
@@ -171,7 +178,7 @@ class InputState {
   [[nodiscard]] const PadState& supervisor() const { return supervisor_pad_; }
 
   /// The fault events applied since the last call, in order (the run loop
-  /// answers them; the snapshot itself ignores them).
+  /// answers them; the input state itself ignores them).
   [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
 
   /// Also keeps every event applied from now on, faults included, for

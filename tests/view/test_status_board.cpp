@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 
 namespace andros::view {
 namespace {
@@ -68,7 +68,7 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   initial.link_name = "test link";
   RunStatusBoard board(initial);
   board.observe(tick(40));
-  auto s = board.snapshot();
+  auto s = board.status();
   EXPECT_EQ(s.robot, "HD1");  // set-up values kept
   EXPECT_EQ(s.center, 100);
   EXPECT_EQ(s.link_name, "test link");
@@ -86,14 +86,14 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   auto evil = tick(60);
   evil.controller = "Gamepad\n\x1B[2J";  // a controller names itself: shown and logged escaped
   board.observe(evil);
-  EXPECT_EQ(board.snapshot().controller, "Gamepad\\n\\x1B[2J");
+  EXPECT_EQ(board.status().controller, "Gamepad\\n\\x1B[2J");
 
   auto r = tick(80);
   r.controller.clear();  // a controller without a name
   r.link.motion_allowed = false;
   r.link.detail = "the link's own detail";
   board.observe(r);
-  s = board.snapshot();
+  s = board.status();
   EXPECT_EQ(s.controller, "controller");
   EXPECT_FALSE(s.motion_allowed);
   EXPECT_EQ(s.link_detail.rfind("neutral frames only", 0), 0u) << s.link_detail;
@@ -101,7 +101,7 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   r = tick(120);
   r.state = run::OpState::kStopping;  // the last step said enabled; shutting down is never enabled
   board.observe(r);
-  s = board.snapshot();
+  s = board.status();
   EXPECT_TRUE(s.shutting_down());
   EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "sending neutral frames");
@@ -117,7 +117,7 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   r.link.state = link::LinkState::kConnecting;
   r.link.detail = "No such file or directory";
   board.observe(r);
-  auto s = board.snapshot();
+  auto s = board.status();
   EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.state, run::OpState::kNoLink);
   EXPECT_NE(s.enable_text.find("nothing reaches the vehicle (link No such file or directory)"), std::string::npos)
@@ -125,13 +125,13 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   // The link came back: a new link, the deadman held through it is not a fresh press.
   r.state = run::OpState::kNotEnabled;
   board.observe(r);
-  s = board.snapshot();
+  s = board.status();
   EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "driving was interrupted: release and press the deadman again");
   for (const auto state : {run::OpState::kSuspended, run::OpState::kReloading, run::OpState::kNoController}) {
     r.state = state;
     board.observe(r);
-    EXPECT_FALSE(board.snapshot().enabled()) << run::to_string(state);
+    EXPECT_FALSE(board.status().enabled()) << run::to_string(state);
   }
 }
 
@@ -144,18 +144,18 @@ TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
   r.engine.layer = "weapons";
   r.engine.weapons_mode = true;
   board.observe(r);
-  EXPECT_TRUE(board.snapshot().weapons_mode);
+  EXPECT_TRUE(board.status().weapons_mode);
   r.t_ms = 80;
   board.observe(r);
   board.observe(tick(120));  // the arm layer: no weapons
-  EXPECT_FALSE(board.snapshot().weapons_mode);
+  EXPECT_FALSE(board.status().weapons_mode);
   r.t_ms = 160;
   board.observe(r);
-  EXPECT_TRUE(board.snapshot().weapons_mode);
+  EXPECT_TRUE(board.status().weapons_mode);
   r.t_ms = 200;
   r.state = run::OpState::kStopping;  // the last step said so; a stop ends every weapons mode
   board.observe(r);
-  EXPECT_FALSE(board.snapshot().weapons_mode);
+  EXPECT_FALSE(board.status().weapons_mode);
   const auto text = log.text();
   EXPECT_EQ(count(text, "warning: WEAPONS LAYER on (weapons): an armed fire input fires\n"), 2U) << text;
   EXPECT_EQ(count(text, "info: weapons layer off\n"), 1U) << text;
@@ -167,13 +167,13 @@ TEST(RunStatusBoard, TheSpeedLevelIsShownAndLoggedAtTheStartAndOnEachChange) {
   auto r = tick(40);
   r.engine.speed = {0, 3, 0.25};
   board.observe(r);
-  EXPECT_EQ(board.snapshot().speed, (mapping::SpeedLevel{0, 3, 0.25}));
+  EXPECT_EQ(board.status().speed, (mapping::SpeedLevel{0, 3, 0.25}));
   r.t_ms = 80;
   board.observe(r);
   r.engine.speed = {1, 3, 0.5};
   r.t_ms = 120;
   board.observe(r);
-  EXPECT_EQ(board.snapshot().speed, (mapping::SpeedLevel{1, 3, 0.5}));
+  EXPECT_EQ(board.status().speed, (mapping::SpeedLevel{1, 3, 0.5}));
   const auto text = log.text();
   EXPECT_EQ(count(text, "info: speed level 1/3 (25%)\n"), 1U) << text;
   EXPECT_EQ(count(text, "info: speed level 2/3 (50%)\n"), 1U) << text;
@@ -198,7 +198,7 @@ TEST(RunStatusBoard, TheSupervisorsControllerIsShownAndItsComingAndGoingLogged) 
   r.engine.supervisor_stop = true;
   r.engine.consent = mapping::ConsentState::kGiven;
   board.observe(r);
-  auto s = board.snapshot();
+  auto s = board.status();
   EXPECT_TRUE(s.supervised);
   EXPECT_EQ(s.supervisor, "Pad B");
   EXPECT_TRUE(s.supervisor_stop);
@@ -210,14 +210,14 @@ TEST(RunStatusBoard, TheSupervisorsControllerIsShownAndItsComingAndGoingLogged) 
   r.supervisor.clear();
   r.state = run::OpState::kNoController;
   board.observe(r);
-  s = board.snapshot();
+  s = board.status();
   EXPECT_FALSE(s.supervisor_connected);
   EXPECT_FALSE(s.supervisor_stop);  // a lost controller holds nothing
   EXPECT_EQ(s.enable_text, "connect the supervisor's controller, then press the deadman afresh");
   r.t_ms = 160;
   r.connected = false;
   board.observe(r);
-  EXPECT_EQ(board.snapshot().enable_text, "connect a controller, then press the deadman");
+  EXPECT_EQ(board.status().enable_text, "connect a controller, then press the deadman");
   const auto text = log.text();
   EXPECT_EQ(count(text, "info: supervisor's controller: Pad B\n"), 1U) << text;
   EXPECT_EQ(count(text, "warning: supervisor's controller: none connected: nothing moves without it\n"), 1U) << text;
@@ -234,12 +234,12 @@ TEST(RunStatusBoard, AReloadNamesTheNewMappingAndWeaponsOnTheScreen) {
   initial.mapping_file = "/m/hd1.yaml";
   RunStatusBoard board(initial);
   board.set_mapping("RAV", "/m/rav.yaml", true, 100);
-  const auto s = board.snapshot();
+  const auto s = board.status();
   EXPECT_EQ(s.robot, "RAV");
   EXPECT_EQ(s.mapping_file, "/m/rav.yaml");
   EXPECT_TRUE(s.weapons);
   EXPECT_EQ(s.center, 100);
-  const auto text = render_run_view(s, {80, 24}).text();
+  const auto text = render_run_screen(s, {80, 24}).text();
   EXPECT_NE(text.find("WEAPONS ENABLED"), std::string::npos) << text;
   EXPECT_NE(text.find("mapping     /m/rav.yaml\n"), std::string::npos) << text;
 }

@@ -1,7 +1,9 @@
 #pragma once
-/// The operator's screens, as text: what `run` shows on a terminal and what
-/// `monitor` shows from the vehicle's side. Pure formatting, no I/O: each
-/// screen is a function of a value it is handed (docs/architecture.md).
+/// The operator's screens, as text: what `run` shows on a terminal
+/// (render_run_screen, run_screen.cpp) and what `monitor` shows from the
+/// vehicle's side (render_monitor_screen). Pure formatting, no I/O: each
+/// screen is a function of a value it is handed (docs/architecture.md); a
+/// TerminalDisplay (terminal_display.hpp) puts it on the terminal.
 
 #include <cstdint>
 #include <optional>
@@ -10,7 +12,7 @@
 #include <vector>
 
 #include "andros/link/link_status.hpp"
-#include "andros/link/vehicle_snapshot.hpp"
+#include "andros/link/vehicle_status.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
@@ -81,11 +83,11 @@ struct RunStatus {
   std::string link_detail;
   bool motion_allowed = true;  ///< false: the link gets neutral frames only (Link::motion_allowed)
   link::LinkCounters link;
-  timing::TimingSummary sent_timing;             ///< frames handed to the link
-  protocol::DataBytes sent{};                    ///< the last frame computed
-  std::optional<link::VehicleSnapshot> vehicle;  ///< the simulated vehicle's view
-  std::string recorder;                          ///< the flight recorder: its session, or what it dropped; "" when off
-  bool recorder_failing = false;                 ///< records were dropped: the session is incomplete
+  timing::TimingSummary sent_timing;           ///< frames handed to the link
+  protocol::DataBytes sent{};                  ///< the last frame computed
+  std::optional<link::VehicleStatus> vehicle;  ///< the simulated vehicle's view
+  std::string recorder;                        ///< the flight recorder: its session, or what it dropped; "" when off
+  bool recorder_failing = false;               ///< records were dropped: the session is incomplete
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }
@@ -104,12 +106,12 @@ bool shows_speed(const mapping::SpeedLevel& speed);
 /// controller when one is configured, mapping file), then
 /// counters, switch groups and gauges while rows are left (docs/running.md,
 /// "What the operator sees").
-Screen render_run_view(const RunStatus& status, TermSize size);
+Screen render_run_screen(const RunStatus& status, TermSize size);
 
 /// `monitor`'s view of a port or capture: pinned source, rate (live),
 /// counts and the last frame's validity, then its switches and gauges. A
 /// frame does not say which mapping made it: drive and pivot are drawn around
 /// the default centre.
-Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& vehicle, bool live, TermSize size);
+Screen render_monitor_screen(std::string_view source, const link::VehicleStatus& vehicle, bool live, TermSize size);
 
 }  // namespace andros::view

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "andros/view/run_status.hpp"
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
+#include "andros/view/status_board.hpp"
 
 namespace andros::view {
 namespace {
@@ -29,14 +29,14 @@ RunStatus driving(bool weapons) {
   s.link_name = "/dev/andros-switchbox 9600 8N1";
   s.link_state = link::LinkState::kUp;
   s.sent_timing = timing::TimingSummary{.rate_hz = 25.0, .period_ms = 40.0, .jitter_ms = 0.05};
-  s.vehicle = link::VehicleSnapshot{};
+  s.vehicle = link::VehicleStatus{};
   s.vehicle->last = s.sent;
   return s;
 }
 
 std::vector<std::string> shown(const RunStatus& s, TermSize size) {
   std::vector<std::string> out;
-  for (const auto& line : render_run_view(s, size).fit(size)) {
+  for (const auto& line : render_run_screen(s, size).fit(size)) {
     out.push_back(plain(line, static_cast<std::size_t>(size.cols)));
   }
   return out;
@@ -56,7 +56,7 @@ void expect_header(const std::vector<std::string>& lines, bool weapons) {
   EXPECT_EQ(banner != std::string::npos, weapons) << lines[0];
 }
 
-TEST(RunView, TheHeaderIsFirstAndWholeAt80x24AndSmaller) {
+TEST(RunScreen, TheHeaderIsFirstAndWholeAt80x24AndSmaller) {
   for (const bool weapons : {false, true}) {
     for (const TermSize size : {TermSize{80, 24}, TermSize{80, 10}, TermSize{40, 24}, TermSize{120, 40}}) {
       SCOPED_TRACE(std::to_string(size.cols) + "x" + std::to_string(size.rows) + (weapons ? " weapons" : ""));
@@ -72,14 +72,14 @@ TEST(RunView, TheHeaderIsFirstAndWholeAt80x24AndSmaller) {
   EXPECT_EQ(lines[4], "mapping     /usr/share/andros-bridge/mappings/hd1.yaml");
 }
 
-TEST(RunView, AtLeastTheBannerAndTheStateOnATinyTerminal) {
+TEST(RunScreen, AtLeastTheBannerAndTheStateOnATinyTerminal) {
   const auto lines = shown(driving(true), {30, 2});
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_NE(lines[0].find("WEAPONS ENABLED"), std::string::npos) << lines[0];
   EXPECT_TRUE(lines[1].starts_with("andros-bridge run")) << lines[1];
 }
 
-TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
+TEST(RunScreen, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
   RunStatus s = driving(true);
   s.layer = "weapons";
   s.weapons_mode = true;
@@ -89,7 +89,7 @@ TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
   }
   const auto lines = shown(s, {80, 24});
   EXPECT_EQ(lines[2], "state       ENABLED   layer: weapons    WEAPONS LAYER ");
-  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  const auto text = render_run_screen(s, {80, 24}).render({80, 24}, true);
   EXPECT_NE(text.find("\x1b[1;97;41m WEAPONS LAYER \x1b[0m"), std::string::npos) << text;
   // Out of it, the run's banner again and no word of a layer with weapons.
   s.weapons_mode = false;
@@ -98,7 +98,7 @@ TEST(RunView, AWeaponsModeIsSaidInTheBannerAndOnTheStateLine) {
   EXPECT_EQ(plain_lines[2], "state       ENABLED   layer: weapons");
 }
 
-TEST(RunView, TheSpeedLevelIsOnTheStateLineWhenTheMappingHasLevels) {
+TEST(RunScreen, TheSpeedLevelIsOnTheStateLineWhenTheMappingHasLevels) {
   RunStatus s = driving(false);
   EXPECT_EQ(shown(s, {80, 24})[1], "state       ENABLED   layer: arm");  // the default, one level of 100%: not said
   s.speed = {1, 3, 0.5};
@@ -117,7 +117,7 @@ TEST(RunView, TheSpeedLevelIsOnTheStateLineWhenTheMappingHasLevels) {
   for (const auto& line : narrow) EXPECT_LE(line.size(), 40U) << line;
 }
 
-TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
+TEST(RunScreen, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;
   s.enable_text = "deadman released";
@@ -128,17 +128,17 @@ TEST(RunView, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   EXPECT_EQ(lines[1], "state       NOT ENABLED: deadman released   layer: arm");
   EXPECT_EQ(lines[2], "link        /dev/andros-switchbox 9600 8N1: connecting - gone");
   EXPECT_EQ(lines[3], "controller  none connected");
-  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  const auto text = render_run_screen(s, {80, 24}).render({80, 24}, true);
   EXPECT_NE(text.find("\x1b[1;31mNOT ENABLED: deadman released\x1b[0m"), std::string::npos) << text;
   EXPECT_NE(text.find("\x1b[1;31mconnecting\x1b[0m"), std::string::npos) << text;
   EXPECT_NE(text.find("\x1b[1;31mnone connected\x1b[0m"), std::string::npos) << text;
-  const auto ok = render_run_view(driving(true), {80, 24}).render({80, 24}, true);
+  const auto ok = render_run_screen(driving(true), {80, 24}).render({80, 24}, true);
   EXPECT_NE(ok.find("\x1b[1;32mENABLED\x1b[0m"), std::string::npos) << ok;
   EXPECT_NE(ok.find("\x1b[1;32mup\x1b[0m"), std::string::npos) << ok;
   EXPECT_NE(ok.find("\x1b[1;97;41m"), std::string::npos) << ok;
 }
 
-TEST(RunView, StoppedByTheOperatorIsARedLineAboveAll) {
+TEST(RunScreen, StoppedByTheOperatorIsARedLineAboveAll) {
   RunStatus s = driving(false);
   s.state = run::OpState::kStopped;
   s.enable_text = std::string(kStoppedText);
@@ -147,7 +147,7 @@ TEST(RunView, StoppedByTheOperatorIsARedLineAboveAll) {
   EXPECT_EQ(lines[0], "                         STOP: stopped by the operator                          ");
   EXPECT_TRUE(lines[1].starts_with("andros-bridge run")) << lines[1];
   EXPECT_EQ(lines[2], "state       STOPPED: release the stop button and the deadman, then press the");
-  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  const auto text = render_run_screen(s, {80, 24}).render({80, 24}, true);
   EXPECT_NE(text.find("\x1b[1;97;41m                         STOP"), std::string::npos) << text;
   // On a tiny terminal the stop is what stays.
   EXPECT_NE(shown(s, {30, 2})[0].find("STOP"), std::string::npos);
@@ -156,7 +156,7 @@ TEST(RunView, StoppedByTheOperatorIsARedLineAboveAll) {
   EXPECT_EQ(shown(s, {80, 24})[0].find("STOP"), std::string::npos);
 }
 
-TEST(RunView, TheSupervisorsControllerHasItsOwnLineUnderTheOperators) {
+TEST(RunScreen, TheSupervisorsControllerHasItsOwnLineUnderTheOperators) {
   RunStatus s = driving(false);
   EXPECT_TRUE(shown(s, {80, 24})[4].starts_with("mapping     ")) << "a supervisor's line without one";
   s.supervised = true;
@@ -170,7 +170,7 @@ TEST(RunView, TheSupervisorsControllerHasItsOwnLineUnderTheOperators) {
   s.supervisor_stop = true;
   s.consent = mapping::ConsentState::kHeldBack;
   EXPECT_EQ(shown(s, {80, 24})[4], "supervisor  Pad B   STOP HELD   consent: release and press again");
-  const auto text = render_run_view(s, {80, 24}).render({80, 24}, true);
+  const auto text = render_run_screen(s, {80, 24}).render({80, 24}, true);
   EXPECT_NE(text.find("\x1b[1;97;41m STOP HELD \x1b[0m"), std::string::npos) << text;
   s.consent = mapping::ConsentState::kNotAsked;
   s.supervisor_stop = false;
@@ -183,7 +183,7 @@ TEST(RunView, TheSupervisorsControllerHasItsOwnLineUnderTheOperators) {
   EXPECT_TRUE(lines.back().starts_with("  frame     ")) << lines.back();
 }
 
-TEST(RunView, TheHeadlineIsTheOperatingState) {
+TEST(RunScreen, TheHeadlineIsTheOperatingState) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNoLink;
   s.enable_text = "nothing reaches the vehicle";
@@ -193,7 +193,7 @@ TEST(RunView, TheHeadlineIsTheOperatingState) {
   EXPECT_EQ(shown(s, {80, 24})[1], "state       RELOADING: neutral frames while the settings are read   layer: arm");
 }
 
-TEST(RunView, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
+TEST(RunScreen, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
   RunStatus s = driving(false);
   s.state = run::OpState::kNotEnabled;
   s.enable_text = "deadman held since connect or start-up: release and press it again";
@@ -203,15 +203,15 @@ TEST(RunView, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
   EXPECT_TRUE(lines[3].starts_with("link ")) << lines[3];
 }
 
-TEST(RunView, NoEscapesWithoutColour) {
+TEST(RunScreen, NoEscapesWithoutColour) {
   RunStatus s = driving(true);
   s.state = run::OpState::kStopping;
-  const auto text = render_run_view(s, {80, 24}).render({80, 24}, false);
+  const auto text = render_run_screen(s, {80, 24}).render({80, 24}, false);
   EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
   EXPECT_NE(text.find("SHUTTING DOWN: sending neutral frames"), std::string::npos) << text;
 }
 
-TEST(RunView, ALongMappingPathKeepsItsFileName) {
+TEST(RunScreen, ALongMappingPathKeepsItsFileName) {
   RunStatus s = driving(false);
   s.mapping_file = "/home/operator/a/very/long/directory/name/that/goes/on/and/on/and/on/field/hd1-custom.yaml";
   const auto lines = shown(s, {60, 24});
@@ -220,16 +220,16 @@ TEST(RunView, ALongMappingPathKeepsItsFileName) {
   EXPECT_EQ(lines[4].size(), 60u);
 }
 
-TEST(RunView, TheSwitchListShrinksToTheActiveOnesBeforeTheGaugesGo) {
+TEST(RunScreen, TheSwitchListShrinksToTheActiveOnesBeforeTheGaugesGo) {
   RunStatus s = driving(false);
   protocol::ControlState c;
   c[protocol::signal_id("safety")] = 1;
   c[protocol::signal_id("shoulder_cw")] = 1;
   c[protocol::signal_id("drive")] = 128;
   s.vehicle->last = protocol::FrameBuilder(1).build(c);
-  auto text = render_run_view(s, {80, 40}).text();
+  auto text = render_run_screen(s, {80, 40}).text();
   EXPECT_NE(text.find("  drive    ENABLED (DEADMAN HELD) brake released"), std::string::npos) << text;
-  text = render_run_view(s, {80, 24}).text();
+  text = render_run_screen(s, {80, 24}).text();
   EXPECT_NE(text.find("as the vehicle decodes it:\n  set       speed medium  main video 1  inset off\n"
                       "  drive    ENABLED (DEADMAN HELD)\n  arm      SHOULDER DOWN\n  drive      ["),
             std::string::npos)
@@ -239,7 +239,7 @@ TEST(RunView, TheSwitchListShrinksToTheActiveOnesBeforeTheGaugesGo) {
 }
 
 // Issue 19, finding 7: the operator's second pass over the screen at 80x24.
-TEST(RunView, ALongLinkNameIsCutInItsMiddleAndTheStateStays) {
+TEST(RunScreen, ALongLinkNameIsCutInItsMiddleAndTheStateStays) {
   for (const auto state : {link::LinkState::kUp, link::LinkState::kConnecting}) {
     RunStatus s = driving(false);
     s.link_name = "/dev/serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0 9600 8N1";
@@ -255,22 +255,22 @@ TEST(RunView, ALongLinkNameIsCutInItsMiddleAndTheStateStays) {
   }
 }
 
-TEST(RunView, SelectorPositionsWithoutABitAreShown) {
+TEST(RunScreen, SelectorPositionsWithoutABitAreShown) {
   RunStatus s = driving(false);
   protocol::ControlState c;
   c[protocol::signal_id("main_video_3")] = 1;
   c[protocol::signal_id("inset_4")] = 1;
   s.vehicle->last = protocol::FrameBuilder(1).build(c);
-  auto text = render_run_view(s, {80, 24}).text();
+  auto text = render_run_screen(s, {80, 24}).text();
   EXPECT_NE(text.find("  set       speed medium  main video 3  inset 4\n"), std::string::npos) << text;
   c = {};
   c[protocol::signal_id("speed_low")] = 1;
   s.vehicle->last = protocol::FrameBuilder(1).build(c);
-  text = render_run_view(s, {80, 24}).text();
+  text = render_run_screen(s, {80, 24}).text();
   EXPECT_NE(text.find("  set       speed low  main video 1  inset off\n"), std::string::npos) << text;
 }
 
-TEST(RunView, WeaponsOffArmedAndFiringAreEachSaid) {
+TEST(RunScreen, WeaponsOffArmedAndFiringAreEachSaid) {
   // Without --weapons the title line says so; no banner.
   auto lines = shown(driving(false), {80, 24});
   EXPECT_TRUE(lines[0].ends_with("  weapons off")) << lines[0];
@@ -302,7 +302,7 @@ TEST(RunView, WeaponsOffArmedAndFiringAreEachSaid) {
   EXPECT_EQ(tool, Style::kReverse);
 }
 
-TEST(RunView, TheRecorderSaysWhereItWritesOrWhatItDropped) {
+TEST(RunScreen, TheRecorderSaysWhereItWritesOrWhatItDropped) {
   auto s = driving(false);
   const auto line = [&s] {
     const auto lines = shown(s, TermSize{100, 40});
@@ -315,7 +315,7 @@ TEST(RunView, TheRecorderSaysWhereItWritesOrWhatItDropped) {
   EXPECT_EQ(line(), "recorder    /var/lib/andros-bridge/20240501-120000-42.andros-session");
   s.recorder = "12 records dropped (No space left on device): the session is incomplete";
   s.recorder_failing = true;
-  const auto screen = render_run_view(s, TermSize{100, 40}).fit(TermSize{100, 40});
+  const auto screen = render_run_screen(s, TermSize{100, 40}).fit(TermSize{100, 40});
   const auto it =
       std::find_if(screen.begin(), screen.end(), [](const auto& l) { return plain(l, 100).starts_with("recorder"); });
   ASSERT_NE(it, screen.end());

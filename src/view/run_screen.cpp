@@ -1,11 +1,11 @@
 // `run`'s screen: what matters first and always (docs/running.md, "What the
 // operator sees"), then what fits.
-#include "andros/view/status_view.hpp"
+#include "andros/view/operator_screens.hpp"
 
 #include <algorithm>
 
 #include "andros/base/text.hpp"
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 #include "format.hpp"
 
 namespace andros::view {
@@ -154,7 +154,7 @@ std::vector<Line> counter_lines(const RunStatus& s) {
 
 }  // namespace
 
-Screen render_run_view(const RunStatus& s, TermSize size) {
+Screen render_run_screen(const RunStatus& s, TermSize size) {
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
   Screen screen;
   if (s.weapons) {

@@ -1,4 +1,6 @@
-#include "andros/view/status_view.hpp"
+// The pieces both screens draw (switch groups, selectors, gauges) and
+// `monitor`'s screen; `run`'s is run_screen.cpp.
+#include "andros/view/operator_screens.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -27,12 +29,13 @@ Line gauge(std::string_view name, std::uint8_t value, std::optional<int> center)
   std::string bar(2 * kGaugeHalf + 1, ' ');
   if (center) {
     bar[kGaugeHalf] = '|';
-    const int span = value >= *center ? 255 - *center : *center;
+    const int span = value >= *center ? protocol::kWholeByteMax - *center : *center;
     const double x = span == 0 ? 0.0 : (value - *center) / static_cast<double>(span);
     const int n = static_cast<int>(std::lround(x * kGaugeHalf));
     for (int i = 1; i <= std::abs(n); ++i) bar[static_cast<std::size_t>(kGaugeHalf + (n > 0 ? i : -i))] = '#';
   } else {
-    const int n = static_cast<int>(std::lround(value / 255.0 * (2 * kGaugeHalf + 1)));
+    const int n =
+        static_cast<int>(std::lround(value / static_cast<double>(protocol::kWholeByteMax) * (2 * kGaugeHalf + 1)));
     for (int i = 0; i < n; ++i) bar[static_cast<std::size_t>(i)] = '#';
   }
   return Line(fmt("  %-10s [%s] %3u", std::string(name).c_str(), bar.c_str(), unsigned{value}));
@@ -113,7 +116,7 @@ std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
           gauge("light", byte_of(data, "light"), std::nullopt), Line("  frame     " + protocol::to_hex(data))};
 }
 
-Screen render_monitor_view(std::string_view source, const link::VehicleSnapshot& v, bool live, TermSize size) {
+Screen render_monitor_screen(std::string_view source, const link::VehicleStatus& v, bool live, TermSize size) {
   Screen screen;
   screen.pin(Line("andros-bridge monitor", Style::kBold).add("  " + std::string(source)));
   if (live) {

@@ -1,4 +1,4 @@
-#include "andros/view/status_display.hpp"
+#include "andros/view/terminal_display.hpp"
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -53,7 +53,7 @@ bool is_interactive(int fd) {
   return isatty(fd) != 0 && (term == nullptr || std::strcmp(term, "dumb") != 0);
 }
 
-StatusDisplay::StatusDisplay(Compose compose, int redraws_per_second)
+TerminalDisplay::TerminalDisplay(Compose compose, int redraws_per_second)
     : compose_(std::move(compose)),
       period_ms_(1000 / redraws_per_second),
       log_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(kLogLines)) {
@@ -67,12 +67,12 @@ StatusDisplay::StatusDisplay(Compose compose, int redraws_per_second)
   colour_ = isatty(fd_) != 0 && colour_wanted(std::getenv("NO_COLOR"), std::getenv("TERM"));
 }
 
-StatusDisplay::~StatusDisplay() {
+TerminalDisplay::~TerminalDisplay() {
   stop();
   if (own_fd_) ::close(fd_);
 }
 
-void StatusDisplay::start() {
+void TerminalDisplay::start() {
   if (thread_.joinable()) return;
   auto& sinks = spdlog::default_logger()->sinks();
   saved_sinks_ = sinks;
@@ -83,7 +83,7 @@ void StatusDisplay::start() {
   pthread_setname_np(thread_.native_handle(), "andros-screen");  // as top -H and the idle-cost benchmark name it
 }
 
-void StatusDisplay::stop() {
+void TerminalDisplay::stop() {
   if (!thread_.joinable()) return;
   stop_->raise();
   thread_.join();
@@ -93,12 +93,12 @@ void StatusDisplay::stop() {
 
 // In the background (bg, or continued there) the terminal is the shell's. A
 // terminal that is not the controlling one has no foreground to respect.
-bool StatusDisplay::foreground() const {
+bool TerminalDisplay::foreground() const {
   const pid_t owner = tcgetpgrp(fd_);
   return owner < 0 || owner == getpgrp();
 }
 
-bool StatusDisplay::write_out(const std::string& text, int timeout_ms) {
+bool TerminalDisplay::write_out(const std::string& text, int timeout_ms) {
   if (broken_) return false;
   const int error = write_fully(fd_, text, timeout_ms);
   // Any failure but a slow terminal (EIO after a hang-up): the run goes on without a screen.
@@ -106,14 +106,14 @@ bool StatusDisplay::write_out(const std::string& text, int timeout_ms) {
   return error == 0;
 }
 
-void StatusDisplay::run() {
+void TerminalDisplay::run() {
   while (!stop_->requested()) {
     draw(false);
     stop_->sleep_until(monotonic_ns() + period_ms_ * kNsPerMs);
   }
 }
 
-void StatusDisplay::draw(bool final) {
+void TerminalDisplay::draw(bool final) {
   if (!foreground()) return;
   auto size = terminal_size(fd_);
   // One column short of the edge: a line never leaves the cursor waiting to wrap.

@@ -29,16 +29,16 @@ class ringbuffer_sink;
 
 namespace andros::view {
 
-class StatusDisplay {
+class TerminalDisplay {
  public:
   using Compose = std::function<Screen(TermSize)>;
 
   /// compose is called on the display thread with the size to fill; it must
   /// lock what it reads.
-  StatusDisplay(Compose compose, int redraws_per_second);
-  ~StatusDisplay();  ///< stops, draws the last screen, restores the log
-  StatusDisplay(const StatusDisplay&) = delete;
-  StatusDisplay& operator=(const StatusDisplay&) = delete;
+  TerminalDisplay(Compose compose, int redraws_per_second);
+  ~TerminalDisplay();  ///< stops, draws the last screen, restores the log
+  TerminalDisplay(const TerminalDisplay&) = delete;
+  TerminalDisplay& operator=(const TerminalDisplay&) = delete;
 
   /// Starts the thread (after all other set-up); again after stop() to redraw from scratch.
   void start();

@@ -1,4 +1,4 @@
-#include "andros/view/run_status.hpp"
+#include "andros/view/status_board.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -115,7 +115,7 @@ void RunStatusBoard::set_game_controller(std::optional<bool> game_controller) {
   status_.game_controller = game_controller;
 }
 
-RunStatus RunStatusBoard::snapshot() const {
+RunStatus RunStatusBoard::status() const {
   const std::lock_guard lock(mutex_);
   return status_;
 }
