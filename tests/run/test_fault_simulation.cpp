@@ -11,6 +11,10 @@
 // environment picks other ranges: ANDROS_SIM_SEED_BASE=N (the first seed),
 // ANDROS_SIM_SCRIPTS=M (how many). ANDROS_SIM_MAX_REPORTED=K prints up to K
 // failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop.
+// ANDROS_SIM_THREADS=T runs the seeds on T threads (one per core, at most 4):
+// seed s on thread s % T, each with its own mappings, the coverage and the
+// failures gathered at the end, so that what is checked and printed does not
+// depend on T (the sanitizer build's longest test, halved).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,6 +26,7 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "andros/input/events.hpp"
@@ -107,25 +112,51 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   const std::uint64_t first = from_environment("ANDROS_SIM_SEED_BASE", 1);
   const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", ANDROS_SIM_SCRIPTS);
   const auto max_reported = from_environment("ANDROS_SIM_MAX_REPORTED", 5);  // failures printed before it gives up
-  const Bridge::Observer observe = from_environment("ANDROS_SIM_TRACE", 0) != 0 ? trace : [](const TickReport&) {};
-  Library library;
-  test::OracleCoverage coverage;
-  std::uint64_t failures = 0;
-  std::uint64_t seed = first;
-  for (; seed < first + count && failures < max_reported; ++seed) {
-    test::Random rng(seed);
-    const auto script = test::fault_script(rng, library.targets());
-    const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
-    for (const bool weapons : {false, true}) {
-      const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
-      coverage += out.coverage;
-      if (!out.violation.empty()) {
-        ADD_FAILURE() << describe_failure(seed, mapping_file, weapons, script, out.violation);
-        ++failures;
-        break;
+  const bool tracing = from_environment("ANDROS_SIM_TRACE", 0) != 0;
+  const Bridge::Observer observe = tracing ? trace : [](const TickReport&) {};
+  const std::uint64_t cores = std::clamp<std::uint64_t>(std::thread::hardware_concurrency(), 1, 4);
+  const std::uint64_t threads = tracing ? 1 : std::max<std::uint64_t>(1, from_environment("ANDROS_SIM_THREADS", cores));
+
+  // One worker per thread: the seeds s with s % threads == k, in order, each
+  // failure kept by seed; a worker stops after max_reported failures of its own.
+  struct Worker {
+    test::OracleCoverage coverage;
+    std::vector<std::pair<std::uint64_t, std::string>> failures;
+  };
+  std::vector<Worker> workers(threads);
+  auto work = [&](std::uint64_t k) {
+    Library library;
+    Worker& w = workers[k];
+    for (std::uint64_t seed = first + k; seed < first + count && w.failures.size() < max_reported; seed += threads) {
+      test::Random rng(seed);
+      const auto script = test::fault_script(rng, library.targets());
+      const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
+      for (const bool weapons : {false, true}) {
+        const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
+        w.coverage += out.coverage;
+        if (!out.violation.empty()) {
+          w.failures.emplace_back(seed, describe_failure(seed, mapping_file, weapons, script, out.violation));
+          break;
+        }
       }
     }
+  };
+  std::vector<std::thread> running;
+  for (std::uint64_t k = 1; k < threads; ++k) running.emplace_back(work, k);
+  work(0);
+  for (auto& t : running) t.join();
+
+  test::OracleCoverage coverage;
+  std::vector<std::pair<std::uint64_t, std::string>> failed;
+  for (auto& w : workers) {
+    coverage += w.coverage;
+    failed.insert(failed.end(), w.failures.begin(), w.failures.end());
   }
+  std::sort(failed.begin(), failed.end());
+  if (failed.size() > max_reported) failed.resize(max_reported);
+  for (const auto& [seed, text] : failed) ADD_FAILURE() << text;
+  const std::uint64_t failures = failed.size();
+  const std::uint64_t seed = failed.empty() ? first + count : failed.back().first + 1;
   std::string after;
   for (std::size_t i = 0; i < coverage.motion_after.size(); ++i) {
     if (coverage.motion_after[i] == 0) continue;
