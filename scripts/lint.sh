@@ -21,8 +21,10 @@ if [[ $what == all || $what == --format ]]; then
   # One warning per place clang-format would change; the files they are in.
   out=$(mktemp)
   clang-format --dry-run "${files[@]}" 2>"$out" || true
-  places=$(grep -c ': warning: code should be clang-formatted' "$out" || true)
-  unformatted=$(grep ': warning: code should be clang-formatted' "$out" | cut -d: -f1 | sort -u | wc -l)
+  # (awk, not grep | cut | sort: a grep that finds nothing, on a clean tree,
+  # fails the pipeline under pipefail.)
+  places=$(awk '/: warning: code should be clang-formatted/ { n++ } END { print n + 0 }' "$out")
+  unformatted=$(awk -F: '/: warning: code should be clang-formatted/ && !seen[$1]++ { n++ } END { print n + 0 }' "$out")
   echo "format: $places place(s) in $unformatted of ${#files[@]} files differ from .clang-format (scripts/lint.sh --fix)"
   rm -f "$out"
   ((places == 0)) || status=1
