@@ -48,8 +48,8 @@ std::string random_suffix() {
 
 }  // namespace
 
-OutputFile::OutputFile(std::string path, WriteFn write, NewFile new_file)
-    : path_(std::move(path)), write_(write ? write : write_all) {
+OutputFile::OutputFile(std::string path, WriteFn write_fn, NewFile new_file)
+    : path_(std::move(path)), write_(write_fn ? write_fn : write_all) {
   if (path_ == "-") {
     fd_ = STDOUT_FILENO;
     return;
