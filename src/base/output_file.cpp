@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Written out once this much is buffered.
-constexpr std::size_t kBufferBytes = 64 * 1024;
+constexpr std::size_t kBufferBytes = std::size_t{64} * 1024;
 /// Links followed before giving up, as the kernel does (ELOOP).
 constexpr int kMaxLinks = 40;
 
