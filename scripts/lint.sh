@@ -44,7 +44,13 @@ if [[ $what == all || $what == --tidy ]]; then
   cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=OFF -DANDROS_CCACHE=OFF \
     -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
   log="$lint_build/clang-tidy.log"
-  scripts/lint_tidy.py "$lint_build" . "$log"
+  # In the background, waited for: a TERM (scripts/test.sh ending early)
+  # reaches it, and it ends the clang-tidy processes it started.
+  scripts/lint_tidy.py "$lint_build" . "$log" &
+  tidy_py=$!
+  trap 'kill "$tidy_py" 2>/dev/null' TERM INT
+  wait "$tidy_py"
+  trap - TERM INT
   # A header's finding is reported from each file that includes it: counted once.
   grep -E '^/.*: (warning|error): .*\[[a-z.-]+(,[a-z.-]+)*\]$' "$log" | sort -u >"$log.findings" || true
   findings=$(wc -l <"$log.findings")
