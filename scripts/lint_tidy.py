@@ -8,9 +8,11 @@ A file's output is looked up by a key made of what it depends on: clang-tidy's
 version and arguments, .clang-tidy, the file's compile command, and the text
 of the file and of every header it includes (project and system headers alike,
 as the compiler lists them with -M). Any change to one of them runs the file
-again; nothing else does. The cache is ANDROS_TIDY_CACHE (default
-~/.cache/andros-bridge/clang-tidy; 'none': no cache); an entry not used for
-30 days is removed. Every file's output goes to LOG, in the database's order.
+again; nothing else does. Paths inside the source tree are keyed and kept
+relative to it, so that another clone of it finds the same results. The
+cache is ANDROS_TIDY_CACHE (default ~/.cache/andros-bridge/clang-tidy;
+'none': no cache); an entry not used for 30 days is removed. Every file's
+output goes to LOG, in the database's order.
 """
 
 import concurrent.futures
@@ -72,6 +74,11 @@ def main():
             if now - old.stat().st_mtime > MAX_AGE_DAYS * 86400:
                 old.unlink(missing_ok=True)
 
+    prefix = str(source).encode() + b"/"
+
+    def relative(text):
+        return text.replace(prefix, b"@SOURCE@/")
+
     common = hashlib.sha256()
     common.update(subprocess.run(["clang-tidy", "--version"], capture_output=True, check=True).stdout)
     common.update(" ".join(TIDY_ARGS).encode())
@@ -83,9 +90,9 @@ def main():
         if deps is None:
             return None
         h = common.copy()
-        h.update(entry.get("command", " ".join(entry.get("arguments", []))).encode())
+        h.update(relative((entry["directory"] + "\0" + entry.get("command", " ".join(entry.get("arguments", [])))).encode()))
         for d in deps:
-            h.update(d.encode() + b"\0" + hasher.file(d).encode())
+            h.update(relative(d.encode()) + b"\0" + hasher.file(d).encode())
         return h.hexdigest()
 
     running = set()
@@ -99,7 +106,7 @@ def main():
         # Kept only when clang-tidy ran to its end (an error in the file is not cached).
         if cache and key and proc.returncode == 0:
             tmp = cache / f"{key}.{os.getpid()}.tmp"
-            tmp.write_bytes(out)
+            tmp.write_bytes(relative(out))
             tmp.replace(cache / key)
         return out
 
@@ -118,7 +125,7 @@ def main():
             hit = cache / key if cache and key else None
             if hit and hit.exists():
                 hit.touch()
-                outputs.append(hit.read_bytes())
+                outputs.append(hit.read_bytes().replace(b"@SOURCE@/", prefix))
             else:
                 outputs.append(pool.submit(tidy, entry, key))
                 checked += 1
