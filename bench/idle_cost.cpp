@@ -193,7 +193,7 @@ Measured measure(const Sample& a, const Sample& b, const Arrivals& port, std::in
     const long d = n - (it == a.switches.end() ? 0 : it->second);
     total += d;
     threads << (threads.tellp() > 0 ? ", " : "") << task.substr(task.find(' ') + 1) << " "
-            << std::lround(static_cast<double>(d) / seconds * 10) / 10.0 << "/s";
+            << static_cast<double>(std::lround(static_cast<double>(d) / seconds * 10)) / 10.0 << "/s";
   }
   m.wakeups = static_cast<double>(total) / seconds;
   m.rss_mb = b.rss_mb;

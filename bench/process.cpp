@@ -94,8 +94,8 @@ void first_neutral_after_stop(const std::string& bin) {
   std::vector<double> ms;
   for (int i = 0; i < 10; ++i) {
     bench::BridgeProcess run(bin, std::string(kDrive) + "60000 end\n");
-    bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, 15 + i);  // driving by now
-    sleep_until_ns_uninterrupted(monotonic_ns() + i * 4 * kNsPerMs);       // 0..36 ms into the period
+    bench::read_arrivals(run.pty.master.get(), run.t0 + kWaitNs, static_cast<std::size_t>(15 + i));  // driving by now
+    sleep_until_ns_uninterrupted(monotonic_ns() + i * 4 * kNsPerMs);  // 0..36 ms into the period
     const auto t_term = monotonic_ns();
     kill(run.pid, SIGTERM);
     const auto tail = bench::read_arrivals(run.pty.master.get(), t_term + kWaitNs, SIZE_MAX, run.pid);

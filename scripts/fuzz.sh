@@ -12,9 +12,12 @@ shift || true
 scripts/setup.sh clang libclang-rt-14-dev
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 # -g1: line tables are all a finding's stack trace needs, in less compile time.
+# In CI (CI=true) warnings are errors, clang's as gcc's in the other builds.
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
+werror=OFF
+[[ ${CI:-} == true ]] && werror=ON
 CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DANDROS_FUZZ=ON -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
+  -DANDROS_WERROR="$werror" -DANDROS_FUZZ=ON -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   mapfile -t targets < <(sed -n 's/^set(ANDROS_FUZZ_TARGETS \(.*\))$/\1/p' fuzz/CMakeLists.txt | tr ' ' '\n')

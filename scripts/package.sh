@@ -30,6 +30,8 @@ tar -c --exclude='./build*' --exclude='./obj-*' --exclude=./dist --exclude=./.gi
 if command -v ccache >/dev/null; then
   export CCACHE_DIR=${CCACHE_DIR:-$(ccache -k cache_dir)} CCACHE_BASEDIR="$PWD/$work/src"
 fi
+# CI=true: warnings are errors here too (debian/rules reads ANDROS_WERROR).
+[[ ${CI:-} == true ]] && export ANDROS_WERROR=ON
 (cd "$work/src" && DEB_BUILD_OPTIONS="parallel=$(nproc) noautodbgsym nocheck ${DEB_BUILD_OPTIONS:-}" \
   DEB_CXXFLAGS_APPEND="-g1 ${DEB_CXXFLAGS_APPEND:-}" dpkg-buildpackage -b -us -uc)
 rm -f dist/andros-bridge_*.deb

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing, builds, runs every test:
-# the suite, the same suite again under AddressSanitizer + UndefinedBehaviorSanitizer
-# (build-asan/), the Debian package (built by scripts/package.sh, then checked by
-# tests/package/test_package.sh), and, where clang's libFuzzer is installed, each
-# fuzz target briefly.
+# The README's test command: installs what is missing, checks the format
+# (.clang-format), builds, runs every test: the suite (with clang-tidy over
+# src/ beside it, scripts/lint.sh), the same suite again under AddressSanitizer
+# + UndefinedBehaviorSanitizer (build-asan/), the Debian package (built by
+# scripts/package.sh, then checked by tests/package/test_package.sh), and,
+# where clang's libFuzzer is installed, each fuzz target briefly.
+# With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 jobs=$(nproc)
 summary=$(mktemp)
-trap 'rm -f "$summary" "$times_file"' EXIT
+tidy_pid=
+# clang-tidy runs in the background beside the tests: it ends with the script.
+trap 'rm -f "$summary" "$times_file"; [[ -z $tidy_pid ]] || kill "$tidy_pid" 2>/dev/null || true' EXIT
 
 # CPU seconds (user + system) of every process this script has waited for so
 # far: `times` run by this shell itself (in a pipe or $(...) it would time a
@@ -55,11 +59,31 @@ closing() {
 ctest_jobs=$((3 * jobs))
 asan_ctest_jobs=$((2 * jobs))
 
+quick=${ANDROS_QUICK:-}
+scripts/setup.sh
+if [[ $quick != 1 ]]; then
+  phase "format (scripts/lint.sh --format)"
+  scripts/lint.sh --format
+fi
 phase "build ($build)"
 scripts/build.sh
+if [[ $quick != 1 ]]; then
+  # clang-tidy beside the tests, which mostly wait on the frame clock; niced,
+  # so that the tests get the cores first. Its cache (scripts/lint_tidy.py)
+  # makes a run over unchanged files take seconds.
+  tidy_log="$build/lint-tidy.log"
+  nice -n 10 scripts/lint.sh --tidy >"$tidy_log" 2>&1 &
+  tidy_pid=$!
+fi
 phase "test ($build)"
 ctest --test-dir "$build" --output-on-failure --parallel "$ctest_jobs" --timeout 300 | tee -a "$summary"
-if [[ ${ANDROS_QUICK:-} == 1 ]]; then closing; exit 0; fi
+if [[ $quick == 1 ]]; then closing; exit 0; fi
+phase "clang-tidy (scripts/lint.sh --tidy, begun beside the tests)"
+tidy_status=0
+wait "$tidy_pid" || tidy_status=$?
+tidy_pid=
+cat "$tidy_log"
+((tidy_status == 0)) || exit 1
 
 # -Og: what the sanitizers find does not need -O2's (or -O1's) time to compile:
 # GCC instruments -Og code in 40% less time than -O1 code (4m30 of CPU for the

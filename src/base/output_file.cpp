@@ -17,7 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Written out once this much is buffered.
-constexpr std::size_t kBufferBytes = 64 * 1024;
+constexpr std::size_t kBufferBytes = std::size_t{64} * 1024;
 /// Links followed before giving up, as the kernel does (ELOOP).
 constexpr int kMaxLinks = 40;
 
@@ -48,8 +48,8 @@ std::string random_suffix() {
 
 }  // namespace
 
-OutputFile::OutputFile(std::string path, WriteFn write, NewFile new_file)
-    : path_(std::move(path)), write_(write ? write : write_all) {
+OutputFile::OutputFile(std::string path, WriteFn write_fn, NewFile new_file)
+    : path_(std::move(path)), write_(write_fn ? write_fn : write_all) {
   if (path_ == "-") {
     fd_ = STDOUT_FILENO;
     return;
@@ -104,7 +104,10 @@ void OutputFile::open_temporary(const std::string& target, const struct stat* ol
   }
   if (fd_ < 0 || old == nullptr) return;
   // The owner first: a change of owner clears set-user-ID bits the mode then gives back.
-  if (::fchown(fd_, old->st_uid, old->st_gid) != 0) (void)::fchown(fd_, static_cast<uid_t>(-1), old->st_gid);
+  // Both may be refused (not root, not in the group): the file keeps ours, as a new one would.
+  if (::fchown(fd_, old->st_uid, old->st_gid) != 0 && ::fchown(fd_, static_cast<uid_t>(-1), old->st_gid) != 0) {
+    // (a (void) cast does not silence gcc's warn_unused_result, which _FORTIFY_SOURCE puts on fchown)
+  }
   (void)::fchmod(fd_, old->st_mode & 07777);
 }
 

@@ -93,8 +93,9 @@ std::vector<std::string> lost_signals(const mapping::Mapping& m) {
       }
       break;
     }
-    out.push_back(format_error(
-        at, name + " is on no input: " + why + " (bind it to another input if the vehicle needs it)", "warning"));
+    std::string message = name;
+    message.append(" is on no input: ").append(why).append(" (bind it to another input if the vehicle needs it)");
+    out.push_back(format_error(at, message, "warning"));
   }
   return out;
 }
@@ -124,7 +125,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
         if (const auto trim = mapping::center_effect(mapping.center); !trim.empty()) {
           notes += (notes.empty() ? "" : "; ") + trim;
         }
-        if (!notes.empty()) notes = " (" + notes + ")";
+        if (!notes.empty()) notes.insert(0, " (").append(")");
         std::printf("%s: ok%s\n", file.c_str(), notes.c_str());
         std::fflush(stdout);
         for (const auto& w : warnings(mapping)) std::fprintf(stderr, "%s\n", w.c_str());

@@ -75,7 +75,7 @@ int run_decode(const DecodeOptions& opt) {
     std::fwrite(line.data(), 1, line.size(), stdout);
     std::fputc('\n', stdout);
   };
-  std::vector<std::uint8_t> chunk(64 * 1024);
+  std::vector<std::uint8_t> chunk(std::size_t{64} * 1024);
   while (true) {
     const std::size_t got = std::fread(chunk.data(), 1, chunk.size(), in);
     if (got > 0) decoder.push(std::span(chunk.data(), got), print);

@@ -36,7 +36,7 @@ struct MonitorOptions {
 constexpr int kRedrawsPerSecond = 4;
 constexpr std::int64_t kQuietNs = kNsPerSecond;  ///< no frame for this long: the stream stopped
 /// After a stop, what has already arrived is still read, up to these bounds.
-constexpr std::size_t kDrainBytes = 256 * 1024;
+constexpr std::size_t kDrainBytes = std::size_t{256} * 1024;
 constexpr std::int64_t kDrainNs = 200'000'000;
 
 /// Off a terminal: one line when frames start or stop arriving or errors grow.

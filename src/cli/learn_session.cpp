@@ -157,7 +157,7 @@ fs::path robot_mapping_past(const std::string& robot, const fs::path& output) {
   for (const auto& dir : mapping::mapping_search_path()) {
     std::error_code ec;
     if (!fs::is_regular_file(dir / file, ec)) continue;
-    const auto found = canonical_of(dir / file);
+    auto found = canonical_of(dir / file);
     if (found != output) return found;
   }
   return {};

@@ -108,7 +108,9 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view
 
 }  // namespace
 
-int main(int argc, char** argv) {
+// What run() does not catch, such as no memory or no thread for the log
+// before any command runs, ends the program with a line, not an abort.
+int main(int argc, char** argv) try {
   keep_standard_descriptors_taken();
   // Log lines go to stderr through a queue and a thread of their own (which
   // blocks every signal, SIGPIPE included): stdout carries data (frame
@@ -145,4 +147,10 @@ int main(int argc, char** argv) {
   refuse_empty_values(app);
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);
+} catch (const std::exception& e) {
+  std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+  return andros::kExitRuntime;
+} catch (...) {
+  std::fprintf(stderr, "andros-bridge: error: an unknown exception\n");
+  return andros::kExitRuntime;
 }

@@ -152,7 +152,7 @@ std::string layer_name(const Mapping& m, int layer) {
 
 // "lefty up", "rightx left", "lefttrigger", "axis 2 -"; a button's name.
 std::string describe(const Gesture& g) {
-  const auto name = input::input_name(g.key);
+  auto name = input::input_name(g.key);
   if (g.key.is_button()) return name;
   if (g.key.kind == input::InputKind::kJoyAxis) return "axis " + name + (g.negative ? " -" : " +");
   if (is_pad_trigger(g.key)) return g.negative ? name + " (released side)" : name;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
@@ -291,7 +292,7 @@ fs::path robot_base(const Reader& r, const YAML::Node& node, std::string_view ro
   std::string looked;
   for (const auto& dir : mapping_search_path()) {
     std::error_code ec;
-    const auto candidate = dir / file;
+    auto candidate = dir / file;
     if (!fs::is_regular_file(candidate, ec)) continue;
     if (std::find(chain.files.begin(), chain.files.end(), fs::weakly_canonical(candidate, ec)) != chain.files.end())
       continue;
@@ -383,7 +384,7 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
         return;
       }
       const double seconds = r.number(t, kEnableTimeoutMinS, kEnableTimeoutMaxS, false, "enable_timeout");
-      m.enable_timeout_ms = static_cast<std::int64_t>(seconds * 1000.0 + 0.5);
+      m.enable_timeout_ms = std::llround(seconds * 1000.0);
     });
   }
   if (const auto sup = root["supervisor"]) errors.attempt([&] { m.supervisor = read_supervisor(r, sup); });

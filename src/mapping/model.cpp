@@ -77,9 +77,9 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                    // A layer key that also arms would make one press enter the layer and arm it.
                    for (const auto& key : reserved) {
                      if (*r.arm == key.key) {
-                       const auto& at = blame(file, b.arm->pos, key.pos);
-                       throw InputError(at, "'arm' must be a second button, not the key of a layer (" +
-                                                line_of(&at == &key.pos ? b.arm->pos : key.pos, at) + ")");
+                       const auto& blamed = blame(file, b.arm->pos, key.pos);
+                       throw InputError(blamed, "'arm' must be a second button, not the key of a layer (" +
+                                                    line_of(&blamed == &key.pos ? b.arm->pos : key.pos, blamed) + ")");
                      }
                    }
                  },

@@ -190,16 +190,14 @@ void RestRule::update_consent(const input::InputState& input, int layer, bool en
   const auto& weapons = weapons_[static_cast<std::size_t>(layer + 1)];
   const bool meant = enabled && !weapons.empty();
   bool held_back = consent_ == ConsentState::kHeldBack;
-  if (!meant) {
-    held_back = false;
-  } else if (!consent_meant_ || !same_pad || input.connection() != connection_ ||
-             weapons != weapons_[static_cast<std::size_t>(layer_ + 1)]) {
+  if (meant && (!consent_meant_ || !same_pad || input.connection() != connection_ ||
+                weapons != weapons_[static_cast<std::size_t>(layer_ + 1)])) {
     // A new meaning: pressed in this very frame it counts, held since before it waits.
     const bool pressed_now = now.presses > (same_pad ? consent_presses_ : 0U);
     held_back = now.down && !pressed_now;
     consent_hold_presses_ = now.presses;
-  } else if (held_back && (!now.down || now.presses > consent_hold_presses_)) {
-    held_back = false;  // released, or released and pressed again since
+  } else if (!meant || (held_back && (!now.down || now.presses > consent_hold_presses_))) {
+    held_back = false;  // nothing to consent to; or released, or released and pressed again since
   }
   consent_ = held_back ? ConsentState::kHeldBack : now.down ? ConsentState::kGiven : ConsentState::kReleased;
   consent_meant_ = meant;

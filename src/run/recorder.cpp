@@ -60,7 +60,7 @@ namespace {
 /// system call on the loop's side of the queue).
 constexpr auto kPollPeriod = std::chrono::milliseconds(250);
 constexpr auto kSyncPeriod = std::chrono::seconds(1);
-constexpr std::size_t kBatchBytes = 64 * 1024;
+constexpr std::size_t kBatchBytes = std::size_t{64} * 1024;
 
 }  // namespace
 
@@ -252,18 +252,17 @@ bool RecordingInput::finished(std::int64_t now_ms) const {
   return done;
 }
 
-RunControl recorded_control(RunControl inner, Recorder& recorder, std::function<SessionSettings()> settings) {
-  RunControl out = inner;
-  out.poll = [poll = inner.poll, &recorder] {
+RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings) {
+  control.poll = [poll = std::move(control.poll), &recorder] {
     const Request r = poll();
     recorder.request(r);
     return r;
   };
-  out.pause = [pause = inner.pause, &recorder] {
+  control.pause = [pause = std::move(control.pause), &recorder] {
     pause();
     recorder.paused();
   };
-  out.finish_reload = [finish = inner.finish_reload, &recorder, settings = std::move(settings)] {
+  control.finish_reload = [finish = std::move(control.finish_reload), &recorder, settings = std::move(settings)] {
     auto outcome = finish();
     if (outcome) {
       if (outcome->ok) {
@@ -275,7 +274,7 @@ RunControl recorded_control(RunControl inner, Recorder& recorder, std::function<
     }
     return outcome;
   };
-  return out;
+  return control;
 }
 
 }  // namespace andros::run

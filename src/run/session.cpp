@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
@@ -15,7 +17,7 @@ namespace {
 constexpr std::size_t kHashDigits = 64;
 /// A session line longer than this is not one the recorder wrote (a mapping
 /// file's text is the longest, bounded far below it by the loader).
-constexpr std::size_t kMaxSessionLine = 64 * 1024 * 1024;
+constexpr std::size_t kMaxSessionLine = std::size_t{64} * 1024 * 1024;
 
 std::string_view result_name(const FrameRecord& f) {
   if (!f.offered) return "none";
@@ -347,7 +349,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     r.outcome.message = f.json().get<std::string>();
     if (r.outcome.ok) {
       if (!pending) throw InputError(pos, "a reload without the settings it put in place");
-      r.settings = std::move(pending);
+      r.settings = std::exchange(pending, std::nullopt);
     }
     pending.reset();
     s.reloads.push_back(std::move(r));

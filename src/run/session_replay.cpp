@@ -15,9 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Ticks the replay may run past the live run's last before it is called astray.
-constexpr std::int64_t kOverrunTicks = 100;
-
 /// The session as the loop's world: its clock, input, link and controls,
 /// with where the replay is now.
 class Playback {

@@ -200,8 +200,8 @@ std::string render_inputs_screen(const input::InputState& state, const std::opti
   if (column % per_row != 0) out += "\n";
   if (layout->game_controller && layout->buttons.size() < input::kPadButtonNames.size()) {
     std::string missing;
-    for (std::uint16_t b = 0; b < input::kPadButtonNames.size(); ++b) {
-      const InputKey key{InputKind::kPadButton, b};
+    for (std::size_t b = 0; b < input::kPadButtonNames.size(); ++b) {
+      const InputKey key{InputKind::kPadButton, static_cast<std::uint16_t>(b)};
       if (std::find(layout->buttons.begin(), layout->buttons.end(), key) == layout->buttons.end()) {
         missing += " " + input::input_name(key);
       }

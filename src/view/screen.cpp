@@ -54,7 +54,7 @@ void cut(const Line& line, std::size_t width, Out out) {
 
 }  // namespace
 
-Line& Line::add(std::string text, Style style) {
+Line& Line::add(std::string_view text, Style style) {
   // A control character would move the cursor: a name from a controller or
   // a file is shown, never obeyed (escaped as everywhere: base/text.hpp).
   pieces_.push_back(Piece{printable_line(text), style});

@@ -101,8 +101,9 @@ std::string past(double threshold) {
 /// Collects one layer's entries, one per input (a second meaning is joined on).
 class PanelBuilder {
  public:
-  void add(InputKey key, SheetMark mark, std::string function, std::string detail = {}, bool inherited = false) {
-    auto [it, fresh] = entries_.try_emplace(key, SheetEntry{key, label(key), mark, function, detail, inherited});
+  void add(InputKey key, SheetMark mark, const std::string& function, std::string detail = {}, bool inherited = false) {
+    auto [it, fresh] =
+        entries_.try_emplace(key, SheetEntry{key, label(key), mark, function, std::move(detail), inherited});
     if (!fresh) it->second.function += "; " + function;
   }
 

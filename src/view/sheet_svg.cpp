@@ -49,8 +49,9 @@ std::string_view mark_colour(SheetMark mark) {
 
 double text_width(const SheetEntry& e, double size) {
   const auto mark = mark_name(e.mark);
-  const double chars = static_cast<double>(e.function.size()) + (mark.empty() ? 0 : mark.size() + 1.2) +
-                       (e.detail.empty() ? 0 : (e.detail.size() + 3) * kSmallSize / kLabelSize);
+  const double chars = static_cast<double>(e.function.size()) +
+                       (mark.empty() ? 0 : static_cast<double>(mark.size()) + 1.2) +
+                       (e.detail.empty() ? 0 : static_cast<double>(e.detail.size() + 3) * kSmallSize / kLabelSize);
   return chars * kCharWidth * size;
 }
 

@@ -100,7 +100,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{"0 supervisor axis leftx 40000\n", 1, 25, "axis value 40000 is out of range -32768..32767"},
         BadScript{"0 connect\n86400001 end\n", 2, 1,
                   "time 86400001 ms is past 24 h (86400000 ms), the longest an event script may last"}),
-    [](const auto& info) { return "case" + std::to_string(info.index); });
+    [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
 
 // A controller names itself (its USB descriptors): a name holding newlines
 // written by `record` stays one connect line and reads back as the same bytes.

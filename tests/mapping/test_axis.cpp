@@ -38,7 +38,7 @@ INSTANTIATE_TEST_SUITE_P(
                       AxisCase{8192, {}, false, 64},    // 255 * 0.250008 = 63.75
                       AxisCase{16384, {}, false, 128},  // 127.504
                       AxisCase{-20000, {}, false, 0}),  // a stick's negative half on a level byte
-    [](const auto& info) { return "case" + std::to_string(info.index); });
+    [](const auto& param_info) { return "case" + std::to_string(param_info.index); });
 
 TEST(AxisArithmetic, RoundsHalvesAwayFromZero) {
   EXPECT_EQ(round_half_away(2.5), 3);

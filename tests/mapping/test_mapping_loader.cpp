@@ -216,8 +216,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadMapping{"supervisor consent the stop",
                    "robot: HD1\ndeadman: a\nsupervisor:\n  stop: b\n  weapons_consent: b\n", 5, 20,
                    "the supervisor's 'weapons_consent' must be a different button from its 'stop' (line 4)"}),
-    [](const auto& info) {
-      std::string name = info.param.what;
+    [](const auto& param_info) {
+      std::string name = param_info.param.what;
       for (auto& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       return name;
     });

@@ -131,8 +131,8 @@ INSTANTIATE_TEST_SUITE_P(
             3, 17, "'y' steps the speed level in every layer; it also arms a weapon at line 7"},
         BadScale{"feedback pulses for a speed level", kHead + "feedback:\n  speed_level: {pulses: 2}\n", 4, 25,
                  "speed_level plays one pulse per level (level 3: three pulses); it takes no 'pulses'"}),
-    [](const auto& info) {
-      std::string name = info.param.what;
+    [](const auto& param_info) {
+      std::string name = param_info.param.what;
       for (auto& ch : name) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
       return name;
     });

@@ -135,7 +135,7 @@ TEST_P(StandardSession, ReplaysTheSameThroughEveryRobotType) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RobotTypes, StandardSession, ::testing::ValuesIn(protocol::kRobotTypes),
-                         [](const auto& info) { return std::string(info.param); });
+                         [](const auto& param_info) { return std::string(param_info.param); });
 
 }  // namespace
 }  // namespace andros::mapping

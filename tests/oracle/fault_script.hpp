@@ -168,10 +168,12 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 11: add(T::kReload); break;  // the same file again
         case 12:
         case 13:
-          if (!targets.good.empty()) add(T::kReload, {}, 0, targets.good[pick.below(targets.good.size())]);
+          if (!targets.good.empty())
+            add(T::kReload, {}, 0, targets.good[pick.below(static_cast<std::uint32_t>(targets.good.size()))]);
           break;
         case 14:
-          if (!targets.bad.empty()) add(T::kReload, {}, 0, targets.bad[pick.below(targets.bad.size())]);
+          if (!targets.bad.empty())
+            add(T::kReload, {}, 0, targets.bad[pick.below(static_cast<std::uint32_t>(targets.bad.size()))]);
           break;
         case 15:
           add(T::kStop);

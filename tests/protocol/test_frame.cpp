@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <random>
 
 #include "andros/base/error.hpp"
@@ -84,7 +85,7 @@ TEST(Frame, RoundTripTenThousandRandomBlocks) {
 TEST(FrameBuilder, ForcesValidationBitsCodeAndTrailer) {
   ControlState all_ones;
   all_ones.values.fill(0xFF);
-  for (const std::uint8_t code : {0x00, 0x01, 0x3C, 0xFF}) {
+  for (const std::uint8_t code : std::initializer_list<std::uint8_t>{0x00, 0x01, 0x3C, 0xFF}) {
     for (const auto& state : {ControlState{}, all_ones}) {
       const auto data = FrameBuilder(code).build(state);
       EXPECT_TRUE(validation_errors(data).empty());

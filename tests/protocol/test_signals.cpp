@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <vector>
@@ -19,7 +20,7 @@ TEST(Signals, NamesAreUnique) {
 
 TEST(Signals, EveryBitOfTheSwitchBytesIsASignalOrFixed) {
   // Bytes 0-5, 10 and 13 are all switches: each bit is a signal or a fixed bit, once.
-  for (const std::uint8_t byte : {0, 1, 2, 3, 4, 5, 10, 13}) {
+  for (const std::uint8_t byte : std::initializer_list<std::uint8_t>{0, 1, 2, 3, 4, 5, 10, 13}) {
     for (std::uint8_t bit = 0; bit < 8; ++bit) {
       int owners = is_fixed_bit(byte, bit) ? 1 : 0;
       for (const auto& s : kSignals) owners += (s.byte == byte && s.bit == bit) ? 1 : 0;
@@ -62,7 +63,7 @@ TEST(Signals, OpposingPairsOfTheSafetyRules) {
       {"speed_high", "speed_low"},
   };
   std::size_t with_partner = 0;
-  for (const auto& s : kSignals) with_partner += s.partner.empty() ? 0 : 1;
+  for (const auto& s : kSignals) with_partner += s.partner.empty() ? 0U : 1U;
   EXPECT_EQ(with_partner, 2 * std::size(pairs));
   for (const auto& [a, b] : pairs) {
     const auto ia = find_signal(a);

@@ -157,11 +157,11 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   for (const auto& [seed, text] : failed) ADD_FAILURE() << text;
   const std::uint64_t failures = failed.size();
   const std::uint64_t seed = failed.empty() ? first + count : failed.back().first + 1;
-  std::string after;
+  std::string endings;
   for (std::size_t i = 0; i < coverage.motion_after.size(); ++i) {
     if (coverage.motion_after[i] == 0) continue;
-    after += (after.empty() ? "" : ", ") + std::string(to_string(static_cast<test::Ending>(i))) + " " +
-             std::to_string(coverage.motion_after[i]);
+    endings += (endings.empty() ? "" : ", ") + std::string(to_string(static_cast<test::Ending>(i))) + " " +
+               std::to_string(coverage.motion_after[i]);
   }
   std::printf(
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
@@ -169,7 +169,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
       "%lld frames with a supervisor's controller\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
-      static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), after.c_str(),
+      static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),

@@ -59,7 +59,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // The supervisor's controller: its loss, its absence at the start, its weapons consent.
                       Case{"supervisor_loss", "core.yaml"}, Case{"supervisor_late", "core.yaml"},
                       Case{"supervisor_consent", "supervisor.yaml", true}),
-    [](const auto& info) { return std::string(info.param.name); });
+    [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace
 }  // namespace andros::run

@@ -37,8 +37,8 @@ class OutputFile {
   /// A new file: made at commit() (whole or not at all), or as written (a live recording).
   enum class NewFile : std::uint8_t { kAtCommit, kAsWritten };
 
-  /// Opens path for writing as above. write: nullptr for write_fully().
-  explicit OutputFile(std::string path, WriteFn write = nullptr, NewFile new_file = NewFile::kAtCommit);
+  /// Opens path for writing as above. write_fn: nullptr for write_fully().
+  explicit OutputFile(std::string path, WriteFn write_fn = nullptr, NewFile new_file = NewFile::kAtCommit);
   /// Without commit(): the temporary is removed and the target left as it was.
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;

@@ -13,7 +13,7 @@
 namespace andros::input {
 
 /// The latest time an event may have: a script lasts at most a day.
-inline constexpr std::int64_t kMaxScriptMs = 24 * 3600 * 1000;
+inline constexpr std::int64_t kMaxScriptMs = std::int64_t{24} * 3600 * 1000;
 /// The longest controller name a `connect` line may carry, so that every
 /// event written back (`record`) stays far inside the line bound.
 inline constexpr std::size_t kMaxControllerNameBytes = 256;

@@ -154,6 +154,6 @@ class RecordingInput final : public input::InputSource {
 /// The loop's controls with what they answer recorded: requests, the end of a
 /// job-control stop, reload outcomes (with the settings they put in place:
 /// settings() is asked after an ok one).
-RunControl recorded_control(RunControl inner, Recorder& recorder, std::function<SessionSettings()> settings);
+RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings);
 
 }  // namespace andros::run

@@ -36,8 +36,8 @@ struct Piece {
 class Line {
  public:
   Line() = default;
-  Line(std::string text, Style style = Style::kPlain) { add(std::move(text), style); }  // NOLINT: implicit by design
-  Line& add(std::string text, Style style = Style::kPlain);
+  Line(std::string_view text, Style style = Style::kPlain) { add(text, style); }  // NOLINT: implicit by design
+  Line& add(std::string_view text, Style style = Style::kPlain);
   [[nodiscard]] const std::vector<Piece>& pieces() const { return pieces_; }
   /// Characters shown (UTF-8 code points; escape sequences are never in a piece).
   [[nodiscard]] std::size_t width() const;
