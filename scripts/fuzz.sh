@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
 # Fuzzes each libFuzzer target for a while: scripts/fuzz.sh [SECONDS] [TARGET...]
-# (default 60 s each, every target). Builds with clang into build-fuzz/, works
+# (default 60 s each, every target; scripts/fuzz.sh --build [TARGET...]
+# only builds them). Builds with clang into build-fuzz/, works
 # on a scratch copy of fuzz/corpus/TARGET, and writes any crash into
 # fuzz/crashes/TARGET/, where the replay test (ctest fuzz_replay.TARGET) keeps
 # running it once it is fixed. Runs as many targets at once as there are
 # cores, then prints executions and exec/s per target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-60}
-shift || true
+build_only=0
+if [[ ${1:-} == --build ]]; then
+  build_only=1
+  shift
+else
+  seconds=${1:-60}
+  shift || true
+fi
 scripts/setup.sh clang libclang-rt-14-dev
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 # -g1: line tables are all a finding's stack trace needs, in less compile time.
@@ -23,6 +30,7 @@ if ((${#targets[@]} == 0)); then
   mapfile -t targets < <(sed -n 's/^set(ANDROS_FUZZ_TARGETS \(.*\))$/\1/p' fuzz/CMakeLists.txt | tr ' ' '\n')
 fi
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]/#/fuzz_}"
+((build_only == 0)) || exit 0
 
 # One target on each core at a time: each still gets its SECONDS of its own.
 fuzz_one() {

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, checks the format
-# (.clang-format), builds, runs every test: the suite (with clang-tidy over
-# src/ beside it, scripts/lint.sh), the same suite again under AddressSanitizer
-# + UndefinedBehaviorSanitizer (build-asan/), the Debian package (built by
-# scripts/package.sh, then checked by tests/package/test_package.sh), and,
-# where clang's libFuzzer is installed, each fuzz target briefly.
+# (.clang-format), builds, runs every test: the suite, the same suite again
+# under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), the
+# Debian package (built by scripts/package.sh, then checked by
+# tests/package/test_package.sh), clang-tidy over src/ (scripts/lint.sh) and
+# each fuzz target briefly (scripts/fuzz.sh). clang-tidy and the fuzz targets'
+# clang build run in the background from the end of the plain build, niced,
+# in the time the tests leave the cores idle; each is waited for at the end.
 # With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
@@ -12,9 +14,10 @@ cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 jobs=$(nproc)
 summary=$(mktemp)
-tidy_pid=
-# clang-tidy runs in the background beside the tests: it ends with the script.
-trap 'rm -f "$summary" "$times_file"; [[ -z $tidy_pid ]] || kill "$tidy_pid" 2>/dev/null || true' EXIT
+# Work in the background (below) ends with the script: each job is a process
+# group of its own (setsid), ended whole.
+declare -A bg_pid=() bg_log=()
+trap 'rm -f "$summary" "$times_file"; for p in "${bg_pid[@]}"; do kill -TERM -- "-$p" 2>/dev/null || true; done' EXIT
 
 # CPU seconds (user + system) of every process this script has waited for so
 # far: `times` run by this shell itself (in a pipe or $(...) it would time a
@@ -54,13 +57,39 @@ closing() {
 # (so that no more of them compute at once than there are cores), a
 # command-line test one (it mostly waits on the frame clock: the plain run's
 # 60 of them wait some 180 s in all). tests/CMakeLists.txt sets the slots, and
-# starts the longest command-line tests first. Under the sanitizers, where every
-# test computes more, twice as many jobs as cores.
+# starts the longest command-line tests first.
 ctest_jobs=$((3 * jobs))
-asan_ctest_jobs=$((2 * jobs))
+
+# background NAME CMD...: runs CMD niced (the builds and tests in front get
+# the cores first), its output in $build/NAME.log; await NAME waits for it as
+# a phase of its own, says how long it ran and its CPU, and prints its output
+# (a failure ends the script).
+background() {
+  local name=$1
+  shift
+  bg_log[$name]="$build/$name.log"
+  # times in the job's own shell: the CPU of what it ran.
+  setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
+                  echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "${bg_log[$name]}" "$@" \
+    >"${bg_log[$name]}" 2>&1 &
+  bg_pid[$name]=$!
+}
+await() {
+  local name=$1 status=0 ran cpu
+  wait "${bg_pid[$name]}" || status=$?
+  unset "bg_pid[$name]"
+  cat "${bg_log[$name]}"
+  read -r _ ran <"${bg_log[$name]}.done" || ran="?"
+  cpu=$(tail -1 "${bg_log[$name]}.times" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }')
+  echo "($name: ran $ran s in the background, CPU $cpu s)"
+  ((status == 0)) || { echo "$name: FAILED (exit $status; its output above, and in ${bg_log[$name]})"; exit 1; }
+}
 
 quick=${ANDROS_QUICK:-}
-scripts/setup.sh
+# Everything the test command needs, installed before anything runs in the
+# background (two apt-gets at once would fight over dpkg's lock): clang and
+# its libFuzzer for the fuzz targets too.
+if [[ $quick == 1 ]]; then scripts/setup.sh; else scripts/setup.sh clang libclang-rt-14-dev; fi
 if [[ $quick != 1 ]]; then
   phase "format (scripts/lint.sh --format)"
   scripts/lint.sh --format
@@ -68,43 +97,34 @@ fi
 phase "build ($build)"
 scripts/build.sh
 if [[ $quick != 1 ]]; then
-  # clang-tidy beside the tests, which mostly wait on the frame clock; niced,
-  # so that the tests get the cores first. Its cache (scripts/lint_tidy.py)
-  # makes a run over unchanged files take seconds.
-  tidy_log="$build/lint-tidy.log"
-  nice -n 10 scripts/lint.sh --tidy >"$tidy_log" 2>&1 &
-  tidy_pid=$!
+  # clang-tidy's cache (scripts/lint_tidy.py, kept between runs on the same
+  # machine as ccache's is) makes a run over unchanged files take seconds.
+  background clang-tidy scripts/lint.sh --tidy
+  background fuzz-build scripts/fuzz.sh --build
 fi
 phase "test ($build)"
 ctest --test-dir "$build" --output-on-failure --parallel "$ctest_jobs" --timeout 300 | tee -a "$summary"
 if [[ $quick == 1 ]]; then closing; exit 0; fi
-phase "clang-tidy (scripts/lint.sh --tidy, begun beside the tests)"
-tidy_status=0
-wait "$tidy_pid" || tidy_status=$?
-tidy_pid=
-cat "$tidy_log"
-((tidy_status == 0)) || exit 1
 
 # -Og: what the sanitizers find does not need -O2's (or -O1's) time to compile:
-# GCC instruments -Og code in 40% less time than -O1 code (4m30 of CPU for the
-# tree, against 8m), and the tests run 1.5-2.5x slower, which ctest's jobs and
-# the fault simulation's threads absorb.
+# GCC instruments -Og code in 40% less time than -O1 code, and the tests run
+# slower, which ctest's jobs and the fault simulation's threads absorb.
 phase "build under ASan + UBSan ($build-asan, -Og)"
 BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
 phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir "$build-asan" --output-on-failure --parallel "$asan_ctest_jobs" --timeout 600 | tee -a "$summary"
+  ctest --test-dir "$build-asan" --output-on-failure --parallel "$ctest_jobs" --timeout 600 | tee -a "$summary"
 
 phase "Debian package: build (scripts/package.sh)"
 scripts/package.sh >"$build/package.log" 2>&1 || { tail -40 "$build/package.log"; exit 1; }
 phase "Debian package: check (tests/package/test_package.sh)"
 tests/package/test_package.sh dist/andros-bridge_*.deb
 
-if command -v clang++ >/dev/null && dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "installed"; then
-  phase "fuzz: build, then each target briefly"
-  scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
-else
-  echo "== fuzzing skipped: clang and libclang-rt-14-dev are not installed (scripts/fuzz.sh installs them)"
-fi
+phase "clang-tidy (scripts/lint.sh --tidy, begun after the plain build)"
+await clang-tidy
+phase "fuzz: the targets' build (scripts/fuzz.sh --build, begun after the plain build)"
+await fuzz-build
+phase "fuzz: each target briefly (scripts/fuzz.sh)"
+scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 closing
