@@ -126,6 +126,7 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
 
 void Engine::restart(const input::InputState& now) {
   settled_ = false;
+  neutral_.reset();
   started_ = true;
   start_session(now, true);
 }
@@ -413,6 +414,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
 }
 
 protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t now_ms) {
+  neutral_.reset();  // levels and selectors may move
   if (!started_) {
     started_ = true;
     start_session(input, true);
@@ -467,10 +469,13 @@ protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t
 }
 
 protocol::DataBytes Engine::neutral() const {
-  SafetyContext ctx;  // not enabled: drive and pivot at 128, whatever the trim
-  ctx.center = mapping_->center;
-  ctx.brake = mapping_->brake;
-  return builder_.build(apply_safety(resting_state(), ctx));
+  if (!neutral_) {
+    SafetyContext ctx;  // not enabled: drive and pivot at 128, whatever the trim
+    ctx.center = mapping_->center;
+    ctx.brake = mapping_->brake;
+    neutral_ = builder_.build(apply_safety(resting_state(), ctx));
+  }
+  return *neutral_;
 }
 
 }  // namespace andros::mapping

@@ -126,6 +126,25 @@ TEST(EngineSettled, TheEnableTimeoutEndsASettledStretchOnItsTick) {
   EXPECT_EQ(twin.status().enable, EnableState::kTimedOut);
 }
 
+TEST(EngineSettled, TheNeutralFrameKeepsUpWithTheLevels) {
+  Engine engine(mapping_from_yaml(kKnobAndTimeout), EngineOptions{});
+  input::InputState in;
+  const auto light = [&engine] { return protocol::read_signals(engine.neutral())[protocol::signal_id("light")]; };
+  EXPECT_EQ(light(), 40);
+  start_enabled(engine, in);
+  apply_script(in, "50 button dpright 1\n");
+  engine.step(in, 80);
+  EXPECT_EQ(light(), 80);  // asked for once more after a step that moved the light: not the one kept from before
+  engine.step(in, 120);
+  EXPECT_EQ(light(), 120);
+  apply_script(in, "130 button dpright 0\n");
+  engine.step(in, 160);
+  engine.step(in, 200);
+  EXPECT_TRUE(engine.settled());
+  EXPECT_EQ(light(), 120);
+  EXPECT_EQ(protocol::read_signals(engine.neutral())[protocol::signal_id("safety")], 0);
+}
+
 TEST(EngineSettled, TheSupervisorsControllerCountsAsInput) {
   Twin twin(kKnobAndTimeout);
   twin.step(0);

@@ -8,6 +8,7 @@
 #include <bitset>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,8 @@ class Engine {
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
-  /// 128 (never the mapping's `center:` trim).
+  /// 128 (never the mapping's `center:` trim). Kept from one computed step to
+  /// the next (the loop asks for it on every tick that is not enabled).
   [[nodiscard]] protocol::DataBytes neutral() const;
 
   [[nodiscard]] const EngineStatus& status() const;
@@ -148,7 +150,8 @@ class Engine {
   // The last step, for the next one (step()).
   input::PadState stepped_operator_;  ///< the controllers it read
   input::PadState stepped_supervisor_;
-  protocol::DataBytes stepped_frame_{};  ///< its frame
+  protocol::DataBytes stepped_frame_{};                 ///< its frame
+  mutable std::optional<protocol::DataBytes> neutral_;  ///< neutral() since the last computed step
   bool stepped_ = false;
   bool settled_ = false;  ///< it found the controllers as the one before did, and changed nothing carried()
 };
