@@ -1,56 +1,41 @@
 #include "andros/base/sha256.hpp"
 
-#include <openssl/evp.h>
+// OpenSSL's one-digest API rather than EVP: EVP_MD_fetch first sets up
+// libcrypto's provider machinery (its config file, the default provider's
+// tables), which keeps some 1.8 MB more of libcrypto resident for the whole
+// run (measured: 3.4 MB against 1.6 MB); the digest and its assembly are the
+// same. Deprecated in OpenSSL 3.0 in favour of EVP, not removed.
+#define OPENSSL_SUPPRESS_DEPRECATED
+#include <openssl/sha.h>
 
 #include "andros/base/error.hpp"
 
 namespace andros {
 
 struct Sha256::Ctx {
-  EVP_MD_CTX* md = nullptr;
-  ~Ctx() { EVP_MD_CTX_free(md); }
+  SHA256_CTX sha{};
 };
 
-namespace {
-
-/// Fetched once: an implicit fetch on every init (EVP_sha256()) costs more
-/// than hashing a record.
-const EVP_MD* sha256_md() {
-  static EVP_MD* const md = EVP_MD_fetch(nullptr, "SHA256", nullptr);
-  return md;
-}
-
-void start(EVP_MD_CTX* md) {
-  if (sha256_md() == nullptr || EVP_DigestInit_ex(md, sha256_md(), nullptr) != 1) {
-    throw RuntimeError("libcrypto: SHA-256 unavailable");
-  }
-}
-
-}  // namespace
-
 Sha256::Sha256() : ctx_(std::make_unique<Ctx>()) {
-  ctx_->md = EVP_MD_CTX_new();
-  if (ctx_->md == nullptr) throw RuntimeError("libcrypto: out of memory");
-  start(ctx_->md);
+  if (SHA256_Init(&ctx_->sha) != 1) throw RuntimeError("libcrypto: SHA-256 unavailable");
 }
 
 Sha256::~Sha256() = default;
 
 Sha256& Sha256::update(std::string_view bytes) {
-  EVP_DigestUpdate(ctx_->md, bytes.data(), bytes.size());
+  SHA256_Update(&ctx_->sha, bytes.data(), bytes.size());
   return *this;
 }
 
 Sha256& Sha256::update(const Sha256Digest& digest) {
-  EVP_DigestUpdate(ctx_->md, digest.data(), digest.size());
+  SHA256_Update(&ctx_->sha, digest.data(), digest.size());
   return *this;
 }
 
 Sha256Digest Sha256::finish() {
   Sha256Digest out{};
-  unsigned int size = 0;
-  EVP_DigestFinal_ex(ctx_->md, out.data(), &size);
-  start(ctx_->md);
+  SHA256_Final(out.data(), &ctx_->sha);
+  SHA256_Init(&ctx_->sha);
   return out;
 }
 

@@ -45,6 +45,9 @@ struct SessionWriter::Shared {
   std::atomic<std::uint64_t> dropped{0};
   std::atomic<std::uint64_t> lost{0};
   std::atomic<std::uint64_t> written{0};
+  /// 1 while the thread sleeps on an empty queue with nothing left to sync:
+  /// the push that finds it so wakes it (the one system call on the loop's side).
+  std::atomic<std::uint32_t> asleep{0};
   std::mutex mutex;
   std::condition_variable wake;
   std::condition_variable finished;
@@ -56,8 +59,8 @@ struct SessionWriter::Shared {
 
 namespace {
 
-/// How often the thread looks at the queue: the loop never wakes it (no
-/// system call on the loop's side of the queue).
+/// How often the thread looks at the queue while records come or wait to be
+/// synced; with none of either it sleeps until the next record.
 constexpr auto kPollPeriod = std::chrono::milliseconds(250);
 constexpr auto kSyncPeriod = std::chrono::seconds(1);
 constexpr std::size_t kBatchBytes = std::size_t{64} * 1024;
@@ -77,7 +80,10 @@ bool SessionWriter::push(std::string payload) {
     return false;
   }
   s.ring[head % s.ring.size()] = std::move(payload);
-  s.head.store(head + 1, std::memory_order_release);
+  s.head.store(head + 1, std::memory_order_seq_cst);
+  // The first record after a quiet spell: the thread sleeps (it set asleep,
+  // then found the queue empty; one of the two sees the other's store).
+  if (s.asleep.load(std::memory_order_seq_cst) != 0 && s.asleep.exchange(0) != 0) s.asleep.notify_one();
   return true;
 }
 
@@ -87,6 +93,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   std::uint64_t reported_drops = 0;
   bool failed = false;
   auto last_sync = std::chrono::steady_clock::now();
+  bool unsynced = false;  // written since the last sync
   std::string batch;
   std::uint64_t in_batch = 0;
   const auto write_batch = [&] {
@@ -99,6 +106,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
     }
     if (failed) s.lost.fetch_add(in_batch, std::memory_order_relaxed);
     else s.written.store(chain.records(), std::memory_order_relaxed);
+    unsynced = !failed;
     batch.clear();
     in_batch = 0;
   };
@@ -118,7 +126,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
       reported_drops = drops;
     }
     write_batch();
-    if (!failed && std::chrono::steady_clock::now() - last_sync >= kSyncPeriod) {
+    if (unsynced && std::chrono::steady_clock::now() - last_sync >= kSyncPeriod) {
       std::string error;
       if (!s.sink->sync(error)) {
         failed = true;
@@ -126,9 +134,21 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
         s.error = error;
       }
       last_sync = std::chrono::steady_clock::now();
+      unsynced = false;
     }
     std::unique_lock lock(s.mutex);
-    if (s.closing && s.head.load(std::memory_order_acquire) == s.tail.load(std::memory_order_relaxed)) break;
+    const auto empty = [&s] { return s.head.load() == s.tail.load(std::memory_order_relaxed); };
+    if (s.closing && empty()) break;
+    if (!unsynced && !s.closing) {
+      // Nothing to write or sync (a run at rest records nothing): sleep until
+      // the next record or the close, rather than waking 4 times a second.
+      // Set under the lock: a close after it finds it set and clears it.
+      s.asleep.store(1);
+      lock.unlock();
+      if (empty()) s.asleep.wait(1);
+      s.asleep.store(0);
+      continue;
+    }
     s.wake.wait_for(lock, kPollPeriod, [&s] { return s.closing; });
   }
   std::string error;
@@ -146,6 +166,8 @@ bool SessionWriter::close(int timeout_ms) {
   std::unique_lock lock(shared_->mutex);
   shared_->closing = true;
   shared_->wake.notify_all();
+  shared_->asleep.store(0);
+  shared_->asleep.notify_one();
   const bool done =
       shared_->finished.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return shared_->done; });
   lock.unlock();

@@ -12,41 +12,65 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 
 }  // namespace
 
+RunStatusBoard::Said::Said(const run::TickReport& r)
+    : connected(r.connected),
+      controller(r.controller),
+      supervised(r.supervised),
+      supervisor_connected(r.supervisor_connected),
+      supervisor(r.supervisor),
+      state(r.state),
+      engine(r.engine),
+      link_state(r.link.state),
+      motion_allowed(r.link.motion_allowed),
+      link_detail(r.link.detail) {}
+
+bool RunStatusBoard::Said::same(const run::TickReport& r) const {
+  return r.connected == connected && r.controller == controller && r.supervised == supervised &&
+         r.supervisor_connected == supervisor_connected && r.supervisor == supervisor && r.state == state &&
+         r.engine == engine && r.link.state == link_state && r.link.motion_allowed == motion_allowed &&
+         r.link.detail == link_detail;
+}
+
 void RunStatusBoard::observe(const run::TickReport& r) {
-  const auto now = monotonic_ns();
-  RunStatus next;
+  // A tick at rest says what the one before said: only the frame, its time
+  // and the counters move (the status is copied, its words formed and the
+  // log's lines looked for only when something else changed).
+  std::optional<RunStatus> before;
   {
     const std::lock_guard lock(mutex_);
-    if (r.result == link::SendResult::kSent) timing_.add(now);
-    next = status_;
-    next.t_ms = r.t_ms;
-    next.sent = r.data;
-    next.connected = r.connected;
-    if (next.connected) next.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
-    next.supervised = r.supervised;
-    next.supervisor_connected = r.supervisor_connected;
-    if (next.supervisor_connected) next.supervisor = r.supervisor.empty() ? "controller" : printable_text(r.supervisor);
-    next.supervisor_stop = r.supervisor_connected && r.engine.supervisor_stop;
-    next.consent = r.engine.consent;
-    next.state = r.state;
-    next.enable_text = state_text(r);
-    // "deadman released" forever would send the operator looking at the deadman.
-    if (const auto note = joystick_note(next.pad_names, next.game_controller);
-        !note.empty() && r.connected && r.state == run::OpState::kNotEnabled) {
-      next.enable_text = note;
+    if (r.result == link::SendResult::kSent) timing_.add(monotonic_ns());
+    RunStatus& s = status_;
+    s.t_ms = r.t_ms;
+    s.sent = r.data;
+    s.link = r.link.counters;
+    if (!said_ || !said_->same(r)) {
+      before = s;
+      s.connected = r.connected;
+      if (s.connected) s.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
+      s.supervised = r.supervised;
+      s.supervisor_connected = r.supervisor_connected;
+      if (s.supervisor_connected) s.supervisor = r.supervisor.empty() ? "controller" : printable_text(r.supervisor);
+      s.supervisor_stop = r.supervisor_connected && r.engine.supervisor_stop;
+      s.consent = r.engine.consent;
+      s.state = r.state;
+      s.enable_text = state_text(r);
+      // "deadman released" forever would send the operator looking at the deadman.
+      if (const auto note = joystick_note(s.pad_names, s.game_controller);
+          !note.empty() && r.connected && r.state == run::OpState::kNotEnabled) {
+        s.enable_text = note;
+      }
+      s.layer = r.engine.layer;
+      s.weapons_mode = s.enabled() && r.engine.weapons_mode;
+      s.speed = r.engine.speed;
+      s.armed = s.weapons_mode && r.engine.armed;
+      s.link_state = r.link.state;
+      s.motion_allowed = r.link.motion_allowed;
+      s.link_detail = s.motion_allowed ? r.link.detail : kNeutralOnly;
+      said_.emplace(r);
     }
-    next.layer = r.engine.layer;
-    next.weapons_mode = next.enabled() && r.engine.weapons_mode;
-    next.speed = r.engine.speed;
-    next.armed = next.weapons_mode && r.engine.armed;
-    next.link_state = r.link.state;
-    next.motion_allowed = r.link.motion_allowed;
-    next.link_detail = next.motion_allowed ? r.link.detail : kNeutralOnly;
-    next.link = r.link.counters;
-    next.sent_timing = timing_.summary(now);
-    std::swap(status_, next);  // next now holds the previous status
   }
-  log_changes(next, status_);
+  // The loop's thread is the status's only writer: read outside the lock, as before.
+  if (before) log_changes(*before, status_);
   if (r.skipped > 0) spdlog::warn("clock stalled: {} tick(s) skipped, none sent late in a burst", r.skipped);
   first_tick_ = false;
 }
@@ -108,16 +132,20 @@ void RunStatusBoard::set_mapping(std::string robot, std::string mapping_file, bo
 void RunStatusBoard::set_pad_names(bool pad_names) {
   const std::lock_guard lock(mutex_);
   status_.pad_names = pad_names;
+  said_.reset();  // the words may be new: a plain joystick's note
 }
 
 void RunStatusBoard::set_game_controller(std::optional<bool> game_controller) {
   const std::lock_guard lock(mutex_);
   status_.game_controller = game_controller;
+  said_.reset();
 }
 
 RunStatus RunStatusBoard::status() const {
   const std::lock_guard lock(mutex_);
-  return status_;
+  RunStatus status = status_;
+  status.sent_timing = timing_.summary(monotonic_ns());
+  return status;
 }
 
 std::string state_text(const run::TickReport& r) {

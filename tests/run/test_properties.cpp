@@ -257,5 +257,64 @@ TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
   EXPECT_GT(stops, 0) << "no script pressed the stop button";
 }
 
+/// What a replay did on each tick: its report's time, frame, state and engine status.
+struct Tick {
+  std::int64_t t_ms = 0;
+  protocol::DataBytes data{};
+  OpState state = OpState::kNoLink;
+  mapping::EngineStatus engine;
+  bool operator==(const Tick&) const = default;
+};
+
+std::vector<Tick> replay_ticks(const mapping::ValidMapping& valid, const std::string& text, bool weapons, bool reuse) {
+  TextReader in(text, "random.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  const mapping::EngineOptions engine{.weapons = weapons, .code = 0x5A, .reuse_settled = reuse};
+  std::vector<Tick> ticks;
+  ReplayOptions options{.engine = engine};
+  options.observe = [&ticks](const TickReport& r) { ticks.push_back({r.t_ms, r.data, r.state, r.engine}); };
+  std::int64_t delivered = 0;
+  replay(player, mapping::Engine(valid, engine), options,
+         [&](std::int64_t, const protocol::DataBytes&) { ++delivered; });
+  ticks.push_back({delivered, {}, OpState::kStopping, {}});  // and how many frames reached the link
+  return ticks;
+}
+
+// The engine gives a settled step's frame again rather than computing it
+// (Engine::step). Every tick of a run, its frame, state and engine status,
+// must be those of an engine that computes every step afresh.
+TEST(Properties, ReusedStepsAreTheStepsComputedAfresh) {
+  std::vector<mapping::ValidMapping> mappings;
+  for (const auto robot : protocol::kRobotTypes) {
+    mappings.push_back(mapping::load_mapping(mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR})));
+  }
+  // The enable timeout, the panic point, the stop and the speed levels.
+  mappings.push_back(mapping::load_mapping(std::string(ANDROS_TEST_DATA_DIR) + "/mappings/safety.yaml"));
+  test::Random rng(20261123);
+  int quiet = 0;  // ticks with no event since the one before last: there a step is reused
+  for (int i = 0; i < kScripts / 4; ++i) {
+    // Slowed down four times: the hands rest between events, as they mostly do.
+    auto script = random_script(rng);
+    for (auto& e : script) e.t_ms *= 4;
+    std::string text;
+    for (const auto& e : script) text += input::format_event(e) + "\n";
+    for (std::int64_t t = 80, k = 0; t <= script.back().t_ms; t += 40) {
+      while (k < static_cast<std::int64_t>(script.size()) && script[static_cast<std::size_t>(k)].t_ms <= t - 80) ++k;
+      quiet += k == static_cast<std::int64_t>(script.size()) || script[static_cast<std::size_t>(k)].t_ms > t ? 1 : 0;
+    }
+    for (const auto& m : mappings) {
+      for (const bool weapons : {false, true}) {
+        const auto reused = replay_ticks(m, text, weapons, true);
+        const auto computed = replay_ticks(m, text, weapons, false);
+        ASSERT_EQ(reused.size(), computed.size()) << text;
+        for (std::size_t k = 0; k < reused.size(); ++k) {
+          ASSERT_EQ(reused[k], computed[k]) << "tick at t=" << computed[k].t_ms << " of\n" << text;
+        }
+      }
+    }
+  }
+  EXPECT_GT(quiet, kScripts);
+}
+
 }  // namespace
 }  // namespace andros::run

@@ -3,9 +3,12 @@
 // Ctrl-Z, a link loss and a reload inside it) replays byte for byte.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "andros/input/script_input.hpp"
@@ -104,6 +107,51 @@ TEST(Recorder, AStalledDiskNeverDelaysAFrame) {
   EXPECT_GT(writer.dropped(), 1000u);  // the queue filled; records, not frames, were dropped
   gate->release();
   EXPECT_FALSE(writer.close(5000));
+}
+
+/// A disk that counts what it was asked to do.
+class CountingSink final : public RecordSink {
+ public:
+  struct Counts {
+    std::atomic<int> writes{0};
+    std::atomic<int> syncs{0};
+  };
+  explicit CountingSink(std::shared_ptr<Counts> counts) : counts_(std::move(counts)) {}
+  bool write(std::string_view, std::string&) override {
+    ++counts_->writes;
+    return true;
+  }
+  bool sync(std::string&) override {
+    ++counts_->syncs;
+    return true;
+  }
+
+ private:
+  std::shared_ptr<Counts> counts_;
+};
+
+/// Waits (bounded, 5 s) until done() holds; whether it did.
+template <typename Done>
+bool within_5s(Done done) {
+  for (int i = 0; i < 5000 && !done(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return done();
+}
+
+// A run at rest records nothing: the writer thread then sleeps (no wake-ups,
+// no fdatasync of nothing) until the next record, which it writes and syncs.
+TEST(Recorder, AtRestTheWriterSleepsUntilTheNextRecord) {
+  const auto counts = std::make_shared<CountingSink::Counts>();
+  SessionWriter writer(std::make_unique<CountingSink>(counts));
+  writer.push("state 0 NOT_ENABLED");
+  ASSERT_TRUE(within_5s([&] { return counts->writes == 1 && counts->syncs == 1; }));
+  // Written and synced: nothing more to do. Polling, it would sync again within the second.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  EXPECT_EQ(counts->writes, 1);
+  EXPECT_EQ(counts->syncs, 1);
+  writer.push("state 1600 ENABLED");
+  EXPECT_TRUE(within_5s([&] { return counts->writes == 2 && counts->syncs == 2; }));
+  EXPECT_TRUE(writer.close(5000));
+  EXPECT_EQ(writer.written(), 2u);
 }
 
 TEST(Recorder, AFullQueueRefusesAtOnceAndCounts) {

@@ -70,23 +70,27 @@ std::string describe_difference(const protocol::ControlState& want, const protoc
 void expect_replay(mapping::ValidMapping mapping, bool weapons, std::int64_t rate_millihertz, const std::string& events,
                    const std::string& expected) {
   const std::uint8_t code = 0x01;
-  mapping::Engine engine(std::move(mapping), mapping::EngineOptions{weapons, code});
-  TextReader in(read_text(events), events, kEventScriptLimits);
-  input::ScriptPlayer player(in);
-  std::vector<std::pair<std::int64_t, protocol::DataBytes>> got;
-  run::replay(player, std::move(engine),
-              run::ReplayOptions{.rate_millihertz = rate_millihertz, .engine = {weapons, code}},
-              [&](std::int64_t t, const protocol::DataBytes& d) { got.emplace_back(t, d); });
-
   const auto want = read_expected(expected, code);
-  ASSERT_EQ(got.size(), want.size()) << "frame count of " << events;
-  for (std::size_t i = 0; i < want.size(); ++i) {
-    EXPECT_EQ(got[i].first, want[i].t) << "frame " << i;
-    EXPECT_TRUE(protocol::validation_errors(got[i].second).empty());
-    const auto built = protocol::FrameBuilder(code).build(want[i].state);
-    EXPECT_EQ(got[i].second, built) << expected << ":" << want[i].line << " t=" << want[i].t << ": "
-                                    << describe_difference(protocol::read_signals(built),
-                                                           protocol::read_signals(got[i].second));
+  // The engine as the run has it, and computing every step afresh: the same frames.
+  for (const bool reuse : {true, false}) {
+    const mapping::EngineOptions options{.weapons = weapons, .code = code, .reuse_settled = reuse};
+    mapping::Engine engine(mapping, options);
+    TextReader in(read_text(events), events, kEventScriptLimits);
+    input::ScriptPlayer player(in);
+    std::vector<std::pair<std::int64_t, protocol::DataBytes>> got;
+    run::replay(player, std::move(engine), run::ReplayOptions{.rate_millihertz = rate_millihertz, .engine = options},
+                [&](std::int64_t t, const protocol::DataBytes& d) { got.emplace_back(t, d); });
+
+    ASSERT_EQ(got.size(), want.size()) << "frame count of " << events << (reuse ? "" : " (every step computed)");
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      EXPECT_EQ(got[i].first, want[i].t) << "frame " << i;
+      EXPECT_TRUE(protocol::validation_errors(got[i].second).empty());
+      const auto built = protocol::FrameBuilder(code).build(want[i].state);
+      EXPECT_EQ(got[i].second, built) << expected << ":" << want[i].line << " t=" << want[i].t
+                                      << (reuse ? "" : " (every step computed)") << ": "
+                                      << describe_difference(protocol::read_signals(built),
+                                                             protocol::read_signals(got[i].second));
+    }
   }
 }
 

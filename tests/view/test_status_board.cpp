@@ -107,6 +107,34 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.enable_text, "sending neutral frames");
 }
 
+TEST(RunStatusBoard, ARepeatedReportMovesTheCountersAndANewKindOfControllerTheWords) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  auto r = tick(40);
+  r.state = run::OpState::kNotEnabled;
+  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text, "deadman released");
+  r.t_ms = 80;
+  r.link.counters.sent = 8;
+  r.data[3] = 0x5B;
+  board.observe(r);  // the same words: only the frame, its time and the counters
+  auto s = board.status();
+  EXPECT_EQ(s.t_ms, 80);
+  EXPECT_EQ(s.link.sent, 8u);
+  EXPECT_EQ(s.sent[3], 0x5B);
+  EXPECT_EQ(count(log.text(), "deadman released"), 1u);
+  // The same report, but SDL now says the controller is a plain joystick: the words change.
+  board.set_game_controller(false);
+  board.observe(r);
+  s = board.status();
+  EXPECT_NE(s.enable_text.find("plain joystick"), std::string::npos) << s.enable_text;
+  EXPECT_EQ(count(log.text(), "plain joystick"), 1u);
+  board.set_game_controller(true);
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text, "deadman released");
+}
+
 TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   RunStatusBoard board(RunStatus{});
   // The engine sees the deadman freshly held, but the port does not exist:

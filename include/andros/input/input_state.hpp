@@ -124,6 +124,8 @@ struct ButtonState {
   /// at connect: a tap between two frames still shows, and a deadman held at
   /// connect is not a fresh press.
   std::uint32_t presses = 0;
+
+  bool operator==(const ButtonState&) const = default;
 };
 
 /// One controller's state: its buttons, axes and hats as the events left them.
@@ -144,6 +146,9 @@ class PadState {
   [[nodiscard]] std::int16_t axis(InputKey key) const;
   /// The hat's SDL_HAT_* mask (0 = centred).
   [[nodiscard]] int hat(int hat_index) const;
+
+  /// The same controller session in the same state: every read above gives the same answer.
+  bool operator==(const PadState&) const = default;
 
  private:
   void set_button(InputKey key, bool down, bool initial);
@@ -176,6 +181,8 @@ class InputState {
 
   /// The supervisor's controller: never connected in a run without one.
   [[nodiscard]] const PadState& supervisor() const { return supervisor_pad_; }
+  /// The operator's controller, whole (what the members above read).
+  [[nodiscard]] const PadState& operator_pad() const { return operator_pad_; }
 
   /// The fault events applied since the last call, in order (the run loop
   /// answers them; the input state itself ignores them).

@@ -8,6 +8,7 @@
 #include <bitset>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ namespace andros::mapping {
 struct EngineOptions {
   bool weapons = false;      ///< --weapons / weapons=enabled
   std::uint8_t code = 0x01;  ///< byte 11, the dip-switch code
+  /// A step from the controllers as they were at a step that changed nothing
+  /// is that step again: its frame is reused (Engine::step). False: every
+  /// step is computed afresh (the tests' reference for the reuse).
+  bool reuse_settled = true;
 };
 
 class Engine {
@@ -33,6 +38,10 @@ class Engine {
   /// One tick at time now_ms (ms since start, non-decreasing): the data bytes
   /// of the frame to send. Always a frame that passes validation. The first
   /// call is start-up: deadman presses counted before it are not fresh.
+  /// While nothing changes (the controllers as at the last step, which found
+  /// them as at the one before and changed none of the engine's state), the
+  /// last frame is given again without computing it: the same frame and
+  /// status that computing would give (see step()).
   protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms);
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
@@ -54,13 +63,26 @@ class Engine {
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
-  /// 128 (never the mapping's `center:` trim).
+  /// 128 (never the mapping's `center:` trim). Kept from one computed step to
+  /// the next (the loop asks for it on every tick that is not enabled).
   [[nodiscard]] protocol::DataBytes neutral() const;
 
   [[nodiscard]] const EngineStatus& status() const;
   [[nodiscard]] const Mapping& mapping() const;
+  /// The last step found the controllers as the one before did and changed
+  /// nothing: until they change (or the enable timeout falls due), a step
+  /// gives its frame again.
+  [[nodiscard]] bool settled() const { return settled_; }
 
  private:
+  /// The step, computed.
+  protocol::DataBytes compute(const input::InputState& input, std::int64_t now_ms);
+  /// Every member a step carries to the next (references), but the last
+  /// step's time: a step that leaves all of them as it found them is settled.
+  [[nodiscard]] auto carried() const;
+  /// Enabled, and the enable timeout runs out by now_ms: the one change a
+  /// settled step would see on the clock.
+  [[nodiscard]] bool timeout_due(std::int64_t now_ms) const;
   void start_session(const input::InputState& input, bool at_start_up);
   /// The stop buttons this tick (the operator's `estop`, the supervisor's
   /// `stop`): EngineStatus::stop_pressed (taking the presses), stop_held, supervisor_stop.
@@ -122,6 +144,16 @@ class Engine {
   std::vector<int> selector_;                                       ///< per binding slot: a selector's position
   std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;
+  // Every member above that a step changes is in carried(): one left out
+  // would let a step that changed it count as settled.
+
+  // The last step, for the next one (step()).
+  input::PadState stepped_operator_;  ///< the controllers it read
+  input::PadState stepped_supervisor_;
+  protocol::DataBytes stepped_frame_{};                 ///< its frame
+  mutable std::optional<protocol::DataBytes> neutral_;  ///< neutral() since the last computed step
+  bool stepped_ = false;
+  bool settled_ = false;  ///< it found the controllers as the one before did, and changed nothing carried()
 };
 
 }  // namespace andros::mapping

@@ -60,6 +60,8 @@ struct EngineStatus {
   SpeedLevel speed;
   /// In a weapons mode with an arming input held: a fire button pressed now fires.
   bool armed = false;
+
+  bool operator==(const EngineStatus&) const = default;
 };
 
 }  // namespace andros::mapping

@@ -86,6 +86,9 @@ class RestRule {
   /// Weapons may fire as far as the supervisor is concerned: consent given, or none asked.
   [[nodiscard]] bool consent() const { return consent_ == ConsentState::kNotAsked || consent_ == ConsentState::kGiven; }
 
+  /// The same rule in the same state (the engine's test for a step that changed nothing).
+  bool operator==(const RestRule&) const = default;
+
  private:
   /// What "at rest" is for one binding reading one input.
   struct Reader {
@@ -93,6 +96,8 @@ class RestRule {
     enum class Rest : std::uint8_t { kReleased, kBelow, kInsideBand, kInsideDeadzone, kNotPositive } rest;
     bool invert = false;
     double limit = 0.0;  ///< threshold or deadzone
+
+    bool operator==(const Reader&) const = default;
   };
   using Readers = std::map<input::InputKey, std::vector<Reader>>;
 

@@ -136,11 +136,18 @@ consteval SignalId signal_id(std::string_view name) {
 
 constexpr const SignalInfo& info(SignalId id) { return kSignals[id]; }
 
+/// Each signal's opposing partner, looked up by name once, at compile time:
+/// apply_safety() asks for every signal's in every frame.
+inline constexpr auto kPartners = [] {
+  std::array<std::optional<SignalId>, kSignalCount> partners{};
+  for (std::size_t i = 0; i < kSignalCount; ++i) {
+    if (!kSignals[i].partner.empty()) partners[i] = find_signal(kSignals[i].partner);
+  }
+  return partners;
+}();
+
 /// The opposing partner of a signal, if it has one.
-constexpr std::optional<SignalId> partner_of(SignalId id) {
-  if (kSignals[id].partner.empty()) return std::nullopt;
-  return find_signal(kSignals[id].partner);
-}
+constexpr std::optional<SignalId> partner_of(SignalId id) { return kPartners[id]; }
 
 /// A bit the protocol fixes (the validation table); never a mapping target.
 struct FixedBit {

@@ -19,8 +19,10 @@ class RunStatusBoard {
   /// initial: what set-up knows (robot, code, rate, input, link name, centre).
   explicit RunStatusBoard(RunStatus initial) : status_(std::move(initial)) {}
 
-  /// Called by the run loop after every tick (cheap: no formatting). The
-  /// report is all the board learns: it holds no link and no engine.
+  /// Called by the run loop after every tick. The report is all the board
+  /// learns: it holds no link and no engine. A report that says what the
+  /// last one said but for the frame, its time and the counters moves only
+  /// those: no words are formed and nothing is logged.
   void observe(const run::TickReport& report);
   /// The same, for a run whose input may be a live controller: on a connect,
   /// first asks input what kind of device it is (set_game_controller). On the
@@ -34,16 +36,36 @@ class RunStatusBoard {
   /// What kind of device the live controller is, told by whoever owns it (on
   /// each connect, before the report of that tick): see joystick_note().
   void set_game_controller(std::optional<bool> game_controller);
-  /// The last status, copied under the lock: for the display thread, and
-  /// after the run for the closing line.
+  /// The last status, copied under the lock, with the rate and jitter of the
+  /// frames sent as they stand now: for the display thread, and after the run
+  /// for the closing line.
   [[nodiscard]] RunStatus status() const;
 
  private:
+  /// What a report says that the status's words and the log's lines come
+  /// from: all of it but the frame, its time and the counters.
+  struct Said {
+    explicit Said(const run::TickReport& r);
+    [[nodiscard]] bool same(const run::TickReport& r) const;
+
+    bool connected;
+    std::string controller;
+    bool supervised;
+    bool supervisor_connected;
+    std::string supervisor;
+    run::OpState state;
+    mapping::EngineStatus engine;
+    link::LinkState link_state;
+    bool motion_allowed;
+    std::string link_detail;
+  };
+
   void log_changes(const RunStatus& before, const RunStatus& after) const;
 
   mutable std::mutex mutex_;
   RunStatus status_;
   timing::FrameTiming timing_;
+  std::optional<Said> said_;  ///< by the last report; none before the first, or when the words must be formed again
   bool first_tick_ = true;
   bool was_connected_ = false;  ///< as the last report said, for observe(report, input)
 };
