@@ -52,7 +52,7 @@ ControlState read_signals(const DataBytes& data) {
   ControlState state;
   for (std::size_t i = 0; i < kSignals.size(); ++i) {
     const auto& s = kSignals[i];
-    state.values[i] = s.is_bit() ? static_cast<std::uint8_t>((data[s.byte] >> s.bit) & 1U) : data[s.byte];
+    state.values[i] = s.is_bit() ? static_cast<std::uint8_t>((unsigned{data[s.byte]} >> s.bit) & 1U) : data[s.byte];
   }
   return state;
 }
@@ -60,7 +60,7 @@ ControlState read_signals(const DataBytes& data) {
 std::vector<std::string> validation_errors(const DataBytes& data) {
   std::vector<std::string> errors;
   for (const auto& f : kFixedBits) {
-    if (((data[f.byte] >> f.bit) & 1U) != f.value) {
+    if (((unsigned{data[f.byte]} >> f.bit) & 1U) != f.value) {
       errors.push_back("byte " + std::to_string(f.byte) + " bit " + std::to_string(f.bit) + " must be " +
                        std::to_string(f.value));
     }
