@@ -9,7 +9,7 @@
 #   scripts/lint.sh --fix      formats every file in place (clang-format -i)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
+scripts/setup.sh clang-format clang-tidy
 lint_build=${LINT_BUILD_DIR:-build-lint}
 mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.c' '*.h')
 what=${1:-all}

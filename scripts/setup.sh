@@ -8,9 +8,8 @@ packages=(
   libsdl2-dev libyaml-cpp-dev libspdlog-dev libcli11-dev nlohmann-json3-dev libssl-dev
   libgtest-dev libgmock-dev python3 groff-base
   ccache  # keeps compiled objects between builds (CMakeLists.txt uses it when installed)
-  clang-format clang-tidy  # the format and lint gates of the test command (scripts/lint.sh)
 )
-packages+=("$@")  # callers may ask for more (e.g. clang for the fuzzers)
+packages+=("$@")  # callers ask for more: the test command clang, libFuzzer, clang-format and clang-tidy
 
 missing=()
 for p in "${packages[@]}"; do

@@ -88,8 +88,13 @@ await() {
 quick=${ANDROS_QUICK:-}
 # Everything the test command needs, installed before anything runs in the
 # background (two apt-gets at once would fight over dpkg's lock): clang and
-# its libFuzzer for the fuzz targets too.
-if [[ $quick == 1 ]]; then scripts/setup.sh; else scripts/setup.sh clang libclang-rt-14-dev; fi
+# its libFuzzer for the fuzz targets, clang-format and clang-tidy for the gates
+# (scripts/setup.sh's own list is what the build needs: scripts/run.sh's too).
+if [[ $quick == 1 ]]; then
+  scripts/setup.sh
+else
+  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy
+fi
 if [[ $quick != 1 ]]; then
   phase "format (scripts/lint.sh --format)"
   scripts/lint.sh --format
