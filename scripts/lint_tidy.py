@@ -77,7 +77,8 @@ def main():
     prefix = str(source).encode() + b"/"
 
     def relative(text):
-        return text.replace(prefix, b"@SOURCE@/")
+        # The tree as a folder (SOURCE/...) and as a flag's value (-fdebug-prefix-map=SOURCE=.).
+        return text.replace(prefix, b"@SOURCE@/").replace(str(source).encode() + b"=", b"@SOURCE@=")
 
     common = hashlib.sha256()
     common.update(subprocess.run(["clang-tidy", "--version"], capture_output=True, check=True).stdout)
