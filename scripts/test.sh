@@ -23,8 +23,9 @@ trap 'rm -f "$summary" "$times_file"; for p in "${bg_pid[@]}"; do kill -TERM -- 
 # far: `times` run by this shell itself (in a pipe or $(...) it would time a
 # subshell), written to a file.
 times_file=$(mktemp)
+# cpu_seconds [FILE]: the user + system seconds of the last `times` line in FILE ($times_file).
 cpu_seconds() {
-  tail -1 "$times_file" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+  tail -1 "${1:-$times_file}" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
 }
 
 # phase NAME: starts a timed phase (the previous one ends); closing lists their
@@ -80,7 +81,7 @@ await() {
   unset "bg_pid[$name]"
   cat "${bg_log[$name]}"
   read -r _ ran <"${bg_log[$name]}.done" || ran="?"
-  cpu=$(tail -1 "${bg_log[$name]}.times" | awk '{ split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }')
+  cpu=$(cpu_seconds "${bg_log[$name]}.times")
   echo "($name: ran $ran s in the background, CPU $cpu s)"
   ((status == 0)) || { echo "$name: FAILED (exit $status; its output above, and in ${bg_log[$name]})"; exit 1; }
 }
