@@ -13,10 +13,10 @@
 #include <utility>
 #include <vector>
 
+#include "andros/base/version.hpp"
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/version.hpp"
 #include "fuzz_check.hpp"
 #include "oracle/centre_watch.hpp"
 

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "andros/base/version.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/version.hpp"
 #include "fuzz_check.hpp"
 #include "oracle/fault_script.hpp"
 #include "oracle/random.hpp"

@@ -116,7 +116,7 @@ if [[ $quick == 1 ]]; then closing; exit 0; fi
 # GCC instruments -Og code in 40% less time than -O1 code, and the tests run
 # slower, which ctest's jobs and the fault simulation's threads absorb.
 phase "build under ASan + UBSan ($build-asan, -Og)"
-BUILD_DIR="$build-asan" scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF \
+BUILD_DIR="$build-asan" BUILD_FLAGS=cmake scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_BUILD_BENCH=OFF \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
 phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \

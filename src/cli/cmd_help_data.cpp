@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "andros/base/error.hpp"
+#include "andros/base/version.hpp"
 #include "andros/cli/settings.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/version.hpp"
 #include "commands.hpp"
 
 namespace andros::cli {

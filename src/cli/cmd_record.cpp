@@ -11,9 +11,9 @@
 #include "andros/base/output_file.hpp"
 #include "andros/base/stop.hpp"
 #include "andros/base/text_file.hpp"
+#include "andros/base/version.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/input/script_recorder.hpp"
-#include "andros/version.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
 

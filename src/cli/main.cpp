@@ -12,8 +12,8 @@
 #include <string_view>
 
 #include "andros/base/error.hpp"
+#include "andros/base/version.hpp"
 #include "andros/timing/rate.hpp"
-#include "andros/version.hpp"
 #include "andros/view/log_sink.hpp"
 #include "commands.hpp"
 

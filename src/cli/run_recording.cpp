@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "andros/base/error.hpp"
-#include "andros/version.hpp"
+#include "andros/base/version.hpp"
 
 namespace andros::cli {
 namespace {

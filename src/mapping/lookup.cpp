@@ -1,9 +1,9 @@
 #include <cstdlib>
 
 #include "andros/base/text.hpp"
+#include "andros/base/version.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/version.hpp"
 
 namespace andros::mapping {
 

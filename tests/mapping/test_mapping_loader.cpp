@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "andros/base/version.hpp"
 #include "andros/mapping/loader.hpp"
-#include "andros/version.hpp"
 #include "support/input_error.hpp"
 #include "support/temp_dir.hpp"
 
