@@ -59,7 +59,7 @@ mode_t mode_of(const fs::path& file) {
 
 // A disk that fills after the first few bytes.
 int full_disk(int fd, std::string_view text) {
-  if (text.size() > 4) (void)::write(fd, text.data(), 4);
+  if (text.size() > 4 && ::write(fd, text.data(), 4) != 4) return EIO;
   return ENOSPC;
 }
 
