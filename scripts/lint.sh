@@ -38,10 +38,11 @@ if [[ $what == all || $what == --format ]]; then
 fi
 
 if [[ $what == all || $what == --tidy ]]; then
-  # A compile database of its own, file by file (the build compiles the cli
-  # stage in unity groups, which clang-tidy would not see as src/ files).
-  # Configuring only (no build: clang-tidy reads the sources) takes seconds.
-  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=OFF -DANDROS_CCACHE=OFF \
+  # A compile database of its own. Configuring only (no build: clang-tidy reads
+  # the sources) takes seconds. The cli stage is checked as the build compiles
+  # it, in its four unity groups (each file's findings still named by file):
+  # CLI11 parsed and studied four times, not 24 (half clang-tidy's time).
+  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=ON -DANDROS_CCACHE=OFF \
     -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
   log="$lint_build/clang-tidy.log"
   # In the background, waited for: a TERM (scripts/test.sh ending early)

@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """clang-tidy over the src/ files of a compile database, one file per core at
 a time, each file's output kept in a cache (scripts/lint.sh --tidy runs it).
+A unity group of src/ files (CMake's BUILD_DIR/src/CMakeFiles/*/Unity/*.cxx,
+which #includes them) is checked as one file, each finding named by the
+src/ file it is in.
 
     scripts/lint_tidy.py BUILD_DIR SOURCE_DIR LOG
 
@@ -27,6 +30,8 @@ import time
 from pathlib import Path
 
 TIDY_ARGS = ["--quiet"]
+# A unity group's own lines #include .cpp files, which is what it is for.
+UNITY_ARGS = ["--checks=-bugprone-suspicious-include"]
 MAX_AGE_DAYS = 30
 
 
@@ -49,20 +54,30 @@ def dependencies(entry):
 
 
 class Hasher:
-    def __init__(self):
+    """A file's SHA-256, the source tree's folder in it made relative (a unity
+    group names its files by their whole path)."""
+
+    def __init__(self, relative):
         self.known = {}
+        self.relative = relative
 
     def file(self, path):
         if path not in self.known:
-            self.known[path] = hashlib.sha256(Path(path).read_bytes()).hexdigest()
+            self.known[path] = hashlib.sha256(self.relative(Path(path).read_bytes())).hexdigest()
         return self.known[path]
 
 
 def main():
     build, source, log = Path(sys.argv[1]), Path(sys.argv[2]).resolve(), Path(sys.argv[3])
     jobs = os.cpu_count() or 1
+    unity = (build / "src" / "CMakeFiles").resolve()
+
+    def is_unity(entry):
+        path = Path(entry["file"]).resolve()
+        return path.is_relative_to(unity) and path.parent.name == "Unity"
+
     entries = [e for e in json.loads((build / "compile_commands.json").read_text())
-               if Path(e["file"]).resolve().is_relative_to(source / "src")]
+               if Path(e["file"]).resolve().is_relative_to(source / "src") or is_unity(e)]
     cache_dir = os.environ.get("ANDROS_TIDY_CACHE",
                                os.path.join(os.environ.get("XDG_CACHE_HOME", Path.home() / ".cache"),
                                             "andros-bridge", "clang-tidy"))
@@ -84,13 +99,14 @@ def main():
     common.update(subprocess.run(["clang-tidy", "--version"], capture_output=True, check=True).stdout)
     common.update(" ".join(TIDY_ARGS).encode())
     common.update((source / ".clang-tidy").read_bytes())
-    hasher = Hasher()
+    hasher = Hasher(relative)
 
     def key_of(entry):
         deps = dependencies(entry)
         if deps is None:
             return None
         h = common.copy()
+        h.update(" ".join(UNITY_ARGS if is_unity(entry) else []).encode() + b"\0")
         h.update(relative((entry["directory"] + "\0" + entry.get("command", " ".join(entry.get("arguments", [])))).encode()))
         for d in deps:
             h.update(relative(d.encode()) + b"\0" + hasher.file(d).encode())
@@ -99,7 +115,8 @@ def main():
     running = set()
 
     def tidy(entry, key):
-        proc = subprocess.Popen(["clang-tidy", "-p", str(build), *TIDY_ARGS, entry["file"]],
+        extra = UNITY_ARGS if is_unity(entry) else []
+        proc = subprocess.Popen(["clang-tidy", "-p", str(build), *TIDY_ARGS, *extra, entry["file"]],
                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         running.add(proc)
         out = proc.communicate()[0]
