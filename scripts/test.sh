@@ -4,9 +4,11 @@
 # under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/), the
 # Debian package (built by scripts/package.sh, then checked by
 # tests/package/test_package.sh), clang-tidy over src/ (scripts/lint.sh) and
-# each fuzz target briefly (scripts/fuzz.sh). clang-tidy and the fuzz targets'
-# clang build run in the background from the end of the plain build, niced,
-# in the time the tests leave the cores idle; each is waited for at the end.
+# each fuzz target briefly (scripts/fuzz.sh). The package (its objects from
+# ccache: the plain build compiled them with its flags), clang-tidy and the
+# fuzz targets' clang build run in the background from the end of the plain
+# build, niced, in the time the tests leave the cores idle; each is waited
+# for at the end.
 # With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
@@ -35,8 +37,10 @@ phase() {
   local cpu
   times >"$times_file"
   cpu=$(cpu_seconds)
-  [[ -n ${phase_name:-} ]] && phases+=("$phase_name $((SECONDS - phase_start)) s (CPU $((cpu - phase_cpu)) s)")
+  [[ -n ${phase_name:-} ]] &&
+    phases+=("$phase_name $((SECONDS - phase_start)) s (CPU $((cpu - phase_cpu)) s${phase_note:+; $phase_note})")
   phase_name=$1
+  phase_note=
   phase_start=$SECONDS
   phase_cpu=$cpu
   [[ -z $1 ]] || echo "== $1"
@@ -64,37 +68,62 @@ ctest_jobs=$((3 * jobs))
 # background NAME CMD...: runs CMD niced (the builds and tests in front get
 # the cores first), its output in $build/NAME.log; await NAME waits for it as
 # a phase of its own, says how long it ran and its CPU, and prints its output
-# (a failure ends the script).
+# (a failure ends the script). The job is started from a subshell that ends at
+# once, so that it is not this script's child: bash adds a child's CPU to
+# `times` when the child ends, which would count a job's CPU in whatever phase
+# was running then; the job's own shell times it instead. setsid: a session
+# and process group of its own, which the EXIT trap ends whole.
 background() {
-  local name=$1
+  local name=$1 log="$build/$1.log"
   shift
-  bg_log[$name]="$build/$name.log"
-  # times in the job's own shell: the CPU of what it ran.
-  setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
-                  echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "${bg_log[$name]}" "$@" \
-    >"${bg_log[$name]}" 2>&1 &
-  bg_pid[$name]=$!
+  bg_log[$name]=$log
+  rm -f "$log.done" "$log.times" "$log.pid"
+  (setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
+                   echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "$log" "$@" >"$log" 2>&1 &
+   echo $! >"$log.pid")
+  bg_pid[$name]=$(<"$log.pid")
 }
 await() {
-  local name=$1 status=0 ran cpu
-  wait "${bg_pid[$name]}" || status=$?
+  local name=$1 log=${bg_log[$1]} status ran cpu
+  # Not a child to wait for: its .done file says it ended, and how.
+  until [[ -s $log.done ]]; do
+    if ! kill -0 "${bg_pid[$name]}" 2>/dev/null && [[ ! -s $log.done ]]; then
+      cat "$log"
+      echo "$name: FAILED (it ended without saying how: killed?; its output above, and in $log)"
+      exit 1
+    fi
+    sleep 1
+  done
   unset "bg_pid[$name]"
-  cat "${bg_log[$name]}"
-  read -r _ ran <"${bg_log[$name]}.done" || ran="?"
-  cpu=$(cpu_seconds "${bg_log[$name]}.times")
-  echo "($name: ran $ran s in the background, CPU $cpu s)"
-  ((status == 0)) || { echo "$name: FAILED (exit $status; its output above, and in ${bg_log[$name]})"; exit 1; }
+  cat "$log"
+  read -r status ran <"$log.done"
+  cpu=$(cpu_seconds "$log.times")
+  phase_note="ran $ran s in the background, CPU $cpu s"
+  echo "($name: $phase_note)"
+  ((status == 0)) || { echo "$name: FAILED (exit $status; its output above, and in $log)"; exit 1; }
 }
+
+# The Debian package, built (its whole log in $build/package-build.log) and checked.
+package_and_check() {
+  scripts/package.sh >"$build/package-build.log" 2>&1 ||
+    { tail -40 "$build/package-build.log"; echo "package: the build FAILED (its log: $build/package-build.log)"; return 1; }
+  tail -1 "$build/package-build.log"
+  tests/package/test_package.sh dist/andros-bridge_*.deb
+}
+export -f package_and_check
+export build
 
 quick=${ANDROS_QUICK:-}
 # Everything the test command needs, installed before anything runs in the
 # background (two apt-gets at once would fight over dpkg's lock): clang and
-# its libFuzzer for the fuzz targets, clang-format and clang-tidy for the gates
+# its libFuzzer for the fuzz targets, clang-format and clang-tidy for the gates,
+# what the package's build and check use (debian/control's Build-Depends are
+# scripts/setup.sh's list and debhelper; lintian; systemd-analyze)
 # (scripts/setup.sh's own list is what the build needs: scripts/run.sh's too).
 if [[ $quick == 1 ]]; then
   scripts/setup.sh
 else
-  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy
+  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev debhelper fakeroot lintian systemd
 fi
 if [[ $quick != 1 ]]; then
   phase "format (scripts/lint.sh --format)"
@@ -105,6 +134,7 @@ scripts/build.sh
 if [[ $quick != 1 ]]; then
   # clang-tidy's cache (scripts/lint_tidy.py, kept between runs on the same
   # machine as ccache's is) makes a run over unchanged files take seconds.
+  background package bash -c package_and_check
   background clang-tidy scripts/lint.sh --tidy
   background fuzz-build scripts/fuzz.sh --build
 fi
@@ -122,11 +152,8 @@ phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$ctest_jobs" --timeout 600 | tee -a "$summary"
 
-phase "Debian package: build (scripts/package.sh)"
-scripts/package.sh >"$build/package.log" 2>&1 || { tail -40 "$build/package.log"; exit 1; }
-phase "Debian package: check (tests/package/test_package.sh)"
-tests/package/test_package.sh dist/andros-bridge_*.deb
-
+phase "Debian package: build and check (scripts/package.sh, tests/package/test_package.sh; begun after the plain build)"
+await package
 phase "clang-tidy (scripts/lint.sh --tidy, begun after the plain build)"
 await clang-tidy
 phase "fuzz: the targets' build (scripts/fuzz.sh --build, begun after the plain build)"
