@@ -4,6 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "andros/base/text.hpp"
 #include "andros/protocol/words.hpp"
@@ -15,6 +19,24 @@ namespace {
 using detail::fmt;
 
 constexpr int kGaugeHalf = 10;
+
+/// make()'s result for key, made again only when key is not the last one
+/// asked for at this call site (each lambda type its own), in this thread:
+/// the status view redraws 5 times a second a frame that, at rest, has not
+/// changed, and these lines were most of a redraw's work.
+template <typename Key, typename Make>
+std::invoke_result_t<Make> last_made(const Key& key, Make make) {
+  struct Kept {
+    std::optional<Key> key;
+    std::invoke_result_t<Make> value;
+  };
+  thread_local Kept kept;
+  if (!kept.key || *kept.key != key) {
+    kept.value = make();
+    kept.key = key;
+  }
+  return kept.value;
+}
 constexpr std::size_t kIndent = 11;  ///< where a group's switches start
 
 std::vector<protocol::SignalId> ids(std::initializer_list<std::string_view> names) {
@@ -70,7 +92,10 @@ const std::vector<SignalGroup>& signal_groups() {
   return groups;
 }
 
-std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact, SwitchNames names) {
+namespace {
+
+std::vector<Line> make_switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact,
+                                    SwitchNames names) {
   const auto state = protocol::read_signals(data);
   std::vector<Line> out;
   for (const auto& group : signal_groups()) {
@@ -94,7 +119,17 @@ std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t widt
   return out;
 }
 
-Line selector_line(const protocol::DataBytes& data) {
+}  // namespace
+
+std::vector<Line> switch_lines(const protocol::DataBytes& data, std::size_t width, bool compact, SwitchNames names) {
+  const auto key = std::tuple(data, width, names);
+  return compact ? last_made(key, [&] { return make_switch_lines(data, width, true, names); })
+                 : last_made(key, [&] { return make_switch_lines(data, width, false, names); });
+}
+
+namespace {
+
+Line make_selector_line(const protocol::DataBytes& data) {
   const auto state = protocol::read_signals(data);
   Line line("  set     ");
   for (const auto& selector : protocol::kSelectorWords) {
@@ -108,12 +143,22 @@ Line selector_line(const protocol::DataBytes& data) {
   return line;
 }
 
-std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
+std::vector<Line> make_gauge_lines(const protocol::DataBytes& data, int center) {
   // A neutral frame (safety 0) carries the protocol's 128, not the trim: empty gauges at rest either way.
   if (protocol::read_signals(data)[protocol::signal_id("safety")] == 0) center = protocol::kNeutralCentre;
   return {gauge("drive", byte_of(data, "drive"), center), gauge("pivot", byte_of(data, "pivot"), center),
           gauge("arm_speed", byte_of(data, "arm_speed"), std::nullopt),
           gauge("light", byte_of(data, "light"), std::nullopt), Line("  frame     " + protocol::to_hex(data))};
+}
+
+}  // namespace
+
+Line selector_line(const protocol::DataBytes& data) {
+  return last_made(data, [&] { return make_selector_line(data); });
+}
+
+std::vector<Line> gauge_lines(const protocol::DataBytes& data, int center) {
+  return last_made(std::pair(data, center), [&] { return make_gauge_lines(data, center); });
 }
 
 Screen render_monitor_screen(std::string_view source, const link::VehicleStatus& v, bool live, TermSize size) {

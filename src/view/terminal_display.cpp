@@ -125,13 +125,13 @@ void TerminalDisplay::draw(bool final) {
   // the last one ends without a newline, which would scroll the top away.
   std::string out = "\x1b[H";
   out.reserve(text.size() + 256);
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] != '\n') {
-      out += text[i];
-      continue;
-    }
+  for (std::size_t start = 0; start < text.size();) {
+    const auto end = std::min(text.find('\n', start), text.size());
+    out.append(text, start, end - start);
+    if (end == text.size()) break;
     out += "\x1b[K";
-    if (i + 1 < text.size()) out += '\n';
+    if (end + 1 < text.size()) out += '\n';
+    start = end + 1;
   }
   // Clear what is left of the last, perhaps longer, screen.
   out += "\x1b[J";

@@ -57,6 +57,32 @@ protocol::DataBytes drive_pivot(std::uint8_t drive, std::uint8_t pivot, bool ena
   return protocol::FrameBuilder(1).build(s);
 }
 
+// The blocks are kept from one redraw to the next (the frame at rest): asked
+// again for what they last drew, and then for something else, they must say
+// what that is, never what they said before.
+TEST(OperatorScreens, KeptBlocksFollowEveryChangeOfWhatTheyShow) {
+  const auto rest = drive_pivot(128, 128, false);
+  const auto moving = drive_pivot(200, 60);
+  const auto at_rest = render_frame_panel(rest, mapping::kDefaultCenter);
+  EXPECT_EQ(render_frame_panel(rest, mapping::kDefaultCenter), at_rest);
+  const auto driving = render_frame_panel(moving, mapping::kDefaultCenter);
+  EXPECT_NE(driving, at_rest);
+  EXPECT_NE(driving.find(" SAFETY"), std::string::npos) << driving;
+  EXPECT_EQ(render_frame_panel(rest, mapping::kDefaultCenter), at_rest);
+  // The same frame, another centre (a new mapping's trim): the gauges move.
+  EXPECT_NE(render_frame_panel(moving, 100), driving);
+  EXPECT_EQ(render_frame_panel(moving, mapping::kDefaultCenter), driving);
+  // The same frame, compact or not, narrower, the operator's words: each its own.
+  const auto full = joined(switch_lines(moving, 78, false));
+  const auto compact = joined(switch_lines(moving, 78, true));
+  EXPECT_NE(compact, full);
+  EXPECT_EQ(compact.find("drive_brake"), std::string::npos) << compact;
+  EXPECT_NE(joined(switch_lines(moving, 30, false)), full);
+  EXPECT_NE(joined(switch_lines(moving, 78, false, SwitchNames::kOperator)), full);
+  EXPECT_EQ(joined(switch_lines(moving, 78, false)), full);
+  EXPECT_NE(plain(selector_line(moving), 200), "");
+}
+
 TEST(OperatorScreens, CentredGaugesGrowFromTheCentreTheyAreHanded) {
   // center: 120 (the lowest trim): 120 is at rest while enabled, 60 half way down, 255 and 0 the ends.
   auto text = render_frame_panel(drive_pivot(120, 60), 120);
