@@ -5,8 +5,14 @@
 //  - p99 period deviation: |gap between two frames - 40 ms| at the pty's far end;
 //  - CPU: its CPU-time clock (every thread, in ns) over the window, as % of
 //    one core and per frame;
-//  - wake-ups per second: voluntary + involuntary context switches of every
-//    thread (/proc/PID/task/*/status), and which threads they come from;
+//  - wake-ups per second: voluntary context switches of every thread
+//    (/proc/PID/task/*/status), and which threads they come from: a thread
+//    that gave up its core (to sleep, or to wait on a poll or a lock) and
+//    is woken again, what keeps a core from resting (powertop's count);
+//  - preemptions per second: involuntary context switches, a thread that
+//    was running put aside by the scheduler (a task woken on its core: the
+//    pty's reader its own write woke, a kernel worker); shown beside the
+//    wake-ups, never added to them: they wake nothing;
 //  - RSS (VmRSS at the end of the window).
 // Cases: the SDL input with no controller, with SDL's virtual pad attached
 // (LD_PRELOAD of libandros_bench_virtual_pad.so, beside this binary), and an
@@ -66,7 +72,8 @@ constexpr Case kCases[] = {
 /// One process's counters at one moment.
 struct Sample {
   std::int64_t cpu_ns = 0;
-  std::map<std::string, long> switches;  ///< by thread: "TID name"
+  std::map<std::string, long> switches;  ///< voluntary, by thread: "TID name"
+  long preemptions = 0;                  ///< involuntary, every thread
   double rss_mb = 0;
 };
 
@@ -94,8 +101,8 @@ Sample sample(pid_t pid) {
       const std::string task = dir + "/" + e->d_name;
       std::string name;
       std::getline(std::ifstream(task + "/comm"), name);
-      s.switches[std::string(e->d_name) + " " + name] = status_field(task + "/status", "voluntary_ctxt_switches") +
-                                                        status_field(task + "/status", "nonvoluntary_ctxt_switches");
+      s.switches[std::string(e->d_name) + " " + name] = status_field(task + "/status", "voluntary_ctxt_switches");
+      s.preemptions += status_field(task + "/status", "nonvoluntary_ctxt_switches");
     }
     closedir(d);
   }
@@ -174,6 +181,7 @@ struct Measured {
   double cpu_pct = 0;
   double us_per_frame = 0;
   double wakeups = 0;
+  double preemptions = 0;
   double rss_mb = 0;
   std::size_t frames = 0;
   std::string threads;  ///< wake-ups per second by thread
@@ -196,14 +204,15 @@ Measured measure(const Sample& a, const Sample& b, const Arrivals& port, std::in
             << static_cast<double>(std::lround(static_cast<double>(d) / seconds * 10)) / 10.0 << "/s";
   }
   m.wakeups = static_cast<double>(total) / seconds;
+  m.preemptions = static_cast<double>(b.preemptions - a.preemptions) / seconds;
   m.rss_mb = b.rss_mb;
   m.threads = threads.str();
   return m;
 }
 
 void row(const std::string& name, const Measured& m, const char* verdict) {
-  std::printf("| %-26s | %6zu | %7.3f ms | %6.3f %% | %7.1f us | %7.1f | %5.1f MB | %s |\n", name.c_str(), m.frames,
-              m.p99_ms, m.cpu_pct, m.us_per_frame, m.wakeups, m.rss_mb, verdict);
+  std::printf("| %-26s | %6zu | %7.3f ms | %6.3f %% | %7.1f us | %7.1f | %9.1f | %5.1f MB | %s |\n", name.c_str(),
+              m.frames, m.p99_ms, m.cpu_pct, m.us_per_frame, m.wakeups, m.preemptions, m.rss_mb, verdict);
 }
 
 std::string beside_self(const std::string& name) {
@@ -265,7 +274,7 @@ bool run_case(const std::string& bin, const Case& c, int seconds, const std::str
              (rss_ok ? ", RSS ok" : ", RSS OVER");
   row(std::string("floor (") + c.name + ")", f, "");
   row(std::string("run --input ") + c.name, b, verdict.c_str());
-  std::printf("|   threads | | | | | %s | | |\n", b.threads.c_str());
+  std::printf("|   threads | | | | | %s | | | |\n", b.threads.c_str());
   return ran && cpu_ok && wake_ok && rss_ok;
 }
 
@@ -286,12 +295,14 @@ int main(int argc, char** argv) {
   std::printf(
       "Idle cost of `%s run --port PTY` beside the floor (bench/floor.c), %d s per case after %d s\n"
       "of start-up; nothing changes on the input. Goals (issue 18): CPU <= %.1fx the floor's,\n"
-      "<= %.0f wake-ups/s, RSS <= %.0f MB.\n\n",
+      "<= %.0f wake-ups/s (voluntary switches; preemptions shown apart), RSS <= %.0f MB.\n\n",
       bin.c_str(), seconds, kWarmupMs / 1000, kCpuFactorGoal, kWakeupsGoal, kRssGoalMb);
-  std::printf("| %-26s | %6s | %10s | %8s | %10s | %7s | %8s | |\n", "process", "frames", "p99 |dev|", "CPU",
-              "CPU/frame", "wake/s", "RSS");
+  std::printf("| %-26s | %6s | %10s | %8s | %10s | %7s | %9s | %8s | |\n", "process", "frames", "p99 |dev|", "CPU",
+              "CPU/frame", "wake/s", "preempt/s", "RSS");
   std::printf(
-      "|----------------------------|--------|------------|----------|------------|---------|----------|---|\n");
+      "|----------------------------|--------|------------|----------|------------|---------|-----------|----------|---"
+      "|"
+      "\n");
   bool all_ok = true;
   for (const auto& c : kCases) {
     if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), c.name) == wanted.end()) continue;
