@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes each libFuzzer target for a while: scripts/fuzz.sh [SECONDS] [TARGET...]
 # (default 60 s each, every target; scripts/fuzz.sh --build [TARGET...]
-# only builds them). Builds with clang into build-fuzz/, works
+# only builds them). Builds with clang into build-fuzz/ (or FUZZ_BUILD_DIR:
+# a tree already configured with ANDROS_FUZZ=ON is used as it is), works
 # on a scratch copy of fuzz/corpus/TARGET, and writes any crash into
 # fuzz/crashes/TARGET/, where the replay test (ctest fuzz_replay.TARGET) keeps
 # running it once it is fixed. Runs as many targets at once as there are
@@ -18,13 +19,19 @@ else
 fi
 scripts/setup.sh clang libclang-rt-14-dev
 build=${FUZZ_BUILD_DIR:-build-fuzz}
-# -g1: line tables are all a finding's stack trace needs, in less compile time.
-# In CI (CI=true) warnings are errors, clang's as gcc's in the other builds.
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
-werror=OFF
-[[ ${CI:-} == true ]] && werror=ON
-CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-  -DANDROS_WERROR="$werror" -DANDROS_FUZZ=ON -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
+if grep -qs '^ANDROS_FUZZ:BOOL=ON' "$build/CMakeCache.txt" && [[ -n ${FUZZ_BUILD_DIR:-} ]]; then
+  # A tree configured for fuzzing elsewhere (scripts/test.sh's sanitizer
+  # tree, which builds the targets with the suite): used as it is.
+  :
+else
+  # -O1 -g1: OSS-Fuzz's flags; line tables are all a finding's stack trace
+  # needs. In CI (CI=true) warnings are errors, clang's as gcc's in the other builds.
+  werror=OFF
+  [[ ${CI:-} == true ]] && werror=ON
+  CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+    -DANDROS_WERROR="$werror" -DANDROS_FUZZ=ON -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
+fi
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   mapfile -t targets < <(sed -n 's/^set(ANDROS_FUZZ_TARGETS \(.*\))$/\1/p' fuzz/CMakeLists.txt | tr ' ' '\n')
