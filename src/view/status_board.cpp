@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <tuple>
+
 #include "andros/base/clock.hpp"
 #include "andros/base/text.hpp"
 
@@ -10,26 +12,14 @@ namespace {
 
 constexpr const char* kNeutralOnly = "neutral frames only: the server stalled and has not been seen reading since";
 
-}  // namespace
-
-RunStatusBoard::Said::Said(const run::TickReport& r)
-    : connected(r.connected),
-      controller(r.controller),
-      supervised(r.supervised),
-      supervisor_connected(r.supervisor_connected),
-      supervisor(r.supervisor),
-      state(r.state),
-      engine(r.engine),
-      link_state(r.link.state),
-      motion_allowed(r.link.motion_allowed),
-      link_detail(r.link.detail) {}
-
-bool RunStatusBoard::Said::same(const run::TickReport& r) const {
-  return r.connected == connected && r.controller == controller && r.supervised == supervised &&
-         r.supervisor_connected == supervisor_connected && r.supervisor == supervisor && r.state == state &&
-         r.engine == engine && r.link.state == link_state && r.link.motion_allowed == motion_allowed &&
-         r.link.detail == link_detail;
+/// What a report says that the status's words and the log's lines come
+/// from: all of it but the frame, its time and the counters.
+auto said(const run::TickReport& r) {
+  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.engine,
+                  r.link.state, r.link.motion_allowed, r.link.detail);
 }
+
+}  // namespace
 
 void RunStatusBoard::observe(const run::TickReport& r) {
   // A tick at rest says what the one before said: only the frame, its time
@@ -43,7 +33,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     s.t_ms = r.t_ms;
     s.sent = r.data;
     s.link = r.link.counters;
-    if (!said_ || !said_->same(r)) {
+    if (!said_ || said(*said_) != said(r)) {
       before = s;
       s.connected = r.connected;
       if (s.connected) s.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
@@ -66,7 +56,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
       s.link_state = r.link.state;
       s.motion_allowed = r.link.motion_allowed;
       s.link_detail = s.motion_allowed ? r.link.detail : kNeutralOnly;
-      said_.emplace(r);
+      said_ = r;
     }
   }
   // The loop's thread is the status's only writer: read outside the lock, as before.

@@ -42,30 +42,13 @@ class RunStatusBoard {
   [[nodiscard]] RunStatus status() const;
 
  private:
-  /// What a report says that the status's words and the log's lines come
-  /// from: all of it but the frame, its time and the counters.
-  struct Said {
-    explicit Said(const run::TickReport& r);
-    [[nodiscard]] bool same(const run::TickReport& r) const;
-
-    bool connected;
-    std::string controller;
-    bool supervised;
-    bool supervisor_connected;
-    std::string supervisor;
-    run::OpState state;
-    mapping::EngineStatus engine;
-    link::LinkState link_state;
-    bool motion_allowed;
-    std::string link_detail;
-  };
-
   void log_changes(const RunStatus& before, const RunStatus& after) const;
 
   mutable std::mutex mutex_;
   RunStatus status_;
   timing::FrameTiming timing_;
-  std::optional<Said> said_;  ///< by the last report; none before the first, or when the words must be formed again
+  /// The last report whose words were formed; none before the first, or when they must be formed again.
+  std::optional<run::TickReport> said_;
   bool first_tick_ = true;
   bool was_connected_ = false;  ///< as the last report said, for observe(report, input)
 };
