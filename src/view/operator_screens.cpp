@@ -19,6 +19,7 @@ namespace {
 using detail::fmt;
 
 constexpr int kGaugeHalf = 10;
+constexpr std::size_t kIndent = 11;  ///< where a group's switches start
 
 /// make()'s result for key, made again only when key is not the last one
 /// asked for at this call site (each lambda type its own), in this thread:
@@ -37,7 +38,6 @@ std::invoke_result_t<Make> last_made(const Key& key, Make make) {
   }
   return kept.value;
 }
-constexpr std::size_t kIndent = 11;  ///< where a group's switches start
 
 std::vector<protocol::SignalId> ids(std::initializer_list<std::string_view> names) {
   std::vector<protocol::SignalId> out;
