@@ -20,11 +20,9 @@ fi
 scripts/setup.sh clang libclang-rt-14-dev
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
-if grep -qs '^ANDROS_FUZZ:BOOL=ON' "$build/CMakeCache.txt" && [[ -n ${FUZZ_BUILD_DIR:-} ]]; then
-  # A tree configured for fuzzing elsewhere (scripts/test.sh's sanitizer
-  # tree, which builds the targets with the suite): used as it is.
-  :
-else
+# A FUZZ_BUILD_DIR configured for fuzzing elsewhere (scripts/test.sh's
+# sanitizer tree, which builds the targets with the suite) is used as it is.
+if [[ -z ${FUZZ_BUILD_DIR:-} ]] || ! grep -qs '^ANDROS_FUZZ:BOOL=ON' "$build/CMakeCache.txt"; then
   # -O1 -g1: OSS-Fuzz's flags; line tables are all a finding's stack trace
   # needs. In CI (CI=true) warnings are errors, clang's as gcc's in the other builds.
   werror=OFF

@@ -70,8 +70,8 @@ ctest_jobs=$((3 * jobs))
 # background NAME CMD...: runs CMD niced (the builds and tests in front get
 # the cores first), its output in $build/NAME.log; await NAME waits for it as
 # a phase of its own, says how long it ran and its CPU, and prints its output
-# (a failure ends the script). The job is started from a subshell that ends at
-# once, so that it is not this script's child: bash adds a child's CPU to
+# (a failure ends the script). The job is started from the subshell of $(...),
+# which ends at once, so that it is not this script's child: bash adds a child's CPU to
 # `times` when the child ends, which would count a job's CPU in whatever phase
 # was running then; the job's own shell times it instead. setsid: a session
 # and process group of its own, which the EXIT trap ends whole.
@@ -79,11 +79,10 @@ background() {
   local name=$1 log="$build/$1.log"
   shift
   bg_log[$name]=$log
-  rm -f "$log.done" "$log.times" "$log.pid"
-  (setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
-                   echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "$log" "$@" >"$log" 2>&1 &
-   echo $! >"$log.pid")
-  bg_pid[$name]=$(<"$log.pid")
+  rm -f "$log.done" "$log.times"
+  bg_pid[$name]=$(setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
+                                  echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "$log" "$@" \
+                    </dev/null >"$log" 2>&1 & echo $!)
 }
 await() {
   local name=$1 log=${bg_log[$1]} status ran cpu
