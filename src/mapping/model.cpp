@@ -57,74 +57,75 @@ void check_rule(const Binding& b, const std::optional<InputUse>& deadman, const 
                 const std::string& file) {
   const auto& at = b.target_pos;
   const auto check_threshold = [&](double t) { check_range(t > 0.0 && t <= 1.0, b.pos, "threshold"); };
-  std::visit(Overload{
-                 [&](const ButtonBinding& r) {
-                   check_motion(r.signal, at);
-                   check_threshold(r.threshold);
-                 },
-                 [&](const WeaponBinding& r) {
-                   if (protocol::info(r.signal).kind != protocol::SignalKind::kWeapon) {
-                     throw InputError(at, "'arm' is only for weapon signals; " + quoted(r.signal) + " is not one");
-                   }
-                   if (!r.arm)
-                     throw InputError(b.pos, "weapon binding for " + quoted(r.signal) +
-                                                 " needs 'arm': a second button held to fire");
-                   if (*r.arm == r.input)
-                     throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
-                   if (deadman && *r.arm == deadman->key) {
-                     throw InputError(b.arm->pos, "'arm' must be a second button, not the deadman");
-                   }
-                   // A layer key that also arms would make one press enter the layer and arm it.
-                   for (const auto& key : reserved) {
-                     if (*r.arm == key.key) {
-                       const auto& blamed = blame(file, b.arm->pos, key.pos);
-                       throw InputError(blamed, "'arm' must be a second button, not the key of a layer (" +
-                                                    line_of(&blamed == &key.pos ? b.arm->pos : key.pos, blamed) + ")");
-                     }
-                   }
-                 },
-                 [&](const PairBinding& r) {
-                   check_motion(r.signals[0], at);
-                   check_motion(r.signals[1], at);
-                   if (r.signals[0] == r.signals[1])
-                     throw InputError(at, "an opposing pair names two different signals");
-                   check_threshold(r.threshold);
-                 },
-                 [&](const AxisBinding& r) {
-                   const auto kind = protocol::info(r.analog).kind;
-                   if (kind != protocol::SignalKind::kCentred && kind != protocol::SignalKind::kLevel) {
-                     throw InputError(at, quoted(r.analog) + " is not an analog byte (drive, pivot, arm_speed, light)");
-                   }
-                   check_range(r.shape.deadzone >= 0.0 && r.shape.deadzone < 1.0, b.pos, "deadzone");
-                   check_range(r.shape.expo >= 0.0 && r.shape.expo <= 1.0, b.pos, "expo");
-                 },
-                 [&](const KnobBinding& r) {
-                   if (protocol::info(r.analog).kind != protocol::SignalKind::kLevel) {
-                     throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
-                                              " must return to centre, so bind it to an axis");
-                   }
-                   check_range(r.rate > 0 && r.rate <= kMaxKnobRate, b.pos, "rate");
-                   check_range(!r.initial || (*r.initial >= 0 && *r.initial <= kWholeByteMax), b.pos, "initial");
-                 },
-                 [&](const SelectorBinding& r) {
-                   check_range(r.positions.size() >= 2, at, "the number of positions");
-                   check_range(r.initial >= 0 && static_cast<std::size_t>(r.initial) < r.positions.size(), b.pos,
-                               "initial position");
-                   for (const auto& position : r.positions) {
-                     for (const auto id : position) {
-                       if (protocol::info(id).kind != protocol::SignalKind::kSelector) {
-                         throw InputError(
-                             at, "selector positions set selector-like signals only; " + quoted(id) + " is not one");
-                       }
-                       const auto partner = protocol::partner_of(id);
-                       if (partner && std::find(position.begin(), position.end(), *partner) != position.end()) {
-                         throw InputError(at, "a position sets both " + quoted(id) + " and its opposite");
-                       }
-                     }
-                   }
-                 },
-             },
-             b.rule);
+  std::visit(
+      Overload{
+          [&](const ButtonBinding& r) {
+            check_motion(r.signal, at);
+            check_threshold(r.threshold);
+          },
+          [&](const WeaponBinding& r) {
+            if (protocol::info(r.signal).kind != protocol::SignalKind::kWeapon) {
+              throw InputError(at, "'arm' is only for weapon signals; " + quoted(r.signal) + " is not one");
+            }
+            if (!r.arm)
+              throw InputError(b.pos,
+                               "weapon binding for " + quoted(r.signal) + " needs 'arm': a second button held to fire");
+            if (*r.arm == r.input) throw InputError(b.arm->pos, "'arm' must be a different button from 'button'");
+            if (deadman && *r.arm == deadman->key) {
+              const auto& blamed = blame(file, b.arm->pos, deadman->pos);
+              throw InputError(blamed, "'arm' must be a second button, not the deadman (" +
+                                           line_of(&blamed == &deadman->pos ? b.arm->pos : deadman->pos, blamed) + ")");
+            }
+            // A layer key that also arms would make one press enter the layer and arm it.
+            for (const auto& key : reserved) {
+              if (*r.arm == key.key) {
+                const auto& blamed = blame(file, b.arm->pos, key.pos);
+                throw InputError(blamed, "'arm' must be a second button, not the key of a layer (" +
+                                             line_of(&blamed == &key.pos ? b.arm->pos : key.pos, blamed) + ")");
+              }
+            }
+          },
+          [&](const PairBinding& r) {
+            check_motion(r.signals[0], at);
+            check_motion(r.signals[1], at);
+            if (r.signals[0] == r.signals[1]) throw InputError(at, "an opposing pair names two different signals");
+            check_threshold(r.threshold);
+          },
+          [&](const AxisBinding& r) {
+            const auto kind = protocol::info(r.analog).kind;
+            if (kind != protocol::SignalKind::kCentred && kind != protocol::SignalKind::kLevel) {
+              throw InputError(at, quoted(r.analog) + " is not an analog byte (drive, pivot, arm_speed, light)");
+            }
+            check_range(r.shape.deadzone >= 0.0 && r.shape.deadzone < 1.0, b.pos, "deadzone");
+            check_range(r.shape.expo >= 0.0 && r.shape.expo <= 1.0, b.pos, "expo");
+          },
+          [&](const KnobBinding& r) {
+            if (protocol::info(r.analog).kind != protocol::SignalKind::kLevel) {
+              throw InputError(at, "a knob drives arm_speed or light; " + quoted(r.analog) +
+                                       " must return to centre, so bind it to an axis");
+            }
+            check_range(r.rate > 0 && r.rate <= kMaxKnobRate, b.pos, "rate");
+            check_range(!r.initial || (*r.initial >= 0 && *r.initial <= kWholeByteMax), b.pos, "initial");
+          },
+          [&](const SelectorBinding& r) {
+            check_range(r.positions.size() >= 2, at, "the number of positions");
+            check_range(r.initial >= 0 && static_cast<std::size_t>(r.initial) < r.positions.size(), b.pos,
+                        "initial position");
+            for (const auto& position : r.positions) {
+              for (const auto id : position) {
+                if (protocol::info(id).kind != protocol::SignalKind::kSelector) {
+                  throw InputError(at,
+                                   "selector positions set selector-like signals only; " + quoted(id) + " is not one");
+                }
+                const auto partner = protocol::partner_of(id);
+                if (partner && std::find(position.begin(), position.end(), *partner) != position.end()) {
+                  throw InputError(at, "a position sets both " + quoted(id) + " and its opposite");
+                }
+              }
+            }
+          },
+      },
+      b.rule);
 }
 
 // Within one list of bindings: every input once, every analog byte once.
@@ -231,12 +232,12 @@ void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
     if (!key) continue;
     const auto name = "'" + input::input_name(key->key) + "'";
     if (m.estop && m.estop->key == key->key) {
-      throw InputError(key->pos, name + " is the stop button (line " + std::to_string(m.estop->pos.line) +
+      throw InputError(key->pos, name + " is the stop button (" + line_of(m.estop->pos, key->pos) +
                                      "); it cannot also step the speed level");
     }
     for (const auto& r : reserved) {
       if (r.key == key->key) {
-        throw InputError(key->pos, name + " is the deadman or switches a layer (line " + std::to_string(r.pos.line) +
+        throw InputError(key->pos, name + " is the deadman or switches a layer (" + line_of(r.pos, key->pos) +
                                        "); it cannot also step the speed level");
       }
     }
@@ -244,15 +245,13 @@ void check_scale(const Mapping& m, const std::vector<InputUse>& reserved) {
       const auto& b = binding_at(m, ref);
       for (const auto& u : b.inputs) {
         if (u.key == key->key) {
-          throw InputError(key->pos, name + " steps the speed level in every layer; it is also bound at line " +
-                                         std::to_string(u.pos.line) +
-                                         (u.pos.file == key->pos.file ? "" : " of " + u.pos.file));
+          throw InputError(key->pos, name + " steps the speed level in every layer; it is also bound at " +
+                                         line_of(u.pos, key->pos));
         }
       }
       if (b.arm && b.arm->key == key->key) {
-        throw InputError(key->pos, name + " steps the speed level in every layer; it also arms a weapon at line " +
-                                       std::to_string(b.arm->pos.line) +
-                                       (b.arm->pos.file == key->pos.file ? "" : " of " + b.arm->pos.file));
+        throw InputError(key->pos, name + " steps the speed level in every layer; it also arms a weapon at " +
+                                       line_of(b.arm->pos, key->pos));
       }
     }
   }
@@ -332,8 +331,8 @@ void check_estop(const Mapping& m) {
   if (!m.estop) return;
   const auto key = m.estop->key;
   const auto refuse = [&](const SourcePos& other, const std::string& what) {
-    throw InputError(m.estop->pos, "the stop button '" + input::input_name(key) + "' is already " + what + " (line " +
-                                       std::to_string(other.line) + "): a stop button is bound to nothing else");
+    throw InputError(m.estop->pos, "the stop button '" + input::input_name(key) + "' is already " + what + " (" +
+                                       line_of(other, m.estop->pos) + "): a stop button is bound to nothing else");
   };
   if (!key.is_button()) throw InputError(m.estop->pos, "estop is a button (or a hat direction), not an axis");
   if (m.deadman && m.deadman->key == key) refuse(m.deadman->pos, "the deadman");
@@ -405,8 +404,8 @@ ValidMapping validate(Mapping m, bool require_robot) {
   if (m.supervisor && m.supervisor->weapons_consent && m.supervisor->weapons_consent->key == m.supervisor->stop.key) {
     throw InputError(m.supervisor->weapons_consent->pos,
                      "the supervisor's 'weapons_consent' must be a different button "
-                     "from its 'stop' (line " +
-                         std::to_string(m.supervisor->stop.pos.line) + ")");
+                     "from its 'stop' (" +
+                         line_of(m.supervisor->stop.pos, m.supervisor->weapons_consent->pos) + ")");
   }
   std::map<protocol::SignalId, SourcePos> selector_signals;
   const auto check_bindings = [&](const std::vector<Binding>& list) {

@@ -119,19 +119,32 @@ void append_hat(std::string& out, const input::InputState& state, int hat) {
   out += fmt("  %3d %-12s %s\n", hat, ("hat" + std::to_string(hat)).c_str(), hat_text(state.hat(hat)).c_str());
 }
 
-/// The lines of text, each cut to width (a long signal or layer name); when
-/// there are more than rows, the blank lines go first.
+/// The lines of text, each wrapped to width under its text (a long path, a
+/// binding's or a layer's name: shown whole) while that leaves them within
+/// the rows, else cut to width (every input still shown: the triggers, the
+/// last column of buttons); when there are more than rows, the blank lines go
+/// first.
 std::string fit(const std::string& text, TermSize size) {
+  constexpr std::size_t kHang = 6;  // under an axis line's name, past its number
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
-  std::vector<std::string> lines;
-  for (std::size_t from = 0; from < text.size();) {
-    const auto end = std::min(text.find('\n', from), text.size());
-    lines.push_back(text.substr(from, std::min(end - from, width)));
-    from = end + 1;
-  }
-  if (lines.size() > static_cast<std::size_t>(std::max(size.rows, 1))) {
-    std::erase_if(lines, [](const std::string& line) { return line.empty(); });
-  }
+  const auto rows = static_cast<std::size_t>(std::max(size.rows, 1));
+  const auto split = [&](bool wrap) {
+    std::vector<std::string> lines;
+    for (std::size_t from = 0; from < text.size();) {
+      const auto end = std::min(text.find('\n', from), text.size());
+      const auto line = std::string_view(text).substr(from, end - from);
+      if (wrap) {
+        for (auto& part : wrap_text(line, width, kHang)) lines.push_back(std::move(part));
+      } else {
+        lines.emplace_back(line.substr(0, std::min(line.size(), width)));
+      }
+      from = end + 1;
+    }
+    if (lines.size() > rows) std::erase_if(lines, [](const std::string& line) { return line.empty(); });
+    return lines;
+  };
+  auto lines = split(true);
+  if (lines.size() > rows) lines = split(false);
   std::string out;
   for (const auto& line : lines) out += line + "\n";
   return out;

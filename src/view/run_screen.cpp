@@ -16,7 +16,14 @@ using detail::fmt;
 constexpr std::string_view kWeapons = "WEAPONS ENABLED: weapon signals may be sent";
 constexpr std::string_view kWeaponsLayer = "WEAPONS LAYER";
 constexpr std::string_view kStopBanner = "STOP";
+/// "state       ", "link        ": where a line's text starts, and its continuations.
+constexpr std::size_t kLabelWidth = 12;
 constexpr int kMinLogRows = 3;  ///< the full switch list only when it leaves the log this many rows
+/// Frames since the link came up before its rate and jitter mean something
+/// (a second at 25 Hz): until then the screen says "measuring".
+constexpr std::uint64_t kMeasuringFrames = 25;
+
+bool measuring(const RunStatus& s) { return s.sent_timing.count < kMeasuringFrames; }
 
 /// "; at rest first: lefty" from the enabled text "enabled; at rest first: lefty".
 std::string held_back_note(const std::string& enable_text) {
@@ -62,16 +69,19 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
           Line(out.empty() ? std::string(kLabel) : indent).add(part, s.shutting_down() ? Style::kWarn : Style::kAlert));
     }
   }
-  if (!s.layer.empty()) out.back().add("   layer: ").add(s.layer, Style::kBold);
-  if (shows_speed(s.speed)) {
-    const auto speed = "speed " + speed_text(s.speed);
-    if (out.back().width() + 3 + speed.size() > width) out.emplace_back(std::string(kLabel.size(), ' '));
+  // What follows the state goes on its line while it fits, else on a line
+  // of its own under it: the layer and a weapons mode are never cut off.
+  const auto append = [&](const std::vector<Piece>& pieces) {
+    std::size_t need = 3;
+    for (const auto& p : pieces) need += p.text.size();
+    if (out.back().width() + need > width) out.emplace_back(std::string(kLabel.size(), ' '));
     else out.back().add("   ");
-    out.back().add(speed, Style::kBold);
-  }
-  if (s.weapons_mode) {
-    out.back().add("   ").add(" " + std::string(kWeaponsLayer) + (s.armed ? " ARMED " : " "), Style::kBanner);
-  }
+    for (const auto& p : pieces) out.back().add(p.text, p.style);
+  };
+  if (!s.layer.empty()) append({{"layer: "}, {s.layer, Style::kBold}});
+  if (shows_speed(s.speed)) append({{"speed level " + speed_text(s.speed), Style::kBold}});
+  if (s.weapons_mode) append({{" " + std::string(kWeaponsLayer) + (s.armed ? " ARMED " : " "), Style::kBanner}});
+  for (auto& line : out) line.hang(kLabel.size());
   return out;
 }
 
@@ -91,6 +101,7 @@ Line link_line(const RunStatus& s, std::size_t width) {
   const auto state = std::string(to_string(s.link_state));
   const std::size_t fixed = kLabel.size() + 2 + state.size();
   Line line(std::string(kLabel) + cut_middle(s.link_name, width > fixed ? width - fixed : 0) + ": ");
+  line.hang(kLabelWidth);
   line.add(std::string(to_string(s.link_state)), s.link_state == link::LinkState::kUp ? Style::kGood : Style::kAlert);
   if (!s.motion_allowed) return line.add(" - " + s.link_detail, Style::kAlert);
   return s.link_detail.empty() ? line : line.add(" - " + s.link_detail);
@@ -98,6 +109,7 @@ Line link_line(const RunStatus& s, std::size_t width) {
 
 Line controller_line(const RunStatus& s) {
   Line line("controller  ");
+  line.hang(kLabelWidth);
   if (s.connected) line.add(s.controller, Style::kBold);
   else line.add("none connected", Style::kAlert);
   if (s.connected && s.game_controller == false) {
@@ -110,6 +122,7 @@ Line controller_line(const RunStatus& s) {
 /// The supervisor's controller: its name, and what it holds that matters.
 Line supervisor_line(const RunStatus& s) {
   Line line("supervisor  ");
+  line.hang(kLabelWidth);
   if (!s.supervisor_connected) return line.add("none connected: nothing moves without it", Style::kAlert);
   line.add(s.supervisor, Style::kBold);
   if (s.supervisor_stop) line.add("  ").add(" STOP HELD ", Style::kBanner);
@@ -128,16 +141,22 @@ Line mapping_line(const std::string& file, std::size_t width) {
   const std::size_t room = width > kLabel.size() + 4 ? width - kLabel.size() : 4;
   std::string path = file;
   if (path.size() > room) path = "..." + path.substr(path.size() - (room - 3));
-  return Line(std::string(kLabel) + path);
+  return Line(std::string(kLabel) + path).hang(kLabelWidth);
 }
 
 std::vector<Line> counter_lines(const RunStatus& s) {
   std::vector<Line> out;
-  out.emplace_back(fmt("frames      sent %llu, skipped %llu busy, %llu down, link lost %llu times",
+  out.emplace_back(fmt("frames      sent %llu, skipped %llu busy, %llu down, link lost %llu time%s",
                        static_cast<unsigned long long>(s.link.sent), static_cast<unsigned long long>(s.link.busy),
-                       static_cast<unsigned long long>(s.link.down), static_cast<unsigned long long>(s.link.losses)));
-  out.emplace_back(fmt("rate        %.1f Hz of %g (mean period %.2f ms, jitter %.2f ms)", s.sent_timing.rate_hz,
-                       s.rate_hz, s.sent_timing.period_ms, s.sent_timing.jitter_ms));
+                       static_cast<unsigned long long>(s.link.down), static_cast<unsigned long long>(s.link.losses),
+                       s.link.losses == 1 ? "" : "s"));
+  if (measuring(s)) {
+    out.emplace_back(fmt("rate        measuring since the link came up (%llu frames, of %g Hz)",
+                         static_cast<unsigned long long>(s.sent_timing.count), s.rate_hz));
+  } else {
+    out.emplace_back(fmt("rate        %.1f Hz of %g (mean period %.2f ms, jitter %.2f ms)", s.sent_timing.rate_hz,
+                         s.rate_hz, s.sent_timing.period_ms, s.sent_timing.jitter_ms));
+  }
   if (s.vehicle) {
     const auto& v = *s.vehicle;
     out.emplace_back(fmt("vehicle     %.1f Hz, %llu frames, %llu valid, %llu bad checksum, %llu invalid%s",
@@ -149,6 +168,7 @@ std::vector<Line> counter_lines(const RunStatus& s) {
   if (!s.recorder.empty()) {
     out.push_back(Line("recorder    ").add(s.recorder, s.recorder_failing ? Style::kAlert : Style::kPlain));
   }
+  for (auto& line : out) line.hang(kLabelWidth);
   return out;
 }
 
@@ -162,14 +182,17 @@ Screen render_run_screen(const RunStatus& s, TermSize size) {
     const std::string banner = !s.weapons_mode ? std::string(kWeapons)
                                : s.armed       ? std::string(kWeaponsLayer) + ": ARMED: a fire button fires"
                                                : std::string(kWeaponsLayer) + ": an armed fire input fires";
-    screen.pin(Line(centred(banner, width), Style::kBanner));
+    screen.pin(Line(centred(banner, width), Style::kBanner).one_row());
   }
   // Stopped by the operator: a red line across the top, above all else.
   const bool stopped = s.state == run::OpState::kStopped;
-  if (stopped) screen.pin(Line(centred(std::string(kStopBanner) + ": stopped by the operator", width), Style::kBanner));
+  if (stopped) {
+    screen.pin(Line(centred(std::string(kStopBanner) + ": stopped by the operator", width), Style::kBanner).one_row());
+  }
   auto title = Line("andros-bridge run", Style::kBold)
                    .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
-                   .add(fmt("%.1f Hz", s.sent_timing.rate_hz), s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
+                   .add(measuring(s) ? std::string("measuring") : fmt("%.1f Hz", s.sent_timing.rate_hz),
+                        measuring(s) || s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
                    .add(fmt("  t %.1f s", static_cast<double>(s.t_ms) / 1000.0));
   // Without --weapons nothing on the screen would say so: no banner is not the same as "off".
   if (!s.weapons) title.add("  weapons off");

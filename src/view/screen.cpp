@@ -75,26 +75,43 @@ void Screen::tail(std::vector<Line> lines, int priority) {
   blocks_.push_back(Block{std::move(lines), priority, true, true});
 }
 
-std::vector<Line> Screen::fit(TermSize size) const {
+std::vector<Line> Screen::fit(TermSize size) const { return fit(size, true); }
+
+std::vector<Line> Screen::fit(TermSize size, bool wrap) const {
   const auto rows = static_cast<std::size_t>(std::max(size.rows, 1));
-  std::vector<Line> out(pinned_.begin(), pinned_.begin() + static_cast<std::ptrdiff_t>(std::min(rows, pinned_.size())));
+  const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
+  // Every line wider than the screen wraps under itself: what a line says is
+  // never cut off at the edge, only a block that does not fit is left out.
+  const auto wrapped = [&](const std::vector<Line>& lines) {
+    if (!wrap) return lines;
+    std::vector<Line> out;
+    for (const auto& line : lines) {
+      auto parts = wrap_line(line, width);
+      out.insert(out.end(), std::make_move_iterator(parts.begin()), std::make_move_iterator(parts.end()));
+    }
+    return out;
+  };
+  std::vector<Line> out = wrapped(pinned_);
+  out.resize(std::min(rows, out.size()));
   std::size_t left = rows - out.size();
+  std::vector<std::vector<Line>> blocks;
+  blocks.reserve(blocks_.size());
+  for (const auto& b : blocks_) blocks.push_back(wrapped(b.lines));
   std::vector<std::size_t> order(blocks_.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [this](std::size_t a, std::size_t b) { return blocks_[a].priority > blocks_[b].priority; });
   std::vector<std::size_t> shown(blocks_.size(), 0);  // lines of each block that fit
   for (const auto i : order) {
-    const auto& b = blocks_[i];
-    if (b.lines.size() <= left) {
-      shown[i] = b.lines.size();
-    } else if (b.may_shrink) {
+    if (blocks[i].size() <= left) {
+      shown[i] = blocks[i].size();
+    } else if (blocks_[i].may_shrink) {
       shown[i] = left;
     }
     left -= shown[i];
   }
   for (std::size_t i = 0; i < blocks_.size(); ++i) {
-    const auto& lines = blocks_[i].lines;
+    const auto& lines = blocks[i];
     const auto skip = static_cast<std::ptrdiff_t>(blocks_[i].keep_last ? lines.size() - shown[i] : 0);
     out.insert(out.end(), lines.begin() + skip, lines.begin() + skip + static_cast<std::ptrdiff_t>(shown[i]));
   }
@@ -123,7 +140,7 @@ std::string Screen::text() const {
   std::size_t rows = pinned_.size();
   for (const auto& b : blocks_) rows += b.lines.size();
   std::string out;
-  for (const auto& line : fit({1, static_cast<int>(rows)})) {
+  for (const auto& line : fit({1, static_cast<int>(rows)}, false)) {
     for (const auto& piece : line.pieces()) out += piece.text;
     out += '\n';
   }
@@ -148,25 +165,62 @@ std::string plain(const Line& line, std::size_t width) {
   return out;
 }
 
-std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent) {
-  indent = std::min(indent, width / 2);  // a continuation keeps room for text
-  std::vector<std::string> out;
-  std::string_view rest = text;
+namespace {
+
+/// Where wrap_text breaks text: each line's byte range, the spaces it broke
+/// at left out.
+std::vector<std::pair<std::size_t, std::size_t>> wrap_ranges(std::string_view text, std::size_t width,
+                                                             std::size_t indent) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  std::size_t at = 0;
   std::size_t room = std::max<std::size_t>(width, 1);
-  while (code_points(rest) > room) {
-    auto head = first(rest, room);
-    // Break after the last space that fits, when there is one past the indent.
-    const auto space = head.rfind(' ');
+  while (code_points(text.substr(at)) > room) {
+    auto head = first(text.substr(at), room);
+    // Break at the space just past what fits, or after the last space that
+    // fits (on the first line, one past the indent).
+    const auto space = at + head.size() < text.size() && text[at + head.size()] == ' ' ? head.size() : head.rfind(' ');
     std::size_t next = head.size();
-    if (space != std::string_view::npos && space > indent) {
+    if (space != std::string_view::npos && space > (out.empty() ? indent : 0)) {
       head = head.substr(0, space);
       next = space + 1;
     }
-    out.emplace_back((out.empty() ? "" : std::string(indent, ' ')) + std::string(head));
-    rest.remove_prefix(next);
+    out.emplace_back(at, at + head.size());
+    at += next;
     room = std::max<std::size_t>(width - indent, 1);
   }
-  out.emplace_back((out.empty() ? "" : std::string(indent, ' ')) + std::string(rest));
+  out.emplace_back(at, text.size());
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent) {
+  indent = std::min(indent, width / 2);  // a continuation keeps room for text
+  std::vector<std::string> out;
+  for (const auto& [from, to] : wrap_ranges(text, width, indent)) {
+    out.emplace_back((out.empty() ? "" : std::string(indent, ' ')) + std::string(text.substr(from, to - from)));
+  }
+  return out;
+}
+
+std::vector<Line> wrap_line(const Line& line, std::size_t width) {
+  if (line.width() <= width || line.is_one_row()) return {line};
+  std::string text;
+  for (const auto& piece : line.pieces()) text += piece.text;
+  const auto indent = std::min(line.hang(), width / 2);
+  std::vector<Line> out;
+  for (const auto& [from, to] : wrap_ranges(text, width, indent)) {
+    Line part(out.empty() ? "" : std::string(indent, ' '));
+    part.hang(line.hang());
+    std::size_t at = 0;  // the piece's start in text
+    for (const auto& piece : line.pieces()) {
+      const auto begin = std::max(from, at);
+      const auto end = std::min(to, at + piece.text.size());
+      if (begin < end) part.add(std::string_view(text).substr(begin, end - begin), piece.style);
+      at += piece.text.size();
+    }
+    out.push_back(std::move(part));
+  }
   return out;
 }
 

@@ -157,8 +157,14 @@ class PanelBuilder {
       detail = "analog 0..255";
       if ((!is_trigger(b.axis) || b.shape.invert) && !grows.empty()) detail += ", " + grows;
     }
-    add(b.axis, SheetMark::kPlain, name(b.analog) + " " + std::string(w.more) + "/" + std::string(w.less), detail,
-        inherited);
+    // The words in the order the input's label names its way ("left stick
+    // left/right": pivot left/right): a stick's label goes from its raw
+    // negative end; a trigger's has no way, so the growing word first.
+    const bool stick = !is_trigger(b.axis) && b.axis.kind == InputKind::kPadAxis;
+    const bool negative_first = stick && !b.shape.invert;
+    const auto words = negative_first ? std::string(w.less) + "/" + std::string(w.more)
+                                      : std::string(w.more) + "/" + std::string(w.less);
+    add(b.axis, SheetMark::kPlain, name(b.analog) + " " + words, detail, inherited);
   }
   void add_rule(const mapping::KnobBinding& b, bool inherited) {
     const auto rate = std::to_string(b.rate) + "/s";
@@ -237,8 +243,24 @@ std::string speed_note(const mapping::Mapping& m) {
   return out;
 }
 
+/// How the deadman is held, when it is not a plain button: "past half way;
+/// off past 90% until fully released".
+std::string deadman_detail(const mapping::Mapping& m) {
+  std::string detail = m.deadman->key.is_button() ? "" : "past half way";
+  if (m.deadman_panic) {
+    char panic[64];
+    std::snprintf(panic, sizeof panic, "; off past %.0f%% until fully released", *m.deadman_panic * 100.0);
+    detail += panic;
+  }
+  return detail;
+}
+
 std::vector<std::string> notes(const mapping::Mapping& m) {
   std::vector<std::string> out;
+  // Said here too: the drawing may leave a long detail off a label.
+  if (m.deadman && !deadman_detail(m).empty()) {
+    out.push_back("The deadman, " + label(m.deadman->key) + ": held " + deadman_detail(m) + ".");
+  }
   std::set<std::string> arms;
   std::string shapes;
   for (const auto ref : mapping::all_bindings(m)) {
@@ -317,15 +339,7 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
 }
 
 void add_layer_keys(const mapping::Mapping& m, int panel, PanelBuilder& out) {
-  if (m.deadman) {
-    std::string detail = m.deadman->key.is_button() ? "" : "past half way";
-    if (m.deadman_panic) {
-      char panic[64];
-      std::snprintf(panic, sizeof panic, "; off past %.0f%% until fully released", *m.deadman_panic * 100.0);
-      detail += panic;
-    }
-    out.add(m.deadman->key, SheetMark::kDeadman, "hold to enable motion", detail);
-  }
+  if (m.deadman) out.add(m.deadman->key, SheetMark::kDeadman, "hold to enable motion", deadman_detail(m));
   if (m.estop) out.add(m.estop->key, SheetMark::kStop, "stop (latched)");
   for (std::size_t i = 0; i < m.layers.size(); ++i) {
     const auto& layer = m.layers[i];

@@ -56,9 +56,17 @@ double text_width(const SheetEntry& e, double size) {
 }
 
 /// One label: the mark in its colour, the function, the detail small and grey.
-/// Shrunk to fit width when the estimate says it would not.
-std::string label(const SheetEntry& e, double x, double y, std::string_view anchor, double width) {
-  const double scale = std::min(1.0, width / text_width(e, kLabelSize));
+/// Shrunk to fit width when the estimate says it would not; when that would
+/// take it below a readable size, its detail is left off (the notes say it:
+/// the deadman's hold, the weapons' rule) and only the rest shrinks.
+std::string label(const SheetEntry& entry, double x, double y, std::string_view anchor, double width) {
+  constexpr double kMinScale = 0.85;
+  SheetEntry e = entry;
+  double scale = std::min(1.0, width / text_width(e, kLabelSize));
+  if (scale < kMinScale && !e.detail.empty()) {
+    e.detail.clear();
+    scale = std::min(1.0, width / text_width(e, kLabelSize));
+  }
   const double size = kLabelSize * scale;
   std::string out = "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" font-size=\"" + num(size) + "\" text-anchor=\"" +
                     std::string(anchor) + "\"" + (e.inherited ? " fill-opacity=\"0.55\"" : "") + ">";

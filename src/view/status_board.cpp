@@ -28,6 +28,9 @@ void RunStatusBoard::observe(const run::TickReport& r) {
   std::optional<RunStatus> before;
   {
     const std::lock_guard lock(mutex_);
+    // The rate and jitter are the link's since it came up: a gap while it
+    // was down is not a period of the stream.
+    if (r.link.state == link::LinkState::kUp && (!said_ || said_->link.state != link::LinkState::kUp)) timing_ = {};
     if (r.result == link::SendResult::kSent) timing_.add(monotonic_ns());
     RunStatus& s = status_;
     s.t_ms = r.t_ms;

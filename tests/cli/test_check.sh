@@ -31,7 +31,7 @@ printf 'robot: HD1\nextends: %s/common.yaml\nestop: paddle1\nscale: {button: gui
 expect_exit 0 "$BIN" check "$TMP/speed.yaml"
 printf 'robot: HD1\nextends: %s/common.yaml\nscale: {button: guide, levels: [0.25, 0.5, 1.0]}\n' "$shipped" >"$TMP/onstop.yaml"
 expect_exit 2 "$BIN" check "$TMP/onstop.yaml"
-expect_stderr_matches "onstop.yaml:3:17: error: 'guide' is the stop button \\(line [0-9]+\\); it cannot also step the speed level"
+expect_stderr_matches "onstop.yaml:3:17: error: 'guide' is the stop button \\(line [0-9]+ of [^)]*/common.yaml\\); it cannot also step the speed level"
 printf 'robot: HD1\nextends: %s/common.yaml\nscale: {button: dpup, levels: [0.5, 0.25]}\n' "$shipped" >"$TMP/slow.yaml"
 expect_exit 2 "$BIN" check "$TMP/slow.yaml"
 [[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "one error expected: $(cat "$TMP/err")"

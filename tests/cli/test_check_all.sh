@@ -81,6 +81,34 @@ YAML
 expect_exit 0 "$BIN" check both.yaml
 [[ ! -s $TMP/err ]] || fail "a warning for a mapping that loses nothing: $(cat "$TMP/err")"
 
+# Issue 28, item 8: an error that names another line names that line's file
+# when it is another file; a clash with the deadman set here is reported here.
+cat >base2.yaml <<'YAML'
+deadman: leftshoulder
+bindings:
+  - signal: tool_on
+    button: y
+    toggle: true
+  - signal: weapon_1
+    button: a
+    arm: lefttrigger
+YAML
+printf 'robot: HD1\nextends: base2.yaml\nestop: y\n' >stop_clash.yaml
+expect_exit 2 "$BIN" check stop_clash.yaml
+expect_stderr_matches "^stop_clash.yaml:3:8: error: the stop button 'y' is already bound \(line 4 of base2.yaml\): a stop button is bound to nothing else$"
+printf 'robot: HD1\nextends: base2.yaml\ndeadman: lefttrigger\n' >trigger.yaml
+expect_exit 2 "$BIN" check trigger.yaml
+expect_stderr_matches "^trigger.yaml:3:10: error: 'arm' must be a second button, not the deadman \(line 8 of base2.yaml\)$"
+
+# The shipped examples (mappings/examples/, docs/mapping.md) are good mappings.
+for example in "$MAPPINGS"/examples/*.yaml; do
+  expect_exit 0 "$BIN" check "$example"
+done
+# The trigger deadman on the shipped layout, as docs/mapping.md shows it.
+expect_exit 0 "$BIN" sheet --mapping "$MAPPINGS/examples/trigger-deadman.yaml" --format text
+grep -q "LT                     DEADMAN  hold to enable motion" "$TMP/out" ||
+  fail "the example's sheet has no trigger deadman: $(head -5 "$TMP/out")"
+
 # Why a mapping file cannot be opened; a FIFO nobody writes is refused at once.
 mkdir adir
 mkfifo fifo

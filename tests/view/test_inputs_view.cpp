@@ -210,5 +210,29 @@ TEST(InputsView, APadsHatsOutsideItsMappingAreShown) {
       << screen;
 }
 
+// Issue 28, item 5: at 80x24 with the shipped layout, the mapping's file
+// name and every binding's name are shown whole (a line too long wraps under
+// itself), and everything still fits the rows.
+TEST(InputsView, At80x24NamesAndTheFileNameAreWhole) {
+  const std::string file = "/home/operator/.config/andros-bridge/mappings/field-teams/north/hd1.yaml";
+  InputsBoard board(axis_uses(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml")),
+                    "andros-bridge inputs: the first controller (Ctrl-C ends)\ndeadzones and thresholds of " + file +
+                        " (run's default: no --robot or --mapping given)");
+  board.update({event(0, T::kConnect, {}, 0, "Test Pad")}, pad_layout());
+  const auto screen = board.compose({80, 24});
+  std::string joined;  // the lines as one text, a wrap's break and indent taken out
+  std::size_t rows = 0;
+  for (std::size_t from = 0, to = 0; (to = screen.find('\n', from)) != std::string::npos; from = to + 1, ++rows) {
+    const auto line = screen.substr(from, to - from);
+    EXPECT_LE(line.size(), 80U) << line;
+    joined += " " + line.substr(line.find_first_not_of(' ') == std::string::npos ? 0 : line.find_first_not_of(' '));
+  }
+  EXPECT_LE(rows, 24U) << screen;
+  for (const auto* whole : {"hd1.yaml", "fiber_takeup", "fiber_unwind", "pt_left/pt_right", "pt_up/pt_down",
+                            "righttrigger", "lefttrigger"}) {
+    EXPECT_NE(joined.find(whole), std::string::npos) << whole << "\n" << screen;
+  }
+}
+
 }  // namespace
 }  // namespace andros::view

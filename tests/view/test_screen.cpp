@@ -68,16 +68,42 @@ TEST(Screen, ATailBlockGivesItsLastLines) {
   EXPECT_EQ(s.fit({80, 30}).size(), 11u);
 }
 
-TEST(Screen, LinesAreCutToTheWidthWithoutBreakingEscapes) {
+// Issue 28, item 1: a line wider than the screen wraps under itself (its
+// parts keep their styles, each counts as a row), never cut at the edge.
+TEST(Screen, ALineTooWideWrapsWithItsStyles) {
   Screen s;
   s.pin(Line("0123456789", Style::kAlert).add("abcdef", Style::kGood));
+  EXPECT_EQ(s.render({12, 5}, false), "0123456789ab\n  cdef\n");
+  EXPECT_EQ(s.render({12, 5}, true), "\x1b[1;31m0123456789\x1b[0m\x1b[1;32mab\x1b[0m\n  \x1b[1;32mcdef\x1b[0m\n");
+  // At spaces where it can, under its label when it hangs there.
+  Screen label;
+  label.pin(Line("state       ").add("NOT ENABLED: deadman held since connect", Style::kAlert).hang(12));
+  EXPECT_EQ(label.render({30, 5}, false),
+            "state       NOT ENABLED:\n            deadman held since\n            connect\n");
+  // Each part is a row: a block that no longer fits is left out whole.
+  Screen rows;
+  rows.pin(Line("a long pinned line that wraps"));
+  rows.block({Line("block")}, 1);
+  EXPECT_EQ(texts(rows, {16, 3}), (std::vector<std::string>{"a long pinned", "  line that", "  wraps"}));
+  EXPECT_EQ(rows.fit({16, 4}).size(), 4U);
+  // Printed whole to a file or pipe: one line, not wrapped.
+  EXPECT_EQ(rows.text(), "a long pinned line that wraps\nblock\n");
+}
+
+TEST(Screen, AOneRowLineIsCutToTheWidthWithoutBreakingEscapes) {
+  Screen s;
+  s.pin(Line("0123456789", Style::kAlert).add("abcdef", Style::kGood).one_row());
   EXPECT_EQ(s.render({12, 5}, false), "0123456789ab\n");
   const std::string coloured = s.render({12, 5}, true);
   EXPECT_EQ(coloured, "\x1b[1;31m0123456789\x1b[0m\x1b[1;32mab\x1b[0m\n");
   // A UTF-8 name is cut between characters, never inside one.
   Screen u;
-  u.pin(Line("pad \xc3\xa9\xc3\xa9\xc3\xa9"));
+  u.pin(Line("pad \xc3\xa9\xc3\xa9\xc3\xa9").one_row());
   EXPECT_EQ(u.render({5, 1}, false), "pad \xc3\xa9\n");
+  // Wrapped, UTF-8 counts by character too.
+  Screen w;
+  w.pin(Line("\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9"));
+  EXPECT_EQ(w.render({4, 3}, false), "\xc3\xa9\xc3\xa9\xc3\xa9\xc3\xa9\n  \xc3\xa9\xc3\xa9\n");
 }
 
 TEST(Screen, ControlCharactersFromNamesAreNotObeyed) {

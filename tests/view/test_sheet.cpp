@@ -94,7 +94,8 @@ TEST(Sheet, NotesGiveSelectorPositionsKnobsAndTheWeaponsRule) {
   };
   // A position without a bit says what it means on the switchbox.
   EXPECT_TRUE(
-      has("speed selector, Start steps, Back back: speed low > speed medium > speed high; starts at speed medium"));
+      has("speed selector, Start steps, Back back: vehicle speed low > vehicle speed medium > vehicle speed high; "
+          "starts at vehicle speed medium"));
   EXPECT_TRUE(has("light knob: B brighter, A dimmer, 64 units/s; starts at 10, kept while not enabled"));
   EXPECT_TRUE(
       has("Analog inputs: drive (left stick up/down): deadzone 0.1, expo 0; arm speed (RT, arm layer): "
@@ -210,8 +211,8 @@ TEST(Sheet, TextIsATablePerLayer) {
             std::string::npos);
   EXPECT_NE(text.find("\n  X                      TOGGLE   tool on [base]\n"), std::string::npos);
   const auto notes = text.substr(text.find("\nNOTES\n"));
-  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: speed low > speed medium > speed high;\n"
-                       "  starts at speed medium\n"),
+  EXPECT_NE(notes.find("\n- speed selector, Start steps, Back back: vehicle speed low > vehicle speed\n"
+                       "  medium > vehicle speed high; starts at vehicle speed medium\n"),
             std::string::npos)
       << notes;
   for (std::size_t start = 0, end; (end = notes.find('\n', start)) != std::string::npos; start = end + 1) {
@@ -244,6 +245,47 @@ TEST(Sheet, NamesFromTheFileAreShownEscaped) {
   EXPECT_EQ(text.find('\a'), std::string::npos);
   const auto svg = render_sheet_svg(build_sheet(*mapping::load_mapping(file)));
   EXPECT_EQ(svg.find('\x1B'), std::string::npos);
+}
+
+// Issue 28, item 4: a stick's analog words read in the order its label
+// names its way ("left stick left/right: pivot left/right"), inverted or not.
+TEST(Sheet, AStickAnalogReadsInTheOrderOfItsLabel) {
+  const auto text = render_sheet_text(build_sheet(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml")));
+  EXPECT_NE(text.find("left stick left/right           pivot left/right (analog)"), std::string::npos) << text;
+  EXPECT_NE(text.find("left stick up/down              drive forward/back (up = forward)"), std::string::npos) << text;
+  EXPECT_EQ(text.find("pivot right/left"), std::string::npos) << text;
+  testing::TempDir dir;
+  const auto file = dir.write("m.yaml",
+                              "robot: HD1\ndeadman: leftshoulder\nbindings:\n"
+                              "  - {analog: pivot, axis: rightx, invert: true}\n  - {analog: drive, axis: righty}\n");
+  const auto inverted = render_sheet_text(build_sheet(*mapping::load_mapping(file)));
+  EXPECT_NE(inverted.find("right stick left/right          pivot right/left"), std::string::npos) << inverted;
+  EXPECT_NE(inverted.find("right stick up/down             drive back/forward"), std::string::npos) << inverted;
+}
+
+/// The font size of the SVG <text> that holds what, in mm.
+double font_size_of(const std::string& svg, std::string_view what) {
+  const auto at = svg.find(what);
+  if (at == std::string::npos) return 0;
+  const auto text = svg.rfind("<text ", at);
+  const auto size = svg.find("font-size=\"", text);
+  return std::stod(svg.substr(size + 11));
+}
+
+// Issue 28, items 4 and 10: the DEADMAN and STOP rows are drawn at the labels'
+// full size even with a long detail (a trigger deadman's panic point): the
+// detail is left off the drawing and given in the notes instead.
+TEST(Sheet, TheDeadmanAndStopRowsAreReadable) {
+  const auto sheet = build_sheet(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/examples/trigger-deadman.yaml"));
+  const auto svg = render_sheet_svg(sheet);
+  EXPECT_GE(font_size_of(svg, "DEADMAN </tspan>"), 2.5) << svg;
+  EXPECT_GE(font_size_of(svg, "STOP </tspan>"), 2.5) << svg;
+  EXPECT_NE(svg.find("The deadman, LT: held past half way; off past 90% until fully released."), std::string::npos);
+  // Every label at a readable size: never below 85% of the labels' size.
+  for (std::size_t at = svg.find("<text "); at != std::string::npos; at = svg.find("<text ", at + 1)) {
+    const auto size = std::stod(svg.substr(svg.find("font-size=\"", at) + 11));
+    EXPECT_GE(size, 2.0) << svg.substr(at, 200);
+  }
 }
 
 TEST(Sheet, FormatIsSvgOrText) {

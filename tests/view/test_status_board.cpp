@@ -48,6 +48,21 @@ run::TickReport tick(std::int64_t t_ms) {
   return r;
 }
 
+// Issue 28, item 6: the rate and jitter are measured since the link came up:
+// the frames before it was lost are not in them.
+TEST(StatusBoard, TheRateIsMeasuredSinceTheLinkCameUp) {
+  RunStatusBoard board(RunStatus{});
+  for (int i = 0; i < 30; ++i) board.observe(tick(i * 40));
+  EXPECT_EQ(board.status().sent_timing.count, 30U);
+  auto down = tick(1200);
+  down.link.state = link::LinkState::kConnecting;
+  down.result = link::SendResult::kDown;
+  board.observe(down);
+  EXPECT_EQ(board.status().sent_timing.count, 30U);  // still the last measure while down
+  for (int i = 0; i < 3; ++i) board.observe(tick(5000 + i * 40));
+  EXPECT_EQ(board.status().sent_timing.count, 3U);
+}
+
 TEST(EnableText, NamesWhyNotOrTheInputsHeldBack) {
   mapping::EngineStatus s;
   s.enable = mapping::EnableState::kDeadmanReleased;

@@ -25,7 +25,7 @@ inline constexpr std::array kSignalWords = {
     SignalWords{"tool_on", "tool on", "", ""},
     SignalWords{"safety", "enabled (deadman held)", "", ""},
     SignalWords{"drive_brake", "brake released", "", ""},
-    SignalWords{"speed_high", "speed high", "", ""},
+    SignalWords{"speed_high", "vehicle speed high", "", ""},
     SignalWords{"front_art_up", "front articulators up", "", ""},
     SignalWords{"front_art_down", "front articulators down", "", ""},
     SignalWords{"rear_art_up", "rear articulators up", "", ""},
@@ -80,7 +80,7 @@ inline constexpr std::array kSignalWords = {
     SignalWords{"main_video_2", "main video 2", "", ""},
     SignalWords{"main_video_3", "main video 3", "", ""},
     SignalWords{"main_video_4", "main video 4", "", ""},
-    SignalWords{"speed_low", "speed low", "", ""},
+    SignalWords{"speed_low", "vehicle speed low", "", ""},
     SignalWords{"weapon_5", "weapon 5", "", ""},
     SignalWords{"weapon_6", "weapon 6", "", ""},
     SignalWords{"battery", "battery", "", ""},
@@ -94,14 +94,14 @@ constexpr const SignalWords& words(SignalId id) { return kSignalWords[id]; }
 /// position with none of them set means: the video selectors' first camera,
 /// the middle speed. What the operator reads where the frame shows no bit.
 struct SelectorWords {
-  std::string_view name;                  ///< "speed"
+  std::string_view name;                  ///< "vehicle speed"
   std::array<std::string_view, 4> bits;   ///< its signals ("" pads the list)
   std::array<std::string_view, 4> words;  ///< each bit's position: "low", "high"
   std::string_view none;                  ///< no bit set: "medium"
 };
 
 inline constexpr std::array kSelectorWords = {
-    SelectorWords{"speed", {"speed_low", "speed_high", "", ""}, {"low", "high", "", ""}, "medium"},
+    SelectorWords{"vehicle speed", {"speed_low", "speed_high", "", ""}, {"low", "high", "", ""}, "medium"},
     SelectorWords{"main video", {"main_video_2", "main_video_3", "main_video_4", ""}, {"2", "3", "4", ""}, "1"},
     SelectorWords{"inset", {"inset_video_1", "inset_video_2", "inset_3", "inset_4"}, {"1", "2", "3", "4"}, "off"},
 };

@@ -1,7 +1,7 @@
 #pragma once
 /// A screen that fits the terminal: lines made of styled pieces, the pinned
 /// ones always shown (in order, at the top), then blocks by priority while
-/// rows are left; every line cut to the width. Never more lines than the
+/// rows are left; a line wider than the terminal wraps under itself. Never more lines than the
 /// terminal has, so the screen never scrolls the header away.
 
 #include <cstdint>
@@ -41,9 +41,25 @@ class Line {
   [[nodiscard]] const std::vector<Piece>& pieces() const { return pieces_; }
   /// Characters shown (UTF-8 code points; escape sequences are never in a piece).
   [[nodiscard]] std::size_t width() const;
+  /// Where the line's continuations start when it wraps (spaces): under its
+  /// text, past a label such as "state       ".
+  Line& hang(std::size_t spaces) {
+    hang_ = spaces;
+    return *this;
+  }
+  [[nodiscard]] std::size_t hang() const { return hang_; }
+  /// A line that is cut at the edge instead of wrapped: a banner whose first
+  /// words say it all, kept to one row on the smallest terminal.
+  Line& one_row() {
+    one_row_ = true;
+    return *this;
+  }
+  [[nodiscard]] bool is_one_row() const { return one_row_; }
 
  private:
   std::vector<Piece> pieces_;
+  std::size_t hang_ = 2;
+  bool one_row_ = false;
 };
 
 class Screen {
@@ -55,10 +71,11 @@ class Screen {
   void block(std::vector<Line> lines, int priority, bool may_shrink = false);
   /// A block that, shrunk, keeps its last lines (the newest of a log).
   void tail(std::vector<Line> lines, int priority);
-  /// Exactly min(rows, lines) lines, '\n'-terminated, each cut to cols; with
-  /// colour, ANSI SGR sequences (each line ends with a reset).
+  /// Exactly min(rows, lines) lines (a wrapped line counts each of its
+  /// parts), '\n'-terminated, none wider than cols; with colour, ANSI SGR
+  /// sequences (each line ends with a reset).
   [[nodiscard]] std::string render(TermSize size, bool colour) const;
-  /// The lines that fit, for tests and off-terminal use.
+  /// The lines that fit, wrapped to the width, for tests and off-terminal use.
   [[nodiscard]] std::vector<Line> fit(TermSize size) const;
   /// Every line, plain and whole: the screen printed to a file or pipe.
   [[nodiscard]] std::string text() const;
@@ -70,6 +87,8 @@ class Screen {
     bool may_shrink;
     bool keep_last = false;
   };
+  [[nodiscard]] std::vector<Line> fit(TermSize size, bool wrap) const;
+
   std::vector<Line> pinned_;
   std::vector<Block> blocks_;
 };
@@ -84,6 +103,11 @@ std::string plain(const Line& line, std::size_t width);
 /// spaces where it can and inside a word longer than a line; every line
 /// after the first starts with indent spaces. Nothing is left out.
 std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent);
+
+/// line as lines of at most width characters, broken as wrap_text breaks
+/// its text, each piece keeping its style; continuations start line.hang()
+/// spaces in.
+std::vector<Line> wrap_line(const Line& line, std::size_t width);
 
 /// Whether to use colour on this terminal: not with NO_COLOR set (any value,
 /// https://no-color.org), not for TERM unset, "dumb" or a terminal type
