@@ -152,6 +152,11 @@ check "enabled" test "$(systemctl is-enabled "$UNIT")" = enabled
 pid=$(prop MainPID)
 dpkg -i --force-confold "$DEB" >"$T/dpkg.log" 2>&1 || cat "$T/dpkg.log"
 check "dpkg -i again (upgrade)" installed
+# The postinst's restart has returned; active again with another process (a
+# bound: the restart's own start is over, but a port the pty's reader had not
+# yet released would cost one RestartSec=).
+running_anew() { [[ $(prop ActiveState) == active && $(prop MainPID) != "$pid" ]]; }
+wait_for 30 running_anew
 check "the upgrade restarted the enabled service (pid $pid -> $(prop MainPID))" \
   test "$(prop ActiveState)" = active -a "$(prop MainPID)" != "$pid"
 check "still enabled after the upgrade" test "$(systemctl is-enabled "$UNIT")" = enabled
