@@ -48,6 +48,9 @@ printf '%s\n' '0 connect Test pad' '100 button leftshoulder 1' '200 axis lefty -
 config() { printf 'serialport=%s\ninput=%s\nrobot=%s\n%s' "$PORT" "$T/drive.events" "$1" "${2:-}" >"$CONF"; }
 
 # 1. No `input` group here (no udev): the package must create it (its sysusers.d file).
+# A host that has the package installed lends it to the overlay: purged
+# here first, so that the install below is a first one.
+if dpkg-query -W andros-bridge >/dev/null 2>&1; then dpkg --purge andros-bridge >/dev/null; fi
 if getent group input >/dev/null; then groupdel input; fi
 rm -f /var/lib/man-db/auto-update  # no man-db trigger run on each install (seconds)
 # A container image's policy-rc.d ("exit 101": start no service while an
