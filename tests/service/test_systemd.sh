@@ -30,7 +30,7 @@ nspawn_pid='' cgroups=()
 cleanup() {
   if [[ -n $nspawn_pid ]] && kill -0 "$nspawn_pid" 2>/dev/null; then
     local init=
-    read -r init _ <"/proc/$nspawn_pid/task/$nspawn_pid/children" 2>/dev/null
+    read -r init _ 2>/dev/null <"/proc/$nspawn_pid/task/$nspawn_pid/children"
     kill -TERM "$nspawn_pid" 2>/dev/null
     for _ in $(seq 100); do kill -0 "$nspawn_pid" 2>/dev/null || break; sleep 0.1; done
     for p in $init $nspawn_pid; do kill -KILL "$p" 2>/dev/null; done
@@ -73,7 +73,10 @@ cp "$DEB" "$TMP/share/andros-bridge.deb"
 cp "$HERE/systemd_checks.sh" "$HERE/port_capture.py" "$HERE/../cli/check_frames.py" "$TMP/share/"
 
 # The container: booted to basic.target (no getty, no other package's
-# services), no network but its own loopback, its journal its own.
+# services), no network but its own loopback, its journal its own. setsid:
+# a terminal's Ctrl-C reaches this script (whose trap ends the container),
+# not nspawn; it does not fork here (a script's background job leads no
+# process group), so $! is nspawn's PID.
 start=$SECONDS
 setsid unshare --mount --propagation private bash -c '
   set -e
@@ -90,7 +93,7 @@ nspawn_pid=$!
 # shell), at most 30 s.
 init=
 for _ in $(seq 300); do
-  read -r init _ <"/proc/$nspawn_pid/task/$nspawn_pid/children" 2>/dev/null || true
+  read -r init _ 2>/dev/null <"/proc/$nspawn_pid/task/$nspawn_pid/children" || true
   # Its manager's socket up: systemctl can ask it.
   [[ $(cat "/proc/${init:-0}/comm" 2>/dev/null) == systemd ]] &&
     nsenter --target "$init" --mount test -S /run/systemd/private 2>/dev/null && break
