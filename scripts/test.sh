@@ -3,12 +3,13 @@
 # (.clang-format), builds, runs every test: the suite, the same suite again
 # under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/, clang,
 # which holds the libFuzzer targets too), the Debian package (built by
-# scripts/package.sh, then checked by tests/package/test_package.sh),
-# clang-tidy over src/ (scripts/lint.sh) and each fuzz target briefly
-# (scripts/fuzz.sh). The package (its objects from ccache: the plain build
-# compiled them with its flags) and clang-tidy run in the background from the
-# end of the plain build, niced, in the time the tests leave the cores idle;
-# each is waited for at the end.
+# scripts/package.sh, then checked by tests/package/test_package.sh), the
+# package's service under systemd in a throwaway container
+# (tests/service/test_systemd.sh), clang-tidy over src/ (scripts/lint.sh)
+# and each fuzz target briefly (scripts/fuzz.sh). The package (its objects
+# from ccache: the plain build compiled them with its flags) and clang-tidy
+# run in the background from the end of the plain build, niced, in the time
+# the tests leave the cores idle; each is waited for at the end.
 # With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
@@ -119,12 +120,14 @@ quick=${ANDROS_QUICK:-}
 # background (two apt-gets at once would fight over dpkg's lock): clang and
 # its libFuzzer for the fuzz targets, clang-format and clang-tidy for the gates,
 # what the package's build and check use (debian/control's Build-Depends are
-# scripts/setup.sh's list and debhelper; lintian; systemd-analyze)
+# scripts/setup.sh's list and debhelper; lintian; systemd-analyze), and
+# systemd-nspawn (systemd-container) for the service's container
 # (scripts/setup.sh's own list is what the build needs: scripts/run.sh's too).
 if [[ $quick == 1 ]]; then
   scripts/setup.sh
 else
-  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev debhelper fakeroot lintian systemd
+  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev debhelper fakeroot lintian systemd \
+    systemd-container
 fi
 if [[ $quick != 1 ]]; then
   phase "format (scripts/lint.sh --format)"
@@ -158,6 +161,11 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 
 phase "Debian package: build and check (scripts/package.sh, tests/package/test_package.sh; begun after the plain build)"
 await package
+# The package's service under a real systemd: a throwaway container, booted
+# here, not in the background (its bridge is real-time: a niced container
+# would judge the host's load, not the service).
+phase "the service under systemd (tests/service/test_systemd.sh: a systemd-nspawn container)"
+tests/service/test_systemd.sh dist/andros-bridge_*.deb
 phase "clang-tidy (scripts/lint.sh --tidy, begun after the plain build)"
 await clang-tidy
 phase "fuzz: each target briefly (scripts/fuzz.sh, the targets of $build-asan)"

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Checks a capture decoded by `andros-bridge frame decode` (JSON lines on stdin).
 
-  check_frames.py --bin BIN [--min N] [--enabled] [--neutral-tail N] [--code HEX] [--driving]
+  check_frames.py --bin BIN [--min N] [--enabled] [--neutral-tail N [--driving-before-tail]] [--code HEX] [--driving]
 
 Fails (exit 1, saying why) unless: there are at least N frames, every frame is
 valid, byte 11 is the code, at least one frame is enabled (--enabled) or
-drives (--driving), and the last N frames are neutral (docs/mapping.md, the safety rules).
+drives (--driving), and the last N frames are neutral (docs/mapping.md, the safety rules),
+the frame before them driving (--driving-before-tail: the run was driving when it stopped).
 """
 import argparse, json, subprocess, sys
 
@@ -16,6 +17,7 @@ ap.add_argument("--enabled", action="store_true")
 ap.add_argument("--driving", action="store_true")
 ap.add_argument("--neutral-tail", type=int, default=0)
 ap.add_argument("--code")
+ap.add_argument("--driving-before-tail", action="store_true", help="the last non-neutral frame, just before the tail, drives")
 ap.add_argument("--all-neutral", action="store_true", help="every frame neutral (a link regained: a fresh press first)")
 a = ap.parse_args()
 # docs/mapping.md's safety rules: neutral = every motion, weapon and interlock bit 0, drive
@@ -48,6 +50,10 @@ tail = frames[-a.neutral_tail:] if a.neutral_tail else []
 if a.neutral_tail and (len(tail) < a.neutral_tail or not all(neutral(f["signals"]) for f in tail)):
     problems.append(f"the last {a.neutral_tail} frames are not all neutral: "
                     + str([(f["signals"]["safety"], f["signals"]["drive"]) for f in frames[-6:]]))
+if a.driving_before_tail:
+    moving = [f for f in frames if not neutral(f["signals"])]
+    if not moving or moving[-1]["signals"]["drive"] == 128:
+        problems.append("no driving frame before the neutral tail: the run was not driving when it stopped")
 for p in problems:
     print(p)
 sys.exit(1 if problems else 0)
