@@ -54,20 +54,20 @@ bool PadRoles::may_take(const Slot& slot, const Slot* other, PadFacts& pad, std:
   // named by one role is never the other's.
   if ((slot.selection.is_first() || other->selection.by_path()) && other->selection.matches(pad)) return false;
   if (slot.selection.by_path()) return true;  // the port named is the pad
-  if (other->bound) {
-    PadFacts theirs = *other->bound;
-    if (!told_apart(slot, *other, theirs, pad)) {
-      spdlog::error("{}: refused {}: it may be {}, {}, and SDL gives nothing that tells them apart: {}", slot.role(),
-                    describe(pad), other->role(), describe(theirs), kWhatToDo);
-      return false;
-    }
-  }
   for (auto& twin : attached) {
     if (twin.instance == pad.instance || twin.guid != pad.guid || told_apart(slot, *other, pad, twin)) continue;
     twins_[pad.guid] = describe(twin);
     spdlog::error("{}: refused {}: it cannot be told from {}, so that the roles could swap: {}", slot.role(),
                   describe(pad), describe(twin), kWhatToDo);
     return false;
+  }
+  if (other->bound) {
+    PadFacts theirs = *other->bound;
+    if (!told_apart(slot, *other, theirs, pad)) {
+      spdlog::error("{}: refused {}: it may be {}, and SDL gives nothing that tells them apart: {}", slot.role(),
+                    describe(pad), other->describe(), kWhatToDo);
+      return false;
+    }
   }
   if (const auto seen = twins_.find(pad.guid); seen != twins_.end()) {
     spdlog::error("{}: refused {}: it cannot be told from {}, seen beside it, so that the roles could swap: {}",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -47,6 +48,52 @@ class PadRolesTest : public ::testing::Test {
     return kept;
   }
 
+  /// The first tick: each role on its own pad.
+  void connect_both(SdlInput& input, VirtualDevice& operators, VirtualDevice& supervisors) {
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    ASSERT_TRUE(state_.supervisor().connected());
+    EXPECT_TRUE(roles_kept(input, operators, supervisors));
+  }
+
+  /// Unplugs both pads, then plugs the supervisor's back first (SDL now lists
+  /// it first), then the operator's; `tag` gives each new pad what SDL would
+  /// report of that unit. Neither role may take the other's pad.
+  void replug_in_the_other_order(SdlInput& input, std::optional<VirtualDevice>& operators,
+                                 std::optional<VirtualDevice>& supervisors,
+                                 const std::function<void(const VirtualDevice&, Pad)>& tag) {
+    operators.reset();
+    supervisors.reset();
+    tick(input);
+    supervisors.emplace(twin());
+    tag(*supervisors, Pad::kSupervisor);
+    tick(input);
+    EXPECT_FALSE(state_.connected()) << "the operator's role took the supervisor's pad";
+    EXPECT_TRUE(state_.supervisor().connected());
+    operators.emplace(twin());
+    tag(*operators, Pad::kOperator);
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    EXPECT_TRUE(roles_kept(input, *operators, *supervisors));
+  }
+
+  /// options, with SDL reporting the serials set by serial_of().
+  SdlInputOptions with_serials(SdlInputOptions options) {
+    options.places.serial = [this](int index) { return serials_[SDL_JoystickGetDeviceInstanceID(index)]; };
+    return options;
+  }
+  void serial_of(const VirtualDevice& pad, const std::string& serial) { serials_[pad.instance_id()] = serial; }
+
+  /// The operator's pad, serial OP-1, connects and is lost again: the operator's role is bound to it.
+  void bind_the_operator_and_unplug(SdlInput& input, std::optional<VirtualDevice>& operators) {
+    ASSERT_TRUE(operators.has_value());
+    serial_of(*operators, "OP-1");
+    tick(input);
+    ASSERT_TRUE(state_.connected());
+    operators.reset();
+    tick(input);
+  }
+
   static SdlInputOptions by_index() {
     SdlInputOptions options;
     options.controller = "0";
@@ -57,6 +104,7 @@ class PadRolesTest : public ::testing::Test {
   SdlSession session_;
   InputState state_;
   std::int64_t now_ = 0;
+  std::map<SDL_JoystickID, std::string> serials_;
 };
 
 // SDL's virtual pads have no device path and no serial, as many pads: two
@@ -95,56 +143,82 @@ TEST_F(PadRolesTest, TwoPadsSdlCannotTellApartAreRefusedAndNeverSwap) {
   EXPECT_FALSE(state_.supervisor().connected());
 }
 
+// A role that holds its pad keeps it when an identical one appears, but that
+// one is refused, and once the first is lost neither is taken: the pad left
+// may be either.
+TEST_F(PadRolesTest, AModelSeenTwiceStaysRefusedForTheRun) {
+  const andros::testing::LogCapture log;
+  std::optional<VirtualDevice> operators(twin());
+  SdlInput input(by_index());
+  tick(input);
+  ASSERT_TRUE(state_.connected());
+  auto other = twin();
+  tick(input);
+  EXPECT_TRUE(state_.connected());
+  EXPECT_FALSE(state_.supervisor().connected());
+  EXPECT_NE(log.text().find("error: the supervisor's controller: refused controller 1 'Twin Pad'"), std::string::npos)
+      << log.text();
+  operators.reset();
+  tick(input);
+  other.button(SDL_CONTROLLER_BUTTON_A, true);
+  tick(input);
+  EXPECT_FALSE(state_.connected()) << "the operator's role took a pad that may be the supervisor's";
+  EXPECT_NE(log.text().find("error: the operator's controller: refused controller 0 'Twin Pad' (GUID " + other.guid() +
+                            ", no device path, no serial): it cannot be told from controller 0 'Twin Pad'"),
+            std::string::npos)
+      << log.text();
+}
+
+// A pad of the model the other role is bound to, which SDL cannot tell from
+// that role's pad (here: no serial), is not taken while that pad is away.
+TEST_F(PadRolesTest, APadThatMayBeTheOtherRolesIsRefused) {
+  const andros::testing::LogCapture log;
+  SdlInputOptions options;
+  options.controller = "0";
+  options.supervisor = "twin";
+  std::optional<VirtualDevice> operators(twin());
+  SdlInput input(with_serials(options));
+  bind_the_operator_and_unplug(input, operators);
+  auto unknown = twin();  // no serial: it may be the operator's pad
+  tick(input);
+  EXPECT_FALSE(state_.supervisor().connected());
+  EXPECT_NE(
+      log.text().find("error: the supervisor's controller: refused controller 0 'Twin Pad' (GUID " + unknown.guid() +
+                      ", no device path, no serial): it may be the operator's own controller, "
+                      "'Twin Pad' (GUID " +
+                      unknown.guid() + ", serial OP-1)"),
+      std::string::npos)
+      << log.text();
+}
+
 // Where SDL gives each pad a serial, each role takes back its own pad after
 // both were unplugged, whichever comes back first and whatever its index.
 TEST_F(PadRolesTest, SerialsKeepEachRoleOnItsOwnPadAcrossAReplugInTheOtherOrder) {
-  std::map<SDL_JoystickID, std::string> serials;
-  auto options = by_index();
-  options.places.serial = [&serials](int index) { return serials[SDL_JoystickGetDeviceInstanceID(index)]; };
   std::optional<VirtualDevice> operators(twin());
   std::optional<VirtualDevice> supervisors(twin());
-  serials[operators->instance_id()] = "OP-1";
-  serials[supervisors->instance_id()] = "SUP-2";
-  SdlInput input(options);
-  tick(input);
-  ASSERT_TRUE(state_.connected());
-  ASSERT_TRUE(state_.supervisor().connected());
-  EXPECT_TRUE(roles_kept(input, *operators, *supervisors));
-  operators.reset();
-  supervisors.reset();
-  tick(input);
-  supervisors.emplace(twin());  // now controller 0: what --controller named
-  serials[supervisors->instance_id()] = "SUP-2";
-  tick(input);
-  EXPECT_FALSE(state_.connected()) << "the operator's role took the supervisor's pad";
-  EXPECT_TRUE(state_.supervisor().connected());
-  operators.emplace(twin());
-  serials[operators->instance_id()] = "OP-1";
-  tick(input);
-  ASSERT_TRUE(state_.connected());
-  EXPECT_TRUE(roles_kept(input, *operators, *supervisors));
+  const auto tag = [this](const VirtualDevice& pad, Pad role) {
+    serial_of(pad, role == Pad::kOperator ? "OP-1" : "SUP-2");
+  };
+  tag(*operators, Pad::kOperator);
+  tag(*supervisors, Pad::kSupervisor);
+  SdlInput input(with_serials(by_index()));
+  connect_both(input, *operators, *supervisors);
+  replug_in_the_other_order(input, operators, supervisors, tag);
 }
 
 // A pad of the same model with another serial is not the role's pad: the
 // role waits for its own.
 TEST_F(PadRolesTest, ARoleTakesBackOnlyThePadItWasBoundTo) {
-  std::map<SDL_JoystickID, std::string> serials;
-  auto options = by_index();
-  options.places.serial = [&serials](int index) { return serials[SDL_JoystickGetDeviceInstanceID(index)]; };
   std::optional<VirtualDevice> operators(twin());
   auto supervisors = VirtualDevice::pad("Other Model", 21);
-  serials[operators->instance_id()] = "OP-1";
-  SdlInput input(options);
-  tick(input);
-  ASSERT_TRUE(state_.connected());
-  operators.reset();
-  tick(input);
+  SdlInput input(with_serials(by_index()));
+  bind_the_operator_and_unplug(input, operators);
   auto spare = twin();
-  serials[spare.instance_id()] = "SPARE-3";
+  serial_of(spare, "SPARE-3");
   tick(input);
   EXPECT_FALSE(state_.connected()) << "took a spare";
   operators.emplace(twin());
-  serials[operators->instance_id()] = "OP-1";
+  serial_of(*operators, "OP-1");
   tick(input);
   EXPECT_TRUE(state_.connected());
   EXPECT_TRUE(roles_kept(input, *operators, supervisors));
@@ -156,8 +230,8 @@ TEST_F(PadRolesTest, ARoleTakesBackOnlyThePadItWasBoundTo) {
 TEST_F(PadRolesTest, PortsNamedByPathTellIdenticalPadsApart) {
   const andros::testing::TempDir dir;
   std::map<SDL_JoystickID, std::string> nodes;
-  const auto node = [&](const VirtualDevice& pad, const std::string& name) {
-    nodes[pad.instance_id()] = dir.write(name, "").string();
+  const auto node = [&](const VirtualDevice& pad, Pad role) {
+    nodes[pad.instance_id()] = dir.write(role == Pad::kOperator ? "event5" : "event6", "").string();
   };
   std::filesystem::create_directory(dir.path() / "by-path");
   std::filesystem::create_symlink(dir.path() / "event5", dir.path() / "by-path" / "usb-port-1");
@@ -168,26 +242,11 @@ TEST_F(PadRolesTest, PortsNamedByPathTellIdenticalPadsApart) {
   options.places.path = [&nodes](int index) { return nodes[SDL_JoystickGetDeviceInstanceID(index)]; };
   std::optional<VirtualDevice> operators(twin());
   std::optional<VirtualDevice> supervisors(twin());
-  node(*operators, "event5");
-  node(*supervisors, "event6");
+  node(*operators, Pad::kOperator);
+  node(*supervisors, Pad::kSupervisor);
   SdlInput input(options);
-  tick(input);
-  ASSERT_TRUE(state_.connected());
-  ASSERT_TRUE(state_.supervisor().connected());
-  EXPECT_TRUE(roles_kept(input, *operators, *supervisors));
-  operators.reset();
-  supervisors.reset();
-  tick(input);
-  supervisors.emplace(twin());  // listed first now
-  node(*supervisors, "event6");
-  tick(input);
-  EXPECT_FALSE(state_.connected()) << "the operator's port took the supervisor's pad";
-  operators.emplace(twin());
-  node(*operators, "event5");
-  tick(input);
-  ASSERT_TRUE(state_.connected());
-  ASSERT_TRUE(state_.supervisor().connected());
-  EXPECT_TRUE(roles_kept(input, *operators, *supervisors));
+  connect_both(input, *operators, *supervisors);
+  replug_in_the_other_order(input, operators, supervisors, node);
 }
 
 }  // namespace
