@@ -74,6 +74,9 @@ std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::s
 TEST(OperatingStateExhaustive, EverySequenceOfEventsKeepsTheRules) {
   const auto events = all_events();
   ASSERT_GE(events.size(), 16U);
+  // More would say that to_string(OpEvent) no longer answers "?" past the
+  // last event, and the walk would never end (256 to the sixth).
+  ASSERT_LE(events.size(), 24U);
   std::uint64_t checked = 0;
   for (const bool link_up : {false, true}) {
     std::string failure;
