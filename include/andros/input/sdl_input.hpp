@@ -53,6 +53,7 @@ struct ControllerInfo {
   std::string name;
   std::string guid;              ///< 32 hex digits
   bool game_controller = false;  ///< false: a plain joystick (numbered buttons, axes, hats)
+  std::string path;              ///< its device node (what --controller PATH names); "" where SDL gives none
 };
 
 /// Initialises SDL's joystick, game-controller and event subsystems for as
@@ -123,7 +124,8 @@ class SdlInput final : public InputSource {
 std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop = {});
 
 /// The devices attached now, in SDL device-index order. Starts its own
-/// SdlSession and loads options.controller_db (so names reflect the mappings).
+/// SdlSession and loads options.controller_db (so names reflect the mappings);
+/// paths through options.places.
 std::vector<ControllerInfo> list_controllers(const SdlInputOptions& options);
 
 }  // namespace andros::input
