@@ -1,5 +1,6 @@
 #include "pad_facts.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "andros/base/error.hpp"
@@ -46,7 +47,8 @@ PadFacts PadReader::facts(int device_index) const {
 
 std::vector<PadFacts> PadReader::attached() const {
   std::vector<PadFacts> out;
-  const int count = SDL_NumJoysticks();
+  const int count = SDL_NumJoysticks();  // negative on an error
+  out.reserve(static_cast<std::size_t>(std::max(count, 0)));
   for (int i = 0; i < count; ++i) out.push_back(facts(i));
   return out;
 }
