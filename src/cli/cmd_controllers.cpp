@@ -24,7 +24,8 @@ int run_controllers(const ControllersOptions& opt) {
       const nlohmann::json line = {{"index", c.index},
                                    {"name", c.name},
                                    {"guid", c.guid},
-                                   {"type", c.game_controller ? "controller" : "joystick"}};
+                                   {"type", c.game_controller ? "controller" : "joystick"},
+                                   {"path", c.path}};
       // A name is bytes from the device: invalid UTF-8 becomes U+FFFD rather than ending the list.
       std::printf("%s\n", line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     }
@@ -34,10 +35,11 @@ int run_controllers(const ControllersOptions& opt) {
     std::fprintf(stderr, "no controllers found (see docs/controllers.md if one is plugged in)\n");
     return kExitOk;
   }
-  std::printf("%-5s  %-10s  %-32s  %s\n", "INDEX", "TYPE", "GUID", "NAME");
+  std::printf("%-5s  %-10s  %-32s  %-18s  %s\n", "INDEX", "TYPE", "GUID", "PATH", "NAME");
   for (const auto& c : list) {
-    std::printf("%-5d  %-10s  %-32s  %s\n", c.index, c.game_controller ? "controller" : "joystick",
-                printable_text(c.guid).c_str(), printable_text(c.name).c_str());
+    std::printf("%-5d  %-10s  %-32s  %-18s  %s\n", c.index, c.game_controller ? "controller" : "joystick",
+                printable_text(c.guid).c_str(), c.path.empty() ? "-" : printable_text(c.path).c_str(),
+                printable_text(c.name).c_str());
   }
   return kExitOk;
 }
@@ -48,13 +50,13 @@ void add_controllers_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<ControllersOptions>();
   auto* cmd = app.add_subcommand("controllers",
                                  "List the attached controllers: index, type (game controller, or plain joystick\n"
-                                 "with numbered buttons, axes and hats), GUID and name. Any of index, GUID or name\n"
+                                 "with numbered buttons, axes and hats), GUID, device path and name. Any of them\n"
                                  "can be given to --controller.");
   // Only the mappings matter here: they decide the type and name shown.
   add_controller_db_option(cmd, opt->sdl);
   cmd->add_flag("--json", opt->json,
                 "one JSON object per controller per line: index, name, guid, type "
-                "(\"controller\" or \"joystick\")");
+                "(\"controller\" or \"joystick\"), path");
   cmd->callback([opt, &exit_code] { exit_code = run_controllers(*opt); });
 }
 

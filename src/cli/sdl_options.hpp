@@ -15,15 +15,17 @@ inline void add_controller_db_option(CLI::App* cmd, input::SdlInputOptions& opts
       ->type_name("FILE");
 }
 
-/// Adds --controller INDEX|NAME|GUID and --controller-db FILE to cmd, filling
+/// Adds --controller INDEX|NAME|GUID|PATH and --controller-db FILE to cmd, filling
 /// opts. opts must outlive parsing (hold it in a shared_ptr like the other
 /// commands' options).
 inline void add_sdl_options(CLI::App* cmd, input::SdlInputOptions& opts) {
   cmd->add_option("--controller", opts.controller,
                   "which controller to use when several are attached: INDEX (as 'andros-bridge\n"
-                  "controllers' lists them), GUID (32 hex digits) or NAME (case-insensitive, a\n"
-                  "part is enough); the others are ignored. Default: the first one found")
-      ->type_name("INDEX|NAME|GUID");
+                  "controllers' lists them), GUID (32 hex digits), PATH (its device node or a\n"
+                  "link to it, such as /dev/input/by-path/...: the pad in that port) or NAME\n"
+                  "(case-insensitive, a part is enough); the others are ignored. Default: the first\n"
+                  "one found")
+      ->type_name("INDEX|NAME|GUID|PATH");
   add_controller_db_option(cmd, opts);
 }
 

@@ -31,7 +31,7 @@ std::string rate_detail() {
 
 void parse_supervisor(std::string_view t, const SourcePos& p, Settings& s) {
   const std::string text(trim(t));
-  if (text.empty()) throw InputError(p, "the supervisor's controller needs an INDEX, a NAME or a GUID");
+  if (text.empty()) throw InputError(p, "the supervisor's controller needs an INDEX, a NAME, a GUID or a PATH");
   if (text.find_first_not_of("0123456789") == std::string::npos) {
     (void)parse_integer(text, 0, input::kMaxJoystickIndex, "controller index", p);
   }
@@ -87,8 +87,9 @@ const std::array<Setting, 20> kTable = {{
      "sdl: the live controller; FILE: an event script (docs/event-scripts.md) played in real time", nullptr,
      [](std::string_view t, const SourcePos&, Settings& s) { s.input = std::string(t); },
      [](const Settings& s) { return s.input; }, true},
-    {"supervisor", "--supervisor", "INDEX|NAME|GUID", kRun,
-     "a second controller, the supervisor's, chosen as --controller chooses (never the same one): its stop and "
+    {"supervisor", "--supervisor", "INDEX|NAME|GUID|PATH", kRun,
+     "a second controller, the supervisor's, chosen as --controller chooses (never the same one; each role keeps "
+     "its own pad, and two pads SDL cannot tell apart are refused: docs/controllers.md): its stop and "
      "weapons consent are the mapping's 'supervisor:' buttons, and driving needs it connected too. Default: none",
      nullptr, parse_supervisor, [](const Settings& s) { return s.supervisor; }, false},
     {"record", "--no-record", "", kRun,
@@ -140,7 +141,7 @@ const std::array<Setting, 20> kTable = {{
      "replaced when the recording ends (and kept if it fails)",
      nullptr, [](std::string_view t, const SourcePos&, Settings& s) { s.script_output = std::string(t); },
      [](const Settings& s) { return s.script_output; }, false},
-    {"", "--supervisor", "INDEX|NAME|GUID", kRecord,
+    {"", "--supervisor", "INDEX|NAME|GUID|PATH", kRecord,
      "record a second controller too, the supervisor's, chosen as --controller chooses (never the same one): "
      "its events are written 'T supervisor EVENT'",
      nullptr, parse_supervisor, [](const Settings& s) { return s.supervisor; }, false},

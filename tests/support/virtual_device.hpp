@@ -95,6 +95,7 @@ class VirtualDevice {
     }
     return -1;
   }
+  [[nodiscard]] SDL_JoystickID instance_id() const { return id_; }
   [[nodiscard]] std::string guid() const {
     char text[33] = {};
     SDL_JoystickGetGUIDString(SDL_JoystickGetGUID(joystick_), text, sizeof text);

@@ -1,31 +1,15 @@
 #include <gtest/gtest.h>
-#include <spdlog/sinks/ostream_sink.h>
 #include <spdlog/spdlog.h>
 
 #include <sstream>
 
 #include "andros/view/status_board.hpp"
+#include "support/log_capture.hpp"
 
 namespace andros::view {
 namespace {
 
-/// The log lines written while it lives, as "LEVEL: TEXT" (the default logger is restored after).
-class LogCapture {
- public:
-  LogCapture() : previous_(spdlog::default_logger()) {
-    auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(out_);
-    sink->set_pattern("%l: %v");
-    spdlog::set_default_logger(std::make_shared<spdlog::logger>("capture", sink));
-  }
-  LogCapture(const LogCapture&) = delete;
-  LogCapture& operator=(const LogCapture&) = delete;
-  ~LogCapture() { spdlog::set_default_logger(previous_); }
-  [[nodiscard]] std::string text() const { return out_.str(); }
-
- private:
-  std::ostringstream out_;
-  std::shared_ptr<spdlog::logger> previous_;
-};
+using andros::testing::LogCapture;
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;

@@ -5,6 +5,7 @@
 /// starts, and call pump()/poll() from one thread only.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,11 +19,23 @@
 
 namespace andros::input {
 
+/// Where SDL says a device is, and which unit it is: SDL 2.26 gives a device
+/// node (/dev/input/eventN, /dev/hidrawN) for the pads it reads through
+/// evdev or HIDAPI, and a serial for those whose driver reads one. Each
+/// function returns "" where SDL gives none. Empty functions read SDL's
+/// (SDL_JoystickPathForIndex, SDL_JoystickGetSerial); tests stand in for SDL
+/// here, whose virtual pads have neither.
+struct PadPlaces {
+  std::function<std::string(int device_index)> path;
+  std::function<std::string(int device_index)> serial;
+};
+
 /// How to choose the controller and which extra SDL mappings to load.
 struct SdlInputOptions {
-  /// INDEX (a position in `andros-bridge controllers`), GUID (32 hex digits)
-  /// or NAME (case-insensitive, a part of the name is enough). Empty: the
-  /// first controller found.
+  /// INDEX (a position in `andros-bridge controllers`), GUID (32 hex digits),
+  /// PATH (a device node, or a link to one such as /dev/input/by-path/...:
+  /// the pad in that port) or NAME (case-insensitive, a part of the name is
+  /// enough). Empty: the first controller found.
   std::string controller;
   /// A file of extra SDL controller mappings (gamecontrollerdb.txt format).
   /// Empty: none beyond SDL's own and SDL_GAMECONTROLLERCONFIG.
@@ -31,6 +44,7 @@ struct SdlInputOptions {
   /// device). Empty: none.
   std::string supervisor;
   SourcePos supervisor_pos{"--supervisor"};  ///< where it was set, for errors about it
+  PadPlaces places;                          ///< SDL's device paths and serials
 };
 
 /// One attached device, as `andros-bridge controllers` lists it.
@@ -39,6 +53,7 @@ struct ControllerInfo {
   std::string name;
   std::string guid;              ///< 32 hex digits
   bool game_controller = false;  ///< false: a plain joystick (numbered buttons, axes, hats)
+  std::string path;              ///< its device node (what --controller PATH names); "" where SDL gives none
 };
 
 /// Initialises SDL's joystick, game-controller and event subsystems for as
@@ -62,7 +77,9 @@ void load_controller_db(const std::string& path, const StopCheck& stop = {});
 
 /// The live controller as an InputSource. Only the chosen controller feeds
 /// the state (and the supervisor's, when one is chosen: its events carry
-/// Pad::kSupervisor); the others are ignored. A connect is followed by the
+/// Pad::kSupervisor); the others are ignored. With a supervisor, each role is
+/// bound to the pad it first connects and never takes a pad that may be the
+/// other role's (pad_roles.hpp). A connect is followed by the
 /// device's current state, all stamped with the connect's time, so that
 /// buttons held when it appears are not presses.
 class SdlInput final : public InputSource {
@@ -107,7 +124,8 @@ class SdlInput final : public InputSource {
 std::unique_ptr<InputSource> make_sdl_input_source(const SdlInputOptions& options, const StopCheck& stop = {});
 
 /// The devices attached now, in SDL device-index order. Starts its own
-/// SdlSession and loads options.controller_db (so names reflect the mappings).
+/// SdlSession and loads options.controller_db (so names reflect the mappings);
+/// paths through options.places.
 std::vector<ControllerInfo> list_controllers(const SdlInputOptions& options);
 
 }  // namespace andros::input

@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <system_error>
 
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
 #include "andros/input/input_state.hpp"
+#include "pad_facts.hpp"
 
 namespace andros::input {
 namespace {
@@ -22,6 +25,11 @@ std::string nonnull(const char* text) { return text != nullptr ? text : ""; }
 
 ControllerSelection::ControllerSelection(const std::string& text, const SourcePos& where) {
   if (text.empty()) return;
+  if (text.front() == '/') {
+    by_ = By::kPath;
+    text_ = text;
+    return;
+  }
   if (all_of(text, &isdigit)) {
     by_ = By::kIndex;
     index_ = static_cast<int>(parse_integer(text, 0, kMaxJoystickIndex, "controller index", where));
@@ -33,15 +41,20 @@ ControllerSelection::ControllerSelection(const std::string& text, const SourcePo
   text_ = to_lower(text);
 }
 
-bool ControllerSelection::matches(int device_index) const {
+bool ControllerSelection::matches(const PadFacts& pad) const {
   switch (by_) {
     case By::kFirst: return true;
-    case By::kIndex: return device_index == index_;
-    case By::kGuid: return device_guid(device_index) == text_;
+    case By::kIndex: return pad.index == index_;
+    case By::kGuid: return pad.guid == text_;
     case By::kName:
       // Both names: a mapping may rename a device SDL also knows by its raw name.
-      return to_lower(device_name(device_index)).find(text_) != std::string::npos ||
-             to_lower(nonnull(SDL_JoystickNameForIndex(device_index))).find(text_) != std::string::npos;
+      return to_lower(pad.name).find(text_) != std::string::npos ||
+             to_lower(pad.raw_name).find(text_) != std::string::npos;
+    case By::kPath: {
+      // The same file: a link such as /dev/input/by-path/... follows the port.
+      std::error_code error;
+      return !pad.path.empty() && std::filesystem::equivalent(text_, pad.path, error) && !error;
+    }
   }
   return false;
 }
@@ -52,6 +65,7 @@ std::string ControllerSelection::describe() const {
     case By::kIndex: return "controller " + std::to_string(index_);
     case By::kGuid: return "the controller with GUID " + printable_text(text_);
     case By::kName: return "a controller named like " + quote_name(text_);
+    case By::kPath: return "the controller at " + printable_text(text_);
   }
   return {};
 }

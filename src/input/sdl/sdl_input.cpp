@@ -10,34 +10,15 @@
 #include "andros/base/text.hpp"
 #include "controller_selection.hpp"
 #include "feedback_player.hpp"
+#include "pad_facts.hpp"
+#include "pad_roles.hpp"
 #include "sdl_device.hpp"
 
 namespace andros::input {
-namespace {
-
-/// One controller the source looks for and, once found, reads.
-struct Slot {
-  Slot(Pad p, ControllerSelection s) : pad(p), selection(std::move(s)) {}
-
-  /// "controller 1", "the supervisor's controller (controller 1)": what the log says.
-  [[nodiscard]] std::string describe() const {
-    return pad == Pad::kSupervisor ? "the supervisor's controller (" + selection.describe() + ")"
-                                   : selection.describe();
-  }
-
-  Pad pad;
-  ControllerSelection selection;
-  std::unique_ptr<SdlDevice> device;
-  std::int64_t connect_t = -1;
-  bool rescan = true;  // a device may have appeared: look for the chosen one
-  bool waiting_logged = false;
-};
-
-}  // namespace
 
 struct SdlInput::Impl {
   Impl(const SdlInputOptions& options, const StopCheck& stop)
-      : driver(Pad::kOperator, ControllerSelection(options.controller)) {
+      : roles(PadReader(options.places)), driver(Pad::kOperator, ControllerSelection(options.controller)) {
     if (!options.supervisor.empty()) {
       ControllerSelection chosen(options.supervisor, options.supervisor_pos);
       if (chosen.same_as(driver.selection)) {
@@ -54,13 +35,14 @@ struct SdlInput::Impl {
   void handle(const SDL_Event& event, std::int64_t now_ms);
   void handle(Slot& slot, const SDL_Event& event, std::int64_t now_ms);
   void connect_chosen(Slot& slot, std::int64_t now_ms);
-  /// Whether the device at this index is slot's to open: chosen by it, and not the other slot's.
-  [[nodiscard]] bool may_open(const Slot& slot, int device_index) const;
+  /// The other role's slot; nullptr without a supervisor.
+  [[nodiscard]] Slot* other_of(const Slot& slot);
   void lose(Slot& slot, std::int64_t now_ms);
   [[nodiscard]] InputEvent event(const Slot& slot, InputEvent::Type type, std::int64_t now_ms) const;
 
   SdlSession session;  // first member: SDL outlives everything below
-  Slot driver;         // the operator's controller
+  PadRoles roles;
+  Slot driver;  // the operator's controller
   std::optional<Slot> supervisor;
   std::vector<InputEvent> events;
   FeedbackPlayer feedback;  // the operator's controller's
@@ -116,25 +98,24 @@ void SdlInput::Impl::handle(Slot& slot, const SDL_Event& event, std::int64_t now
   events.push_back(std::move(*ev));
 }
 
-bool SdlInput::Impl::may_open(const Slot& slot, int device_index) const {
-  if (!slot.selection.matches(device_index)) return false;
-  const Slot* other = &slot == &driver ? (supervisor ? &*supervisor : nullptr) : &driver;
-  if (other == nullptr) return true;
-  if (other->device && other->device->instance_id() == SDL_JoystickGetDeviceInstanceID(device_index)) return false;
-  // "The first controller" is the first that is not the supervisor's.
-  return !(slot.selection.is_first() && other->selection.matches(device_index));
+Slot* SdlInput::Impl::other_of(const Slot& slot) {
+  if (&slot != &driver) return &driver;
+  return supervisor ? &*supervisor : nullptr;
 }
 
 void SdlInput::Impl::connect_chosen(Slot& slot, std::int64_t now_ms) {
   slot.rescan = false;
-  const int count = SDL_NumJoysticks();
-  for (int i = 0; i < count; ++i) {
-    if (!may_open(slot, i)) continue;
-    slot.device = SdlDevice::open(i);
+  Slot* other = other_of(slot);
+  auto attached = roles.reader().attached();
+  for (auto& pad : attached) {
+    if (!roles.may_take(slot, other, pad, attached)) continue;
+    slot.device = SdlDevice::open(pad.index);
     if (!slot.device) {
-      spdlog::warn("cannot open controller {} {}: {}", i, quote_name(device_name(i)), SDL_GetError());
+      spdlog::warn("cannot open controller {} {}: {}", pad.index, quote_name(pad.name), SDL_GetError());
       continue;
     }
+    // With a supervisor, the role is this pad's from now on (a port named is its own binding).
+    if (other != nullptr && !slot.selection.by_path()) roles.bind(slot, pad);
     spdlog::info("{} connected: {} ({}, {})", slot.pad == Pad::kSupervisor ? "supervisor's controller" : "controller",
                  printable_text(slot.device->name()), printable_text(slot.device->guid()),
                  slot.device->is_game_controller() ? "game controller" : "joystick");

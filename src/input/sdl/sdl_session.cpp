@@ -2,12 +2,11 @@
 #include <SDL.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
-
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
 #include "andros/input/sdl_input.hpp"
 #include "controller_selection.hpp"
+#include "pad_facts.hpp"
 
 namespace andros::input {
 namespace {
@@ -72,10 +71,9 @@ std::vector<ControllerInfo> list_controllers(const SdlInputOptions& options) {
   if (!options.controller_db.empty()) load_controller_db(options.controller_db);
   SDL_PumpEvents();  // lets drivers that enumerate lazily report what they found
   std::vector<ControllerInfo> list;
-  const int count = SDL_NumJoysticks();  // negative on an error
-  list.reserve(static_cast<std::size_t>(std::max(count, 0)));
-  for (int i = 0; i < count; ++i) {
-    list.push_back(ControllerInfo{i, device_name(i), device_guid(i), SDL_IsGameController(i) == SDL_TRUE});
+  for (const auto& pad : PadReader(options.places).attached()) {
+    list.push_back(
+        ControllerInfo{pad.index, pad.name, pad.guid, SDL_IsGameController(pad.index) == SDL_TRUE, pad.path});
   }
   return list;
 }

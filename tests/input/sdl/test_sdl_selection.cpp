@@ -89,7 +89,11 @@ TEST_F(SdlSelectionTest, NoMatchWaitsAndAMatchingDeviceConnectsLater) {
 TEST_F(SdlSelectionTest, ListsEveryDeviceWithItsType) {
   auto pad = VirtualDevice::pad("Alpha Pad", 10);
   auto stick = VirtualDevice::stick("Test Stick");
-  const auto list = list_controllers(SdlInputOptions{});
+  SdlInputOptions options;  // SDL's virtual devices have no device node: as a real driver's would be
+  options.places.path = [&pad](int index) {
+    return SDL_JoystickGetDeviceInstanceID(index) == pad.instance_id() ? "/dev/input/event5" : "";
+  };
+  const auto list = list_controllers(options);
   const auto find = [&](const std::string& name) {
     return std::find_if(list.begin(), list.end(), [&](const ControllerInfo& c) { return c.name == name; });
   };
@@ -99,6 +103,8 @@ TEST_F(SdlSelectionTest, ListsEveryDeviceWithItsType) {
   EXPECT_FALSE(find("Test Stick")->game_controller);
   EXPECT_EQ(find("Alpha Pad")->guid, pad.guid());
   EXPECT_EQ(find("Test Stick")->index, stick.device_index());
+  EXPECT_EQ(find("Alpha Pad")->path, "/dev/input/event5");
+  EXPECT_EQ(find("Test Stick")->path, "");
 }
 
 // --supervisor: a second controller, chosen the same ways, feeding its own pad's state.
