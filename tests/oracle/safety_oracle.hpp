@@ -79,6 +79,7 @@ struct OracleCoverage {
   std::int64_t timeouts = 0;           ///< enable timeouts that ended motion
   std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
   std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
+  std::int64_t gated = 0;              ///< frames offered to the link, each checked by the frame gate
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
     frames += o.frames;
@@ -93,6 +94,7 @@ struct OracleCoverage {
     timeouts += o.timeouts;
     supervisor_stops += o.supervisor_stops;
     supervised_frames += o.supervised_frames;
+    gated += o.gated;
     return *this;
   }
 };

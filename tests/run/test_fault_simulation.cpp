@@ -167,14 +167,14 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
       "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-      "%lld frames with a supervisor's controller\n",
+      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
       static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
       static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-      static_cast<long long>(coverage.supervised_frames));
+      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -192,6 +192,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.timeouts, 0);
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
+  EXPECT_GT(coverage.gated, coverage.frames);  // the gate saw every frame, those the link refused too
   for (const auto after : {Ending::kStopButton, Ending::kPanic, Ending::kTimeout}) {
     EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
   }
