@@ -10,8 +10,8 @@
 #include <optional>
 #include <utility>
 
-#include "andros/mapping/engine_status.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/run/engine_frames.hpp"
 
 namespace andros::test {
 
@@ -51,27 +51,23 @@ inline constexpr std::array kFaultKinds = {
     FaultKind{EngineFault::kFixedBit, "a fixed bit wrong", false},
 };
 
-class FaultyFrames final : public run::FrameSource {
+/// The engine, its frames and neutral frame with the fault; the rest passed on as it is.
+class FaultyFrames final : public run::ReloadableFrames {
  public:
-  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault) : inner_(std::move(inner)), fault_(fault) {}
+  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault)
+      : run::ReloadableFrames(std::move(inner)), fault_(fault) {}
 
   run::Step step(const input::InputState& input, std::int64_t now_ms) override {
-    run::Step s = inner_->step(input, now_ms);
+    run::Step s = run::ReloadableFrames::step(input, now_ms);
     last_ = s.data;
     if (!in_neutral()) inject(s.data);
     return s;
   }
   [[nodiscard]] protocol::DataBytes neutral() const override {
     if (fault_ == EngineFault::kStaleNeutral && last_) return *last_;
-    protocol::DataBytes n = inner_->neutral();
+    protocol::DataBytes n = run::ReloadableFrames::neutral();
     if (in_neutral()) inject(n);
     return n;
-  }
-  void restart(const input::InputState& now) override { inner_->restart(now); }
-  bool take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
-  [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return inner_->stop_let_go(input); }
-  void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
-    inner_->held_stops(input, status);
   }
 
  private:
@@ -117,7 +113,6 @@ class FaultyFrames final : public run::FrameSource {
     }
   }
 
-  std::unique_ptr<run::FrameSource> inner_;
   EngineFault fault_;
   std::optional<protocol::DataBytes> last_;
 };
