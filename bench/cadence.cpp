@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   link::SerialLink link(bridge_pty.path, 9600);
   RealClock clock;
   run::Bridge bridge(clock, input, frames, link,
-                     run::BridgeOptions{.rate_millihertz = kRate * timing::kMillihertzPerHz});
+                     run::BridgeOptions{.rate_millihertz = kRate * timing::kMillihertzPerHz, .rules = {false, 0x01}});
   UniqueFd plain_fd(open(plain_pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
   link::configure_raw_8n1(plain_fd.get(), 9600);
   const protocol::Frame frame = protocol::encode(neutral_frame());

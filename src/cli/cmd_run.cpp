@@ -165,7 +165,8 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   RealClock clock;
-  run::Bridge bridge(clock, loop_input, frames, *link, run::BridgeOptions{.rate_millihertz = rate_millihertz});
+  run::Bridge bridge(clock, loop_input, frames, *link,
+                     run::BridgeOptions{.rate_millihertz = rate_millihertz, .rules = {config.weapons, config.code}});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
@@ -198,6 +199,10 @@ int run_bridge(const RunOptions& opt) {
   if (recording) recording->finish(why);
   spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why, end.link.sent,
                end.link.busy, end.link.down);
+  if (end.gate_trips > 0) {
+    spdlog::error("{} frame(s) replaced by the frame gate: an internal error (the log above says which rule)",
+                  end.gate_trips);
+  }
   if (sim) {
     sim->stop();
     const auto v = sim->status();

@@ -169,8 +169,10 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
   to.settings = std::move(*result.settings);
   to.board.set_mapping(setup.robot, setup.mapping_file, to.settings.weapons, setup.center);
   to.board.set_pad_names(setup.pad_names);
-  ReloadOutcome out{true, fmt::format("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
-                                      setup.mapping_file, to.settings.weapons ? ", WEAPONS ENABLED" : "")};
+  ReloadOutcome out{true,
+                    fmt::format("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
+                                setup.mapping_file, to.settings.weapons ? ", WEAPONS ENABLED" : ""),
+                    to.settings.weapons};
   spdlog::info("{}", out.message);
   to.service.reloaded("");
   return out;

@@ -128,6 +128,7 @@ void Engine::restart(const input::InputState& now) {
   settled_ = false;
   neutral_.reset();
   started_ = true;
+  rest_.restart();  // enabled again after this is a change of meaning, however the steps before it went
   start_session(now, true);
 }
 

@@ -12,7 +12,8 @@ Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, lin
       link_(link),
       options_(options),
       schedule_(options.rate_millihertz),
-      machine_(link_up()) {}
+      machine_(link_up()),
+      gate_(options.rules) {}
 
 void Bridge::run(const StopCheck& stop, const Observer& observe) {
   RunControl control;
@@ -95,7 +96,8 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       send(frames_.neutral(), observe);
       break;
     case OpState::kReloading:
-      if (neutral_frame(observe) && control.finish_reload()) {
+      if (const auto outcome = neutral_frame(observe) ? control.finish_reload() : std::nullopt) {
+        if (outcome->ok) gate_.set_weapons(outcome->weapons);
         apply(OpEvent::kReloadDone);
         if (std::exchange(suspend_pending_, false)) begin_suspend();
       }
@@ -167,7 +169,7 @@ void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control)
 }
 
 Effect Bridge::apply(OpEvent event) {
-  if (event == OpEvent::kOperatorStop) latched_tick_ = tick_;
+  if (event == OpEvent::kOperatorStop || event == OpEvent::kGateTrip) latched_tick_ = tick_;
   Effect effect = machine_.on(event);
   if (effect.rebase) {
     // A stop button pressed and not yet answered is answered before the
@@ -232,10 +234,15 @@ void Bridge::begin_reload(const RunControl& control, const std::string& mapping)
   control.begin_reload(mapping);
 }
 
-link::SendResult Bridge::send(const protocol::DataBytes& data, const Observer& observe) {
-  const link::SendResult result = link_.send(protocol::encode(data), clock_.now().count());
+link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer& observe) {
+  // The last gate (docs/safety-states.md): a frame breaking a rule never reaches the link, and the loop stops.
+  GateVerdict gate = gate_.pass(offered, machine_.motion_allowed());
+  if (gate.tripped()) apply(OpEvent::kGateTrip);
+  const link::SendResult result = link_.send(protocol::encode(gate.data), clock_.now().count());
   if (link_up() != machine_.link_up()) apply(link_up() ? OpEvent::kLinkUp : link_lost_event());
-  observe(report(data, result, true));
+  TickReport r = report(gate.data, result, true);
+  r.gate_fault = std::move(gate.fault);
+  observe(r);
   return result;
 }
 
@@ -307,6 +314,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.supervisor = state_.supervisor().name();
   r.engine = engine_status_;
   r.link = link_.status();
+  r.gate_trips = gate_.trips();
   return r;
 }
 

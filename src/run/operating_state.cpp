@@ -39,6 +39,12 @@ constexpr auto kTable = std::to_array<Transition>({
     row(S::kNotEnabled, E::kOperatorStop, S::kStopped),
     row(S::kEnabled, E::kOperatorStop, S::kStopped),
     settle(S::kStopped, E::kStopCleared, true),
+    // The frame gate found a frame breaking a rule (the engine is at fault):
+    // stopped as by a stop button, latched, and cleared the same way.
+    row(S::kNoLink, E::kGateTrip, S::kStopped),
+    row(S::kNoController, E::kGateTrip, S::kStopped),
+    row(S::kNotEnabled, E::kGateTrip, S::kStopped),
+    row(S::kEnabled, E::kGateTrip, S::kStopped),
     // Reload, suspend, shutdown: from any driving state.
     row(S::kNoLink, E::kReloadBegin, S::kReloading),
     row(S::kNoController, E::kReloadBegin, S::kReloading),
@@ -88,7 +94,8 @@ Effect OperatingState::on(OpEvent event) {
     case E::kLinkTaken: link_up_ = false; break;
     case E::kControllerUp: controller_up_ = true; break;
     case E::kControllerDown: controller_up_ = false; break;
-    case E::kOperatorStop: stop_latched_ = stop_latched_ || state_ != S::kStopping; break;
+    case E::kOperatorStop:
+    case E::kGateTrip: stop_latched_ = stop_latched_ || state_ != S::kStopping; break;
     case E::kStopCleared: stop_latched_ = false; break;
     default: break;
   }
@@ -128,6 +135,7 @@ std::string_view to_string(OpEvent event) {
     case E::kPanic: return "deadman squeezed past panic";
     case E::kEnableTimeout: return "enable timeout";
     case E::kOperatorStop: return "stop button";
+    case E::kGateTrip: return "frame gate trip";
     case E::kStopCleared: return "stop cleared";
     case E::kReloadBegin: return "reload";
     case E::kReloadDone: return "reload done";

@@ -233,6 +233,7 @@ void Recorder::input_end(std::int64_t t_ms) {
 }
 
 void Recorder::observe(const TickReport& r) {
+  if (!r.gate_fault.empty()) push(record::gate(r.t_ms, r.gate_fault));
   if (first_ || r.state != state_) {
     state_ = r.state;
     push(record::state(r.t_ms, r.state));

@@ -30,7 +30,9 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   ReloadableFrames frames(make_engine_frames(std::move(engine)));
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
   Bridge bridge(clock, input, frames, link,
-                BridgeOptions{.rate_millihertz = options.rate_millihertz, .neutral_tail_at_end = false});
+                BridgeOptions{.rate_millihertz = options.rate_millihertz,
+                              .neutral_tail_at_end = false,
+                              .rules = {options.engine.weapons, options.engine.code}});
 
   // A reload is read at once (the clock waits for it) and applied after its neutral frames.
   std::optional<mapping::ValidMapping> loaded;
@@ -42,7 +44,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
     try {
       loaded = options.load(wanted);
       loaded_file = wanted;
-      outcome = ReloadOutcome{true, ""};
+      outcome = ReloadOutcome{true, "", options.engine.weapons};
     } catch (const InputError& e) {
       outcome = ReloadOutcome{false, e.what()};
     }

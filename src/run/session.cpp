@@ -168,6 +168,9 @@ std::string frame(const TickReport& r, std::int64_t gap) {
 std::string state(std::int64_t t_ms, OpState s) {
   return "state " + std::to_string(t_ms) + " " + std::string(to_string(s));
 }
+std::string gate(std::int64_t t_ms, std::string_view fault) {
+  return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
+}
 std::string layer(std::int64_t t_ms, std::string_view layer) {
   return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();
 }
@@ -370,6 +373,9 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto state = parse_op_state(f.rest());
     if (!state) throw InputError(pos, "unknown state " + quote(f.rest()));
     s.states.push_back({t, *state});
+  } else if (kind == "gate") {
+    const auto t = f.integer();
+    s.gate_trips.push_back({t, f.json().get<std::string>()});
   } else if (kind == "layer") {
     const auto t = f.integer();
     s.layers.push_back({t, f.json().get<std::string>()});

@@ -69,8 +69,12 @@ class Playback {
   std::optional<ReloadOutcome> finish_reload() {
     if (next_reload_ >= s_.reloads.size() || s_.reloads[next_reload_].t_ms != now_ms_) return std::nullopt;
     const ReloadRecord& r = s_.reloads[next_reload_++];
-    if (r.outcome.ok && r.settings) frames_.replace(engine_frames(*r.settings));
-    return r.outcome;
+    ReloadOutcome outcome = r.outcome;
+    if (outcome.ok && r.settings) {
+      frames_.replace(engine_frames(*r.settings));
+      outcome.weapons = r.settings->weapons;  // the frame gate's rule, from the settings put in place
+    }
+    return outcome;
   }
 
   /// After tick's report: where the live loop went next (a stall skipped ticks).
@@ -212,7 +216,9 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   PlaybackInput input(playback, s.settings.supervised);
   PlaybackLink link(playback);
   Bridge bridge(playback.clock(), input, frames, link,
-                BridgeOptions{.rate_millihertz = s.settings.rate_millihertz, .neutral_tail_at_end = true});
+                BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
+                              .neutral_tail_at_end = true,
+                              .rules = {s.settings.weapons, s.settings.code}});
 
   RunControl control;
   control.poll = [&] { return playback.poll(); };

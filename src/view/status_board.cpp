@@ -36,6 +36,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     s.t_ms = r.t_ms;
     s.sent = r.data;
     s.link = r.link.counters;
+    s.gate_trips = r.gate_trips;
     if (!said_ || said(*said_) != said(r)) {
       before = s;
       s.connected = r.connected;
@@ -63,6 +64,12 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     }
   }
   // The loop's thread is the status's only writer: read outside the lock, as before.
+  if (!r.gate_fault.empty()) {
+    spdlog::error(
+        "internal error: the frame gate stopped a frame that broke a safety rule ({}): a neutral frame was "
+        "sent instead, and the bridge is stopped",
+        r.gate_fault);
+  }
   if (before) log_changes(*before, status_);
   if (r.skipped > 0) spdlog::warn("clock stalled: {} tick(s) skipped, none sent late in a burst", r.skipped);
   first_tick_ = false;

@@ -8,10 +8,15 @@
 // (often within one frame), Ctrl-Z and fg, reloads of good, bad and missing
 // mapping files, a stop; and the operator's stop button, squeezes of the
 // trigger (a deadman on some mappings) past half way and all the way, and
-// long pauses with nothing changing; and in some scripts a supervisor's
-// controller, its stop tapped, lost and back. The deadman is often held through a fault, and
-// often released and pressed again after one, and now and then a weapon is
-// fired, so that both what must not move and what may move are reached.
+// long pauses with nothing changing; and in every other script a
+// supervisor's controller, its stop tapped, lost and back. The deadman is
+// often held through a fault, and often released and pressed again after
+// one, and now and then a weapon is fired (armed or not), so that both what
+// must not move and what may move are reached. And the moves the safety rules
+// are about: the stop tapped within one tick and the deadman pressed within
+// the next; the stop held through a release and press of the deadman; a
+// trigger squeezed past its panic point and back to the middle; a layer left
+// with its stick pushed; both buttons of an opposing pair.
 
 #include <array>
 #include <cstdint>
@@ -39,13 +44,14 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
                                                         button("rightstick")};
   const input::InputKey arm = axis("lefttrigger");
   const input::InputKey drive = axis("lefty");
-  const input::InputKey weapons_layer = button("leftstick");
+  const input::InputKey weapons_layer = button("rightshoulder");
   const input::InputKey fire_button = button("a");
 
   std::vector<input::InputEvent> events;
   std::int64_t t = 0;
   bool connected = true;
-  bool held = false;  // the deadman, as the script last set it
+  bool held = false;        // the deadman, as the script last set it
+  bool supervised = false;  // a supervisor's controller in this script
   const auto add = [&](T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
     input::InputEvent e;
     e.t_ms = t;
@@ -95,17 +101,76 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(50);
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
-  const auto fire = [&] {  // into the weapons layer (a stick click), arm (LT), fire (A)
+  const auto fire = [&] {  // the weapons layer held (RB), armed (LT) or not, fire (A)
     add(T::kAxis, arm, 0);
     add(T::kButton, weapons_layer, 1);
-    t += 1 + pick.below(40);
-    add(T::kButton, weapons_layer, 0);
-    t += pick.below(80);
-    add(T::kAxis, arm, 32767);
+    t += 1 + pick.below(80);
+    add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
     add(T::kButton, fire_button, 1);
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
+    add(T::kButton, weapons_layer, 0);
+  };
+
+  const auto next_tick = [&](int within) {
+    t = (t / 40 + 1) * 40 + 1 + pick.below(static_cast<std::uint32_t>(within));
+  };
+  const auto stick = [&] {
+    t += pick.below(50);
+    add(T::kAxis, drive, pick.below(3) == 0 ? 0 : -32768);
+  };
+  // The deadman let go, the stop button tapped within one tick (now and then
+  // with a resume in it, which answers the stop at once), the deadman pressed
+  // again within the next: the stop must outlive its own tick.
+  const auto stop_and_press = [&] {
+    if (held) add(T::kButton, deadman, 0);
+    const bool by_supervisor = supervised && pick.below(2) == 0;
+    for (int taps = 1 + static_cast<int>(pick.below(3) == 0); taps > 0; --taps) {  // tapped again while stopped
+      next_tick(20);
+      add(T::kButton, button("guide"), 1);
+      if (by_supervisor) events.back().pad = input::Pad::kSupervisor;
+      t += 1 + pick.below(10);
+      add(T::kButton, button("guide"), 0);
+      if (by_supervisor) events.back().pad = input::Pad::kSupervisor;
+    }
+    if (pick.below(2) == 0) add(T::kResume);
+    next_tick(38);
+    add(T::kButton, deadman, 1);
+    stick();
+  };
+  // The stop button held while the deadman is released and pressed again: never a reset.
+  const auto stop_held_through_a_press = [&] {
+    add(T::kButton, button("guide"), 1);
+    t += 40 + pick.below(100);
+    if (held) add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    stick();
+    t += 40 + pick.below(200);
+    if (pick.below(2) == 0) add(T::kButton, button("guide"), 0);
+  };
+  // A trigger deadman squeezed past its panic point and back to the middle,
+  // not fully released: still off.
+  const auto panic_and_back = [&] {
+    add(T::kAxis, arm, 20000);
+    wait();
+    add(T::kAxis, arm, 32767);
+    t += pick.below(100);
+    add(T::kAxis, arm, 20000 + static_cast<int>(pick.below(5000)));
+    stick();
+  };
+  // Into the arm layer (a toggle), a stick pushed, out again with it held: drive waits until it is back at rest.
+  const auto leave_a_layer_stick_held = [&] {
+    if (!held) add(T::kButton, deadman, 1);
+    const input::InputKey toggle = layer_buttons[1 + pick.below(2)];
+    for (const int v : {1, 0}) add(T::kButton, toggle, v);
+    t += 40 + pick.below(80);
+    add(T::kAxis, pick.below(2) == 0 ? drive : axis("leftx"), pick.below(2) == 0 ? -32768 : 30000);
+    t += 40 + pick.below(80);
+    for (const int v : {1, 0}) add(T::kButton, toggle, v);
+    t += 40 + pick.below(160);
+    if (pick.below(2) == 0) add(T::kAxis, drive, 0);
   };
 
   const auto supervisor = [&](T type, input::InputKey key = {}, int value = 0) {
@@ -114,7 +179,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   };
   add(T::kConnect);
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
-  const bool supervised = pick.below(4) == 0;           // a supervisor's controller, now and then
+  supervised = pick.below(2) == 0;                      // a supervisor's controller in every other script
   if (supervised) supervisor(T::kConnect);
   const int n = 30 + static_cast<int>(pick.below(70));
   int after_stop = -1;  // events still to come once a stop is in
@@ -145,7 +210,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(22)) {
+      switch (pick.below(28)) {
         case 0:
         case 1:
         case 2:
@@ -200,6 +265,18 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
             supervisor(T::kConnect);
           }
           break;
+        case 22: stop_and_press(); break;
+        case 23: stop_held_through_a_press(); break;
+        case 24: panic_and_back(); break;
+        case 25: leave_a_layer_stick_held(); break;
+        case 26:  // both of an opposing pair (front articulation on most layouts) held a while
+          add(T::kButton, button("dpup"), 1);
+          add(T::kButton, button("dpdown"), 1);
+          t += 40 + pick.below(120);
+          add(T::kButton, button("dpup"), 0);
+          add(T::kButton, button("dpdown"), 0);
+          break;
+        case 27: fire(); break;
         default: rearm(); break;
       }
     }

@@ -1,101 +1,42 @@
 #pragma once
-// The fault simulation's oracle: the safety rules (docs/mapping.md, "What a
-// mapping cannot change"; docs/safety-states.md) and
-// docs/event-scripts.md's fault events, read straight off an event script and
-// the frames a replay delivered. It knows nothing of the engine, the Bridge or
-// the operating-state machine: from the script alone it says when the bridge
-// may be enabled (a fresh deadman press, made after the last event that ends
-// "enabled", held since, controller connected, link up, not suspended, not
-// stopping, not stopped by the operator's stop button, not past the panic
-// point of a three-position trigger, not timed out), and when frames may be
-// delivered at all; from the mapping only the deadman, the stop button, the
-// panic point, the enable timeout and the weapons' arming inputs. It is deliberately more
-// permissive than the engine where the engine has further rules (the rest
-// rule, layers, a press and a fault within one frame): it never says "may
-// not move" where those rules let the bridge move, so a complaint is a
+// The fault simulation's oracle: the contract's safety rules (section 5;
+// docs/mapping.md, docs/safety-states.md) and docs/event-scripts.md's fault
+// events, read off an event script and the frames a replay delivered, never
+// the engine, the Bridge or the state machine. From the script it says when
+// the bridge may be enabled (a fresh deadman press after the last event that
+// ends "enabled", held since, pads connected, link up, not suspended or
+// stopping, no stop latched (stop_latch.hpp), not past a trigger's panic
+// point, not timed out) and when frames may go out (loop_schedule.hpp); from
+// the mappings (possible_mappings.hpp) the inputs those need, and the layers
+// and trim of the one in place (layer_rest.hpp). Every frame is valid with
+// the code and no opposing pair, weapons only when allowed, neutral (drive
+// and pivot 128 whatever the trim) when not enabled, drive and pivot at the
+// trim after a change of layer until their stick was seen at rest. It is
+// more permissive than the engine where the engine has further rules (a
+// press and a fault within one frame, how a stop is reset): a complaint is a
 // broken rule, not a difference of detail.
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include "andros/input/events.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
+#include "oracle/coverage.hpp"
+#include "oracle/frame_rules.hpp"
+#include "oracle/layer_rest.hpp"
+#include "oracle/loop_schedule.hpp"
+#include "oracle/pads.hpp"
+#include "oracle/possible_mappings.hpp"
+#include "oracle/stop_latch.hpp"
 
 namespace andros::test {
-
-/// An event that ends "enabled": the last one is what a message names, and
-/// the last that is not a deadman release is what the coverage counts motion after.
-enum class Ending : std::uint8_t {
-  kStart,
-  kConnect,
-  kDisconnect,
-  kRelease,
-  kLinkDown,
-  kLinkUp,
-  kSuspend,
-  kResume,
-  kReloadSame,
-  kReloadGood,
-  kReloadBad,
-  kStop,
-  kStopButton,
-  kPanic,
-  kTimeout,
-  kCount
-};
-
-inline const char* to_string(Ending e) {
-  constexpr const char* kNames[] = {
-      "start",       "connect",       "disconnect",    "deadman release",    "link down",         "link up",
-      "suspend",     "resume",        "reload (same)", "reload (good file)", "reload (bad file)", "stop",
-      "stop button", "panic squeeze", "enable timeout"};
-  return kNames[static_cast<std::size_t>(e)];
-}
-
-/// What the frames reached, summed over scripts: a test asserts that each
-/// property was really exercised, not vacuously true.
-struct OracleCoverage {
-  std::int64_t frames = 0;
-  std::int64_t motion = 0;  ///< frames with drive/pivot off centre or a motion bit
-  /// by the last interruption (an ending event other than a release) before the press that enabled
-  std::array<std::int64_t, static_cast<std::size_t>(Ending::kCount)> motion_after{};
-  std::int64_t weapons = 0;            ///< frames with a weapon bit
-  std::int64_t stops_with_frames = 0;  ///< stops that owed (and got) 3 neutral frames
-  std::int64_t suspend_frames = 0;     ///< neutral frames of a suspend
-  std::int64_t reload_frames = 0;      ///< neutral frames of a reload
-  std::int64_t stop_latches = 0;       ///< stops by a stop button
-  std::int64_t panics = 0;             ///< squeezes past the panic point
-  std::int64_t timeouts = 0;           ///< enable timeouts that ended motion
-  std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
-  std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
-
-  OracleCoverage& operator+=(const OracleCoverage& o) {
-    frames += o.frames;
-    motion += o.motion;
-    for (std::size_t i = 0; i < motion_after.size(); ++i) motion_after[i] += o.motion_after[i];
-    weapons += o.weapons;
-    stops_with_frames += o.stops_with_frames;
-    suspend_frames += o.suspend_frames;
-    reload_frames += o.reload_frames;
-    stop_latches += o.stop_latches;
-    panics += o.panics;
-    timeouts += o.timeouts;
-    supervisor_stops += o.supervisor_stops;
-    supervised_frames += o.supervised_frames;
-    return *this;
-  }
-};
 
 class SafetyOracle {
  public:
@@ -103,111 +44,72 @@ class SafetyOracle {
   using Lookup = std::function<const mapping::Mapping*(const std::string& file)>;
 
   struct Options {
-    bool weapons = false;         ///< --weapons
-    std::uint8_t code = 0x01;     ///< --code
-    std::int64_t period_ms = 40;  ///< 1000 / rate
-    int stop_frames = 3;          ///< a stop: neutral frames at its tick and the next two (docs/event-scripts.md)
-    int stop_ticks = 8;           ///< the ticks a stop may take when the link refuses some (3 + 5 tries)
+    bool weapons = false;      ///< --weapons
+    std::uint8_t code = 0x01;  ///< --code
+    LoopOptions loop{};        ///< the rate and the neutral frames owed
   };
 
-  /// Drive and pivot in every neutral frame: the protocol's centre, whatever a mapping says.
-  static constexpr std::uint8_t kNeutralCentre = 128;
-
   SafetyOracle(const mapping::Mapping& initial, std::vector<input::InputEvent> script, Lookup lookup, Options options)
-      : script_(std::move(script)), lookup_(std::move(lookup)), options_(options) {
-    add_possible(initial);
+      : script_(std::move(script)), lookup_(std::move(lookup)), options_(options), loop_(options.loop) {
+    mappings_.add(initial);
     // A script that addresses the supervisor's controller anywhere is supervised from its start.
     supervised_ = std::any_of(script_.begin(), script_.end(),
                               [](const input::InputEvent& e) { return e.pad == input::Pad::kSupervisor; });
     // The last frame is the first at or after the `end` (or the last event).
-    end_tick_ = script_.empty() ? 0 : tick_of(script_.back().t_ms);
+    end_tick_ = script_.empty() ? 0 : loop_.tick_of(script_.back().t_ms);
   }
 
   /// Each delivered frame, in order: empty, or the rule it breaks.
   std::string frame(std::int64_t t, const protocol::DataBytes& data) {
+    const std::int64_t period = options_.loop.period_ms;
     ++coverage_.frames;
     if (supervised_) ++coverage_.supervised_frames;
-    if (t % options_.period_ms != 0) return "a frame off the " + std::to_string(options_.period_ms) + " ms grid";
+    if (mappings_.known && mappings_.current->center != kNeutralCentre) ++coverage_.trimmed;
+    if (t % period != 0) return "a frame off the " + std::to_string(period) + " ms grid";
     if (t <= last_t_) return "frame times not increasing (previous " + std::to_string(last_t_) + ")";
     if (auto missing = missing_before(t); !missing.empty()) return missing;
     advance_to(t);
     at_tick(t);
     last_t_ = t;
     const auto s = protocol::read_signals(data);
-    if (const auto errors = protocol::validation_errors(data); !errors.empty())
-      return "invalid frame: " + errors.front();
-    if (data[protocol::kCodeByte] != options_.code) return "byte 11 is not the code";
+    if (auto broken = frame_errors(data, s, options_.code); !broken.empty()) return broken;
 
-    if (!link_up_) return "delivered while the link is down (script)";
-    // Once suspended, stopping or past the end, only the neutral frames still
-    // owed go out: 3 for each suspend, reload and stop, one sequence after the other.
-    const bool owed = owed_ > 0;
-    if (owed) --owed_;
-    if (stopped_) {
-      if (!owed) return "a frame after a stop's neutral frames";
-      if (t >= stop_tick_ && t < stop_tick_ + options_.stop_frames * options_.period_ms) ++stop_frames_on_time_;
-    } else if (suspended_) {
-      ++coverage_.suspend_frames;
-      if (!owed) return "delivered while suspended, after its neutral frames";
-    }
-    if (t > end_tick_ && !owed) return "a frame past the script's end";
-
-    // What must be neutral: not enabled, a reload's frames, a stop's, a suspend's, past the end.
-    const bool in_reload = reloading(t);
-    if (in_reload) {
-      ++reload_sent_;
-      ++coverage_.reload_frames;
-    }
-    std::string why;
-    if (!enabled()) why = "not enabled (" + not_enabled_reason() + ")";
-    if (in_reload) why = "a reload's neutral frame";
-    if (suspended_) why = "a suspend's neutral frame";
-    if (stopped_) why = "a stop's neutral frame";
-    if (t > end_tick_) why = "past the script's end";
-
-    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
-      const auto& sig = protocol::kSignals[i];
-      if (sig.kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
-      ++coverage_.weapons;
-      if (!options_.weapons) return std::string(sig.name) + " = 1 without --weapons";
-      if (!enabled()) return std::string(sig.name) + " = 1 while " + why;
-      if (!armed(static_cast<protocol::SignalId>(i)))
-        return std::string(sig.name) + " = 1 without its arming input held";
-    }
-    const auto moving = motion(s);
-    if (moving) {
+    const auto d = loop_.deliver(t, end_tick_);
+    if (d.suspend_frame) ++coverage_.suspend_frames;
+    if (!d.error.empty()) return d.error;
+    if (d.reload_frame) ++coverage_.reload_frames;
+    // What must be neutral: a reload's, a suspend's or a stop's frames, past the end, not enabled.
+    const std::string why = !d.neutral.empty() ? d.neutral
+                            : enabled()        ? std::string()
+                                               : "not enabled (" + not_enabled_reason() + ")";
+    const auto armed = [this](protocol::SignalId id) { return mappings_.armed(id, pads_); };
+    if (auto fired = weapon_errors(s, options_.weapons, why, armed, coverage_.weapons); !fired.empty()) return fired;
+    if (const auto moving = motion(s)) {
       if (!why.empty()) return *moving + " while " + why;
       ++coverage_.motion;
       ++coverage_.motion_after[static_cast<std::size_t>(pressed_after_)];
     }
-    return {};
+    if (!mappings_.known) return {};
+    const auto held = [this](input::InputKey k) { return pads_.held(k); };
+    auto rest =
+        rest_.frame(t, period, *mappings_.current, s, held, [this](input::InputKey k) { return pads_.axis(k); });
+    coverage_.rest_held += rest_.held_at_trim() ? 1 : 0;
+    return rest;
   }
 
   /// After the replay: what the end lacks. A stop owes its neutral frames at
   /// the tick that sees it and the next two, when the link is up for them.
   std::string finish() {
-    if (auto missing = missing_before(end_tick_ + options_.period_ms); !missing.empty()) return missing;
+    if (auto missing = missing_before(end_tick_ + options_.loop.period_ms); !missing.empty()) return missing;
     advance_to(end_tick_);
-    if (!stopped_ || stop_tick_ > end_tick_) return {};
-    for (int i = 0; i < options_.stop_frames; ++i) {
-      if (!link_up_at(stop_tick_ + i * options_.period_ms)) return {};
-    }
-    ++coverage_.stops_with_frames;
-    if (stop_frames_on_time_ < options_.stop_frames) {
-      return "a stop at tick " + std::to_string(stop_tick_) + " with the link up got " +
-             std::to_string(stop_frames_on_time_) + " of its " + std::to_string(options_.stop_frames) +
-             " neutral frames at that tick and the next ones";
-    }
-    return {};
+    const bool owed = loop_.stop_owed_frames(script_, end_tick_);
+    if (owed) ++coverage_.stops_with_frames;
+    return owed ? loop_.stop_frames_missing() : std::string();
   }
 
   [[nodiscard]] const OracleCoverage& coverage() const { return coverage_; }
 
  private:
-  [[nodiscard]] std::int64_t tick_of(std::int64_t t) const {
-    return (t + options_.period_ms - 1) / options_.period_ms * options_.period_ms;
-  }
-
   void advance_to(std::int64_t t) {
     while (next_ < script_.size() && script_[next_].t_ms <= t) apply(script_[next_++]);
   }
@@ -215,91 +117,40 @@ class SafetyOracle {
   // Every tick up to the script's end gets a frame while the link is up and
   // nothing holds the loop (a suspend, a stop): none is lost on the way.
   std::string missing_before(std::int64_t t) {
-    const std::int64_t first = last_t_ < 0 ? 0 : last_t_ + options_.period_ms;
-    for (std::int64_t u = first; u < t && u <= end_tick_; u += options_.period_ms) {
+    const std::int64_t period = options_.loop.period_ms;
+    for (std::int64_t u = last_t_ < 0 ? 0 : last_t_ + period; u < t && u <= end_tick_; u += period) {
       advance_to(u);
       at_tick(u);
-      if (link_up_ && !suspended_ && !stopped_) {
+      if (loop_.link_up() && !loop_.suspended() && !loop_.stopped())
         return "no frame at t=" + std::to_string(u) + " (the link up, not suspended, not stopping)";
-      }
     }
     return {};
   }
 
-  // What every tick of the loop reads, once its events are in. The stop
-  // button: a press since the last tick latches (but one made just before a
-  // new controller session: the loop cannot see it); the latch clears at a
-  // later tick with the pad there and the stop button and every deadman up,
-  // where the loop can be in "stopped" (not suspended or reloading) and no
-  // stop button was pressed since the last tick (a press while stopped is the
-  // same stop, and the wait starts again). The panic point and the
-  // timeout end "enabled" at a tick (a squeeze past the point and back between
-  // two ticks is not seen; the timeout runs from the tick of the last change
-  // of any input). The panic's "fully released" is the replay tests' to check:
-  // here a fresh squeeze from below the press point is enough (permissive).
+  // What every tick reads once its events are in: the stop latch; the panic point and the timeout
+  // (from the tick of the last change of any input) end "enabled" (a squeeze and back within a tick is not seen).
   void at_tick(std::int64_t t) {
-    if (stop_latched_) {
-      const bool can_clear =
-          t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
-          !(estop_ && held(*estop_)) && !supervisor_stop_held() &&
-          std::none_of(common_deadmen_.begin(), common_deadmen_.end(), [this](input::InputKey k) { return down(k); });
-      if (can_clear) stop_latched_ = false;
-    } else if (stop_pending_) {
-      stop_latched_ = true;
-      latch_tick_ = t;
+    const bool may_clear = pads_.connected && !loop_.suspended() && !loop_.stopped() && !loop_.reloading(t) &&
+                           std::none_of(mappings_.common_deadmen.begin(), mappings_.common_deadmen.end(),
+                                        [this](input::InputKey k) { return pads_.down(k); });
+    const bool held = (mappings_.estop && pads_.held(*mappings_.estop)) || pads_.sup_held(mappings_.sup_stop);
+    if (stop_.at_tick(t, held, may_clear)) {
       ++coverage_.stop_latches;
       end_enabled(Ending::kStopButton);
     }
-    stop_pending_ = false;
-    if (panic_ && enabled()) {
-      for (const auto k : deadmen_) {
-        const auto it = axes_.find(k);
-        if (!k.is_button() && it != axes_.end() && it->second >= *panic_) {
+    if (mappings_.panic && enabled()) {
+      for (const auto k : mappings_.deadmen) {
+        if (!k.is_button() && pads_.axis(k) >= *mappings_.panic) {
           ++coverage_.panics;
           end_enabled(Ending::kPanic);
           break;
         }
       }
     }
-    if (timeout_ms_ && enabled() && t - tick_of(last_change_) >= *timeout_ms_) {
+    if (mappings_.timeout_ms && enabled() && t - loop_.tick_of(last_change_) >= *mappings_.timeout_ms) {
       ++coverage_.timeouts;
       end_enabled(Ending::kTimeout);
     }
-  }
-
-  void add_possible(const mapping::Mapping& m) {
-    // Permissive over every mapping the script may have loaded: a stop button
-    // only when all have that one, a panic point and a timeout only when all
-    // have one (the most lenient of them).
-    const std::optional<input::InputKey> estop = m.estop ? std::optional(m.estop->key) : std::nullopt;
-    estop_ = first_mapping_ || estop_ == estop ? estop : std::nullopt;
-    const auto lenient = [this](auto& have, auto value) {
-      if (!value || (!first_mapping_ && !have)) have.reset();
-      else have = have && !first_mapping_ ? std::max(*have, *value) : *value;
-    };
-    const std::optional<input::InputKey> sup_stop = m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt;
-    sup_stop_ = first_mapping_ || sup_stop_ == sup_stop ? sup_stop : std::nullopt;
-    lenient(timeout_ms_, m.enable_timeout_ms);
-    std::optional<int> panic;
-    if (m.deadman_panic) panic = static_cast<int>(std::ceil(*m.deadman_panic * 32767.0));
-    lenient(panic_, panic);
-    std::set<input::InputKey> mine;
-    if (m.deadman) mine.insert(m.deadman->key);
-    if (first_mapping_) {
-      common_deadmen_ = mine;
-    } else {
-      std::erase_if(common_deadmen_, [&mine](input::InputKey k) { return !mine.contains(k); });
-    }
-    first_mapping_ = false;
-    if (m.deadman) deadmen_.insert(m.deadman->key);
-    const auto weapons = [this](const std::vector<mapping::Binding>& bindings) {
-      for (const auto& b : bindings) {
-        const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule);
-        if (w != nullptr && w->arm) arms_[w->signal].insert(*w->arm);
-      }
-    };
-    weapons(m.bindings);
-    for (const auto& layer : m.layers) weapons(layer.bindings);
   }
 
   // Every event that ends "enabled": the press that enables must come after it.
@@ -307,125 +158,72 @@ class SafetyOracle {
     fresh_.clear();
     last_ending_ = why;
     last_interruption_ = why;
+    rest_.interrupted();
   }
 
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
-    if (e.type == T::kLinkDown || e.type == T::kLinkTaken) {
-      if (link_up_) end_enabled(Ending::kLinkDown);
-      link_up_ = false;
+    if (e.type == T::kLinkDown || e.type == T::kLinkTaken || e.type == T::kLinkUp) {
+      // A link that comes back is a new link.
+      if (loop_.link(e.type)) end_enabled(e.type == T::kLinkUp ? Ending::kLinkUp : Ending::kLinkDown);
       return;
     }
-    if (e.type == T::kLinkUp) {
-      if (!link_up_) end_enabled(Ending::kLinkUp);  // a link that comes back is a new link
-      link_up_ = true;
-      return;
-    }
-    if (stopped_) return;  // nothing else is answered once a stop is in
-    if (e.pad == input::Pad::kSupervisor) {
-      apply_supervisor(e);
-      return;
-    }
+    if (loop_.stopped()) return;  // nothing else is answered once a stop is in
+    if (e.pad == input::Pad::kSupervisor) return apply_supervisor(e);
     switch (e.type) {
       case T::kConnect:
-        end_enabled(Ending::kConnect);
-        connected_ = true;
-        connect_t_ = e.t_ms;
-        buttons_.clear();
-        axes_.clear();
-        stop_pending_ = false;  // a stop tapped on the old session since the last tick went with it
+      case T::kDisconnect:
+        end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
+        pads_.connect(e.type == T::kConnect, e.t_ms);
+        stop_.pending = false;  // a stop tapped on the old session since the last tick went with it
+        stop_.released = true;  // and a stop button held goes with its pad
         last_change_ = e.t_ms;
         break;
-      case T::kDisconnect:
-        end_enabled(Ending::kDisconnect);
-        connected_ = false;
-        stop_pending_ = false;  // a stop tapped since the last tick went with the controller
-        buttons_.clear();
-        axes_.clear();
-        break;
       case T::kButton: {
-        if (!connected_) break;  // a lost controller's stale events
-        const bool was = buttons_[e.key];
-        buttons_[e.key] = e.value != 0;
-        if (was != (e.value != 0)) last_change_ = e.t_ms;
+        if (!pads_.connected) break;  // a lost controller's stale events
+        const bool was = pads_.buttons[e.key];
+        const bool now = e.value != 0;
+        pads_.buttons[e.key] = now;
+        if (was != now) last_change_ = e.t_ms;
         // Stamped with the connect's time: the state the pad had when it appeared, not a press.
-        if (e.key == estop_ && e.value != 0 && !was && e.t_ms != connect_t_) stop_pending_ = true;
-        if (deadmen_.contains(e.key)) deadman_moved(e.key, was, e.value != 0, e.t_ms);
+        const bool press = now && !was && e.t_ms != pads_.connect_t;
+        if (press) rest_.pressed(e.key);
+        if (e.key == mappings_.estop && press) stop_.pending = true;
+        if (e.key == mappings_.estop && was && !now) stop_.released = true;
+        if (mappings_.deadmen.contains(e.key)) deadman_moved(e.key, was, now, e.t_ms);
         break;
       }
       case T::kAxis: {
-        if (!connected_) break;
-        const bool was = down(e.key);
-        if (axes_[e.key] != e.value) last_change_ = e.t_ms;
-        axes_[e.key] = e.value;
-        if (deadmen_.contains(e.key)) deadman_moved(e.key, was, down(e.key), e.t_ms);
+        if (!pads_.connected) break;
+        const bool was = pads_.down(e.key);
+        if (pads_.axis(e.key) != e.value) last_change_ = e.t_ms;
+        pads_.axes[e.key] = e.value;
+        if (mappings_.deadmen.contains(e.key)) deadman_moved(e.key, was, pads_.down(e.key), e.t_ms);
         break;
       }
       case T::kSuspend:
         end_enabled(Ending::kSuspend);
-        if (!suspended_) {
-          suspended_ = true;
-          // (One asked for during a reload waits for it: its frames' tick is not known here.)
-          suspend_tick_ = reloading(tick_of(e.t_ms)) ? std::nullopt : std::optional(tick_of(e.t_ms));
-          owed_ += options_.stop_frames;
-        }
+        loop_.suspend(e.t_ms);
         break;
       case T::kResume:
         end_enabled(Ending::kResume);
-        // A reload asked for while suspended is answered after the resume, as
-        // a SIGHUP to a stopped process is once it goes on.
-        if (suspended_ && reload_after_resume_) {
-          reload_tick_ = tick_of(e.t_ms);
-          reload_sent_ = 0;
-
-          owed_ += options_.stop_frames;
-        }
-        reload_after_resume_ = false;
-        suspended_ = false;
+        loop_.resume(e.t_ms);
         break;
       case T::kReload: {
         const mapping::Mapping* loaded = e.name.empty() ? nullptr : lookup_(e.name);
         end_enabled(e.name.empty()      ? Ending::kReloadSame
                     : loaded != nullptr ? Ending::kReloadGood
                                         : Ending::kReloadBad);
-        if (loaded != nullptr) add_possible(*loaded);
-        // Answered at once; while suspended, after the resume.
-        const std::int64_t tick = tick_of(e.t_ms);
-        if (reloading(tick)) {
-          // The files read again: its neutral frames count afresh from here.
-          owed_ += reload_sent_;
-          reload_tick_ = tick;
-          reload_sent_ = 0;
-        } else if (suspended_) {
-          reload_after_resume_ = true;
-        } else if (suspend_tick_ && tick < *suspend_tick_ + options_.stop_frames * options_.period_ms) {
-          // Resumed, but the suspend's neutral frames still go out: the loop
-          // answers the resume after them, and the reload after the resume.
-          reload_tick_ = *suspend_tick_ + options_.stop_frames * options_.period_ms;
-          reload_sent_ = 0;
-          owed_ += options_.stop_frames;
-        } else {
-          reload_tick_ = tick;
-          reload_sent_ = 0;
-          owed_ += options_.stop_frames;
-        }
+        if (mappings_.reload(loaded, loop_.reload_pending(e.t_ms))) stop_.released = true;  // a stop button unknown now
+        loop_.reload(e.t_ms);
         break;
       }
       case T::kStop:
         end_enabled(Ending::kStop);
-        stopped_ = true;
-        stop_tick_ = tick_of(e.t_ms);
-        owed_ += options_.stop_frames;
+        loop_.stop(e.t_ms);
         break;
       default: break;  // hats: the generator sends none; `end`
     }
-  }
-
-  // A reload sends its neutral frames from its tick on until the link took
-  // 3, or for as long as a stop may take when it refuses them.
-  [[nodiscard]] bool reloading(std::int64_t t) const {
-    return reload_tick_ && t >= *reload_tick_ && reload_sent_ < options_.stop_frames &&
-           t < *reload_tick_ + options_.stop_ticks * options_.period_ms;
   }
 
   // The supervisor's controller: driving needs it there (a script that
@@ -433,41 +231,24 @@ class SafetyOracle {
   // engine starts afresh), and its stop button latches as the operator's does.
   void apply_supervisor(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
-    switch (e.type) {
-      case T::kConnect:
-        end_enabled(Ending::kConnect);
-        sup_connected_ = true;
-        sup_connect_t_ = e.t_ms;
-        sup_buttons_.clear();
-        break;
-      case T::kDisconnect:
-        end_enabled(Ending::kDisconnect);
-        sup_connected_ = false;
-        sup_buttons_.clear();
-        break;
-      case T::kButton: {
-        if (!sup_connected_) break;
-        const bool was = sup_buttons_[e.key];
-        sup_buttons_[e.key] = e.value != 0;
-        if (e.key == sup_stop_ && e.value != 0 && !was && e.t_ms != sup_connect_t_) {
-          stop_pending_ = true;
-          ++coverage_.supervisor_stops;
-        }
-        break;
-      }
-      default: break;
+    if (e.type == T::kConnect || e.type == T::kDisconnect) {
+      end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
+      pads_.connect_supervisor(e.type == T::kConnect, e.t_ms);
+      stop_.released = true;
+    } else if (e.type == T::kButton && pads_.sup_connected) {
+      const bool was = pads_.sup_buttons[e.key];
+      pads_.sup_buttons[e.key] = e.value != 0;
+      if (e.key != mappings_.sup_stop) return;
+      const bool press = e.value != 0 && !was && e.t_ms != pads_.sup_connect_t;
+      stop_.pending = stop_.pending || press;
+      coverage_.supervisor_stops += press ? 1 : 0;
+      if (was && e.value == 0) stop_.released = true;
     }
-  }
-
-  [[nodiscard]] bool supervisor_stop_held() const {
-    if (!sup_stop_) return false;
-    const auto it = sup_buttons_.find(*sup_stop_);
-    return it != sup_buttons_.end() && it->second;
   }
 
   // A deadman pressed or released (button) or moved across its press point (trigger).
   void deadman_moved(input::InputKey key, bool was, bool now, std::int64_t t) {
-    if (now && !was && t != connect_t_ && !stop_latched_) {
+    if (now && !was && t != pads_.connect_t && !stop_.latched) {
       fresh_.insert(key);
       pressed_after_ = last_interruption_;
     }
@@ -478,118 +259,40 @@ class SafetyOracle {
   }
 
   [[nodiscard]] bool enabled() const {
-    if (!connected_ || !link_up_ || suspended_ || stopped_ || stop_latched_) return false;
-    if (supervised_ && !sup_connected_) return false;
-    return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return down(k); });
-  }
-
-  // A deadman down as the engine reads it: a button held, a trigger at half its travel (16384 of 32767) or past.
-  [[nodiscard]] bool down(input::InputKey key) const {
-    if (key.is_button()) return held(key);
-    const auto it = axes_.find(key);
-    return it != axes_.end() && it->second >= kTriggerPressed;
+    if (!pads_.connected || !loop_.link_up() || loop_.suspended() || loop_.stopped() || stop_.latched) return false;
+    if (supervised_ && !pads_.sup_connected) return false;
+    return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return pads_.down(k); });
   }
 
   [[nodiscard]] std::string not_enabled_reason() const {
-    if (stopped_) return "stopping";
-    if (stop_latched_) return "stopped by the stop button";
-    if (supervised_ && !sup_connected_) return "no supervisor's controller";
-    if (suspended_) return "suspended";
-    if (!link_up_) return "link down";
-    if (!connected_) return "no controller";
-    for (const auto k : deadmen_) {
-      if (held(k)) return "deadman held but not pressed since the last " + std::string(to_string(last_ending_));
-    }
-    return "deadman not held";
-  }
-
-  [[nodiscard]] bool held(input::InputKey key) const {
-    if (key.is_button()) {
-      const auto it = buttons_.find(key);
-      return it != buttons_.end() && it->second;
-    }
-    const auto it = axes_.find(key);
-    // The engine's threshold is 0.5 of the range; one step below it, to stay on the permissive side.
-    return it != axes_.end() && it->second >= 16383;
-  }
-
-  [[nodiscard]] bool armed(protocol::SignalId id) const {
-    const auto it = arms_.find(id);
-    if (it == arms_.end()) return false;
-    return std::any_of(it->second.begin(), it->second.end(), [this](input::InputKey k) { return held(k); });
-  }
-
-  // Motion: drive or pivot off centre, or any bit that is not selector-like (safety and drive_brake included).
-  [[nodiscard]] static std::optional<std::string> motion(const protocol::ControlState& s) {
-    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
-      const auto& sig = protocol::kSignals[i];
-      if (sig.kind == protocol::SignalKind::kCentred && s.values[i] != kNeutralCentre) {
-        return std::string(sig.name) + " = " + std::to_string(s.values[i]);
-      }
-      if (sig.is_bit() && sig.kind != protocol::SignalKind::kSelector && s.values[i] != 0) {
-        return std::string(sig.name) + " = 1";
-      }
-    }
-    return std::nullopt;
-  }
-
-  [[nodiscard]] bool link_up_at(std::int64_t t) const {
-    bool up = true;
-    for (const auto& e : script_) {
-      if (e.t_ms > t) break;
-      if (e.type == input::InputEvent::Type::kLinkUp) up = true;
-      if (e.type == input::InputEvent::Type::kLinkDown || e.type == input::InputEvent::Type::kLinkTaken) up = false;
-    }
-    return up;
+    if (loop_.stopped()) return "stopping";
+    if (stop_.latched) return "stopped by the stop button";
+    if (supervised_ && !pads_.sup_connected) return "no supervisor's controller";
+    if (loop_.suspended()) return "suspended";
+    if (!loop_.link_up()) return "link down";
+    if (!pads_.connected) return "no controller";
+    const auto held = [this](input::InputKey k) { return pads_.held(k); };
+    if (std::none_of(mappings_.deadmen.begin(), mappings_.deadmen.end(), held)) return "deadman not held";
+    return "deadman held but not pressed since the last " + std::string(to_string(last_ending_));
   }
 
   std::vector<input::InputEvent> script_;
   Lookup lookup_;
   Options options_;
+  LoopSchedule loop_;
+  PossibleMappings mappings_;
+  OraclePads pads_;
+  LayerRest rest_;
   std::size_t next_ = 0;
   std::int64_t end_tick_ = 0;
   std::int64_t last_t_ = -1;
-
-  std::set<input::InputKey> deadmen_;         ///< every possible mapping's
-  std::set<input::InputKey> common_deadmen_;  ///< the deadmen every possible mapping has (the stop's clearing)
-  std::map<protocol::SignalId, std::set<input::InputKey>> arms_;
-
-  static constexpr int kTriggerPressed = 16384;  ///< 0.5 of 32767, as the engine rounds it
-
-  std::optional<input::InputKey> estop_;     ///< the stop button every possible mapping has
-  std::optional<input::InputKey> sup_stop_;  ///< the supervisor's stop button every possible mapping has
   bool supervised_ = false;
-  bool sup_connected_ = false;
-  std::int64_t sup_connect_t_ = -1;
-  std::map<input::InputKey, bool> sup_buttons_;
-  std::optional<std::int64_t> timeout_ms_;
-  std::optional<int> panic_;  ///< the raw trigger value of the panic point
-  bool first_mapping_ = true;
-  bool stop_pending_ = false;  ///< pressed since the last tick
-  bool stop_latched_ = false;
-  std::int64_t latch_tick_ = 0;
-  std::int64_t last_change_ = 0;  ///< the last event that changed an input
-
-  bool connected_ = false;
-  std::int64_t connect_t_ = -1;
-  std::map<input::InputKey, bool> buttons_;
-  std::map<input::InputKey, int> axes_;
+  StopLatch stop_;
+  std::int64_t last_change_ = 0;     ///< the last event that changed an input
   std::set<input::InputKey> fresh_;  ///< deadmen pressed since the last ending event
   Ending last_ending_ = Ending::kStart;
   Ending last_interruption_ = Ending::kStart;
   Ending pressed_after_ = Ending::kStart;
-
-  bool link_up_ = true;  ///< replay's sink is there from the start
-  bool suspended_ = false;
-  std::optional<std::int64_t> suspend_tick_;  ///< the tick of the last suspend's first neutral frame
-  std::optional<std::int64_t> reload_tick_;
-  int reload_sent_ = 0;               ///< its neutral frames delivered so far
-  bool reload_after_resume_ = false;  ///< a reload asked for while suspended
-  bool stopped_ = false;
-  std::int64_t stop_tick_ = 0;
-  int owed_ = 0;  ///< neutral frames of suspends, reloads and a stop still to go out
-  int stop_frames_on_time_ = 0;
-
   OracleCoverage coverage_;
 };
 

@@ -80,7 +80,23 @@ inline SimulationOutcome simulate(
       SafetyOracle::Options{.weapons = weapons, .code = code});
   run::ReplayOptions options{.engine = {weapons, code}};
   options.load = [&mappings](const std::string& file) { return mappings.load(file); };
-  options.observe = observe;
+  // The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle missed).
+  std::int64_t gated = 0;
+  std::string gate_fault;
+  // And what the loop says is what it sent: a frame the link took carries safety = 1 exactly when the
+  // state after its tick is "enabled" (the screen, the pad's light and the status read that state).
+  std::string said;
+  options.observe = [&](const run::TickReport& r) {
+    observe(r);
+    if (r.sent) ++gated;
+    if (!r.gate_fault.empty() && gate_fault.empty())
+      gate_fault = "the frame gate tripped at t=" + std::to_string(r.t_ms) + ": " + r.gate_fault;
+    const bool safety = protocol::read_signals(r.data)[protocol::signal_id("safety")] != 0;
+    if (r.sent && r.result == link::SendResult::kSent && safety != r.enabled() && said.empty()) {
+      said = "the loop said \"" + std::string(run::to_string(r.state)) + "\" at t=" + std::to_string(r.t_ms) +
+             " with safety = " + (safety ? "1" : "0") + " in the frame it sent";
+    }
+  };
   SimulationOutcome out;
   try {
     run::replay(player, mapping::Engine(valid, options.engine), options,
@@ -92,8 +108,11 @@ inline SimulationOutcome simulate(
   } catch (const std::exception& e) {
     out.violation = std::string("replay threw: ") + e.what();
   }
+  if (out.violation.empty()) out.violation = gate_fault;
+  if (out.violation.empty()) out.violation = said;
   if (out.violation.empty()) out.violation = oracle.finish();
   out.coverage = oracle.coverage();
+  out.coverage.gated = gated;
   return out;
 }
 

@@ -16,6 +16,9 @@
 namespace andros::run {
 namespace {
 
+/// What the frame gate holds the stand-in's frames to: its code, no weapons.
+const FrameRules kRules{false, 0x3C};
+
 /// A stand-in for the mapping engine: drive 200 while button a is held,
 /// pressed after the last restart.
 class PressToDrive final : public FrameSource {
@@ -61,7 +64,7 @@ struct OnSink {
   PressToDrive frames;
   std::vector<protocol::Frame> got;
   link::SinkLink link{[this](std::int64_t, const protocol::Frame& f) { got.push_back(f); }};
-  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
+  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = kRules}};
 };
 
 std::string write_script(const std::string& text) {
@@ -84,7 +87,7 @@ struct ScriptOnPty {
   PressToDrive frames;
   link::SerialLink link{pty.path, 9600};
   RealClock clock;
-  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000}};
+  Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = kRules}};
 };
 
 TEST(Bridge, PlaysAScriptThenEndsOnNeutralFrames) {
@@ -119,7 +122,7 @@ std::vector<TickReport> run_script(const std::string& text, PressToDrive& frames
   std::filesystem::remove(path);
   VirtualClock clock;
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
-  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = kRules});
   std::vector<TickReport> ticks;
   bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
   return ticks;
@@ -315,7 +318,7 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDownAndSaysNoLink) {
   Idle input;
   PressToDrive frames;
   link::SerialLink link("/nonexistent/andros-port", 9600);
-  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 50'000});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 50'000, .rules = kRules});
   int ticks = 0;
   bridge.run([&] { return ticks >= 5; },
              [&](const TickReport& r) {
@@ -349,7 +352,7 @@ TEST(Bridge, AfterAStallSkipsMissedTicksInsteadOfBursting) {
   Idle input;
   StallOnce frames(clock);
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
-  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = kRules});
   std::vector<TickReport> ticks;
   bridge.run([&] { return ticks.size() >= 6; },
              [&](const TickReport& r) {
@@ -375,7 +378,7 @@ TEST(Bridge, ReportsWhetherTheNeutralFramesReachedTheLink) {
 
   // A device gone: nothing could be handed over, and the caller is told.
   link::SerialLink gone("/nonexistent/andros-port", 9600);
-  Bridge lost(on.clock, on.input, on.frames, gone, BridgeOptions{.rate_millihertz = 50'000});
+  Bridge lost(on.clock, on.input, on.frames, gone, BridgeOptions{.rate_millihertz = 50'000, .rules = kRules});
   ticks = 0;
   lost.run([&] { return ticks >= 2; }, [&](const TickReport&) { ++ticks; });
   EXPECT_FALSE(lost.shutdown_report().ok());

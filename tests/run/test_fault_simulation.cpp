@@ -7,10 +7,17 @@
 // bytes. A failure prints the seed and the whole script, and writes it where
 // `andros-bridge replay` can play it again.
 //
+// The mappings are the simulation's own (tests/data/simulation/mappings/):
+// every shipped robot's with a centre trim, an enable timeout and a
+// supervisor's stop, and on every other seed a three-position trigger deadman
+// with a panic point; the oracle's own tests are in test_oracle.cpp.
+//
 // Seeds 1..ANDROS_SIM_SCRIPTS (10,000 unless the build says otherwise); the
 // environment picks other ranges: ANDROS_SIM_SEED_BASE=N (the first seed),
 // ANDROS_SIM_SCRIPTS=M (how many). ANDROS_SIM_MAX_REPORTED=K prints up to K
-// failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop.
+// failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop,
+// ANDROS_SIM_COUNT_ALL=1 runs every seed however many fail and says how many
+// did (scripts/mutation_test.sh).
 // ANDROS_SIM_THREADS=T runs the seeds on T threads (one per core, at most 4):
 // seed s on thread s % T, each with its own mappings, the coverage and the
 // failures gathered at the end, so that what is checked and printed does not
@@ -62,12 +69,18 @@ class Library : public test::MappingCache {
   Library() {
     for (const auto robot : protocol::kRobotTypes) {
       const auto file = mapping::find_robot_mapping(robot, {ANDROS_MAPPINGS_DIR});
-      shipped_.push_back(file.string());
+      // The shipped mapping with a trim, a timeout and a supervisor's stop.
+      const std::string own = ANDROS_TEST_DATA_DIR "/simulation/mappings/" + file.filename().string();
+      buttons_.push_back(own);
+      targets_.good.push_back(own);
       targets_.good.push_back(file.string());
     }
-    // Issue 16's safety keys (a three-position trigger deadman, a stop button, an enable timeout).
-    shipped_.push_back(ANDROS_TEST_DATA_DIR "/mappings/safety.yaml");
-    targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/safety.yaml");
+    // Issue 16's safety keys (a three-position trigger deadman, a stop button, an enable timeout), and
+    // a trigger deadman with a trim and a supervisor's stop.
+    for (const char* trigger : {"/mappings/safety.yaml", "/simulation/mappings/trigger.yaml"}) {
+      triggers_.push_back(ANDROS_TEST_DATA_DIR + std::string(trigger));
+      targets_.good.push_back(triggers_.back());
+    }
     // A layout whose weapons arm with RB, not LT, and one with another rest rule.
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/core.yaml");
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/rest.yaml");
@@ -75,11 +88,16 @@ class Library : public test::MappingCache {
     targets_.bad.push_back(ANDROS_TEST_DATA_DIR "/mappings/missing.yaml");
   }
 
-  [[nodiscard]] const std::vector<std::string>& shipped() const { return shipped_; }
+  /// A seed's mapping: a trigger deadman with a panic point on every other seed, a button on the rest.
+  [[nodiscard]] const std::string& mapping_for(std::uint64_t seed) const {
+    const auto& list = seed % 2 == 0 ? triggers_ : buttons_;
+    return list[(seed / 2) % list.size()];
+  }
   [[nodiscard]] const test::ReloadTargets& targets() const { return targets_; }
 
  private:
-  std::vector<std::string> shipped_;
+  std::vector<std::string> buttons_;
+  std::vector<std::string> triggers_;
   test::ReloadTargets targets_;
 };
 
@@ -113,6 +131,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", ANDROS_SIM_SCRIPTS);
   const auto max_reported = from_environment("ANDROS_SIM_MAX_REPORTED", 5);  // failures printed before it gives up
   const bool tracing = from_environment("ANDROS_SIM_TRACE", 0) != 0;
+  const bool count_all = from_environment("ANDROS_SIM_COUNT_ALL", 0) != 0;
   const Bridge::Observer observe = tracing ? trace : [](const TickReport&) {};
   const std::uint64_t cores = std::clamp<std::uint64_t>(std::thread::hardware_concurrency(), 1, 4);
   const std::uint64_t threads = tracing ? 1 : std::max<std::uint64_t>(1, from_environment("ANDROS_SIM_THREADS", cores));
@@ -122,20 +141,25 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   struct Worker {
     test::OracleCoverage coverage;
     std::vector<std::pair<std::uint64_t, std::string>> failures;
+    std::uint64_t failed = 0;  ///< seeds that broke a rule
   };
   std::vector<Worker> workers(threads);
   auto work = [&](std::uint64_t k) {
     Library library;
     Worker& w = workers[k];
-    for (std::uint64_t seed = first + k; seed < first + count && w.failures.size() < max_reported; seed += threads) {
+    for (std::uint64_t seed = first + k; seed < first + count && (count_all || w.failures.size() < max_reported);
+         seed += threads) {
       test::Random rng(seed);
       const auto script = test::fault_script(rng, library.targets());
-      const std::string& mapping_file = library.shipped()[seed % library.shipped().size()];
+      const std::string& mapping_file = library.mapping_for(seed);
       for (const bool weapons : {false, true}) {
         const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
         w.coverage += out.coverage;
         if (!out.violation.empty()) {
-          w.failures.emplace_back(seed, describe_failure(seed, mapping_file, weapons, script, out.violation));
+          ++w.failed;
+          if (w.failures.size() < max_reported) {
+            w.failures.emplace_back(seed, describe_failure(seed, mapping_file, weapons, script, out.violation));
+          }
           break;
         }
       }
@@ -148,14 +172,19 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
 
   test::OracleCoverage coverage;
   std::vector<std::pair<std::uint64_t, std::string>> failed;
+  std::uint64_t seeds_failed = 0;
   for (auto& w : workers) {
     coverage += w.coverage;
+    seeds_failed += w.failed;
     failed.insert(failed.end(), w.failures.begin(), w.failures.end());
   }
   std::sort(failed.begin(), failed.end());
   if (failed.size() > max_reported) failed.resize(max_reported);
   for (const auto& [seed, text] : failed) ADD_FAILURE() << text;
   const std::uint64_t failures = failed.size();
+  std::printf("fault simulation: %llu of %llu seeds broke a rule%s\n", static_cast<unsigned long long>(seeds_failed),
+              static_cast<unsigned long long>(count),
+              count_all || seeds_failed == 0 ? "" : " (at most the first few counted)");
   const std::uint64_t seed = failed.empty() ? first + count : failed.back().first + 1;
   std::string endings;
   for (std::size_t i = 0; i < coverage.motion_after.size(); ++i) {
@@ -167,14 +196,18 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
       "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-      "%lld frames with a supervisor's controller\n",
+      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
       static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
       static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-      static_cast<long long>(coverage.supervised_frames));
+      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated));
+  std::printf(
+      "fault simulation: %lld frames of a mapping with a centre trim, %lld enabled frames with drive or pivot "
+      "held at it by the rest rule\n",
+      static_cast<long long>(coverage.trimmed), static_cast<long long>(coverage.rest_held));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -192,6 +225,9 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.timeouts, 0);
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
+  EXPECT_GT(coverage.gated, coverage.frames);
+  EXPECT_GT(coverage.trimmed, coverage.frames / 2);
+  EXPECT_GT(coverage.rest_held, 0);  // the gate saw every frame, those the link refused too
   for (const auto after : {Ending::kStopButton, Ending::kPanic, Ending::kTimeout}) {
     EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
   }
@@ -217,102 +253,6 @@ TEST(FaultSimulation, FoundScripts) {
       EXPECT_EQ(out.violation, "") << file.filename().string() << (weapons ? " with --weapons" : "");
     }
   }
-}
-
-// The oracle itself, on frames made by hand: each rule, broken once, is named.
-class OracleTest : public ::testing::Test {
- protected:
-  OracleTest() : valid_(library_.load(mapping::find_robot_mapping("HD1", {ANDROS_MAPPINGS_DIR}).string())) {}
-
-  test::SafetyOracle oracle(const std::string& script, bool weapons = false) {
-    return test::SafetyOracle(
-        *valid_, input::parse_event_script(script, "oracle.events"),
-        [this](const std::string& f) { return library_.find(f); },
-        test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
-  }
-  static protocol::DataBytes frame(std::initializer_list<std::pair<protocol::SignalId, int>> set = {}) {
-    protocol::ControlState s;
-    s[protocol::signal_id("drive")] = 128;
-    s[protocol::signal_id("pivot")] = 128;
-    for (const auto& [id, v] : set) s[id] = static_cast<std::uint8_t>(v);
-    return protocol::FrameBuilder(kCode).build(s);
-  }
-  static protocol::DataBytes moving() {
-    return frame({{protocol::signal_id("safety"), 1},
-                  {protocol::signal_id("drive_brake"), 1},
-                  {protocol::signal_id("drive"), 255}});
-  }
-
-  Library library_;
-  const mapping::ValidMapping& valid_;
-};
-
-constexpr const char* kDriving = "0 connect\n20 button leftshoulder 1\n30 axis lefty -32768\n";
-
-TEST_F(OracleTest, AllowsMotionAfterAFreshPress) {
-  auto o = oracle(std::string(kDriving) + "70 end\n");
-  EXPECT_EQ(o.frame(0, frame()), "");
-  EXPECT_EQ(o.frame(40, moving()), "");
-  EXPECT_EQ(o.frame(80, moving()), "");
-  EXPECT_EQ(o.finish(), "");
-}
-
-TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldThroughALinkFlap) {
-  auto o = oracle(std::string(kDriving) + "100 link down\n110 link up\n400 end\n");
-  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
-  EXPECT_EQ(o.frame(120, moving()),
-            "safety = 1 while not enabled (deadman held but not pressed since the last link up)");
-}
-
-TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldAtConnect) {
-  auto o = oracle("0 connect\n0 button leftshoulder 1\n400 end\n");
-  EXPECT_NE(o.frame(0, moving()), "");
-}
-
-TEST_F(OracleTest, RefusesAFrameWhileTheLinkIsDown) {
-  auto o = oracle("0 connect\n30 link down\n400 end\n");
-  ASSERT_EQ(o.frame(0, frame()), "");
-  EXPECT_EQ(o.frame(40, frame()), "delivered while the link is down (script)");
-}
-
-TEST_F(OracleTest, RefusesAMissingFrame) {
-  auto o = oracle("0 connect\n400 end\n");
-  ASSERT_EQ(o.frame(0, frame()), "");
-  EXPECT_NE(o.frame(80, frame()).find("no frame at t=40"), std::string::npos);
-}
-
-TEST_F(OracleTest, RefusesFramesPastASuspendsNeutralOnes) {
-  auto o = oracle("0 connect\n100 suspend\n400 end\n");
-  for (const std::int64_t t : {0, 40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, frame()), "") << t;
-  EXPECT_EQ(o.frame(240, frame()), "delivered while suspended, after its neutral frames");
-}
-
-TEST_F(OracleTest, RefusesMotionDuringAReload) {
-  auto o =
-      oracle(std::string(kDriving) + "100 reload\n110 button leftshoulder 0\n115 button leftshoulder 1\n400 end\n");
-  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
-  EXPECT_NE(o.frame(120, moving()).find("a reload's neutral frame"), std::string::npos);
-}
-
-TEST_F(OracleTest, WantsAStopsThreeNeutralFrames) {
-  auto o = oracle("0 connect\n100 stop\n400 end\n");
-  for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(o.frame(t, frame()), "") << t;
-  EXPECT_NE(o.finish().find("got 2 of its 3"), std::string::npos);
-}
-
-TEST_F(OracleTest, RefusesWeaponsWithoutArmingOrWithoutTheOption) {
-  const auto fire = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("weapon_1"), 1}});
-  auto off = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n");
-  ASSERT_EQ(off.frame(0, frame()), "");
-  ASSERT_EQ(off.frame(40, frame()), "");
-  EXPECT_EQ(off.frame(80, fire), "weapon_1 = 1 without --weapons");
-  auto unarmed = oracle(std::string(kDriving) + "400 end\n", true);
-  ASSERT_EQ(unarmed.frame(0, frame()), "");
-  EXPECT_EQ(unarmed.frame(40, fire), "weapon_1 = 1 without its arming input held");
-  auto armed = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n", true);
-  ASSERT_EQ(armed.frame(0, frame()), "");
-  ASSERT_EQ(armed.frame(40, frame()), "");
-  EXPECT_EQ(armed.frame(80, fire), "");
 }
 
 }  // namespace

@@ -19,10 +19,10 @@ using E = OpEvent;
 
 constexpr std::array kStates = {S::kNoLink,  S::kNoController, S::kNotEnabled, S::kEnabled,
                                 S::kStopped, S::kSuspended,    S::kReloading,  S::kStopping};
-constexpr std::array kEvents = {E::kLinkUp,         E::kLinkDown,     E::kLinkTaken,   E::kControllerUp,
-                                E::kControllerDown, E::kFreshPress,   E::kRelease,     E::kPanic,
-                                E::kEnableTimeout,  E::kOperatorStop, E::kStopCleared, E::kReloadBegin,
-                                E::kReloadDone,     E::kSuspend,      E::kResume,      E::kShutdown};
+constexpr std::array kEvents = {E::kLinkUp,     E::kLinkDown,    E::kLinkTaken,   E::kControllerUp,  E::kControllerDown,
+                                E::kFreshPress, E::kRelease,     E::kPanic,       E::kEnableTimeout, E::kOperatorStop,
+                                E::kGateTrip,   E::kStopCleared, E::kReloadBegin, E::kReloadDone,    E::kSuspend,
+                                E::kResume,     E::kShutdown};
 
 /// The conditions a machine can be in while in `state`: link up or not, controller up or not.
 struct Start {
@@ -97,8 +97,8 @@ TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
                        : row.event == E::kControllerDown ? false
                                                          : start.controller;
       // A stop latched before the row (or by it) still holds after it, unless the row clears it.
-      const bool latched =
-          (start.state == S::kStopped || row.event == E::kOperatorStop) && row.event != E::kStopCleared;
+      const bool latched = (start.state == S::kStopped || row.event == E::kOperatorStop || row.event == E::kGateTrip) &&
+                           row.event != E::kStopCleared;
       const S want = row.settle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
       EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);

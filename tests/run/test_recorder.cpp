@@ -83,7 +83,7 @@ std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWri
   std::optional<RecordingInput> recorded;
   if (writer != nullptr) recorded.emplace(script, recorder.emplace(*writer));
   input::InputSource& input = recorded ? static_cast<input::InputSource&>(*recorded) : script;
-  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
   bridge.run([] { return false; },
              [&](const TickReport& r) {
                if (recorder) recorder->observe(r);
@@ -216,7 +216,7 @@ struct RecordedRun {
     Recorder recorder(writer);
     recorder.header("test", "2024-05-01T12:00:00+0200", 1, "bench", settings, link.status());
     RecordingInput input(script, recorder);
-    Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000});
+    Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
 
     int polls = 0;
     int reload_ticks = 0;
@@ -230,7 +230,7 @@ struct RecordedRun {
       auto [next, s] = engine_for(kMappings + "/f6a.yaml", true);
       frames.replace(std::move(next));
       reloaded = s;
-      return ReloadOutcome{true, "reloaded"};
+      return ReloadOutcome{true, "reloaded", true};
     };
     bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const TickReport& r) {
       recorder.observe(r);

@@ -58,7 +58,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"speed_levels", "speed.yaml"},
                       // The supervisor's controller: its loss, its absence at the start, its weapons consent.
                       Case{"supervisor_loss", "core.yaml"}, Case{"supervisor_late", "core.yaml"},
-                      Case{"supervisor_consent", "supervisor.yaml", true}),
+                      Case{"supervisor_consent", "supervisor.yaml", true},
+                      // A stop outlives its own tick; a panic ends only with a full release.
+                      Case{"stop_tapped_within_a_tick", ANDROS_MAPPINGS_DIR "/hd1.yaml"},
+                      Case{"panic_back_to_the_middle", "safety.yaml"},
+                      // Enabled after a rebase is a change of meaning, whatever the engine stepped meanwhile.
+                      Case{"link_back_stick_pushed", "core.yaml"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace

@@ -152,12 +152,15 @@ TEST(Session, RecordsReadBack) {
        {record::header(), record::program("1.0"), record::started("2024-05-01T12:00:00+0200", 42, "bench"),
         record::settings(settings), record::link(-1, link::LinkStatus{}), record::frame(r, 2),
         record::request(280, Request::kSuspend), record::pause(1300), record::layer(280, "arm"),
-        record::state(280, OpState::kNotEnabled), record::input_end(400),
-        record::end(400, 10, 9, "end of the input")}) {
+        record::state(280, OpState::kNotEnabled), record::gate(280, "drive = 140 while not enabled (neutral is 128)"),
+        record::input_end(400), record::end(400, 10, 9, "end of the input")}) {
     text += chain.line(p);
   }
   const auto s = read_session(dir.write("r.andros-session", text));
   EXPECT_EQ(s.version, "1.0");
+  ASSERT_EQ(s.gate_trips.size(), 1u);  // the frame gate's record of its own
+  EXPECT_EQ(s.gate_trips[0].t_ms, 280);
+  EXPECT_EQ(s.gate_trips[0].text, "drive = 140 while not enabled (neutral is 128)");
   EXPECT_EQ(s.started, "2024-05-01T12:00:00+0200");
   EXPECT_EQ(s.pid, 42);
   EXPECT_EQ(s.host, "bench");

@@ -188,6 +188,28 @@ TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
   EXPECT_EQ(count(text, "info: weapons layer off\n"), 1U) << text;
 }
 
+TEST(RunStatusBoard, AFrameGateTripIsAnInternalErrorLoggedAndCounted) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  board.observe(tick(40));
+  auto r = tick(80);
+  r.state = run::OpState::kStopped;
+  r.gate_fault = "drive = 140 while not enabled (neutral is 128)";
+  r.gate_trips = 1;
+  board.observe(r);
+  r.t_ms = 120;
+  r.gate_fault.clear();  // the next tick: its frame passed
+  board.observe(r);
+  EXPECT_EQ(board.status().gate_trips, 1);
+  const auto text = log.text();
+  EXPECT_EQ(count(text,
+                  "error: internal error: the frame gate stopped a frame that broke a safety rule (drive = 140 "
+                  "while not enabled (neutral is 128)): a neutral frame was sent instead, and the bridge is "
+                  "stopped\n"),
+            1U)
+      << text;
+}
+
 TEST(RunStatusBoard, TheSpeedLevelIsShownAndLoggedAtTheStartAndOnEachChange) {
   const LogCapture log;
   RunStatusBoard board(RunStatus{});

@@ -71,6 +71,11 @@ class RestRule {
   /// each input whose meaning changed by moving its `seen` count up to now.
   void update(const input::InputState& input, int layer, bool enabled, std::map<input::InputKey, std::uint32_t>& seen);
 
+  /// The engine starts afresh (a rebase): the next enabled update is a
+  /// change of meaning for every input, as becoming enabled is, whatever the
+  /// engine's own steps while the loop sent neutral frames said.
+  void restart() { enabled_ = false; }
+
   /// After the speed level changed (enabled, after update()): every axis
   /// driving drive or pivot in `layer` that is not at rest is held back.
   void rescale(const input::InputState& input, int layer);

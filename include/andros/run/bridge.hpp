@@ -20,6 +20,7 @@
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/protocol/frame.hpp"
+#include "andros/run/frame_gate.hpp"
 #include "andros/run/operating_state.hpp"
 #include "andros/timing/tick_schedule.hpp"
 
@@ -73,6 +74,10 @@ struct TickReport {
   std::string supervisor;             ///< its name (may be empty)
   mapping::EngineStatus engine;       ///< after this tick's step (the last step's when none ran)
   link::LinkStatus link;              ///< after this tick's send
+  /// The frame the loop chose broke a safety rule: which (data is then the
+  /// frame gate's neutral one, and the state stopped). Empty: it passed.
+  std::string gate_fault;
+  std::int64_t gate_trips = 0;  ///< frames the gate replaced since the start
 
   [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
@@ -88,6 +93,8 @@ struct BridgeOptions {
   /// the last frame, as replay has it (docs/event-scripts.md; a script's `stop` still
   /// gives them).
   bool neutral_tail_at_end = true;
+  /// What the frame gate holds every frame to (the run's code and weapons setting).
+  FrameRules rules;
 };
 
 /// What the world around the loop asks of it, read at each tick.
@@ -101,8 +108,9 @@ enum class Request : std::uint8_t {
 
 /// How a reload ended.
 struct ReloadOutcome {
-  bool ok = false;      ///< the new settings are in place; false: the old ones stay
-  std::string message;  ///< why not, when not
+  bool ok = false;       ///< the new settings are in place; false: the old ones stay
+  std::string message;   ///< why not, when not
+  bool weapons = false;  ///< ok: whether the settings now in place enable weapons (the frame gate's rule)
 };
 
 struct RunControl {
@@ -164,8 +172,8 @@ class Bridge {
   void begin_reload(const RunControl& control, const std::string& mapping);
   /// After the engine's step: a stop button, the panic, the timeout, the deadman through the machine.
   void answer_engine();
-  /// Sends the frame, answers what the link did, reports.
-  link::SendResult send(const protocol::DataBytes& data, const Observer& observe);
+  /// The frame through the gate, then to the link; answers what the link did, reports.
+  link::SendResult send(const protocol::DataBytes& offered, const Observer& observe);
   /// A stop's, suspend's or reload's neutral frames: counted from start_sequence().
   void start_sequence();
   [[nodiscard]] bool sequence_done() const;
@@ -187,6 +195,7 @@ class Bridge {
   BridgeOptions options_;
   timing::TickSchedule schedule_;
   OperatingState machine_;
+  FrameGate gate_;  ///< the second channel: every frame offered to the link passes it
   input::InputState state_;
   mapping::EngineStatus engine_status_;  ///< the last step's
   ShutdownReport shutdown_report_;

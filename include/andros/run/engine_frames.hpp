@@ -13,8 +13,9 @@ namespace andros::run {
 std::unique_ptr<FrameSource> make_engine_frames(mapping::Engine engine);
 
 /// The run loop's frame source, whose engine a reload replaces. Everything
-/// is called on the loop's thread.
-class ReloadableFrames final : public FrameSource {
+/// is called on the loop's thread. (Not final: the tests wrap an engine in it
+/// to inject faults, tests/support/faulty_frames.hpp.)
+class ReloadableFrames : public FrameSource {
  public:
   explicit ReloadableFrames(std::unique_ptr<FrameSource> inner) : inner_(std::move(inner)) {}
   void replace(std::unique_ptr<FrameSource> inner) { inner_ = std::move(inner); }

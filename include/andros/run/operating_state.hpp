@@ -40,6 +40,7 @@ enum class OpEvent : std::uint8_t {
   kPanic,           ///< the trigger deadman squeezed past `deadman_panic`: off until fully released
   kEnableTimeout,   ///< enabled with no input change for `enable_timeout`
   kOperatorStop,    ///< a stop button pressed (`estop`, the supervisor's `stop`): latches
+  kGateTrip,        ///< the frame gate replaced a frame that broke a safety rule (frame_gate.hpp): latches
   kStopCleared,     ///< stopped, and now the stop buttons and the deadman are all released
   kReloadBegin,     ///< SIGHUP, or a script's `reload`
   kReloadDone,      ///< the reload's outcome is in (applied or refused)
@@ -77,14 +78,14 @@ class OperatingState {
   [[nodiscard]] bool motion_allowed() const { return state_ == OpState::kEnabled; }
   [[nodiscard]] bool link_up() const { return link_up_; }
   [[nodiscard]] bool controller_up() const { return controller_up_; }
-  /// A stop by the operator is latched (the state is kStopped, or will be
-  /// once a suspend or reload under way settles).
+  /// A stop by the operator (or the frame gate) is latched (the state is
+  /// kStopped, or will be once a suspend or reload under way settles).
   [[nodiscard]] bool stop_latched() const { return stop_latched_; }
 
   /// Applies one event. An event with no row for the current state changes
   /// nothing but the conditions it reports: the link, the controller, and the
-  /// stop latch (kOperatorStop latches it in every state but kStopping,
-  /// kStopCleared clears it).
+  /// stop latch (kOperatorStop and kGateTrip latch it in every state but
+  /// kStopping, kStopCleared clears it).
   Effect on(OpEvent event);
 
   /// The whole table, for docs and tests.

@@ -91,6 +91,8 @@ std::string reload(std::int64_t t_ms, const ReloadOutcome& outcome);
 /// the tick's place changes; the ticks between repeat the last one.
 std::string frame(const TickReport& report, std::int64_t gap);
 std::string state(std::int64_t t_ms, OpState state);
+/// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
+std::string gate(std::int64_t t_ms, std::string_view fault);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
@@ -165,6 +167,7 @@ struct Session {
   std::vector<ReloadRecord> reloads;
   std::vector<FrameRecord> frames;
   std::vector<StateRecord> states;
+  std::vector<TimedText> gate_trips;  ///< frames the frame gate replaced: when, and the rule they broke
   std::vector<TimedText> layers;
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;

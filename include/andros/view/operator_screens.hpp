@@ -88,6 +88,7 @@ struct RunStatus {
   std::optional<link::VehicleStatus> vehicle;  ///< the simulated vehicle's view
   std::string recorder;                        ///< the flight recorder: its session, or what it dropped; "" when off
   bool recorder_failing = false;               ///< records were dropped: the session is incomplete
+  std::int64_t gate_trips = 0;                 ///< frames the frame gate replaced (each an internal error)
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }

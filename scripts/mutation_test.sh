@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The fault simulation's own mutation score (docs/testing.md, "Mutation
+# test"): each of the one-line mutations of the safety logic below, one at a
+# time, is applied to its file, only the simulation test is rebuilt
+# (andros_simulation_tests in $BUILD_DIR, default build/, configured by
+# scripts/build.sh), its seeds run with every failing seed counted
+# (ANDROS_SIM_COUNT_ALL=1), and the file is put back. Prints, per mutation,
+# how many seeds of how many caught it. The simulation alone should catch
+# every one, each by many seeds.
+#
+# Not part of scripts/test.sh: 13 rebuilds and 14 runs of 10,000 seeds.
+# ANDROS_SIM_SCRIPTS=N runs N seeds instead; MUTATIONS="1 5" only those.
+# Exit 1 when a mutation is caught by no seed, when the unmutated code fails
+# a seed, or when a mutation's text is no longer in its file (the code moved:
+# update its line here). A run cut short puts the file back, but an object
+# compiled from the mutation may then be newer than it: touch the four files
+# before the next build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${BUILD_DIR:-build}
+seeds=${ANDROS_SIM_SCRIPTS:-10000}
+
+# name | file | perl substitution (applied to the whole file: -0)
+mutations=(
+  "a stop cleared in the tick it latched|src/run/bridge.cpp|s/latched_tick_ < tick_/latched_tick_ <= tick_/"
+  "a panic latch cleared without the full release|src/mapping/engine.cpp|s/panic_latched_ && travel < kDeadmanFullyReleased/panic_latched_ \&\& travel < *mapping_->deadman_panic/"
+  "neutral drive and pivot taken from the trim|src/mapping/safety.cpp|s/if \(!ctx.enabled\) v = protocol::kNeutralCentre;/if (!ctx.enabled) v = static_cast<std::uint8_t>(ctx.center);/"
+  "the opposing-pair interlock removed|src/mapping/safety.cpp|s/asked\[\*partner\] != 0\) state.values\[i\] = 0;/asked[*partner] != 0 \&\& false) state.values[i] = 0;/"
+  "the rest rule skipped when a layer is left|src/mapping/safety.cpp|s/const bool changed = edge \|\| was == before.end\(\) \|\| !same_bindings\(was->second, readers\);/const bool changed = edge || (layer >= layer_ \&\& (was == before.end() || !same_bindings(was->second, readers)));/"
+  "a resume (SIGCONT) while enabled without a rebase|src/run/operating_state.cpp|s/settle\(S::kEnabled, E::kResume, true\)/settle(S::kEnabled, E::kResume, false)/"
+  "the state machine reading last tick's engine status|src/run/bridge.cpp|s/(      engine_status_ = std::move\(step.status\);\n)((?:.*\n){2})(      answer_engine\(\);\n)/\$2\$3\$1/"
+  "a stop pressed again while stopped not taken|src/run/bridge.cpp|s/if \(!frames_.take_stop\(state_\) && latched_tick_/if (latched_tick_/"
+  "a deadman held at connect taken for a fresh press|src/mapping/engine.cpp|s/input.button\(key\).presses > deadman_base_/input.button(key).presses >= deadman_base_/"
+  "a weapon armed without its arming input held|src/mapping/engine.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && rest_.consent\(\);/const bool arm = b.arm \&\& rest_.consent();/"
+  "a link regained without a rebase|src/run/operating_state.cpp|s/settle\(S::kNoLink, E::kLinkUp, true\)/settle(S::kNoLink, E::kLinkUp, false)/"
+  "the enable timeout never falls due|src/mapping/engine.cpp|s/if \(mapping_->enable_timeout_ms && now_ms - last_activity_ms_/if (false \&\& mapping_->enable_timeout_ms \&\& now_ms - last_activity_ms_/"
+  "the supervisor's stop button ignored|src/mapping/engine.cpp|s/stop = stop \|\| b.down \|\| b.presses > stop_presses_;/stop = stop || (false \&\& (b.down || b.presses > stop_presses_));/"
+)
+
+[[ -f $build_dir/CMakeCache.txt ]] || { echo "no build in $build_dir: run scripts/build.sh first" >&2; exit 1; }
+backup=$(mktemp -d)
+restore() {
+  for f in "$backup"/*; do
+    [[ -e $f ]] || continue
+    cp "$f" "$(tr '%' '/' <<<"${f##*/}")"
+  done
+  rm -rf "$backup"
+}
+trap restore EXIT
+
+run_simulation() {  # prints how many seeds broke a rule
+  cmake --build "$build_dir" --target andros_simulation_tests >/dev/null
+  ANDROS_SIM_COUNT_ALL=1 ANDROS_SIM_MAX_REPORTED=0 ANDROS_SIM_SCRIPTS=$seeds \
+    "$build_dir/tests/andros_simulation_tests" --gtest_filter='FaultSimulation.RandomScriptsWithFaultsKeepTheSafetyRules' |
+    sed -n 's/^fault simulation: \([0-9]*\) of [0-9]* seeds broke a rule.*/\1/p'
+}
+
+status=0
+baseline=$(run_simulation)
+printf '%-56s %s\n' "mutation" "seeds that caught it (of $seeds)"
+printf '%-56s %s\n' "(none: the code as it is)" "$baseline"
+[[ $baseline == 0 ]] || status=1
+n=0
+for m in "${mutations[@]}"; do
+  n=$((n + 1))
+  IFS='|' read -r name file expr <<<"$m"
+  if [[ -n ${MUTATIONS:-} && " $MUTATIONS " != *" $n "* ]]; then continue; fi
+  saved="$backup/$(tr '/' '%' <<<"$file")"
+  cp "$file" "$saved"
+  perl -0pi -e "$expr" "$file"
+  if cmp -s "$file" "$saved"; then
+    printf '%2d %-53s %s\n' "$n" "$name" "NOT APPLIED: its text is no longer in $file"
+    status=1
+    continue
+  fi
+  caught=$(run_simulation || true)
+  cp "$saved" "$file"
+  rm "$saved"
+  printf '%2d %-53s %s\n' "$n" "$name" "${caught:-the build failed}"
+  [[ ${caught:-0} -gt 0 ]] || status=1
+done
+cmake --build "$build_dir" --target andros_simulation_tests >/dev/null  # the code as it is, again
+exit $status

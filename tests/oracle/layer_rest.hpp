@@ -1,0 +1,101 @@
+#pragma once
+// The rest rule for drive and pivot in the fault simulation's oracle
+// (safety_oracle.hpp), layers included: read off the mapping in place, the
+// script's inputs and the frame's own `safety` bit (1: the bridge was enabled
+// at that tick, which the oracle checks apart). The layer is the mapping's
+// rule: a held layer's input held wins (the first in the mapping), else the
+// toggled one, which each press of its input flips while enabled and which
+// ends whenever the bridge is not. When the binding that drives drive or
+// pivot changes (a layer entered or left), or the bridge becomes enabled, the
+// byte stays at the mapping's centre (its trim) until that binding's stick is
+// seen inside its deadzone at a frame (centre_watch.hpp). Lenient where the
+// engine holds back more (a speed level's change, a stick read by two
+// bindings): it only ever says "must be at centre".
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "andros/mapping/model.hpp"
+#include "andros/protocol/frame.hpp"
+#include "oracle/centre_watch.hpp"
+
+namespace andros::test {
+
+class LayerRest {
+ public:
+  static constexpr int kHeldAxis = 16384;  ///< a layer's axis input held: half its travel, as the engine rounds it
+
+  /// A button press on the operator's pad (at an event the loop applies).
+  void pressed(input::InputKey key) { ++presses_[key]; }
+  /// Anything that makes the engine start afresh or count presses anew (a
+  /// controller, the link, a suspend, a reload, a stop): toggles are off and
+  /// the presses so far are history.
+  void interrupted() {
+    presses_.clear();
+    toggled_ = -1;
+    restart_ = true;
+  }
+
+  /// One delivered frame at tick t of a script on mapping m: empty, or the rule it breaks.
+  template <typename Held, typename AxisValue>
+  std::string frame(std::int64_t t, std::int64_t period, const mapping::Mapping& m, const protocol::ControlState& s,
+                    const Held& held, const AxisValue& axis_value) {
+    const bool enabled = s[protocol::signal_id("safety")] != 0;
+    const bool restart = restart_ || !was_enabled_ || t != last_t_ + period;
+    if (enabled) {
+      for (std::size_t i = 0; i < m.layers.size(); ++i) {
+        const auto& layer = m.layers[i];
+        if (!layer.toggle || !layer.input.key.is_button()) continue;
+        for (auto n = presses_[layer.input.key]; n > 0; --n) toggled_ = toggled_ == static_cast<int>(i) ? -1 : static_cast<int>(i);
+      }
+    } else {
+      toggled_ = -1;
+    }
+    presses_.clear();
+    int layer = toggled_;
+    for (std::size_t i = 0; i < m.layers.size(); ++i) {
+      const auto key = m.layers[i].input.key;
+      if (!m.layers[i].toggle && (key.is_button() ? held(key) : axis_value(key) >= kHeldAxis)) {
+        layer = static_cast<int>(i);
+        break;
+      }
+    }
+    const std::string name = layer < 0 ? "" : m.layers[static_cast<std::size_t>(layer)].name;
+    std::string broken;
+    held_at_trim_ = false;
+    for (std::size_t k = 0; k < kCentred.size(); ++k) {
+      const auto id = kCentred[k];
+      const mapping::Binding* driver = enabled ? centre_driver(m, name, id) : nullptr;
+      const bool must = watch_[k].must_centre(driver, restart, axis_value);
+      if (!enabled || !must) continue;
+      if (driver != nullptr) held_at_trim_ = true;
+      if (s[id] != m.center && broken.empty()) {
+        broken = std::string(protocol::info(id).name) + " = " + std::to_string(s[id]) + ", not the centre " +
+                 std::to_string(m.center) + ", before its stick was seen at rest (layer \"" + name +
+                 "\", or just enabled)";
+      }
+    }
+    was_enabled_ = enabled;
+    restart_ = false;
+    last_t_ = t;
+    return broken;
+  }
+
+  /// The last frame had drive or pivot held at the centre by the rule.
+  [[nodiscard]] bool held_at_trim() const { return held_at_trim_; }
+
+ private:
+  static constexpr std::array<protocol::SignalId, 2> kCentred = {protocol::signal_id("drive"),
+                                                                 protocol::signal_id("pivot")};
+  std::map<input::InputKey, std::uint32_t> presses_;  ///< since the last frame
+  int toggled_ = -1;
+  bool restart_ = true;
+  bool was_enabled_ = false;
+  bool held_at_trim_ = false;
+  std::int64_t last_t_ = -1;
+  std::array<CentreWatch, 2> watch_{};
+};
+
+}  // namespace andros::test

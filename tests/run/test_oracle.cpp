@@ -1,0 +1,176 @@
+// The fault simulation's oracle (tests/oracle/safety_oracle.hpp) on frames
+// made by hand: each rule, broken once, is named; what the rules allow passes.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "andros/input/events.hpp"
+#include "andros/mapping/loader.hpp"
+#include "oracle/safety_oracle.hpp"
+#include "oracle/simulation.hpp"
+
+namespace andros::run {
+namespace {
+
+constexpr std::uint8_t kCode = 0x5A;
+
+// The oracle itself, on frames made by hand: each rule, broken once, is named.
+class OracleTest : public ::testing::Test {
+ protected:
+  OracleTest() : valid_(library_.load(mapping::find_robot_mapping("HD1", {ANDROS_MAPPINGS_DIR}).string())) {}
+
+  test::SafetyOracle oracle(const std::string& script, bool weapons = false, const std::string& file = {}) {
+    return test::SafetyOracle(
+        file.empty() ? *valid_ : *library_.load(file), input::parse_event_script(script, "oracle.events"),
+        [this](const std::string& f) { return library_.find(f); },
+        test::SafetyOracle::Options{.weapons = weapons, .code = kCode});
+  }
+  static protocol::DataBytes frame(std::initializer_list<std::pair<protocol::SignalId, int>> set = {}) {
+    protocol::ControlState s;
+    s[protocol::signal_id("drive")] = 128;
+    s[protocol::signal_id("pivot")] = 128;
+    for (const auto& [id, v] : set) s[id] = static_cast<std::uint8_t>(v);
+    return protocol::FrameBuilder(kCode).build(s);
+  }
+  static protocol::DataBytes moving() {
+    return frame({{protocol::signal_id("safety"), 1},
+                  {protocol::signal_id("drive_brake"), 1},
+                  {protocol::signal_id("drive"), 255}});
+  }
+
+  test::MappingCache library_;
+  const mapping::ValidMapping& valid_;
+};
+
+// The stick pushed after the tick that enables: one pushed before it waits for rest (the rest rule).
+constexpr const char* kDriving = "0 connect\n20 button leftshoulder 1\n50 axis lefty -32768\n";
+
+TEST_F(OracleTest, AllowsMotionAfterAFreshPress) {
+  auto o = oracle(std::string(kDriving) + "70 end\n");
+  EXPECT_EQ(o.frame(0, frame()), "");
+  EXPECT_EQ(o.frame(40, moving()), "");
+  EXPECT_EQ(o.frame(80, moving()), "");
+  EXPECT_EQ(o.finish(), "");
+}
+
+TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldThroughALinkFlap) {
+  auto o = oracle(std::string(kDriving) + "100 link down\n110 link up\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
+  EXPECT_EQ(o.frame(120, moving()),
+            "safety = 1 while not enabled (deadman held but not pressed since the last link up)");
+}
+
+TEST_F(OracleTest, RefusesMotionWithTheDeadmanHeldAtConnect) {
+  auto o = oracle("0 connect\n0 button leftshoulder 1\n400 end\n");
+  EXPECT_NE(o.frame(0, moving()), "");
+}
+
+TEST_F(OracleTest, RefusesAFrameWhileTheLinkIsDown) {
+  auto o = oracle("0 connect\n30 link down\n400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  EXPECT_EQ(o.frame(40, frame()), "delivered while the link is down (script)");
+}
+
+TEST_F(OracleTest, RefusesAMissingFrame) {
+  auto o = oracle("0 connect\n400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  EXPECT_NE(o.frame(80, frame()).find("no frame at t=40"), std::string::npos);
+}
+
+TEST_F(OracleTest, RefusesFramesPastASuspendsNeutralOnes) {
+  auto o = oracle("0 connect\n100 suspend\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, frame()), "") << t;
+  EXPECT_EQ(o.frame(240, frame()), "delivered while suspended, after its neutral frames");
+}
+
+TEST_F(OracleTest, RefusesMotionDuringAReload) {
+  auto o =
+      oracle(std::string(kDriving) + "100 reload\n110 button leftshoulder 0\n115 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "");
+  EXPECT_NE(o.frame(120, moving()).find("a reload's neutral frame"), std::string::npos);
+}
+
+TEST_F(OracleTest, WantsAStopsThreeNeutralFrames) {
+  auto o = oracle("0 connect\n100 stop\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(o.frame(t, frame()), "") << t;
+  EXPECT_NE(o.finish().find("got 2 of its 3"), std::string::npos);
+}
+
+TEST_F(OracleTest, RefusesWeaponsWithoutArmingOrWithoutTheOption) {
+  const auto fire = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("weapon_1"), 1}});
+  auto off = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n");
+  ASSERT_EQ(off.frame(0, frame()), "");
+  ASSERT_EQ(off.frame(40, frame()), "");
+  EXPECT_EQ(off.frame(80, fire), "weapon_1 = 1 without --weapons");
+  auto unarmed = oracle(std::string(kDriving) + "400 end\n", true);
+  ASSERT_EQ(unarmed.frame(0, frame()), "");
+  EXPECT_EQ(unarmed.frame(40, fire), "weapon_1 = 1 without its arming input held");
+  auto armed = oracle(std::string(kDriving) + "50 axis lefttrigger 32767\n400 end\n", true);
+  ASSERT_EQ(armed.frame(0, frame()), "");
+  ASSERT_EQ(armed.frame(40, frame()), "");
+  EXPECT_EQ(armed.frame(80, fire), "");
+}
+
+TEST_F(OracleTest, RefusesBothOfAnOpposingPair) {
+  auto o = oracle(std::string(kDriving) + "400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  const auto both = frame({{protocol::signal_id("safety"), 1},
+                           {protocol::signal_id("zoom_up"), 1},
+                           {protocol::signal_id("zoom_down"), 1}});
+  EXPECT_EQ(o.frame(40, both), "zoom_down and zoom_up both 1 (an opposing pair)");
+}
+
+const std::string kTrim = ANDROS_TEST_DATA_DIR "/mappings/trim.yaml";  // center: 124
+
+TEST_F(OracleTest, RefusesANeutralFrameAtTheTrim) {
+  auto o = oracle("0 connect\n400 end\n", false, kTrim);
+  EXPECT_EQ(o.frame(0, frame({{protocol::signal_id("drive"), 124}, {protocol::signal_id("pivot"), 124}})),
+            "pivot = 124 while not enabled (deadman not held)");  // pivot (byte 6) comes first
+}
+
+TEST_F(OracleTest, HoldsDriveAtTheTrimUntilItsStickIsAtRest) {
+  // Enabled with the stick already pushed: drive rests at the trim until the stick comes back.
+  const auto at = [](int drive) {
+    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), drive}, {protocol::signal_id("pivot"), 124}});
+  };
+  auto o = oracle("0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
+                  "130 axis lefty -32768\n400 end\n",
+                  false, kTrim);
+  ASSERT_EQ(o.frame(0, frame()), "");
+  EXPECT_EQ(o.frame(40, at(124)), "");
+  EXPECT_EQ(o.frame(80, at(255)),
+            "drive = 255, not the centre 124, before its stick was seen at rest (layer \"\", or just enabled)");
+  auto later = oracle("0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
+                      "130 axis lefty -32768\n400 end\n",
+                      false, kTrim);
+  for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(later.frame(t, t == 0 ? frame() : at(124)), "") << t;
+  EXPECT_EQ(later.frame(160, at(255)), "");  // seen at rest at 120
+}
+
+TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
+  // HD1: the arm layer (right stick click) takes the left stick; leaving it with the stick pushed, drive waits.
+  auto o = oracle(std::string(kDriving) + "100 button rightstick 1\n105 button rightstick 0\n"
+                  "200 button rightstick 1\n205 button rightstick 0\n400 end\n");
+  const auto drive = [](int v) { return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), v}}); };
+  ASSERT_EQ(o.frame(0, frame()), "");
+  for (const std::int64_t t : {40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, drive(t <= 80 ? 255 : 128)), "") << t;
+  EXPECT_EQ(o.frame(240, drive(255)),
+            "drive = 255, not the centre 128, before its stick was seen at rest (layer \"\", or just enabled)");
+}
+
+TEST_F(OracleTest, AStopOutlivesItsOwnTickAndTheDeadmanAlone) {
+  // Tapped within one tick, the deadman up: still stopped at that tick, and
+  // the deadman pressed before the next one does not enable.
+  auto o = oracle("0 connect\n20 button leftshoulder 1\n50 button leftshoulder 0\n85 button guide 1\n"
+                  "90 button guide 0\n130 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(o.frame(t, frame()), "") << t;
+  EXPECT_EQ(o.frame(160, moving()), "safety = 1 while not enabled (stopped by the stop button)");
+  // Held through a release and a press of the deadman: never cleared.
+  auto held = oracle("0 connect\n20 button leftshoulder 1\n50 button guide 1\n100 button leftshoulder 0\n"
+                     "150 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(held.frame(t, t == 40 ? moving() : frame()), "") << t;
+  EXPECT_EQ(held.frame(200, moving()), "safety = 1 while not enabled (stopped by the stop button)");
+}
+
+}  // namespace
+}  // namespace andros::run
