@@ -149,6 +149,7 @@ int main(int argc, char** argv) try {
   andros::cli::add_verify_command(app, exit_code);
   andros::cli::add_sessions_command(app, exit_code);
   andros::cli::add_plot_command(app, exit_code);
+  andros::cli::add_export_command(app, exit_code);
   refuse_empty_values(app);
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);

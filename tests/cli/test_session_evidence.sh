@@ -104,7 +104,7 @@ expect_exit 1 "$BIN" verify "$TMP/cut.andros-session"
 expect_stdout "NOT INTACT: record 5 (line 6) altered: not a record line"
 
 # 2. Bounded reading: an end tick edited to 1e11 (the chain made again) is an
-# error at its line, for replay and plot alike; a 20 MB line is refused
+# error at its line, for replay, plot and export alike; a 20 MB line is refused
 # at 4 MiB.
 python3 - "$session" "$TMP/far.andros-session" <<'PY'
 import re, sys
@@ -115,14 +115,14 @@ PY
 tool rehash "$TMP/far.andros-session"
 end_line=$(grep -n " end " "$TMP/far.andros-session" | cut -d: -f1)
 expect_exit 0 "$BIN" verify "$TMP/far.andros-session"
-for cmd in replay plot; do
+for cmd in replay plot export; do
   expect_exit 2 "$BIN" $cmd "$TMP/far.andros-session"
   expect_stderr_matches "far.andros-session:$end_line: error: tick 100000000000: not within a session"
 done
 { head -3 "$session"; head -c 20000000 /dev/zero | tr '\0' x; echo; } >"$TMP/long.andros-session"
 expect_exit 1 "$BIN" verify "$TMP/long.andros-session"
 expect_stdout "NOT INTACT: record 3 (line 4) altered: line longer than 4 MiB (the limit for a session), longer than any record"
-expect_exit 2 "$BIN" plot "$TMP/long.andros-session"
+expect_exit 2 "$BIN" export "$TMP/long.andros-session"
 expect_stderr_matches "long.andros-session:4: error: line longer than 4 MiB"
 # Not a session, whatever its name; a FIFO is never waited on.
 printf 'hello\n' >"$TMP/not.andros-session"
@@ -143,11 +143,11 @@ run_cmd harness "$TMP/cap" -- "$BIN" run --robot hd1 --port {PTY} --input "$TMP/
 expect_stderr_matches "reload .*failed, the old settings stay"
 
 # 6. Names that work everywhere: `sessions` prints bare names that verify,
-# replay and plot take from any folder; one Ctrl-C, one request.
+# replay, plot and export take from any folder; one Ctrl-C, one request.
 name=$(basename "$session")
 expect_exit 0 "$BIN" sessions
 grep -q " $name\$" "$TMP/out" || fail "sessions does not print the bare name: $(cat "$TMP/out")"
-for cmd in verify replay plot; do
+for cmd in verify replay plot export; do
   (cd / && "$BIN" $cmd "$name" >/dev/null 2>"$TMP/err") || fail "$cmd $name from /: $(head -c 300 "$TMP/err")"
 done
 expect_exit 0 "$BIN" sessions --dir "$STATE"
@@ -155,5 +155,27 @@ grep -q " $name\$" "$TMP/out" || fail "sessions --dir (the older name) no longer
 run_cmd harness "$TMP/cap" --term-after 10 -- "$BIN" run --robot hd1 --port {PTY} --input "$LIVE/long_drive.events"
 stopped=$(ls -t "$STATE"/*.andros-session | head -1)
 [[ $(grep -c " request [0-9]* stop " "$stopped") -eq 1 ]] || fail "one SIGTERM made $(grep -c " request [0-9]* stop " "$stopped") stop records"
+
+# 9. export: a row per tick, one strictly increasing time column; the example
+# in docs/recording.md is this program's output.
+expect_exit 0 "$BIN" export "$session" --output "$TMP/s.csv"
+python3 - "$TMP/s.csv" <<'PY' || fail "export's CSV"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) > 15, len(rows)
+t = [float(r["t"]) for r in rows]
+assert all(a < b for a, b in zip(t, t[1:])), "time not strictly increasing"
+assert {"drive", "pivot", "safety", "state", "layer", "stop", "link"} <= set(rows[0]), rows[0].keys()
+assert any(r["drive"] != "128" for r in rows), "never drove"
+PY
+expect_exit 0 "$BIN" export "$session" --format jsonl
+python3 -c 'import json,sys; r=[json.loads(l) for l in open(sys.argv[1])]; assert len(r)>15 and "drive" in r[0]' "$TMP/out" || fail "export's JSONL"
+expect_exit 2 "$BIN" export "$session" --format xml
+expect_stderr_matches "^--format: error: expected csv or jsonl"
+example=$(python3 -c 'import sys; t=open(sys.argv[1]).read(); print(t.split("<!-- export example")[1].split("```")[1].strip())' \
+  "$DATA/../../docs/recording.md")
+command=$(head -1 <<<"$example" | sed 's/^\$ andros-bridge //')
+got=$(cd "$DATA/../.." && eval "\"$BIN\" $command")
+[[ -n $got && $got == "$(tail -n +2 <<<"$example")" ]] || fail "docs/recording.md's export example is not what export writes: $got"
 
 finish
