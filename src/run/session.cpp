@@ -14,16 +14,6 @@
 namespace andros::run {
 namespace {
 
-std::string_view result_name(const FrameRecord& f) {
-  if (!f.offered) return "none";
-  switch (f.result) {
-    case link::SendResult::kSent: return "sent";
-    case link::SendResult::kBusy: return "busy";
-    case link::SendResult::kDown: return "down";
-  }
-  return "?";
-}
-
 nlohmann::json settings_json(const SessionSettings& s) {
   nlohmann::json files = nlohmann::json::array();
   for (const auto& f : s.sources) files.push_back({{"path", f.path}, {"sha256", sha256_hex(f.text)}, {"text", f.text}});
@@ -42,6 +32,16 @@ nlohmann::json settings_json(const SessionSettings& s) {
 }
 
 }  // namespace
+
+std::string_view result_name(const FrameRecord& f) {
+  if (!f.offered) return "none";
+  switch (f.result) {
+    case link::SendResult::kSent: return "sent";
+    case link::SendResult::kBusy: return "busy";
+    case link::SendResult::kDown: return "down";
+  }
+  return "?";
+}
 
 bool is_session_start(std::string_view first_line) {
   return first_line.starts_with("0 " + std::string(kSessionMagic) + " ");

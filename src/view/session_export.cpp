@@ -11,16 +11,6 @@
 namespace andros::view {
 namespace {
 
-std::string_view link_text(const run::FrameRecord& f) {
-  if (!f.offered) return "none";
-  switch (f.result) {
-    case link::SendResult::kSent: return "sent";
-    case link::SendResult::kBusy: return "busy";
-    case link::SendResult::kDown: return "down";
-  }
-  return "?";
-}
-
 /// A CSV field, quoted when it must be (RFC 4180).
 std::string csv(std::string_view text) {
   if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
@@ -83,7 +73,7 @@ void export_session(const run::Session& s, ExportFormat format, std::ostream& ou
       const auto state = run::to_string(cursor.state);
       if (format == ExportFormat::kCsv) {
         out << seconds << ',' << tick << ',' << state << ',' << cursor.stop() << ',' << csv(cursor.layer) << ','
-            << link_text(f);
+            << run::result_name(f);
         for (std::size_t k = 0; k < protocol::kSignalCount; ++k) out << ',' << int{values.values[k]};
         out << '\n';
         continue;
@@ -93,7 +83,7 @@ void export_session(const run::Session& s, ExportFormat format, std::ostream& ou
                                  {"state", state},
                                  {"stop", cursor.stop()},
                                  {"layer", cursor.layer},
-                                 {"link", link_text(f)}};
+                                 {"link", run::result_name(f)}};
       for (std::size_t k = 0; k < protocol::kSignalCount; ++k)
         row[std::string(protocol::kSignals[k].name)] = values.values[k];
       out << row.dump() << '\n';

@@ -139,5 +139,16 @@ TEST(RecordLimits, OneStopRequestIsOneRecordHoweverManyTicksAnswerIt) {
   EXPECT_NE(text.find(" request 120 reload "), std::string::npos) << text;
 }
 
+TEST(RecordLimits, ARecordLongerThanAReaderTakesIsDroppedNotWritten) {
+  std::string text;
+  SessionWriter writer(std::make_unique<MemorySink>(text));
+  EXPECT_TRUE(writer.push(record::header()));
+  EXPECT_FALSE(writer.push("settings " + std::string(kMaxSessionLine, 'x')));
+  EXPECT_EQ(writer.dropped(), 1u);
+  writer.close(5000);
+  EXPECT_NE(text.find(" dropped 1 "), std::string::npos) << text.substr(0, 200);
+  EXPECT_LT(text.size(), std::size_t{1000});
+}
+
 }  // namespace
 }  // namespace andros::run

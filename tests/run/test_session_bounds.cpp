@@ -22,7 +22,10 @@ const std::string kData(32, '0');  // 16 data bytes, as a frame record holds the
 
 /// Payloads of a small session that read_session takes: 25 Hz, hd1's text.
 std::vector<std::string> payloads(const std::string& end = record::end(400, 10, 11, "SIGINT")) {
-  SessionSettings s{.robot = "HD1", .mapping_file = "/m/hd1.yaml", .rate_millihertz = 25'000};
+  SessionSettings s;
+  s.robot = "HD1";
+  s.mapping_file = "/m/hd1.yaml";
+  s.rate_millihertz = 25'000;
   s.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
   return {record::header(),
           record::program("9.9.9"),

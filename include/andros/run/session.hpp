@@ -145,6 +145,9 @@ struct FrameRecord {
   std::int64_t gap = 0;  ///< ticks the live loop did not run just before this one (a stall, a pause)
 };
 
+/// What became of a frame record's frame, as the record says it: sent, busy, down, or none (nothing offered).
+std::string_view result_name(const FrameRecord& frame);
+
 struct ReloadRecord {
   std::int64_t t_ms = 0;
   ReloadOutcome outcome;
