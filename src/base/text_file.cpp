@@ -112,6 +112,7 @@ TextReader& TextReader::operator=(TextReader&& other) noexcept {
   eof_ = other.eof_;
   consumed_ = other.consumed_;
   line_no_ = other.line_no_;
+  line_ended_ = other.line_ended_;
   return *this;
 }
 
@@ -167,6 +168,7 @@ std::optional<std::string_view> TextReader::next_line() {
       line = std::string_view(buf_).substr(pos_);
     }
     ++line_no_;
+    line_ended_ = ended;
     if (line.size() > limits_.max_line) fail_line_too_long(line_no_);
     consumed_ += line.size() + (ended ? 1 : 0);
     if (consumed_ > limits_.max_bytes) {

@@ -3,13 +3,13 @@
 #include <spdlog/fmt/fmt.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/base/output_file.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
@@ -20,6 +20,7 @@
 #include "andros/timing/rate.hpp"
 #include "andros/view/plot.hpp"
 #include "commands.hpp"
+#include "session_files.hpp"
 
 namespace andros::cli {
 namespace {
@@ -32,22 +33,10 @@ struct PlotOptions {
   std::string to;
 };
 
-/// The whole page is made before FILE is opened; a failed write removes it
-/// (as `sheet --output`).
+/// The whole page is made before FILE is opened, and replaces it only
+/// whole (OutputFile: a device or FIFO is written in place, a link followed).
 void write_page(const std::string& output, const std::string& page) {
-  if (output.empty()) {
-    if (std::fwrite(page.data(), 1, page.size(), stdout) != page.size()) throw RuntimeError("stdout: write error");
-    return;
-  }
-  std::ofstream file(output, std::ios::binary | std::ios::trunc);
-  if (!file) throw RuntimeError(output + ": cannot open for writing");
-  file << page;
-  file.close();
-  if (!file) {
-    std::error_code ec;
-    std::filesystem::remove(output, ec);
-    throw RuntimeError(output + ": write error");
-  }
+  write_output_file(output.empty() ? "-" : output, page);
 }
 
 /// Seconds (decimals allowed) as ms; InputError at the flag.
@@ -93,8 +82,10 @@ view::PlotInput from_session(const PlotOptions& opt) {
   in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started, s.host,
                           s.version);
   // Drawn all the same, but never passed off as a whole record.
-  if (const auto check = run::verify_session(opt.source); !check.intact) in.source += "; NOT INTACT: " + check.problem;
-  else if (s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
+  const auto check = run::verify_session(opt.source);
+  if (!check.intact) in.source += "; NOT INTACT: " + check.problem;
+  else if (check.cut_short_line != 0) in.source += "; " + run::cut_short_text(check);
+  if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
   in.samples = view::plot_samples(s);
   return in;
 }
@@ -143,12 +134,16 @@ void add_plot_command(CLI::App& app, int& exit_code) {
                          "red), with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
                          "landscape on paper, or a browser. From a session file (as recorded), or from an event\n"
                          "script through replay (with --robot/--mapping and the other replay settings).");
-  cmd->add_option("SOURCE", opt->source, "a session file, or an event script (docs/event-scripts.md)")->required();
+  cmd->add_option("SOURCE", opt->source,
+                  "a session file (or its bare name, as 'sessions' prints it), or an event script\n"
+                  "(docs/event-scripts.md)")
+      ->required();
   opt->settings = std::make_unique<CommandLine>(*cmd, kPlot);
   cmd->add_option("--output", opt->output, "write to FILE instead of standard output")->type_name("FILE");
   cmd->add_option("--from", opt->from, "start the time axis at T seconds")->type_name("T");
   cmd->add_option("--to", opt->to, "end the time axis at T seconds (default: the end)")->type_name("T");
   cmd->callback([opt, &exit_code] {
+    opt->source = find_session(opt->source);  // a bare session name, as `sessions` prints it
     run_plot(*opt);
     exit_code = kExitOk;
   });

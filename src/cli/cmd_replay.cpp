@@ -1,4 +1,6 @@
 // `andros-bridge replay`: an event script through a mapping on a virtual clock.
+#include <spdlog/spdlog.h>
+
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -16,6 +18,7 @@
 #include "andros/run/session.hpp"
 #include "andros/run/session_replay.hpp"
 #include "commands.hpp"
+#include "session_files.hpp"
 
 namespace andros::cli {
 namespace {
@@ -85,6 +88,10 @@ int run_replay(const ReplayOptions& opt) {
   mapping::Engine engine(std::move(mapping), replay_options.engine);
   // A script's `reload FILE` names FILE relative to the script's folder.
   replay_options.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.events, file)); };
+  // One that fails is `run`'s: the old mapping stays, it is logged, the replay goes on.
+  replay_options.reloaded = [](std::int64_t t_ms, const run::ReloadOutcome& outcome) {
+    if (!outcome.ok) spdlog::error("reload at {} ms failed, the old mapping stays: {}", t_ms, outcome.message);
+  };
   write_frames(settings, [&](std::ostream& out) {
     run::replay(player, std::move(engine), replay_options, [&](std::int64_t t, const protocol::DataBytes& data) {
       protocol::write_frame(out, settings.format, t, data);
@@ -108,10 +115,14 @@ void add_replay_command(CLI::App& app, int& exit_code) {
                          "frame that differs (exit 1).");
   cmd->add_option("EVENTS", opt->events,
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
-                  "before the first frame is written; or a session file")
+                  "before the first frame is written; or a session file (a bare name, as 'sessions'\n"
+                  "prints it, is looked up in the sessions' folder)")
       ->required();
   opt->settings = std::make_unique<CommandLine>(*cmd, kReplay);
-  cmd->callback([opt, &exit_code] { exit_code = run_replay(*opt); });
+  cmd->callback([opt, &exit_code] {
+    opt->events = find_session(opt->events);  // a bare session name, as `sessions` prints it
+    exit_code = run_replay(*opt);
+  });
 }
 
 }  // namespace andros::cli

@@ -104,7 +104,7 @@ int run_bridge(const RunOptions& opt) {
   // data commands keep the default: `frame decode | head` just ends.)
   std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
-  StopRequest stop(kStopSignals);
+  StopRequest stop(kRunStopSignals);
   JobControlSignals job;
   EngineSetup engine = load_engine(config);
   ReloadableFrames frames(std::move(engine.frames));

@@ -38,19 +38,24 @@ void run_sessions(const std::string& dir_given) {
   std::cout << "sessions in " << dir.string() << ":\n";
   std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "START", "LENGTH", "ROBOT", "FRAMES", "VERIFY",
                            "FILE");
+  // Names the other commands accept from any folder: bare in the default
+  // folder (they look there), whole paths from another.
+  const bool bare = dir == session_dir("");
   for (const auto& path : sessions) {
+    const auto name = bare ? path.filename().string() : std::filesystem::absolute(path).string();
     std::string verdict;
     try {
       const auto check = run::verify_session(path);
-      verdict = !check.intact ? "NOT INTACT" : check.closed ? "intact" : "intact, not closed";
+      verdict = !check.intact               ? "NOT INTACT"
+                : check.cut_short_line != 0 ? "intact, cut short"
+                : check.closed              ? "intact"
+                                            : "intact, not closed";
       const auto s = run::read_session(path);
       std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", start_text(s.started),
-                               duration_text(s.length_ms()), s.settings.robot,
-                               s.end ? std::to_string(s.end->frames_sent) : std::string("?"), verdict,
-                               path.filename().string());
+                               duration_text(s.length_ms()), s.settings.robot, s.frames_sent(), verdict, name);
     } catch (const std::exception& e) {
       std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "?", "?", "?", "?",
-                               verdict.empty() ? "unreadable" : verdict, path.filename().string());
+                               verdict.empty() ? "unreadable" : verdict, name);
     }
   }
 }
@@ -63,9 +68,11 @@ void add_sessions_command(CLI::App& app, int& exit_code) {
       app.add_subcommand("sessions",
                          "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
                          "robot, frames sent and the verdict of 'verify'.");
-  cmd->add_option("--dir", *dir,
-                  "the folder to list; default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"
-                  "~/.local/state/andros-bridge (as run)");
+  cmd->add_option("--record-dir,--dir", *dir,
+                  "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
+                  "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"
+                  "~/.local/state/andros-bridge (as run)")
+      ->type_name("DIR");
   cmd->callback([dir, &exit_code] {
     run_sessions(*dir);
     exit_code = kExitOk;

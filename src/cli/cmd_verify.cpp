@@ -8,18 +8,23 @@
 #include "andros/base/error.hpp"
 #include "andros/run/session.hpp"
 #include "commands.hpp"
+#include "session_files.hpp"
 
 namespace andros::cli {
 namespace {
 
 int run_verify(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(SourcePos{path}, "no such session file");
+  std::error_code ec;
+  // Anything else that is there (a FIFO, a device) is refused by the reading, saying what it is.
+  if (!std::filesystem::exists(path, ec)) throw InputError(SourcePos{path}, "no such session file");
   const auto result = run::verify_session(path);
   if (!result.intact) {
     std::cout << "NOT INTACT: " << result.problem << "\n";
     return kExitRuntime;
   }
-  std::cout << "intact (" << result.records << " records)\n";
+  // Half a record at the end is a run cut off, told apart from an edit: the records before it stand.
+  if (result.cut_short_line != 0) std::cout << run::cut_short_text(result) << "\n";
+  else std::cout << "intact (" << result.records << " records)\n";
   std::cout << (result.closed ? "closed: the run ended and its last record is here\n"
                               : "not closed: the run is still going, ended without closing it (a crash, power "
                                 "lost), or its last records were removed\n");
@@ -36,8 +41,11 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                          "Check a flight recorder session's hash chain (docs/recording.md): prints 'intact (N\n"
                          "records)' and the last record's hash (exit 0), or the first record that was altered,\n"
                          "removed or reordered (exit 1).");
-  cmd->add_option("SESSION", *path, "a session file (andros-bridge sessions lists them)")->required();
-  cmd->callback([path, &exit_code] { exit_code = run_verify(*path); });
+  cmd->add_option("SESSION", *path,
+                  "a session file, or its bare name as 'andros-bridge sessions' prints it (looked up in\n"
+                  "the sessions' folder)")
+      ->required();
+  cmd->callback([path, &exit_code] { exit_code = run_verify(find_session(*path)); });
 }
 
 }  // namespace andros::cli

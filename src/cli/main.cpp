@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -111,6 +112,10 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view
 // What run() does not catch, such as no memory or no thread for the log
 // before any command runs, ends the program with a line, not an abort.
 int main(int argc, char** argv) try {
+  // A write past a file-size limit (`ulimit -f`, RLIMIT_FSIZE) fails with
+  // EFBIG, for every command: the flight recorder drops and warns, an output
+  // file says so, and a run goes on driving (SIGXFSZ's default ends the process).
+  std::signal(SIGXFSZ, SIG_IGN);
   keep_standard_descriptors_taken();
   // Log lines go to stderr through a queue and a thread of their own (which
   // blocks every signal, SIGPIPE included): stdout carries data (frame
@@ -144,6 +149,7 @@ int main(int argc, char** argv) try {
   andros::cli::add_verify_command(app, exit_code);
   andros::cli::add_sessions_command(app, exit_code);
   andros::cli::add_plot_command(app, exit_code);
+  andros::cli::add_export_command(app, exit_code);
   refuse_empty_values(app);
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);

@@ -10,6 +10,7 @@
 #include "andros/cli/settings.hpp"
 #include "andros/input/input_source.hpp"
 #include "andros/link/link.hpp"
+#include "andros/run/recorded_loop.hpp"
 #include "andros/run/recorder.hpp"
 #include "andros/view/operator_screens.hpp"
 #include "run_reload.hpp"

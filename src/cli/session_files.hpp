@@ -15,6 +15,11 @@ namespace andros::cli {
 /// else $XDG_STATE_HOME/andros-bridge, else ~/.local/state/andros-bridge.
 std::filesystem::path session_dir(const std::string& configured);
 
+/// A session named on the command line: as given when it is there (or names
+/// a folder: has a '/'); else a bare name, as `sessions` prints it, from the
+/// folder where `run` keeps them (session_dir(record_dir)), when it is there.
+std::string find_session(const std::string& given, const std::string& record_dir = "");
+
 /// A new session's path in dir: YYYYMMDD-HHMMSS-PID.andros-session, local time.
 std::filesystem::path new_session_path(const std::filesystem::path& dir, std::time_t now, long pid);
 

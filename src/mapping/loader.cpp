@@ -266,6 +266,8 @@ struct Chain {
   std::vector<fs::path> files;
   std::size_t node_budget = yaml::kMaxNodes;
   ErrorList errors;
+  /// A recorded chain (load_recorded_chain): `extends` takes the next of these, never a file.
+  const std::vector<MappingText>* recorded = nullptr;
 };
 
 /// Why a mapping file cannot be read, from stat(): missing, not permitted, or
@@ -303,6 +305,18 @@ fs::path robot_base(const Reader& r, const YAML::Node& node, std::string_view ro
                    " other than this file on the mapping search path (" + looked + ")");
 }
 
+/// The recorded file after the one being read, when its name is the one `extends` gives.
+Mapping read_recorded_base(const Reader& r, const YAML::Node& node, const std::string& name, Chain& chain) {
+  const auto& files = *chain.recorded;
+  const std::size_t next = chain.files.size();
+  const auto wanted = fs::path(name).filename();
+  if (next >= files.size() || fs::path(files[next].label).filename() != wanted) {
+    r.fail(node, "'extends: " + name + "': the session recorded no " + quote_name(wanted.string()) +
+                     " next in the mapping's chain");
+  }
+  return read_file(files[next].label, chain, r.pos(node), &files[next].text);
+}
+
 void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file, Chain& chain, Mapping& out) {
   if (chain.files.size() >= kMaxExtendsChain) {
     r.fail(node, "'extends' chain too long: this base would be file " + std::to_string(chain.files.size() + 1) +
@@ -311,6 +325,11 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
   }
   const auto name = r.text(node, "extends");
   const bool robot = name.find('/') == std::string::npos && protocol::canonical_robot(name).has_value();
+  if (chain.recorded != nullptr) {
+    out = read_recorded_base(r, node, robot ? to_lower(*protocol::canonical_robot(name)) + ".yaml" : name, chain);
+    out.robot.reset();
+    return;
+  }
   const auto base_path = robot ? robot_base(r, node, name, chain) : file.parent_path() / name;
   // The base's values stand unless this file sets them; its robot does not carry over.
   out = read_file(base_path, chain, r.pos(node));
@@ -319,7 +338,8 @@ void apply_extends(const Reader& r, const YAML::Node& node, const fs::path& file
 
 Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, const std::string* text) {
   std::error_code ec;
-  const auto canonical = fs::weakly_canonical(file, ec);
+  // A recorded chain's path is a label: never looked at on this machine.
+  const auto canonical = chain.recorded != nullptr ? file : fs::weakly_canonical(file, ec);
   if (text == nullptr) {
     if (const auto why = unreadable(file); !why.empty()) {
       throw InputError(from.file.empty() ? SourcePos{file.string()} : from,
@@ -467,6 +487,13 @@ ValidMapping load_mapping(const fs::path& file, NeedsRobot needs) {
   }
   chain.errors.throw_if_any();
   throw InputError(SourcePos{file.string()}, "cannot load the mapping");  // not reached: no mapping came with an error
+}
+
+ValidMapping load_recorded_chain(const std::vector<MappingText>& files) {
+  if (files.empty()) throw InputError("no mapping file recorded");
+  Chain chain;
+  chain.recorded = &files;
+  return validate(read_file(files.front().label, chain, SourcePos{}, &files.front().text), true);
 }
 
 ValidMapping load_mapping_text(const std::string& text, const fs::path& file) {

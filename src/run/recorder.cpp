@@ -1,38 +1,10 @@
 #include "andros/run/recorder.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
-#include <cstring>
-
-#include "andros/base/error.hpp"
-#include "andros/base/write_fully.hpp"
+#include <functional>
+#include <utility>
 
 namespace andros::run {
-
-FileRecordSink::FileRecordSink(const std::string& path) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_APPEND, 0640);
-  if (fd_ < 0) throw RuntimeError(path + ": cannot create: " + std::strerror(errno));
-}
-
-FileRecordSink::~FileRecordSink() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
-bool FileRecordSink::write(std::string_view text, std::string& error) {
-  const int err = write_fully(fd_, text);
-  if (err == 0) return true;
-  error = std::strerror(err);
-  return false;
-}
-
-bool FileRecordSink::sync(std::string& error) {
-  if (::fdatasync(fd_) == 0) return true;
-  error = std::strerror(errno);
-  return false;
-}
 
 struct SessionWriter::Shared {
   explicit Shared(std::unique_ptr<RecordSink> s, std::size_t capacity) : sink(std::move(s)), ring(capacity) {}
@@ -75,7 +47,8 @@ SessionWriter::~SessionWriter() { close(1000); }
 bool SessionWriter::push(std::string payload) {
   Shared& s = *shared_;
   const std::size_t head = s.head.load(std::memory_order_relaxed);
-  if (head - s.tail.load(std::memory_order_acquire) >= s.ring.size()) {
+  // A record longer than a reader takes (SEQ, spaces and hash: at most 86 more) is dropped as a full queue's is.
+  if (head - s.tail.load(std::memory_order_acquire) >= s.ring.size() || payload.size() > kMaxSessionLine - 86) {
     s.dropped.fetch_add(1, std::memory_order_relaxed);
     return false;
   }
@@ -91,47 +64,84 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   Shared& s = *shared;
   RecordChain chain;
   std::uint64_t reported_drops = 0;
-  bool failed = false;
+  std::uint64_t missing = 0;  // records dropped or lost since the last one written, not yet said
+  bool failed = false;        // a sync failed: nothing more is written
   auto last_sync = std::chrono::steady_clock::now();
   bool unsynced = false;  // written since the last sync
-  std::string batch;
-  std::uint64_t in_batch = 0;
-  const auto write_batch = [&] {
-    if (in_batch == 0) return;
+  std::vector<std::string> batch;
+  std::size_t batch_bytes = 0;
+  const auto fail = [&s](const std::string& error) {
+    const std::lock_guard lock(s.mutex);
+    if (s.error.empty()) s.error = error;
+  };
+  // Appends lines from the chain's present place; false (and the chain back
+  // there) when the sink failed: it left the file at its last whole record.
+  const auto put = [&](const std::function<std::string()>& lines) {
+    const auto seq = chain.records();
+    const auto from = chain.last();
     std::string error;
-    if (!failed && !s.sink->write(batch, error)) {
-      failed = true;
-      const std::lock_guard lock(s.mutex);
-      s.error = error;
+    if (s.sink->write(lines(), error)) {
+      s.written.store(chain.records(), std::memory_order_relaxed);
+      unsynced = true;
+      return true;
     }
-    if (failed) s.lost.fetch_add(in_batch, std::memory_order_relaxed);
-    else s.written.store(chain.records(), std::memory_order_relaxed);
-    unsynced = !failed;
+    fail(error);
+    chain.rewind(seq, from);
+    return false;
+  };
+  // What went missing, said by a `dropped N` record where it fits (never before the header).
+  const auto tell = [&] {
+    if (missing != 0 && chain.records() != 0 && put([&] { return chain.line(record::dropped(missing)); })) missing = 0;
+  };
+  // Whole records or none: a batch at once, else record by record as many as
+  // fit, and a `dropped N` record for the rest, where they went missing.
+  const auto write_batch = [&] {
+    if (batch.empty() && missing == 0) return;
+    if (failed) {
+      s.lost.fetch_add(batch.size(), std::memory_order_relaxed);
+    } else if (bool told = false; put([&] {
+                 std::string text;
+                 if (missing != 0 && chain.records() != 0) {
+                   text = chain.line(record::dropped(missing));
+                   told = true;
+                 }
+                 for (const auto& payload : batch) text += chain.line(payload);
+                 return text;
+               })) {
+      if (told) missing = 0;
+    } else {
+      std::size_t done = 0;
+      for (; done < batch.size(); ++done) {
+        tell();
+        if ((missing != 0 && chain.records() != 0) || !put([&] { return chain.line(batch[done]); })) break;
+      }
+      s.lost.fetch_add(batch.size() - done, std::memory_order_relaxed);
+      missing += batch.size() - done;
+      tell();
+    }
     batch.clear();
-    in_batch = 0;
+    batch_bytes = 0;
   };
   while (true) {
     const std::size_t head = s.head.load(std::memory_order_acquire);
     for (std::size_t tail = s.tail.load(std::memory_order_relaxed); tail != head; ++tail) {
-      const std::string payload = std::move(s.ring[tail % s.ring.size()]);
+      batch.push_back(std::move(s.ring[tail % s.ring.size()]));
       s.tail.store(tail + 1, std::memory_order_release);
-      batch += chain.line(payload);
-      ++in_batch;
-      if (batch.size() >= kBatchBytes) write_batch();
-    }
-    // Records the full queue refused: said where they went missing.
-    if (const auto drops = s.dropped.load(std::memory_order_relaxed); drops != reported_drops) {
-      batch += chain.line(record::dropped(drops - reported_drops));
-      ++in_batch;
-      reported_drops = drops;
+      batch_bytes += batch.back().size();
+      if (batch_bytes >= kBatchBytes) write_batch();
     }
     write_batch();
+    // Records the full queue refused: said where they went missing.
+    if (const auto drops = s.dropped.load(std::memory_order_relaxed); drops != reported_drops) {
+      missing += drops - reported_drops;
+      reported_drops = drops;
+      write_batch();
+    }
     if (unsynced && std::chrono::steady_clock::now() - last_sync >= kSyncPeriod) {
       std::string error;
       if (!s.sink->sync(error)) {
         failed = true;
-        const std::lock_guard lock(s.mutex);
-        s.error = error;
+        fail(error);
       }
       last_sync = std::chrono::steady_clock::now();
       unsynced = false;
@@ -218,7 +228,11 @@ void Recorder::pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& e
 }
 
 void Recorder::request(Request request) {
-  if (request != Request::kNone) push(record::request(t_ms_, request));
+  if (request == Request::kNone) return;
+  // A stop asked once is answered on every tick after it until the run ends:
+  // one record says it (one Ctrl-C, one `request stop`).
+  if (request == Request::kStop && std::exchange(stop_recorded_, true)) return;
+  push(record::request(t_ms_, request));
 }
 
 void Recorder::reloaded(const ReloadOutcome& outcome, const SessionSettings* settings) {
@@ -262,42 +276,5 @@ void Recorder::observe(const TickReport& r) {
 }
 
 void Recorder::end(std::string_view why) { push(record::end(last_t_ms_, last_tick_, frames_sent_, why)); }
-
-void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
-  state.keep_applied(true);
-  inner_.pump(state, now_ms);
-  recorder_.pumped(now_ms, state.take_applied());
-}
-
-bool RecordingInput::finished(std::int64_t now_ms) const {
-  const bool done = inner_.finished(now_ms);
-  if (done) recorder_.input_end(now_ms);
-  return done;
-}
-
-RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings) {
-  control.poll = [poll = std::move(control.poll), &recorder] {
-    const Request r = poll();
-    recorder.request(r);
-    return r;
-  };
-  control.pause = [pause = std::move(control.pause), &recorder] {
-    pause();
-    recorder.paused();
-  };
-  control.finish_reload = [finish = std::move(control.finish_reload), &recorder, settings = std::move(settings)] {
-    auto outcome = finish();
-    if (outcome) {
-      if (outcome->ok) {
-        const SessionSettings now = settings();
-        recorder.reloaded(*outcome, &now);
-      } else {
-        recorder.reloaded(*outcome, nullptr);
-      }
-    }
-    return outcome;
-  };
-  return control;
-}
 
 }  // namespace andros::run

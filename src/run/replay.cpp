@@ -45,7 +45,9 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
       loaded = options.load(wanted);
       loaded_file = wanted;
       outcome = ReloadOutcome{true, "", options.engine.weapons};
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
+      // Whatever the reading met (a bad file, one that cannot be read): the
+      // old mapping stays and the replay goes on, as `run` does.
       outcome = ReloadOutcome{false, e.what()};
     }
   };
@@ -55,6 +57,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
       mapping_file = loaded_file;
       loaded.reset();
     }
+    if (outcome) options.reloaded(clock.now().count() / kNsPerMs, *outcome);
     return std::exchange(outcome, std::nullopt);
   };
 

@@ -1,9 +1,5 @@
 #include "andros/run/session_replay.hpp"
 
-#include <stdlib.h>
-
-#include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "andros/base/error.hpp"
@@ -12,8 +8,6 @@
 
 namespace andros::run {
 namespace {
-
-namespace fs = std::filesystem;
 
 /// The session as the loop's world: its clock, input, link and controls,
 /// with where the replay is now.
@@ -180,26 +174,10 @@ std::string frame_text(const protocol::DataBytes& data) { return protocol::to_he
 
 mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& sources) {
   if (sources.empty()) throw InputError("the session names no mapping file");
-  const char* tmp = std::getenv("TMPDIR");
-  std::string pattern = std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/andros-replay-XXXXXX";
-  if (mkdtemp(pattern.data()) == nullptr) throw RuntimeError("cannot make a temporary folder for the recorded mapping");
-  const fs::path root(pattern);
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } cleanup{root};
-  const auto under_root = [&root](const std::string& path) { return root / fs::path(path).relative_path(); };
-  for (const auto& src : sources) {
-    const fs::path file = under_root(src.path);
-    fs::create_directories(file.parent_path());
-    std::ofstream out(file, std::ios::binary);
-    out << src.text;
-    if (!out) throw RuntimeError(file.string() + ": cannot write the recorded mapping");
-  }
-  return mapping::load_mapping(under_root(sources.front().path));
+  std::vector<mapping::MappingText> files;
+  files.reserve(sources.size());
+  for (const auto& src : sources) files.push_back({src.path, src.text});
+  return mapping::load_recorded_chain(files);
 }
 
 SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, const Bridge::Observer& observe) {

@@ -8,7 +8,6 @@
 #include <limits>
 
 #include "andros/protocol/signals.hpp"
-#include "andros/timing/tick_schedule.hpp"
 #include "sheet_layout.hpp"
 
 namespace andros::view {
@@ -262,44 +261,18 @@ void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std
     page.text(kLeft, kSignalsTop + kRowHeight * static_cast<double>(shown) + 10, "and " + rest, " font-size=\"10\"");
   }
 }
-
 }  // namespace
-
-PlotSample plot_sample(const run::TickReport& r) {
-  return PlotSample{r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent, r.state, r.engine.layer};
-}
-
-std::vector<PlotSample> plot_samples(const run::Session& session) {
-  std::vector<PlotSample> out;
-  const timing::TickSchedule schedule(session.settings.rate_millihertz);
-  const auto& frames = session.frames;
-  const std::int64_t last = session.end ? session.end->last_tick : (frames.empty() ? -1 : frames.back().tick);
-  std::size_t state_at = 0;
-  std::size_t layer_at = 0;
-  run::OpState state = run::OpState::kNoLink;
-  std::string layer;
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const auto& f = frames[i];
-    const std::int64_t through = i + 1 < frames.size() ? frames[i + 1].tick - frames[i + 1].gap - 1 : last;
-    for (std::int64_t tick = f.tick; tick <= through; ++tick) {
-      const std::int64_t t = schedule.tick_ms(tick);
-      while (state_at < session.states.size() && session.states[state_at].t_ms <= t)
-        state = session.states[state_at++].state;
-      while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
-        layer = session.layers[layer_at++].text;
-      out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer});
-    }
-  }
-  return out;
-}
 
 std::string render_plot_svg(const PlotInput& in) {
   const std::int64_t last = in.samples.empty() ? 0 : in.samples.back().t_ms;
   const std::int64_t to = in.to_ms < 0 ? last : in.to_ms;
   Page page(in.from_ms, to);
   std::vector<const PlotSample*> shown;
+  std::int64_t ticks = 0;
   for (const auto& s : in.samples) {
-    if (s.t_ms >= in.from_ms && s.t_ms <= to) shown.push_back(&s);
+    if (s.t_ms < in.from_ms || s.t_ms > to) continue;
+    shown.push_back(&s);
+    ticks += s.ticks;
   }
   page.add(
       fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 {} {}\" "
@@ -310,7 +283,7 @@ std::string render_plot_svg(const PlotInput& in) {
   page.text(kLeft, 48, in.settings, " font-size=\"11\" fill=\"#333\"");
   page.text(kLeft, 64,
             fmt::format("{}{} to {} s, {} ticks", in.source.empty() ? "" : in.source + "; ", seconds_text(page.from()),
-                        seconds_text(page.to()), shown.size()),
+                        seconds_text(page.to()), ticks),
             " font-size=\"10\" fill=\"#555\"");
   const auto on = signals_on(shown);
   const double bottom =

@@ -22,7 +22,7 @@ expect_stderr_matches "unknown robot 'HD-2'"
 # A word that is no command is named, and the commands listed.
 expect_exit 2 "$BIN" nonsense
 expect_one_line_stderr
-expect_stderr_matches "^andros-bridge: error: unknown command 'nonsense' \(one of: frame, replay, check, run, .*inputs, verify, sessions, plot\)"
+expect_stderr_matches "^andros-bridge: error: unknown command 'nonsense' \(one of: frame, replay, check, run, .*inputs, verify, sessions, plot, export\)"
 grep -q "help-data" "$TMP/err" && fail "the hidden help-data is listed: $(cat "$TMP/err")"
 expect_exit 2 "$BIN"
 expect_stderr_matches "^andros-bridge: error: no command given \(one of: frame, replay"

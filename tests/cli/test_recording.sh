@@ -117,9 +117,11 @@ STATE_DIRECTORY=$TMP/service run_cmd harness "$TMP/cap" -- "$BIN" run --port {PT
 
 # Rotation: over the size cap, the oldest go first; past the age, they go whatever the size.
 mkdir -p "$TMP/rot"
-head -c 700000 /dev/zero >"$TMP/rot/20200101-000000-1.andros-session"
-head -c 700000 /dev/zero >"$TMP/rot/20200102-000000-1.andros-session"
-head -c 10 /dev/zero >"$TMP/rot/20200103-000000-1.andros-session"
+# Sessions: their first line says so (test_session_evidence.sh tries files that are not).
+old_session() { { printf '0 andros-session 2 %064d\n' 0; head -c "$2" /dev/zero; } >"$TMP/rot/$1.andros-session"; }
+old_session 20200101-000000-1 700000
+old_session 20200102-000000-1 700000
+old_session 20200103-000000-1 10
 touch -d '40 days ago' "$TMP/rot/20200103-000000-1.andros-session"
 run_cmd harness "$TMP/cap" -- "$BIN" run --record-dir "$TMP/rot" --record-max-mb 1 --port {PTY} --input "$LIVE/drive.events"
 [[ ! -e $TMP/rot/20200101-000000-1.andros-session ]] || fail "the oldest session over the cap was kept"
@@ -142,7 +144,7 @@ expect_exit 2 "$BIN" replay "$session" --robot hd1
 expect_stderr_matches "^--robot: error: not for a session"
 expect_exit 2 "$BIN" run --record-max-mb 0
 expect_stderr_matches "record_max_mb"
-expect_exit 0 "$BIN" sessions --dir "$TMP/empty"
+expect_exit 0 "$BIN" sessions --record-dir "$TMP/empty"
 expect_stdout "no sessions in $TMP/empty"
 
 finish

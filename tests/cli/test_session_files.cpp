@@ -3,9 +3,16 @@
 #include <gtest/gtest.h>
 #include <utime.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
+#include "andros/base/unique_fd.hpp"
+#include "andros/run/record_sink.hpp"
 #include "cli/session_files.hpp"
 #include "support/temp_dir.hpp"
 
@@ -14,9 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A session of size bytes last written at mtime.
-fs::path make_session(const testing::TempDir& dir, const std::string& name, std::size_t size, std::time_t mtime) {
-  const auto path = dir.write(name + ".andros-session", std::string(size, 'x'));
+/// A session (its first line says so) of size bytes last written at mtime.
+fs::path make_session(const testing::TempDir& dir, const std::string& name, std::size_t size, std::time_t mtime,
+                      const std::string& first_line = "0 andros-session 2 " + std::string(64, '0') + "\n") {
+  std::string text = first_line;
+  text.resize(std::max(size, text.size()), 'x');
+  const auto path = dir.write(name + ".andros-session", text);
   utimbuf times{mtime, mtime};
   utime(path.c_str(), &times);
   return path;
@@ -61,6 +71,67 @@ TEST(SessionFiles, SessionsPastTheirAgeAreRemovedWhateverTheSize) {
   const auto removed = rotate_sessions(dir.path(), RotationLimits{1'000'000, 30 * kDay}, fs::path(), kNow);
   EXPECT_EQ(removed, std::vector<fs::path>{old});
   EXPECT_TRUE(fs::exists(young));
+}
+
+TEST(SessionFiles, AFileNamedLikeASessionThatIsNotOneIsNeverRemovedNorListed) {
+  testing::TempDir dir;
+  const auto notes = make_session(dir, "20200101-000000-1", 5000, kNow - 400 * kDay, "my notes, not a session\n");
+  const auto empty = make_session(dir, "20200101-000000-2", 0, kNow - 400 * kDay, "");
+  const auto old = make_session(dir, "20200102-000000-1", 5000, kNow - 400 * kDay);
+  const auto removed = rotate_sessions(dir.path(), RotationLimits{1000, 30 * kDay}, fs::path(), kNow);
+  EXPECT_EQ(removed, std::vector<fs::path>{old});
+  EXPECT_TRUE(fs::exists(notes));
+  EXPECT_TRUE(fs::exists(empty));
+  EXPECT_TRUE(list_sessions(dir.path()).empty());
+}
+
+TEST(SessionFiles, ALinkNamedLikeASessionIsNeitherFollowedNorRemoved) {
+  testing::TempDir dir;
+  testing::TempDir elsewhere;
+  const auto target = make_session(elsewhere, "20200101-000000-1", 5000, kNow - 400 * kDay);
+  const auto link = dir.path() / "20200101-000000-1.andros-session";
+  fs::create_symlink(target, link);
+  EXPECT_TRUE(rotate_sessions(dir.path(), RotationLimits{1000, 30 * kDay}, fs::path(), kNow).empty());
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_TRUE(fs::exists(target));
+}
+
+TEST(SessionFiles, ASessionAWriterHoldsLockedIsNeverRemoved) {
+  testing::TempDir dir;
+  const auto other = make_session(dir, "20200101-000000-1", 5000, kNow - 400 * kDay);
+  {
+    // Another bridge writing in this folder holds its session locked.
+    const UniqueFd held(::open(other.c_str(), O_RDONLY | O_CLOEXEC));
+    ASSERT_EQ(::flock(held.get(), LOCK_EX | LOCK_NB), 0);
+    EXPECT_TRUE(rotate_sessions(dir.path(), RotationLimits{1000, 30 * kDay}, fs::path(), kNow).empty());
+    EXPECT_TRUE(fs::exists(other));
+  }
+  // Closed: it is rotation's again.
+  EXPECT_EQ(rotate_sessions(dir.path(), RotationLimits{1000, 30 * kDay}, fs::path(), kNow),
+            std::vector<fs::path>{other});
+}
+
+TEST(SessionFiles, TheRecordersFileIsLockedWhileItIsOpen) {
+  testing::TempDir dir;
+  const auto path = dir.path() / "20200101-000000-1.andros-session";
+  {
+    run::FileRecordSink sink(path.string());
+    std::string error;
+    ASSERT_TRUE(sink.write("0 andros-session 2 " + std::string(64, '0') + "\n", error)) << error;
+    const UniqueFd other(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    EXPECT_NE(::flock(other.get(), LOCK_EX | LOCK_NB), 0);
+    EXPECT_EQ(errno, EWOULDBLOCK);
+    EXPECT_TRUE(rotate_sessions(dir.path(), RotationLimits{0, 0}, fs::path(), kNow + 400 * kDay).empty());
+  }
+  EXPECT_EQ(rotate_sessions(dir.path(), RotationLimits{0, 0}, fs::path(), kNow + 400 * kDay).size(), 1u);
+}
+
+TEST(SessionFiles, TheRunningSessionIsKeptByWhateverPathItIsNamed) {
+  testing::TempDir dir;
+  const auto current = make_session(dir, "20240102-000000-2", 50000, kNow - 400 * kDay);
+  const auto same = dir.path() / "." / current.filename();
+  EXPECT_TRUE(rotate_sessions(dir.path(), RotationLimits{1000, 30 * kDay}, same, kNow).empty());
+  EXPECT_TRUE(fs::exists(current));
 }
 
 TEST(SessionFiles, TheFolderFollowsTheServiceThenXdgThenHome) {

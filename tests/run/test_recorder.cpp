@@ -15,6 +15,7 @@
 #include "andros/link/fault_link.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/run/engine_frames.hpp"
+#include "andros/run/recorded_loop.hpp"
 #include "andros/run/recorder.hpp"
 #include "andros/run/session_replay.hpp"
 #include "support/temp_dir.hpp"

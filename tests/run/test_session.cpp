@@ -195,8 +195,8 @@ std::string session_text(const std::string& header, const SessionSettings& setti
                          const std::function<std::string(std::string)>& edit) {
   RecordChain chain;
   std::string text;
-  for (const auto& p :
-       {header, record::program("0.1.0"), edit(record::settings(settings)), record::end(40, 1, 1, "x")}) {
+  for (const auto& p : {header, record::program("0.1.0"), edit(record::settings(settings)),
+                        record::end(80, 1, 1, "x")}) {  // tick 1 at 12.5 Hz
     text += chain.line(p);
   }
   return text;

@@ -18,6 +18,13 @@ namespace andros {
 
 /// The signals that stop `run` and `monitor` (docs/running.md).
 inline constexpr std::initializer_list<int> kStopSignals = {SIGINT, SIGTERM, SIGHUP};
+/// The signals that stop `run` (docs/running.md, "Signals"): kStopSignals
+/// (SIGHUP reloads), and every other signal whose default action would end
+/// the process between two frames, so that each ends it through the shutdown's
+/// neutral frames instead. SIGXFSZ is ignored (main): a write past a file-size
+/// limit fails with EFBIG.
+inline constexpr std::initializer_list<int> kRunStopSignals = {
+    SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGIO, SIGPWR, SIGSTKFLT};
 /// The signals that end a `record` (docs/controllers.md); SIGHUP keeps its default there.
 inline constexpr std::initializer_list<int> kRecordStopSignals = {SIGINT, SIGTERM};
 

@@ -72,6 +72,9 @@ class TextReader {
   std::optional<std::string_view> next_line();
   /// The number of the line next_line() returned last (1-based; 0 before the first).
   [[nodiscard]] int line_number() const { return line_no_; }
+  /// Whether the line next_line() returned last ended with a newline (only
+  /// the input's last line may not: a file cut short, or written without one).
+  [[nodiscard]] bool line_ended() const { return line_ended_; }
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const TextLimits& limits() const { return limits_; }
 
@@ -106,6 +109,7 @@ class TextReader {
   bool eof_ = false;
   std::size_t consumed_ = 0;
   int line_no_ = 0;
+  bool line_ended_ = true;
 };
 
 /// The rest of text's lines, each ended by a newline, checked as they are read.

@@ -33,6 +33,19 @@ ValidMapping load_mapping(const std::filesystem::path& file, NeedsRobot needs = 
 /// not exist. For `learn`, which checks a file before it writes it.
 ValidMapping load_mapping_text(const std::string& text, const std::filesystem::path& file);
 
+/// A mapping file as a session recorded it: its path, only a label, and its text.
+struct MappingText {
+  std::string label;
+  std::string text;
+};
+
+/// A recorded chain (the mapping first, then each file it extends), read in
+/// memory: each `extends:` takes the next file of the chain, whose name must
+/// be the one it gives (`extends: hd1`: hd1.yaml; `extends: base/x.yaml`:
+/// x.yaml). Nothing is read from or written to the disk; the search path is
+/// never asked.
+ValidMapping load_recorded_chain(const std::vector<MappingText>& files);
+
 /// Where `--robot NAME` looks, in order: $XDG_CONFIG_HOME/andros-bridge/mappings
 /// (default ~/.config/...), the source tree's mappings/ when it exists (not
 /// in a package's build), bin/../share/andros-bridge/mappings beside the

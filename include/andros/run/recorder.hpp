@@ -17,35 +17,10 @@
 
 #include "andros/input/input_source.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/run/record_sink.hpp"
 #include "andros/run/session.hpp"
 
 namespace andros::run {
-
-/// Where the writer thread puts the chained lines: a file, or a test's sink
-/// that stalls or fails.
-class RecordSink {
- public:
-  virtual ~RecordSink() = default;
-  /// Writes all of text; false with error set when it could not.
-  virtual bool write(std::string_view text, std::string& error) = 0;
-  /// Makes what was written durable (called about once a second); false with error set.
-  virtual bool sync(std::string& error) = 0;
-};
-
-/// A session file, created (never overwritten) with mode 0640.
-class FileRecordSink final : public RecordSink {
- public:
-  /// Throws RuntimeError when the file cannot be created.
-  explicit FileRecordSink(const std::string& path);
-  ~FileRecordSink() override;
-  FileRecordSink(const FileRecordSink&) = delete;
-  FileRecordSink& operator=(const FileRecordSink&) = delete;
-  bool write(std::string_view text, std::string& error) override;
-  bool sync(std::string& error) override;
-
- private:
-  int fd_ = -1;
-};
 
 /// The writer thread and the queue in front of it. push() is called from one
 /// thread only (the loop's) and never waits: a single-producer ring.
@@ -120,6 +95,7 @@ class Recorder {
   std::int64_t t_ms_ = 0;  ///< the last pump's time: the tick's
   bool after_pause_ = false;
   bool input_ended_ = false;
+  bool stop_recorded_ = false;
   bool first_ = true;
   // What the last report said, for the records written only on a change.
   OpState state_ = OpState::kNoLink;
@@ -134,26 +110,5 @@ class Recorder {
   std::int64_t last_t_ms_ = 0;
   std::uint64_t frames_sent_ = 0;
 };
-
-/// The input as the loop sees it, with every event it applies recorded.
-class RecordingInput final : public input::InputSource {
- public:
-  RecordingInput(input::InputSource& inner, Recorder& recorder) : inner_(inner), recorder_(recorder) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override;
-  [[nodiscard]] bool finished(std::int64_t now_ms) const override;
-  void feedback(const input::FeedbackPattern& pattern) override { inner_.feedback(pattern); }
-  // Everything else the loop and the screen ask of the input is the inner source's.
-  [[nodiscard]] bool supervised() const override { return inner_.supervised(); }
-  [[nodiscard]] std::optional<input::DeviceLayout> device() const override { return inner_.device(); }
-
- private:
-  input::InputSource& inner_;
-  Recorder& recorder_;
-};
-
-/// The loop's controls with what they answer recorded: requests, the end of a
-/// job-control stop, reload outcomes (with the settings they put in place:
-/// settings() is asked after an ok one).
-RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings);
 
 }  // namespace andros::run

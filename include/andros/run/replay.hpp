@@ -19,7 +19,8 @@ namespace andros::run {
 /// A frame the vehicle received: its time (ms since start) and data bytes.
 using FrameSink = std::function<void(std::int64_t t_ms, const protocol::DataBytes& data)>;
 /// A script's `reload FILE`: the mapping in FILE (as the script names it),
-/// validated; throws InputError for a bad one (the old mapping then stays).
+/// validated; throws for a bad one or one it cannot read (InputError,
+/// RuntimeError...): the old mapping then stays, as in `run`.
 using MappingLoader = std::function<mapping::ValidMapping(const std::string& file)>;
 
 struct ReplayOptions {
@@ -29,6 +30,9 @@ struct ReplayOptions {
   MappingLoader load = [](const std::string& file) -> mapping::ValidMapping {
     throw InputError("reload " + file + ": no mapping loader in this replay");
   };
+  /// Each reload's outcome, when it is taken: a failed one is said (`replay` logs it) and the replay goes on.
+  std::function<void(std::int64_t t_ms, const ReloadOutcome& outcome)> reloaded = [](std::int64_t,
+                                                                                     const ReloadOutcome&) {};
   /// Every tick's report (the state machine's state with it), for tests.
   Bridge::Observer observe = [](const TickReport&) {};
 };

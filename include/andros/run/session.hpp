@@ -30,6 +30,13 @@ inline constexpr std::string_view kSessionMagic = "andros-session";
 inline constexpr int kSessionFormat = 2;
 inline constexpr int kOldestSessionFormat = 1;
 inline constexpr std::string_view kSessionExtension = ".andros-session";
+/// The longest line read (checked while reading: a longer one is refused
+/// before more of it is held). The longest record is the settings': the
+/// mapping chain's text, JSON-escaped; the recorder drops a longer one.
+inline constexpr std::size_t kMaxSessionLine = std::size_t{4} * 1024 * 1024;
+/// The longest session read: its times and ticks lie within 24 h (an event
+/// script's bound), so that replay and plot do bounded work.
+inline constexpr std::int64_t kMaxSessionMs = std::int64_t{24} * 3600 * 1000;
 
 /// True when text (a file's first line, or more) starts a session.
 bool is_session_start(std::string_view first_line);
@@ -40,6 +47,12 @@ class RecordChain {
   /// The next record's whole line, newline included.
   std::string line(std::string_view payload);
   [[nodiscard]] std::uint64_t records() const { return seq_; }
+  /// Back to an earlier place (records, and the last one's hash): the lines
+  /// made since were not written, and the chain goes on from the last that was.
+  void rewind(std::uint64_t records, const Sha256Digest& last) {
+    seq_ = records;
+    last_ = last;
+  }
   [[nodiscard]] const Sha256Digest& last() const { return last_; }
 
  private:
@@ -108,10 +121,16 @@ struct VerifyResult {
   bool closed = false;        ///< the session has its end record
   std::string last_hash;      ///< the last record's hash (compare with the log's closing line)
   std::string problem;        ///< the first record altered, removed or reordered
+  /// Not 0: the file's last line, half a record, was cut short there (a run
+  /// cut off: power lost, a full disk); the records before it are intact.
+  int cut_short_line = 0;
 };
 
 /// Checks the chain of the session at path. Throws RuntimeError when it cannot be read.
 VerifyResult verify_session(const std::filesystem::path& path);
+
+/// "cut short at line N: the run was cut off, power lost or disk full; the R records before it are intact".
+std::string cut_short_text(const VerifyResult& result);
 
 /// Where an input is in effect: `t_ms` from a record.
 struct TimedText {
@@ -127,6 +146,9 @@ struct FrameRecord {
   protocol::DataBytes data{};
   std::int64_t gap = 0;  ///< ticks the live loop did not run just before this one (a stall, a pause)
 };
+
+/// What became of a frame record's frame, as the record says it: sent, busy, down, or none (nothing offered).
+std::string_view result_name(const FrameRecord& frame);
 
 struct ReloadRecord {
   std::int64_t t_ms = 0;
@@ -173,6 +195,7 @@ struct Session {
   std::optional<std::int64_t> input_end;
   std::uint64_t dropped = 0;
   std::optional<EndRecord> end;
+  int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
 
   /// The frame record in effect at tick (the last one at or before it), or null.
   [[nodiscard]] const FrameRecord* frame_at(std::int64_t tick) const;
@@ -180,10 +203,16 @@ struct Session {
   [[nodiscard]] std::int64_t live_ticks() const;
   /// The length in ms: the last tick's time.
   [[nodiscard]] std::int64_t length_ms() const;
+  /// Frames the link took: the end record's count, or, without one, those
+  /// the frame records read show (to the last of them).
+  [[nodiscard]] std::uint64_t frames_sent() const;
 };
 
-/// Reads the session at path (its chain is verify_session's business).
-/// Throws InputError at FILE:LINE for a record it cannot read.
+/// Reads the session at path (its chain is verify_session's business), each
+/// record checked against what a session holds: a tick at its time at the
+/// recorded rate, within kMaxSessionMs, the end's tick at or after the last
+/// frame record's. Throws InputError at FILE:LINE for a record it cannot
+/// read, but for a last line cut short, which is left out (cut_short_line).
 Session read_session(const std::filesystem::path& path);
 
 std::string_view request_name(Request request);

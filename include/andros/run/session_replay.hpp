@@ -27,8 +27,9 @@ struct SessionReplayResult {
 /// Throws InputError.
 using SourcesLoader = std::function<mapping::ValidMapping(const std::vector<MappingSource>& sources)>;
 
-/// Loads recorded mapping files: written under a temporary folder at their
-/// recorded paths (so that `extends` finds its bases), then loaded and validated.
+/// Loads recorded mapping files in memory (mapping::load_recorded_chain): a
+/// recorded path is a label, `extends` takes the next recorded file; nothing
+/// is written, and nothing of this machine's mappings is read.
 mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& sources);
 
 /// Replays session; observe sees every tick's report (the plot's source).

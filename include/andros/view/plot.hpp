@@ -14,13 +14,15 @@
 
 namespace andros::view {
 
-/// One tick of the loop.
+/// One tick of the loop, or, from a session, the first of a run of ticks
+/// that repeat it.
 struct PlotSample {
   std::int64_t t_ms = 0;
   protocol::DataBytes data{};
   bool sent = false;  ///< the link took the frame
   run::OpState state = run::OpState::kNoLink;
-  std::string layer;  ///< "" for the base layer
+  std::string layer;       ///< "" for the base layer
+  std::int64_t ticks = 1;  ///< the ticks it stands for: itself and those after it that repeat it
 };
 
 struct PlotInput {
@@ -35,7 +37,9 @@ struct PlotInput {
 /// A replay's report as a sample.
 PlotSample plot_sample(const run::TickReport& report);
 
-/// Every tick the live loop ran, from the session's records.
+/// The ticks the live loop ran, from the session's records: a sample at each
+/// change point and at the last tick each holds to (work and memory as the
+/// records', not the ticks').
 std::vector<PlotSample> plot_samples(const run::Session& session);
 
 /// The page: 297 x 210 mm.

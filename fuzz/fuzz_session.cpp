@@ -1,0 +1,80 @@
+// libFuzzer target: a session file (docs/recording.md) as verify, sessions,
+// plot, export and replay read it. Any bytes either read or are refused with
+// an InputError at the file (and a line in it); what reads keeps a session's
+// bounds (frame ticks in order at their times, within 24 h, the end at or
+// after the last frame), the plot's samples are as many as its records, not
+// its ticks, and a short session replays without a crash.
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "andros/base/error.hpp"
+#include "andros/run/session.hpp"
+#include "andros/run/session_replay.hpp"
+#include "andros/view/plot.hpp"
+#include "andros/view/session_export.hpp"
+#include "fuzz_check.hpp"
+
+using andros::fuzz::check;
+
+namespace {
+
+/// The fuzzer's bytes as a file: the readers take a path.
+const std::string& input_path() {
+  static const std::string path = [] {
+    const auto dir = std::filesystem::temp_directory_path();
+    return (dir / ("fuzz-session-" + std::to_string(::getpid()) + ".andros-session")).string();
+  }();
+  return path;
+}
+
+/// The most ticks a seed's replay and export run: a fuzzer's minute, not a day's.
+constexpr std::int64_t kTicksTried = 20'000;
+
+void check_session(const andros::run::Session& s) {
+  std::int64_t previous = -1;
+  for (const auto& f : s.frames) {
+    check(f.tick > previous && f.tick - f.gap > previous);
+    check(f.t_ms >= 0 && f.t_ms <= andros::run::kMaxSessionMs);
+    previous = f.tick;
+  }
+  if (s.end && !s.frames.empty()) check(s.end->last_tick >= s.frames.back().tick);
+  const auto samples = andros::view::plot_samples(s);
+  check(samples.size() <= 2 * (s.frames.size() + s.states.size() + s.layers.size()) + 2);
+  const std::int64_t last = s.end ? s.end->last_tick : (s.frames.empty() ? 0 : s.frames.back().tick);
+  if (last > kTicksTried) return;
+  std::ostringstream table;
+  andros::view::export_session(s, andros::view::ExportFormat::kCsv, table);
+  try {
+    (void)andros::run::replay_session(s);
+  } catch (const andros::InputError&) {
+    // A mapping the session names that does not load, records dropped: refused, said.
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const auto& path = input_path();
+  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
+    check(std::fwrite(data, 1, size, f) == size);
+    std::fclose(f);
+  }
+  try {
+    const auto result = andros::run::verify_session(path);
+    check(result.intact || !result.problem.empty());
+    if (result.intact) check(result.records > 0 && result.last_hash.size() == 64);
+  } catch (const andros::InputError& e) {
+    check(e.pos().file == path);
+  }
+  try {
+    check_session(andros::run::read_session(path));
+  } catch (const andros::InputError& e) {
+    check(e.pos().file == path);
+  }
+  return 0;
+}

@@ -1,0 +1,59 @@
+// `andros-bridge export SESSION --format csv|jsonl`: a session as a table, a
+// row per tick (docs/recording.md, "Export").
+#include <memory>
+#include <string>
+
+#include "andros/base/error.hpp"
+#include "andros/base/output_file.hpp"
+#include "andros/run/session.hpp"
+#include "andros/view/session_export.hpp"
+#include "commands.hpp"
+#include "session_files.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct ExportOptions {
+  std::string session;
+  std::string format = "csv";
+  std::string output;
+};
+
+void run_export(const ExportOptions& opt) {
+  const auto format = view::parse_export_format(opt.format, SourcePos{"--format"});
+  const auto session = run::read_session(opt.session);
+  // Written as the rows come: a failed write leaves FILE as it was.
+  OutputFile out(opt.output.empty() ? "-" : opt.output);
+  view::export_session(session, format, out.stream());
+  out.commit();
+}
+
+}  // namespace
+
+void add_export_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<ExportOptions>();
+  auto* cmd = app.add_subcommand("export",
+                                 "Write a flight recorder session (docs/recording.md) as a table, one row per tick\n"
+                                 "the live loop ran: the time (one strictly increasing column, in seconds), the\n"
+                                 "operating state, a stop requested, the layer, what the link did with the frame,\n"
+                                 "and every signal of the frame by name (drive, pivot...). For a spreadsheet or\n"
+                                 "PlotJuggler, as it is.");
+  cmd->add_option("SESSION", opt->session,
+                  "a session file, or its bare name as 'sessions' prints it (looked up in the\n"
+                  "sessions' folder)")
+      ->required();
+  cmd->add_option("--format", opt->format, "csv (a header row, then a row a tick) or jsonl (an object a line)")
+      ->type_name("csv|jsonl")
+      ->default_str("csv");
+  cmd->add_option("--output", opt->output,
+                  "write to FILE instead of standard output (- is standard output); a failed\n"
+                  "write leaves FILE as it was (docs/running.md, Output files)")
+      ->type_name("FILE");
+  cmd->callback([opt, &exit_code] {
+    opt->session = find_session(opt->session);  // a bare session name, as `sessions` prints it
+    run_export(*opt);
+    exit_code = kExitOk;
+  });
+}
+
+}  // namespace andros::cli

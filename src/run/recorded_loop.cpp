@@ -1,0 +1,44 @@
+#include "andros/run/recorded_loop.hpp"
+
+#include <utility>
+
+namespace andros::run {
+
+void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
+  state.keep_applied(true);
+  inner_.pump(state, now_ms);
+  recorder_.pumped(now_ms, state.take_applied());
+}
+
+bool RecordingInput::finished(std::int64_t now_ms) const {
+  const bool done = inner_.finished(now_ms);
+  if (done) recorder_.input_end(now_ms);
+  return done;
+}
+
+RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings) {
+  control.poll = [poll = std::move(control.poll), &recorder] {
+    const Request r = poll();
+    recorder.request(r);
+    return r;
+  };
+  control.pause = [pause = std::move(control.pause), &recorder] {
+    pause();
+    recorder.paused();
+  };
+  control.finish_reload = [finish = std::move(control.finish_reload), &recorder, settings = std::move(settings)] {
+    auto outcome = finish();
+    if (outcome) {
+      if (outcome->ok) {
+        const SessionSettings now = settings();
+        recorder.reloaded(*outcome, &now);
+      } else {
+        recorder.reloaded(*outcome, nullptr);
+      }
+    }
+    return outcome;
+  };
+  return control;
+}
+
+}  // namespace andros::run
