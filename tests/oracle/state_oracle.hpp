@@ -40,6 +40,7 @@ class StateOracle {
       case E::kControllerUp: controller_ = true; break;
       case E::kControllerDown: controller_ = false; break;
       case E::kOperatorStop:
+      case E::kGateTrip:  // the frame gate stopped a frame: a stop like the button's
         if (!shutdown_) stop_ = owed_stop_ = true;
         break;
       case E::kReloadBegin:
@@ -89,6 +90,7 @@ class StateOracle {
       case E::kPanic:
       case E::kEnableTimeout:
       case E::kOperatorStop:
+      case E::kGateTrip:
       case E::kReloadBegin:
       case E::kSuspend:
       case E::kResume:
