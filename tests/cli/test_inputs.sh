@@ -22,7 +22,7 @@ for sig in INT TERM HUP; do
   out=$TMP/inputs_$sig.txt
   "$BIN" inputs --mapping "$DATA/mappings/core.yaml" --controller "no such pad" >"$out" 2>"$TMP/err" &
   pid=$!
-  for _ in $(seq 100); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 5 s
+  for _ in $(seq 600); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?

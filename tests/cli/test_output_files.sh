@@ -120,7 +120,7 @@ expect_stderr_matches "cannot open 'real' for writing: Is a directory$"
 printf 'old recording\n' >rec.events
 "$BIN" record --output rec.events 2>"$TMP/err" &
 pid=$!
-for _ in $(seq 100); do ls -A | grep -q '^\.rec\.events\.' && break; sleep 0.05; done  # bounded: 5 s
+for _ in $(seq 600); do ls -A | grep -q '^\.rec\.events\.' && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
 [[ $(cat rec.events) == 'old recording' ]] || fail "record touched the old recording before it ended"
 kill -INT "$pid"
 wait "$pid"
