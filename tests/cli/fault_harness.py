@@ -25,10 +25,10 @@ def closed_log(bin_, data, port):
     os.close(w)
     os.read(r, 1)
     os.close(r)
-    if not port.wait(lambda f: driving(f) >= 5, 10):
+    if not port.wait(lambda f: driving(f) >= 5, 20):
         fail("no driving frames")
     n = len(port.received())
-    if not port.wait(lambda f: len(f) >= n + 5, 5):  # frames go on with the log gone
+    if not port.wait(lambda f: len(f) >= n + 5, 10):  # frames go on with the log gone
         fail(f"frames stopped after the log pipe closed (exit {proc.poll()})")
     proc.send_signal(signal.SIGTERM)  # its "stopping" line is the next log write
     code = wait_exit(proc, 10)
@@ -41,7 +41,7 @@ def stuck_log(bin_, data, port):
     r, w = full_pipe()
     proc = start(long_drive(bin_, data, port), stdout=w, stderr=w, stdin=subprocess.DEVNULL)
     os.close(w)
-    ok = port.wait(lambda f: driving(f) >= 10, 10)
+    ok = port.wait(lambda f: driving(f) >= 10, 20)
     proc.send_signal(signal.SIGTERM)
     code = wait_exit(proc, 10)
     os.close(r)
@@ -94,7 +94,7 @@ def job_control(bin_, data, port):
                 "4200 axis lefty -32768\n6000 end\n")
     proc = start([bin_, "run", "--port", port.path, "--input", script],
                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
-    if not port.wait(lambda f: driving(f) >= 5, 10):
+    if not port.wait(lambda f: driving(f) >= 5, 20):
         fail("no driving frames")
     proc.send_signal(signal.SIGTSTP)
     stopped = wait_stopped(proc)
@@ -132,7 +132,7 @@ def background_stop(bin_, data, port):
     Ctrl-Z: neutral frames first, then stopped; continued, it runs on and stops as usual."""
     proc = start(long_drive(bin_, data, port), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                  stdin=subprocess.DEVNULL)
-    if not port.wait(lambda f: driving(f) >= 5, 10):
+    if not port.wait(lambda f: driving(f) >= 5, 20):
         fail("no driving frames")
     proc.send_signal(signal.SIGTTOU)
     if not wait_stopped(proc):
@@ -141,7 +141,7 @@ def background_stop(bin_, data, port):
     if [d for _, d, _ in before[-3:]] != [128, 128, 128]:
         fail(f"the frames before the stop do not end neutral: drive {[d for _, d, _ in before[-6:]]}")
     proc.send_signal(signal.SIGCONT)
-    if not port.wait(lambda f: len(f) >= len(before) + 5, 5):
+    if not port.wait(lambda f: len(f) >= len(before) + 5, 10):
         fail("no frames after SIGCONT")
     proc.send_signal(signal.SIGTERM)
     code = wait_exit(proc, 10)
@@ -156,13 +156,13 @@ def continue_early(bin_, data, port):
     press, and SIGTERM ends it as usual."""
     log = tempfile.TemporaryFile()  # unnamed: nothing to remove, whichever way the scenario ends
     proc = start(long_drive(bin_, data, port), stdout=subprocess.DEVNULL, stderr=log, stdin=subprocess.DEVNULL)
-    if not port.wait(lambda f: driving(f) >= 5, 10):
+    if not port.wait(lambda f: driving(f) >= 5, 20):
         fail("no driving frames")
     proc.send_signal(signal.SIGTSTP)
     time.sleep(0.08)  # the neutral frames take 3 periods (120 ms at 25 Hz) and a drain
     proc.send_signal(signal.SIGCONT)
     n = len(port.received())
-    going = port.wait(lambda f: len(f) >= n + 10, 5)  # frames after the neutral ones
+    going = port.wait(lambda f: len(f) >= n + 10, 10)  # frames after the neutral ones
     state = proc_state(proc.pid)
     after = port.received()[n:]
     print(f"after SIGCONT: state {state}, {len(after)} frames, {driving(after)} driving")
@@ -190,7 +190,7 @@ def paused_terminal(bin_, data, port):
     os.write(m, b"\x13")  # Ctrl-S: the terminal stops taking output (IXON)
     read_some(m, 0.3)
     n = len(port.received())
-    ok = port.wait(lambda f: len(f) >= n + 25, 5)
+    ok = port.wait(lambda f: len(f) >= n + 25, 10)
     proc.send_signal(signal.SIGTERM)
     sent = time.monotonic()
     code = wait_exit(proc, 10)

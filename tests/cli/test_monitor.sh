@@ -43,12 +43,12 @@ def start():
     return m, s, p
 m, s, p = start()
 p.send_signal(signal.SIGINT)
-code = p.wait(timeout=5)
+code = p.wait(timeout=10)
 text = open(out).read()
 ok = code == 0 and "frames      24, valid 24" in text and "rate " in text
 m2, s2, p2 = start()
 os.close(m2); os.close(s2)
-ok = ok and p2.wait(timeout=5) == 1
+ok = ok and p2.wait(timeout=10) == 1
 sys.exit(0 if ok else 1)
 PY
 
