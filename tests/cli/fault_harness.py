@@ -7,8 +7,9 @@ stuck, SIGTERM's timing, Ctrl-Z and SIGCONT, a paused terminal.
 Each scenario runs `andros-bridge run --port PTY ...` (or `monitor`), plays
 its part (with the helpers of fault_lib.py), writes what arrived on the port
 to CAPTURE (for check_frames.py) and exits 0, or prints what went wrong and
-exits 1. Every wait is bounded; times
-are only compared against generous bounds (a period or more of margin).
+exits 1. Every wait is bounded (a ceiling); what follows a request is judged
+from the run's session, and the times still compared have half a period or
+more of margin (docs/testing.md, "Real-time tests").
 """
 import os, signal, subprocess, sys, tempfile, time
 
