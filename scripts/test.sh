@@ -61,11 +61,16 @@ closing() {
   echo "tests: $((total - failed)) passed, $failed failed"
 }
 
-# ctest runs three times as many jobs as cores: a unit test takes two of them
-# (so that no more of them compute at once than there are cores), a
-# command-line test one (it mostly waits on the frame clock: the plain run's
+# ctest runs three times as many jobs as cores: a unit test takes two of them,
+# a command-line test one (it mostly waits on the frame clock: the plain run's
 # 60 of them wait some 180 s in all). tests/CMakeLists.txt sets the slots, and
-# starts the longest command-line tests first.
+# starts the longest command-line tests first. The plain suite beside two
+# niced busy loops (the package and clang-tidy in the background), on the
+# 2-core machine other builds shared: 4 jobs 96 and 157 s, 6 jobs 119 and
+# 180 s, 8 jobs 116 and 175 s (within that noise of each other); 2 jobs 471 s
+# against 191 s for 6. Fewer jobs leave the cores idle while the tests wait;
+# more gain nothing, the longest command-line tests (30-45 s) being the
+# floor. The background jobs are niced: the tests that compute go first.
 ctest_jobs=$((3 * jobs))
 
 # background NAME CMD...: runs CMD niced (the builds and tests in front get

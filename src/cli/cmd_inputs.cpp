@@ -72,6 +72,7 @@ int run_inputs(const InputsOptions& opt) {
     display->start();
   } else {
     std::printf("# %s\n# %s\n", input.selection().c_str(), source.c_str());
+    std::fflush(stdout);  // line by line down a pipe: the header too, before the first change
   }
   const auto grid = TickGrid::every(kPollMs * kNsPerMs);
   const std::int64_t start_ns = monotonic_ns();

@@ -1,7 +1,7 @@
 """What the fault scenarios (fault_harness.py) share: the pty standing in for
 the switchbox, starting the bridge and waiting on it, a full pipe, a terminal.
 Every wait is bounded."""
-import os, pty, select, subprocess, sys, tempfile, threading, time, tty
+import os, pty, select, shutil, subprocess, sys, tempfile, threading, time, tty
 
 
 class Port:
@@ -84,8 +84,7 @@ class Port:
             f.write(self.data)
         os.close(self.master)
         os.close(self.slave)
-        os.unlink(self.path)
-        os.rmdir(self.dir)
+        shutil.rmtree(self.dir)  # the link, and the session of the scenario's run
 
 
 def driving(frames):
@@ -131,6 +130,25 @@ def full_pipe():
 def proc_state(pid):
     with open(f"/proc/{pid}/stat") as f:
         return f.read().rsplit(")", 1)[1].split()[0]
+
+
+def bytes_read(pid):
+    """What the process has read so far (rchar of /proc/PID/io: every read(), whatever the file)."""
+    with open(f"/proc/{pid}/io") as f:
+        return int(next(line.split()[1] for line in f if line.startswith("rchar:")))
+
+
+def wait_reading(proc, count, timeout=30):
+    """True once proc has read `count` bytes: past its start-up and in its loop. A signal
+    sent before a program has set up its handling meets the signal's default action (a
+    SIGTERM ends it with -15), so a test signals only a process seen at work. The bound
+    is a ceiling for a start-up under ASan on a loaded machine, not a measure."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline and proc.poll() is None:
+        if bytes_read(proc.pid) >= count:
+            return True
+        time.sleep(0.01)
+    return False
 
 
 def wait_stopped(proc):

@@ -22,7 +22,9 @@ for sig in INT TERM HUP; do
   out=$TMP/inputs_$sig.txt
   "$BIN" inputs --mapping "$DATA/mappings/core.yaml" --controller "no such pad" >"$out" 2>"$TMP/err" &
   pid=$!
-  for _ in $(seq 100); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 5 s
+  for _ in $(seq 600); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
+  # Out line by line while it runs (the signal goes once it is, past the start-up).
+  [[ $(wc -l <"$out") -ge 2 ]] || fail "SIG$sig: the header is not out while it runs: $(cat "$out")"
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?

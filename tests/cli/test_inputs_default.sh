@@ -9,7 +9,9 @@ header() {
   local out=$1; shift
   "$@" >"$out" 2>"$TMP/err" &
   local pid=$!
-  for _ in $(seq 100); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 5 s
+  for _ in $(seq 600); do [[ $(wc -l <"$out") -ge 2 ]] && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
+  # Out line by line while it runs (the signal goes once it is, past the start-up).
+  [[ $(wc -l <"$out") -ge 2 ]] || fail "inputs $*: the header is not out while it runs: $(cat "$out")"
   kill -TERM "$pid"
   wait "$pid" || fail "inputs $*: exit $?: $(cat "$TMP/err")"
 }

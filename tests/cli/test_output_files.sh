@@ -88,7 +88,9 @@ if [[ $(id -u) -eq 0 ]]; then
   # A recording to a full node: the node stays.
   "$BIN" record --output full 2>"$TMP/err" &
   pid=$!
-  sleep 0.3
+  # Until it has said so (or ended): a SIGINT before its start-up has set up its
+  # handling would end it with the signal's default action, before any word.
+  for _ in $(seq 600); do grep -q 'No space left' "$TMP/err" && break; kill -0 "$pid" 2>/dev/null || break; sleep 0.05; done  # bounded: 30 s
   kill -INT "$pid" 2>/dev/null  # it may have ended on its own
   wait "$pid"
   is_char full || fail "record --output FULL-NODE removed the node"
@@ -118,7 +120,7 @@ expect_stderr_matches "cannot open 'real' for writing: Is a directory$"
 printf 'old recording\n' >rec.events
 "$BIN" record --output rec.events 2>"$TMP/err" &
 pid=$!
-for _ in $(seq 100); do ls -A | grep -q '^\.rec\.events\.' && break; sleep 0.05; done  # bounded: 5 s
+for _ in $(seq 600); do ls -A | grep -q '^\.rec\.events\.' && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
 [[ $(cat rec.events) == 'old recording' ]] || fail "record touched the old recording before it ended"
 kill -INT "$pid"
 wait "$pid"

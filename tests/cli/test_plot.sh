@@ -48,22 +48,17 @@ session=$(ls "$XDG_STATE_HOME"/andros-bridge/*.andros-session | tail -1)
 # (to 12 s: the run ends on neutral frames past the script's end; replay does not)
 expect_exit 0 "$BIN" plot "$session" --to 12 --output "$TMP/session.svg"
 svg_has "$TMP/session.svg" "HD1 drive, mapping hd1.yaml" "input $root/demos/drive.events" "session $(basename "$session")"
-# The session's frames are the replay's: the same drive and pivot lines as the shipped plot.
-# The session is drawn from its change points, the replay from every tick:
-# the same lines, once the points in the middle of a level run are left out.
-python3 - "$TMP/session.svg" "$shipped" <<'PY' || fail "the session's drive and pivot differ from the replay's"
-import sys, re
-def shape(d):
-    out = []
-    for sub in re.findall(r"M[^M]*", d):
-        pts = [tuple(map(float, p.split())) for p in re.findall(r"[ML]\s*([-\d.]+ [-\d.]+)", sub)]
-        keep = [p for i, p in enumerate(pts)
-                if i in (0, len(pts) - 1) or not (pts[i - 1][1] == p[1] == pts[i + 1][1])]
-        out.append(keep)
-    return out
-paths = [[shape(d) for d in re.findall(r'<path d="([^"]*)"', open(f).read())] for f in sys.argv[1:]]
-sys.exit(0 if paths[0] == paths[1] and len(paths[0]) == 2 else 1)
-PY
+# The plot draws what the session recorded (a real-time run on a busy machine
+# may skip a tick or meet a busy link, which the replay of the script on its
+# virtual clock never does: compared with the shipped plot, the verdict would
+# depend on the machine's load), and those frames are the loop's own: replay
+# runs the session again on the virtual clock, its inputs and the link's
+# answers at the ticks the run met them.
+python3 "$(dirname "$0")/check_plot.py" "$BIN" "$session" "$TMP/session.svg" 0 12 >"$TMP/check" 2>&1 ||
+  fail "the session's plot: $(cat "$TMP/check")"
+sent=$(sed -n 's/^[0-9]* end [0-9]* tick [0-9]* frames \([0-9]*\) .*/\1/p' "$session")
+expect_exit 0 "$BIN" replay "$session"
+expect_stdout "$sent frames identical"
 
 # A session that is not intact is drawn, and says so.
 python3 -c 'import sys; p=sys.argv[1]; l=open(p).read().split("\n"); l[7],l[8]=l[8],l[7]; open(sys.argv[2],"w").write("\n".join(l))' \

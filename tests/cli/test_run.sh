@@ -110,7 +110,7 @@ expect_stderr_matches "info: no link: nothing reaches the vehicle"
 grep -q "info: enabled" "$TMP/err" && fail "enabled said while nothing reached the vehicle: $(cat "$TMP/err")"
 
 # SIGTERM mid-drive: neutral frames, drain, exit 0 (the harness bounds the wait).
-run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 10 -- \
+run_cmd harness "$TMP/cap" --term-after 5 --driving --timeout 30 -- \
   "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
 [[ $code -eq 0 ]] || fail "SIGTERM run exited $code: $(cat "$TMP/err")"
 check "$TMP/cap" --min 8 --driving --neutral-tail 3
@@ -119,7 +119,7 @@ grep -q "stopped (SIGTERM)" "$TMP/err" || fail "no SIGTERM closing line: $(cat "
 # Unplug/replug: the symlink moves from one pty to a new one; streaming resumes,
 # and a link that comes back is a new link: with the deadman held throughout,
 # nothing moves on it (a stop never ends by itself).
-run_cmd harness "$TMP/cap" --replug-after 5 --term-after 10 --timeout 15 -- \
+run_cmd harness "$TMP/cap" --replug-after 5 --term-after 10 --timeout 30 -- \
   "$BIN" run --port {PTY} --input "$LIVE/long_drive.events"
 [[ $code -eq 0 ]] || fail "replug run exited $code: $(cat "$TMP/err")"
 check "$TMP/cap" --min 5

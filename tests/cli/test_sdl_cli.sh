@@ -39,7 +39,7 @@ for sig in TERM INT; do
   out=$TMP/rec_$sig.txt
   "$BIN" record --output "$out" 2>"$TMP/err" &
   pid=$!
-  for _ in $(seq 100); do [[ -s $out ]] && break; sleep 0.05; done  # bounded: 5 s
+  for _ in $(seq 600); do [[ -s $out ]] && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
   kill -"$sig" "$pid"
   wait "$pid"
   code=$?
@@ -64,7 +64,9 @@ grep -q "supervisor's controller: controller" "$TMP/err" || fail "the supervisor
 out=$TMP/rec_sup.txt
 "$BIN" record --supervisor 'no such pad' --output "$out" 2>"$TMP/err" &
 pid=$!
-for _ in $(seq 100); do grep -q 'supervisor disconnect' "$out" 2>/dev/null && break; sleep 0.05; done  # bounded: 5 s
+for _ in $(seq 600); do grep -q 'supervisor disconnect' "$out" 2>/dev/null && break; sleep 0.05; done  # bounded: 30 s (a ceiling: ASan on a loaded machine)
+# Written at 0 and flushed then: a recording killed at any time keeps it (and the SIGINT goes once it is there).
+grep -q 'supervisor disconnect' "$out" || fail "record --supervisor: no 'supervisor disconnect' in the file while it records: $(cat "$out")"
 kill -INT "$pid"
 wait "$pid" || fail "record --supervisor exited $?; stderr: $(cat "$TMP/err")"
 grep -q "^# supervisor: a controller named like 'no such pad'$" "$out" || fail "no supervisor in the header: $(cat "$out")"

@@ -6,13 +6,21 @@ LIVE=$DATA/live
 export XDG_CONFIG_HOME=$TMP/xdg
 
 python3 - "$BIN" "$LIVE/long_drive.events" >"$TMP/out" 2>"$TMP/err" <<'PY'
-import os, pty, signal, subprocess, sys, time, tty
+import glob, os, pty, re, signal, subprocess, sys, time, tty
 master, slave = pty.openpty()
 tty.setraw(master)
-# 300 frames a second fill the pty's ~20 kB in about 2 s; nobody reads it.
+# 300 frames a second fill the pty's ~20 kB in about 2 s; nobody reads it. The
+# SIGTERM goes once the run has recorded a frame the full port refused (busy):
+# on a loaded machine, skipped ticks fill it later.
 p = subprocess.Popen([sys.argv[1], "run", "--port", os.ttyname(slave), "--baud", "115200", "--rate", "300",
                       "--input", sys.argv[2]], stderr=subprocess.PIPE)
-time.sleep(5)
+sessions = os.path.join(os.environ["XDG_STATE_HOME"], "andros-bridge", "*.andros-session")
+busy = re.compile(r"^[0-9]+ frame [0-9]+ [0-9]+ busy ", re.M)
+deadline = time.monotonic() + 60  # a ceiling
+while time.monotonic() < deadline and p.poll() is None:
+    if any(busy.search(open(f).read()) for f in glob.glob(sessions)):
+        break
+    time.sleep(0.1)
 p.send_signal(signal.SIGTERM)
 _, err = p.communicate(timeout=10)
 sys.stderr.write(err.decode())

@@ -86,7 +86,7 @@ struct ScriptOnPty {
   input::ScriptInput input;
   PressToDrive frames;
   link::SerialLink link{pty.path, 9600};
-  RealClock clock;
+  VirtualClock clock;  // the ticks the script names, however busy the machine (a real clock skips one when late)
   Bridge bridge{clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = kRules}};
 };
 

@@ -33,6 +33,7 @@ RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptio
     }
     status.t_ms = tick * options.period_ms;
     const auto& events = input.poll(status.t_ms);
+    bool wrote = !events.empty();
     for (const auto& event : events) {
       write_line(out, format_event(event));
       bool& connected = event.pad == Pad::kSupervisor ? status.supervisor_connected : status.connected;
@@ -47,8 +48,9 @@ RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptio
       absent.type = InputEvent::Type::kDisconnect;
       absent.pad = Pad::kSupervisor;
       write_line(out, format_event(absent));
+      wrote = true;
     }
-    if (!events.empty()) out.flush();  // a killed recording keeps what it saw
+    if (wrote) out.flush();  // a killed recording keeps what it saw
     status.events += static_cast<std::int64_t>(events.size());
     status.tick = tick + 1;
     if (!keep_going(status) || stop.requested()) break;
