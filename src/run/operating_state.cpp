@@ -31,14 +31,19 @@ constexpr auto kTable = std::to_array<Transition>({
     row(S::kEnabled, E::kRelease, S::kNotEnabled),
     row(S::kEnabled, E::kPanic, S::kNotEnabled),
     row(S::kEnabled, E::kEnableTimeout, S::kNotEnabled),
-    // The operator's stop: from any driving state, latched (it outlives the
-    // link, the controller, a reload and a suspend); cleared only with the
-    // stop buttons and the deadman released, and then not enabled, afresh.
+    // A stop button: from any driving state, latched (it outlives the link,
+    // the controller, a reload and a suspend); reset only by a reset hold on
+    // the pad that stopped (or the supervisor's), and then not enabled, afresh.
     row(S::kNoLink, E::kOperatorStop, S::kStopped),
     row(S::kNoController, E::kOperatorStop, S::kStopped),
     row(S::kNotEnabled, E::kOperatorStop, S::kStopped),
     row(S::kEnabled, E::kOperatorStop, S::kStopped),
-    settle(S::kStopped, E::kStopCleared, true),
+    row(S::kNoLink, E::kSupervisorStop, S::kStopped),
+    row(S::kNoController, E::kSupervisorStop, S::kStopped),
+    row(S::kNotEnabled, E::kSupervisorStop, S::kStopped),
+    row(S::kEnabled, E::kSupervisorStop, S::kStopped),
+    settle(S::kStopped, E::kOperatorReset, true),  // the operator's own stop only
+    settle(S::kStopped, E::kSupervisorReset, true),
     // Reload, suspend, shutdown: from any driving state.
     row(S::kNoLink, E::kReloadBegin, S::kReloading),
     row(S::kNoController, E::kReloadBegin, S::kReloading),
@@ -74,7 +79,7 @@ OperatingState::OperatingState(bool link_up) : state_(S::kNoLink), link_up_(link
 std::span<const Transition> OperatingState::table() { return kTable; }
 
 OpState OperatingState::settled() const {
-  if (stop_latched_) return S::kStopped;
+  if (stopped_by_) return S::kStopped;
   if (!link_up_) return S::kNoLink;
   if (!controller_up_) return S::kNoController;
   return S::kNotEnabled;
@@ -88,8 +93,24 @@ Effect OperatingState::on(OpEvent event) {
     case E::kLinkTaken: link_up_ = false; break;
     case E::kControllerUp: controller_up_ = true; break;
     case E::kControllerDown: controller_up_ = false; break;
-    case E::kOperatorStop: stop_latched_ = stop_latched_ || state_ != S::kStopping; break;
-    case E::kStopCleared: stop_latched_ = false; break;
+    case E::kOperatorStop:
+      if (state_ != S::kStopping && !stopped_by_) stopped_by_ = StopBy::kOperator;
+      reset_by_.reset();
+      break;
+    case E::kSupervisorStop:
+      if (state_ != S::kStopping) stopped_by_ = StopBy::kSupervisor;
+      reset_by_.reset();
+      break;
+    case E::kOperatorReset:
+    case E::kSupervisorReset: {
+      const StopBy by = event == E::kSupervisorReset ? StopBy::kSupervisor : StopBy::kOperator;
+      // Stopped only; the supervisor resets any stop, the operator only the operator's.
+      if (state_ != S::kStopped || (by == StopBy::kOperator && stopped_by_ != StopBy::kOperator)) return {};
+      stopped_by_.reset();
+      reset_by_ = by;
+      break;
+    }
+    case E::kFreshPress: reset_by_.reset(); break;
     default: break;
   }
   for (const auto& t : kTable) {
@@ -127,8 +148,10 @@ std::string_view to_string(OpEvent event) {
     case E::kRelease: return "deadman released";
     case E::kPanic: return "deadman squeezed past panic";
     case E::kEnableTimeout: return "enable timeout";
-    case E::kOperatorStop: return "stop button";
-    case E::kStopCleared: return "stop cleared";
+    case E::kOperatorStop: return "operator's stop";
+    case E::kSupervisorStop: return "supervisor's stop";
+    case E::kOperatorReset: return "operator's reset";
+    case E::kSupervisorReset: return "supervisor's reset";
     case E::kReloadBegin: return "reload";
     case E::kReloadDone: return "reload done";
     case E::kSuspend: return "suspend";

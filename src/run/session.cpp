@@ -168,6 +168,13 @@ std::string frame(const TickReport& r, std::int64_t gap) {
 std::string state(std::int64_t t_ms, OpState s) {
   return "state " + std::to_string(t_ms) + " " + std::string(to_string(s));
 }
+std::string stop(std::int64_t t_ms, StopBy by, std::string_view name) {
+  return "stop " + std::to_string(t_ms) + (by == StopBy::kSupervisor ? " supervisor " : " operator ") +
+         nlohmann::json(std::string(name)).dump();
+}
+std::string reset(std::int64_t t_ms, StopBy by) {
+  return "reset " + std::to_string(t_ms) + (by == StopBy::kSupervisor ? " supervisor" : " operator");
+}
 std::string layer(std::int64_t t_ms, std::string_view layer) {
   return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();
 }
@@ -370,6 +377,15 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto state = parse_op_state(f.rest());
     if (!state) throw InputError(pos, "unknown state " + quote(f.rest()));
     s.states.push_back({t, *state});
+  } else if (kind == "stop" || kind == "reset") {
+    StopRecord r;
+    r.t_ms = f.integer();
+    r.reset = kind == "reset";
+    const auto who = f.word();
+    if (who != "operator" && who != "supervisor") throw InputError(pos, "unknown stopper " + quote(who));
+    r.by = who == "supervisor" ? StopBy::kSupervisor : StopBy::kOperator;
+    if (!r.reset) r.name = f.json().get<std::string>();
+    s.stops.push_back(std::move(r));
   } else if (kind == "layer") {
     const auto t = f.integer();
     s.layers.push_back({t, f.json().get<std::string>()});

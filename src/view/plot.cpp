@@ -145,6 +145,14 @@ void draw_bands(Page& page, const std::vector<const PlotSample*>& s) {
       [&](const PlotSample& first, std::int64_t end, std::size_t band) {
         page.rect(page.x(std::max(first.t_ms, page.from())), kBandTop, page.x(end), kBandHeight, kBands[band].colour);
       });
+  // Who stopped, at the start of each stop.
+  runs(
+      s, page.to(), [](const PlotSample& p) { return p.stop; },
+      [&](const PlotSample& first, std::int64_t, const std::string& by) {
+        if (!by.empty())
+          page.text(page.x(std::max(first.t_ms, page.from())) + 2, kBandTop + 14, "stopped by the " + by,
+                    " font-size=\"9\" fill=\"white\"");
+      });
   double x = kLeft;
   for (const auto& b : kBands) {  // the legend
     page.rect(x, kBandTop + kBandHeight + 6, x + 10, 10, b.colour);
@@ -263,10 +271,17 @@ void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std
   }
 }
 
+/// Who stopped, as the plot labels it.
+std::string stopper(std::optional<run::StopBy> by) {
+  if (!by) return {};
+  return *by == run::StopBy::kSupervisor ? "supervisor" : "operator";
+}
+
 }  // namespace
 
 PlotSample plot_sample(const run::TickReport& r) {
-  return PlotSample{r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent, r.state, r.engine.layer};
+  return PlotSample{r.t_ms,  r.data,         r.sent && r.result == link::SendResult::kSent,
+                    r.state, r.engine.layer, stopper(r.stopped_by)};
 }
 
 std::vector<PlotSample> plot_samples(const run::Session& session) {
@@ -276,8 +291,10 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
   const std::int64_t last = session.end ? session.end->last_tick : (frames.empty() ? -1 : frames.back().tick);
   std::size_t state_at = 0;
   std::size_t layer_at = 0;
+  std::size_t stop_at = 0;
   run::OpState state = run::OpState::kNoLink;
   std::string layer;
+  std::optional<run::StopBy> stop;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
     const std::int64_t through = i + 1 < frames.size() ? frames[i + 1].tick - frames[i + 1].gap - 1 : last;
@@ -287,7 +304,12 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
         state = session.states[state_at++].state;
       while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
         layer = session.layers[layer_at++].text;
-      out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer});
+      for (; stop_at < session.stops.size() && session.stops[stop_at].t_ms <= t; ++stop_at) {
+        const auto& r = session.stops[stop_at];
+        stop = r.reset ? std::nullopt : std::optional(r.by);
+      }
+      out.push_back(
+          PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, stopper(stop)});
     }
   }
   return out;

@@ -9,7 +9,10 @@
 // mapping files, a stop; and the operator's stop button, squeezes of the
 // trigger (a deadman on some mappings) past half way and all the way, and
 // long pauses with nothing changing; and in some scripts a supervisor's
-// controller, its stop tapped, lost and back. The deadman is often held through a fault, and
+// controller, its stop tapped, lost and back; resets of a stop (a stop
+// button released, then held about 2 s, by either pad, the deadman now and
+// then pressed during it), and a deadman let go and pressed again, or the
+// trigger squeezed past its panic point and back, within one frame. The deadman is often held through a fault, and
 // often released and pressed again after one, and now and then a weapon is
 // fired, so that both what must not move and what may move are reached.
 
@@ -145,7 +148,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(22)) {
+      switch (pick.below(27)) {
         case 0:
         case 1:
         case 2:
@@ -200,6 +203,45 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
             supervisor(T::kConnect);
           }
           break;
+        case 21:
+        case 22:
+        case 23: {  // a reset: the stop button let go, then held about 2 s (the supervisor's, when there is one, now
+                    // and then)
+          const bool by_supervisor = supervised && pick.below(2) == 0;
+          const auto press = [&](int value) {
+            if (by_supervisor) supervisor(T::kButton, button("guide"), value);
+            else add(T::kButton, button("guide"), value);
+          };
+          if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
+          press(0);
+          t += pick.below(100);
+          press(1);
+          const auto hold = pick.below(4) == 0 ? pick.below(2000) : 1950 + pick.below(300);
+          if (pick.below(8) == 0) {  // the deadman pressed during the hold: no reset
+            t += pick.below(static_cast<std::uint32_t>(hold) + 1);
+            add(T::kButton, deadman, 1);
+            t += 10;
+            add(T::kButton, deadman, 0);
+          } else {
+            t += hold;
+          }
+          press(0);
+          break;
+        }
+        case 24: {  // the deadman let go and pressed again within one frame
+          t = (t / 40 + 1) * 40 + 1 + pick.below(10);
+          add(T::kButton, deadman, 0);
+          t += 1 + pick.below(25);
+          add(T::kButton, deadman, 1);
+          break;
+        }
+        case 25: {  // the trigger (a deadman on some mappings) squeezed past the panic point and back within one frame
+          t = (t / 40 + 1) * 40 + 1 + pick.below(10);
+          add(T::kAxis, arm, 32767);
+          t += 1 + pick.below(25);
+          add(T::kAxis, arm, pick.below(2) == 0 ? 20000 : 0);
+          break;
+        }
         default: rearm(); break;
       }
     }

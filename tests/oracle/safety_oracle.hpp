@@ -6,7 +6,7 @@
 // the operating-state machine: from the script alone it says when the bridge
 // may be enabled (a fresh deadman press, made after the last event that ends
 // "enabled", held since, controller connected, link up, not suspended, not
-// stopping, not stopped by the operator's stop button, not past the panic
+// stopping, not stopped by a stop button and not reset since, not past the panic
 // point of a three-position trigger, not timed out), and when frames may be
 // delivered at all; from the mapping only the deadman, the stop button, the
 // panic point, the enable timeout and the weapons' arming inputs. It is deliberately more
@@ -50,6 +50,7 @@ enum class Ending : std::uint8_t {
   kReloadBad,
   kStop,
   kStopButton,
+  kReset,
   kPanic,
   kTimeout,
   kCount
@@ -57,9 +58,9 @@ enum class Ending : std::uint8_t {
 
 inline const char* to_string(Ending e) {
   constexpr const char* kNames[] = {
-      "start",       "connect",       "disconnect",    "deadman release",    "link down",         "link up",
-      "suspend",     "resume",        "reload (same)", "reload (good file)", "reload (bad file)", "stop",
-      "stop button", "panic squeeze", "enable timeout"};
+      "start",       "connect",    "disconnect",    "deadman release",    "link down",         "link up",
+      "suspend",     "resume",     "reload (same)", "reload (good file)", "reload (bad file)", "stop",
+      "stop button", "stop reset", "panic squeeze", "enable timeout"};
   return kNames[static_cast<std::size_t>(e)];
 }
 
@@ -78,6 +79,9 @@ struct OracleCoverage {
   std::int64_t panics = 0;             ///< squeezes past the panic point
   std::int64_t timeouts = 0;           ///< enable timeouts that ended motion
   std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
+  std::int64_t operator_resets = 0;    ///< stops reset by the operator's hold
+  std::int64_t supervisor_resets = 0;  ///< stops reset by the supervisor's hold
+  std::int64_t refused_resets = 0;     ///< the operator's holds done on the supervisor's stop
   std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
@@ -92,6 +96,9 @@ struct OracleCoverage {
     panics += o.panics;
     timeouts += o.timeouts;
     supervisor_stops += o.supervisor_stops;
+    operator_resets += o.operator_resets;
+    supervisor_resets += o.supervisor_resets;
+    refused_resets += o.refused_resets;
     supervised_frames += o.supervised_frames;
     return *this;
   }
@@ -114,7 +121,7 @@ class SafetyOracle {
   static constexpr std::uint8_t kNeutralCentre = 128;
 
   SafetyOracle(const mapping::Mapping& initial, std::vector<input::InputEvent> script, Lookup lookup, Options options)
-      : script_(std::move(script)), lookup_(std::move(lookup)), options_(options) {
+      : script_(std::move(script)), lookup_(std::move(lookup)), options_(options), current_(&initial) {
     add_possible(initial);
     // A script that addresses the supervisor's controller anywhere is supervised from its start.
     supervised_ = std::any_of(script_.begin(), script_.end(),
@@ -204,6 +211,15 @@ class SafetyOracle {
   [[nodiscard]] const OracleCoverage& coverage() const { return coverage_; }
 
  private:
+  /// One pad's stop button, as a reset hold reads it (the mapping in force's).
+  struct Hold {
+    bool down = false;
+    bool pressed = false;               ///< since the last tick
+    bool let_go = false;                ///< since the last tick
+    bool from_reset = false;            ///< held on since a reset hold completed: no stop until let go
+    std::optional<std::int64_t> since;  ///< a hold under way since this tick
+  };
+
   [[nodiscard]] std::int64_t tick_of(std::int64_t t) const {
     return (t + options_.period_ms - 1) / options_.period_ms * options_.period_ms;
   }
@@ -228,29 +244,63 @@ class SafetyOracle {
 
   // What every tick of the loop reads, once its events are in. The stop
   // button: a press since the last tick latches (but one made just before a
-  // new controller session: the loop cannot see it); the latch clears at a
-  // later tick with the pad there and the stop button and every deadman up,
-  // where the loop can be in "stopped" (not suspended or reloading) and no
-  // stop button was pressed since the last tick (a press while stopped is the
-  // same stop, and the wait starts again). The panic point and the
-  // timeout end "enabled" at a tick (a squeeze past the point and back between
-  // two ticks is not seen; the timeout runs from the tick of the last change
-  // of any input). The panic's "fully released" is the replay tests' to check:
-  // here a fresh squeeze from below the press point is enough (permissive).
+  // new controller session: the loop cannot see it); the stop is the
+  // supervisor's once the supervisor's stop is pressed. A latch is reset
+  // only by a reset hold (docs/safety-states.md), read tick by tick as the
+  // loop reads it (hold_tick), on the stop buttons and the deadman of the
+  // mapping in force: the supervisor's resets any stop, the operator's only
+  // the operator's. A deadman every possible mapping has, let go since the
+  // last tick, makes the tick's frame neutral. The panic point and the
+  // timeout end "enabled" at a tick (the timeout runs from the tick of the
+  // last change of any input). The panic's "fully released" is the replay
+  // tests' to check: here a fresh squeeze from below the press point is
+  // enough (permissive).
   void at_tick(std::int64_t t) {
+    // A reload's mapping is the loop's once the reload is done.
+    take_up_pending(t);
+    const bool reads_stops = !stopped_;  // every tick but a shutdown's reads the stop buttons
+    const bool sup_stop = sup_connected_ && (sup_hold_.pressed || (sup_hold_.down && !sup_hold_.from_reset));
+    const bool op_stop = connected_ && (op_hold_.pressed || (op_hold_.down && !op_hold_.from_reset));
     if (stop_latched_) {
-      const bool can_clear =
-          t > latch_tick_ && !stop_pending_ && connected_ && !suspended_ && !stopped_ && !reloading(t) &&
-          !(estop_ && held(*estop_)) && !supervisor_stop_held() &&
-          std::none_of(common_deadmen_.begin(), common_deadmen_.end(), [this](input::InputKey k) { return down(k); });
-      if (can_clear) stop_latched_ = false;
-    } else if (stop_pending_) {
+      // The loop reads the holds only at ticks it spends in "stopped"; a
+      // suspend's or a reload's ticks, or a lost pad, end a hold (and read
+      // the stop buttons as a stop: the supervisor's makes it the supervisor's).
+      // (A resume in this tick: its rebase takes the presses.)
+      const bool in_stopped = t > latch_tick_ && !suspended_ && !stopped_ && !reloading(t) && !resumed_this_tick_;
+      if (in_stopped ? sup_connected_ && sup_hold_.pressed : reads_stops && sup_stop) {
+        stopper_ = input::Pad::kSupervisor;
+      }
+      const bool touched = deadman_touched();
+      const bool sup_done = hold_tick(sup_hold_, in_stopped && sup_connected_, touched, t);
+      const bool op_done = hold_tick(op_hold_, in_stopped && connected_, touched, t);
+      if (sup_done) {
+        reset(t);
+        ++coverage_.supervisor_resets;
+      } else if (op_done && stopper_ == input::Pad::kOperator) {
+        reset(t);
+        ++coverage_.operator_resets;
+      } else if (op_done) {
+        ++coverage_.refused_resets;
+      }
+    } else if (reads_stops && (op_stop || sup_stop)) {
+      // A stop button pressed since the last tick or held (not held on from a reset) latches.
       stop_latched_ = true;
+      stopper_ = sup_stop ? input::Pad::kSupervisor : input::Pad::kOperator;
       latch_tick_ = t;
       ++coverage_.stop_latches;
       end_enabled(Ending::kStopButton);
     }
-    stop_pending_ = false;
+    op_hold_.pressed = op_hold_.let_go = sup_hold_.pressed = sup_hold_.let_go = false;
+    resumed_this_tick_ = false;
+    deadman_pressed_ = false;
+    deadman_was_down_ = current_deadman_down();
+    down_at_tick_.clear();
+    for (const auto k : common_deadmen_) {
+      if (connected_ && down(k)) down_at_tick_.insert(k);
+    }
+    // A deadman every possible mapping has, let go since the last tick (even
+    // if pressed again since): this tick's frame is neutral.
+    let_go_this_tick_ = std::exchange(let_go_since_tick_, false);
     if (panic_ && enabled()) {
       for (const auto k : deadmen_) {
         const auto it = axes_.find(k);
@@ -267,12 +317,70 @@ class SafetyOracle {
     }
   }
 
+  // A reload's mapping, in force from the first tick after the reload's
+  // frames: its stop buttons are read as they are held now.
+  void take_up_pending(std::int64_t tick) {
+    // (Asked for while suspended, it is read after the resume.)
+    if (pending_ == nullptr || reloading(tick) || reload_after_resume_ || suspended_) return;
+    current_ = std::exchange(pending_, nullptr);
+    const auto held_now = [](const std::map<input::InputKey, bool>& buttons,
+                             const std::optional<mapping::InputUse>& use) {
+      const auto it = use ? buttons.find(use->key) : buttons.end();
+      return it != buttons.end() && it->second;
+    };
+    op_hold_.down = held_now(buttons_, current_->estop);
+    sup_hold_.down =
+        held_now(sup_buttons_, current_->supervisor ? std::optional(current_->supervisor->stop) : std::nullopt);
+    op_hold_.from_reset = sup_hold_.from_reset = false;
+  }
+
+  // A reset: not enabled, afresh (every deadman press so far is history).
+  void reset(std::int64_t t) {
+    stop_latched_ = false;
+    op_hold_.since.reset();
+    sup_hold_.since.reset();
+    reset_tick_ = t;
+    end_enabled(Ending::kReset);
+  }
+
+  // One pad's reset hold at a tick, as the loop reads it (exactly: a reset
+  // the loop did not make would make a later press of the stop button a new
+  // stop here, a press of the reset there): the stop button pressed since the
+  // last tick and held, the deadman neither held nor pressed, begins it; let
+  // go or the deadman touched ends it; true once it has lasted the hold.
+  bool hold_tick(Hold& h, bool reading, bool touched, std::int64_t t) const {
+    if (!reading || h.let_go || !h.down || touched) h.since.reset();
+    if (reading && h.pressed && h.down && !touched) h.since = t;
+    if (!h.since || t - *h.since < current_->stop_reset_hold_ms) return false;
+    h.since.reset();
+    h.from_reset = true;  // held on after it, it stops nothing until let go
+    return true;
+  }
+
+  // The mapping in force's deadman (the one a reset hold needs released): held
+  // now, pressed since the last tick, or (a trigger) held at the last tick.
+  [[nodiscard]] bool deadman_touched() const {
+    if (!current_->deadman) return false;
+    const bool trigger = !current_->deadman->key.is_button();
+    return current_deadman_down() || deadman_pressed_ || (trigger && deadman_was_down_);
+  }
+  [[nodiscard]] bool current_deadman_down() const {
+    return connected_ && current_->deadman && down(current_->deadman->key);
+  }
+
+  // A stop button of the mapping in force moved (a press not at the connect's instant).
+  static void stop_moved(Hold& h, bool now, bool was, bool initial) {
+    h.down = now;
+    if (!now) h.from_reset = false;
+    if (initial) return;
+    if (now && !was) h.pressed = true;
+    if (!now && was) h.let_go = true;
+  }
+
   void add_possible(const mapping::Mapping& m) {
     // Permissive over every mapping the script may have loaded: a stop button
     // only when all have that one, a panic point and a timeout only when all
     // have one (the most lenient of them).
-    const std::optional<input::InputKey> estop = m.estop ? std::optional(m.estop->key) : std::nullopt;
-    estop_ = first_mapping_ || estop_ == estop ? estop : std::nullopt;
     const auto lenient = [this](auto& have, auto value) {
       if (!value || (!first_mapping_ && !have)) have.reset();
       else have = have && !first_mapping_ ? std::max(*have, *value) : *value;
@@ -311,6 +419,8 @@ class SafetyOracle {
 
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
+    // A reload's mapping is the loop's from the first tick after the reload's frames.
+    take_up_pending(tick_of(e.t_ms));
     if (e.type == T::kLinkDown || e.type == T::kLinkTaken) {
       if (link_up_) end_enabled(Ending::kLinkDown);
       link_up_ = false;
@@ -331,15 +441,18 @@ class SafetyOracle {
         end_enabled(Ending::kConnect);
         connected_ = true;
         connect_t_ = e.t_ms;
+        op_hold_ = Hold{};
+        let_go_since_tick_ = false;  // a new session: what the old one did is gone
+        down_at_tick_.clear();
+        deadman_pressed_ = false;
         buttons_.clear();
         axes_.clear();
-        stop_pending_ = false;  // a stop tapped on the old session since the last tick went with it
         last_change_ = e.t_ms;
         break;
       case T::kDisconnect:
         end_enabled(Ending::kDisconnect);
         connected_ = false;
-        stop_pending_ = false;  // a stop tapped since the last tick went with the controller
+        op_hold_ = Hold{};
         buttons_.clear();
         axes_.clear();
         break;
@@ -349,7 +462,9 @@ class SafetyOracle {
         buttons_[e.key] = e.value != 0;
         if (was != (e.value != 0)) last_change_ = e.t_ms;
         // Stamped with the connect's time: the state the pad had when it appeared, not a press.
-        if (e.key == estop_ && e.value != 0 && !was && e.t_ms != connect_t_) stop_pending_ = true;
+        // Stamped with the connect's time: the state the pad had when it appeared, not a press.
+        const bool initial = e.t_ms == connect_t_;
+        if (current_->estop && e.key == current_->estop->key) stop_moved(op_hold_, e.value != 0, was, initial);
         if (deadmen_.contains(e.key)) deadman_moved(e.key, was, e.value != 0, e.t_ms);
         break;
       }
@@ -372,6 +487,7 @@ class SafetyOracle {
         break;
       case T::kResume:
         end_enabled(Ending::kResume);
+        resumed_this_tick_ = true;
         // A reload asked for while suspended is answered after the resume, as
         // a SIGHUP to a stopped process is once it goes on.
         if (suspended_ && reload_after_resume_) {
@@ -388,7 +504,14 @@ class SafetyOracle {
         end_enabled(e.name.empty()      ? Ending::kReloadSame
                     : loaded != nullptr ? Ending::kReloadGood
                                         : Ending::kReloadBad);
-        if (loaded != nullptr) add_possible(*loaded);
+        if (loaded != nullptr) {
+          add_possible(*loaded);
+          pending_ = loaded;  // in force once the reload is done
+        } else {
+          // The file in force read again (a reload under way gives way to it), or a bad one: the
+          // mapping in force stays.
+          pending_ = e.name.empty() ? current_ : nullptr;
+        }
         // Answered at once; while suspended, after the resume.
         const std::int64_t tick = tick_of(e.t_ms);
         if (reloading(tick)) {
@@ -438,20 +561,23 @@ class SafetyOracle {
         end_enabled(Ending::kConnect);
         sup_connected_ = true;
         sup_connect_t_ = e.t_ms;
+        sup_hold_ = Hold{};
         sup_buttons_.clear();
         break;
       case T::kDisconnect:
         end_enabled(Ending::kDisconnect);
         sup_connected_ = false;
+        sup_hold_ = Hold{};
         sup_buttons_.clear();
         break;
       case T::kButton: {
         if (!sup_connected_) break;
         const bool was = sup_buttons_[e.key];
         sup_buttons_[e.key] = e.value != 0;
-        if (e.key == sup_stop_ && e.value != 0 && !was && e.t_ms != sup_connect_t_) {
-          stop_pending_ = true;
-          ++coverage_.supervisor_stops;
+        const bool initial = e.t_ms == sup_connect_t_;
+        if (e.key == sup_stop_ && e.value != 0 && !was && !initial) ++coverage_.supervisor_stops;
+        if (current_->supervisor && e.key == current_->supervisor->stop.key) {
+          stop_moved(sup_hold_, e.value != 0, was, initial);
         }
         break;
       }
@@ -467,18 +593,21 @@ class SafetyOracle {
 
   // A deadman pressed or released (button) or moved across its press point (trigger).
   void deadman_moved(input::InputKey key, bool was, bool now, std::int64_t t) {
-    if (now && !was && t != connect_t_ && !stop_latched_) {
+    if (now && !was && t != connect_t_ && current_->deadman && key == current_->deadman->key) deadman_pressed_ = true;
+    if (now && !was && t != connect_t_ && !stop_latched_ && t > reset_tick_) {
       fresh_.insert(key);
       pressed_after_ = last_interruption_;
     }
     if (!now && was) {
+      // Held at the last tick and let go since (the loop may count more: a release between two presses).
+      if (common_deadmen_.contains(key) && t != connect_t_ && down_at_tick_.contains(key)) let_go_since_tick_ = true;
       fresh_.erase(key);
       last_ending_ = Ending::kRelease;
     }
   }
 
   [[nodiscard]] bool enabled() const {
-    if (!connected_ || !link_up_ || suspended_ || stopped_ || stop_latched_) return false;
+    if (!connected_ || !link_up_ || suspended_ || stopped_ || stop_latched_ || let_go_this_tick_) return false;
     if (supervised_ && !sup_connected_) return false;
     return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return down(k); });
   }
@@ -492,7 +621,8 @@ class SafetyOracle {
 
   [[nodiscard]] std::string not_enabled_reason() const {
     if (stopped_) return "stopping";
-    if (stop_latched_) return "stopped by the stop button";
+    if (stop_latched_) return "stopped by the stop button, not reset";
+    if (let_go_this_tick_) return "the deadman let go since the last tick";
     if (supervised_ && !sup_connected_) return "no supervisor's controller";
     if (suspended_) return "suspended";
     if (!link_up_) return "link down";
@@ -556,7 +686,6 @@ class SafetyOracle {
 
   static constexpr int kTriggerPressed = 16384;  ///< 0.5 of 32767, as the engine rounds it
 
-  std::optional<input::InputKey> estop_;     ///< the stop button every possible mapping has
   std::optional<input::InputKey> sup_stop_;  ///< the supervisor's stop button every possible mapping has
   bool supervised_ = false;
   bool sup_connected_ = false;
@@ -565,10 +694,21 @@ class SafetyOracle {
   std::optional<std::int64_t> timeout_ms_;
   std::optional<int> panic_;  ///< the raw trigger value of the panic point
   bool first_mapping_ = true;
-  bool stop_pending_ = false;  ///< pressed since the last tick
+  bool let_go_since_tick_ = false;  ///< a deadman let go since the last tick
+  bool let_go_this_tick_ = false;   ///< and so at this tick
   bool stop_latched_ = false;
+  input::Pad stopper_ = input::Pad::kOperator;  ///< whose the latched stop is
   std::int64_t latch_tick_ = 0;
-  std::int64_t last_change_ = 0;  ///< the last event that changed an input
+  std::int64_t reset_tick_ = -1;               ///< the last reset's tick: the presses up to it are history
+  const mapping::Mapping* current_;            ///< the mapping in force (the last that loaded)
+  const mapping::Mapping* pending_ = nullptr;  ///< a reload's, in force once the reload is done
+  Hold op_hold_;
+  Hold sup_hold_;
+  bool deadman_pressed_ = false;            ///< the mapping in force's deadman, since the last tick
+  bool resumed_this_tick_ = false;          ///< a resume since the last tick (its rebase takes the presses)
+  bool deadman_was_down_ = false;           ///< and held at the last tick
+  std::set<input::InputKey> down_at_tick_;  ///< the common deadmen held at the last tick
+  std::int64_t last_change_ = 0;            ///< the last event that changed an input
 
   bool connected_ = false;
   std::int64_t connect_t_ = -1;

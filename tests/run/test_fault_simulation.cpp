@@ -167,14 +167,16 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
       "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-      "%lld frames with a supervisor's controller\n",
+      "%lld frames with a supervisor's controller, %lld resets by the operator and %lld by the supervisor "
+      "(%lld operator's holds on the supervisor's stop refused)\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
       static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
       static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-      static_cast<long long>(coverage.supervised_frames));
+      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.operator_resets),
+      static_cast<long long>(coverage.supervisor_resets), static_cast<long long>(coverage.refused_resets));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -192,7 +194,11 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.timeouts, 0);
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
-  for (const auto after : {Ending::kStopButton, Ending::kPanic, Ending::kTimeout}) {
+  EXPECT_GT(coverage.operator_resets, 0);
+  EXPECT_GT(coverage.supervisor_resets, 0);
+  EXPECT_GT(coverage.refused_resets, 0);
+  // After a stop, motion comes only after its reset (the last interruption before the press is the reset).
+  for (const auto after : {Ending::kReset, Ending::kPanic, Ending::kTimeout}) {
     EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
   }
 }

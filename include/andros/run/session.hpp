@@ -91,6 +91,9 @@ std::string reload(std::int64_t t_ms, const ReloadOutcome& outcome);
 /// the tick's place changes; the ticks between repeat the last one.
 std::string frame(const TickReport& report, std::int64_t gap);
 std::string state(std::int64_t t_ms, OpState state);
+/// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
+std::string stop(std::int64_t t_ms, StopBy by, std::string_view name);
+std::string reset(std::int64_t t_ms, StopBy by);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
@@ -144,6 +147,15 @@ struct StateRecord {
   OpState state = OpState::kNoLink;
 };
 
+/// `stop T operator|supervisor "NAME"` (whose stop latched, or became whose),
+/// `reset T operator|supervisor` (who reset it).
+struct StopRecord {
+  std::int64_t t_ms = 0;
+  bool reset = false;  ///< a reset; false: a stop
+  StopBy by = StopBy::kOperator;
+  std::string name;  ///< the controller's name (a stop's)
+};
+
 struct EndRecord {
   std::int64_t t_ms = 0;
   std::int64_t last_tick = 0;
@@ -165,6 +177,7 @@ struct Session {
   std::vector<ReloadRecord> reloads;
   std::vector<FrameRecord> frames;
   std::vector<StateRecord> states;
+  std::vector<StopRecord> stops;  ///< stops and resets, in order
   std::vector<TimedText> layers;
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;

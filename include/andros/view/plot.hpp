@@ -21,6 +21,7 @@ struct PlotSample {
   bool sent = false;  ///< the link took the frame
   run::OpState state = run::OpState::kNoLink;
   std::string layer;  ///< "" for the base layer
+  std::string stop;   ///< a stop latched: whose ("operator", "supervisor"); "" when none
 };
 
 struct PlotInput {
