@@ -38,6 +38,10 @@ class FixedFrames final : public run::FrameSource {
   run::Step step(const input::InputState&, std::int64_t) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
   void restart(const input::InputState&) override {}
+  // No stop buttons: nothing stops, nothing resets.
+  mapping::StopPresses take_stop(const input::InputState&) override { return {}; }
+  mapping::StoppedTick stopped(const input::InputState&, std::int64_t) override { return {}; }
+  void held_stops(const input::InputState&, mapping::EngineStatus&) const override {}
 };
 
 class Idle final : public input::InputSource {

@@ -1,5 +1,7 @@
 #include "andros/input/input_state.hpp"
 
+#include <algorithm>
+
 #include "andros/base/text.hpp"
 
 namespace andros::input {
@@ -57,6 +59,7 @@ std::string input_name(InputKey key) {
 void PadState::set_button(InputKey key, bool down, bool initial) {
   auto& b = buttons_[key];
   if (down && !b.down && !initial) ++b.presses;
+  if (!down && b.down && !initial) ++b.releases;
   b.down = down;
 }
 
@@ -79,6 +82,7 @@ void PadState::apply(const InputEvent& event) {
     name_ = event.name;
     buttons_.clear();
     axes_.clear();
+    spans_.clear();
     return;
   }
   if (event.type == T::kDisconnect) {
@@ -86,13 +90,26 @@ void PadState::apply(const InputEvent& event) {
     name_.clear();
     buttons_.clear();
     axes_.clear();
+    spans_.clear();
     return;
   }
   if (!connected_) return;  // a lost controller's stale events move nothing
   const bool initial = event.t_ms == connect_t_;
   switch (event.type) {
     case T::kButton: set_button(event.key, event.value != 0, initial); break;
-    case T::kAxis: axes_[event.key] = static_cast<std::int16_t>(event.value); break;
+    case T::kAxis: {
+      const auto value = static_cast<std::int16_t>(event.value);
+      const auto was = axis(event.key);
+      axes_[event.key] = value;
+      // The state the controller had when it appeared spans its value alone.
+      if (initial) {
+        spans_.erase(event.key);
+        break;
+      }
+      auto& span = spans_.try_emplace(event.key, AxisSpan{was, was}).first->second;
+      span = {std::min(span.low, value), std::max(span.high, value)};
+      break;
+    }
     case T::kHat:
       for (std::uint16_t dir = 0; dir < 4; ++dir) {
         set_button(InputKey{InputKind::kHat, static_cast<std::uint16_t>(event.key.index + dir)},
@@ -111,6 +128,13 @@ ButtonState PadState::button(InputKey key) const {
 std::int16_t PadState::axis(InputKey key) const {
   const auto it = axes_.find(key);
   return it == axes_.end() ? std::int16_t{0} : it->second;
+}
+
+AxisSpan PadState::axis_span(InputKey key) const {
+  const auto it = spans_.find(key);
+  if (it != spans_.end()) return it->second;
+  const auto now = axis(key);
+  return {now, now};
 }
 
 int PadState::hat(int hat_index) const {

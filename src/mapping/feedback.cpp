@@ -5,6 +5,7 @@ namespace andros::mapping {
 std::string_view feedback_event_name(FeedbackEvent event) {
   switch (event) {
     case FeedbackEvent::kStopped: return "stopped";
+    case FeedbackEvent::kStopReset: return "stop_reset";
     case FeedbackEvent::kDeadmanRefused: return "deadman_refused";
     case FeedbackEvent::kLinkLost: return "link_lost";
     case FeedbackEvent::kTimedOut: return "enable_timeout";
@@ -30,6 +31,7 @@ input::FeedbackPattern default_feedback_pattern(FeedbackEvent event) {
   using Rgb = std::array<std::uint8_t, 3>;
   switch (event) {
     case FeedbackEvent::kStopped: return {1.0, 1.0, 550, 1, Rgb{255, 0, 0}};
+    case FeedbackEvent::kStopReset: return {0.6, 0.6, 150, 2, Rgb{255, 255, 255}};
     case FeedbackEvent::kDeadmanRefused: return {1.0, 1.0, 80, 3, Rgb{255, 60, 0}};
     case FeedbackEvent::kLinkLost: return {1.0, 0.4, 600, 1, Rgb{255, 0, 255}};
     case FeedbackEvent::kTimedOut: return {0.5, 0.5, 200, 2, Rgb{255, 200, 0}};

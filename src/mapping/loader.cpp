@@ -355,8 +355,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   const Reader r(file.string(), text);
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "enable_timeout",
-                 "supervisor", "brake", "scale", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "stop_reset_hold",
+                 "enable_timeout", "supervisor", "brake", "scale", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);
@@ -397,6 +397,12 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
     });
   }
   if (const auto e = root["estop"]) errors.attempt([&] { m.estop = use(r, e, r.button(e)); });
+  if (const auto h = root["stop_reset_hold"]) {
+    errors.attempt([&] {
+      m.stop_reset_hold_ms =
+          std::llround(r.number(h, kStopResetHoldMinS, kStopResetHoldMaxS, false, "stop_reset_hold") * 1000.0);
+    });
+  }
   if (const auto t = root["enable_timeout"]) {
     errors.attempt([&] {
       if (r.text(t, "enable_timeout") == "off") {

@@ -348,6 +348,14 @@ void check_estop(const Mapping& m) {
   }
 }
 
+/// A stop must be on an input every controller has: no hat past the first
+/// (a pad has none, a joystick at least one when it has any).
+void check_stop_reachable(const std::optional<InputUse>& stop, std::string_view what) {
+  if (!stop || stop->key.kind != input::InputKind::kHat || stop->key.index < 4) return;
+  throw InputError(stop->pos, std::string(what) + " '" + input::input_name(stop->key) +
+                                  "' is on a hat a controller may not have: put a stop on a button (or hat0)");
+}
+
 void check_deadman_panic(const Mapping& m) {
   if (!m.deadman_panic) return;
   if (!m.deadman || m.deadman->key.is_button()) {
@@ -433,6 +441,10 @@ ValidMapping validate(Mapping m, bool require_robot) {
   check_toggles(m, errors);
   errors.attempt([&] { check_estop(m); });
   errors.attempt([&] { check_deadman_panic(m); });
+  errors.attempt([&] { check_stop_reachable(m.estop, "estop"); });
+  errors.attempt([&] {
+    check_stop_reachable(m.supervisor ? std::optional(m.supervisor->stop) : std::nullopt, "the supervisor's stop");
+  });
   errors.attempt([&] { check_scale(m, reserved); });
   errors.throw_if_any();
   return ValidMapping(std::move(m));

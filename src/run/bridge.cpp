@@ -24,7 +24,6 @@ void Bridge::run(const StopCheck& stop, const Observer& observe) {
 void Bridge::run(const RunControl& control, const Observer& observe) {
   start_ = clock_.now();
   tick_ = 0;
-  latched_tick_ = -1;
   skipped_ = 0;
   input_failed_ = false;
   try {
@@ -44,7 +43,9 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
   clock_.sleep_until(start_ + Nanos(schedule_.tick_ns(tick_)));
   const std::int64_t t_ms = schedule_.tick_ms(tick_);
   if (!input_failed_) {
-    // The input is read right after the tick's time: never older than the frame.
+    // The input is read right after the tick's time: never older than the
+    // frame; every change since the last tick counts, not only where it ended.
+    state_.begin_tick();
     input_.pump(state_, t_ms);
     on_request(control.poll(), control);
     for (const auto& fault : state_.take_faults()) on_fault(fault, control);
@@ -57,9 +58,8 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
 
   // A suspend's and a reload's ticks do not step the engine: a stop button
   // pressed in them latches for when they end (the latch only: no row there).
-  if ((machine_.state() == OpState::kSuspended || machine_.state() == OpState::kReloading) &&
-      frames_.take_stop(state_)) {
-    apply(OpEvent::kOperatorStop);
+  if (machine_.state() == OpState::kSuspended || machine_.state() == OpState::kReloading) {
+    answer_stops(frames_.take_stop(state_));
   }
   switch (machine_.state()) {
     case OpState::kStopping:
@@ -84,17 +84,20 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
         }
       }
       break;
-    case OpState::kStopped:
+    case OpState::kStopped: {
       // The engine is not stepped: nothing the hands do while stopped acts
-      // (a selector, a knob), and nothing held enables. Cleared on a later
-      // tick than the stop, by the hands letting go; a press of a stop
-      // button while stopped is the same stop, and the wait starts again.
-      if (!frames_.take_stop(state_) && latched_tick_ < tick_ && frames_.stop_let_go(state_)) {
-        apply(OpEvent::kStopCleared);
+      // (a selector, a knob), and nothing held enables. Reset by a reset
+      // hold on the pad that stopped (or the supervisor's); a press of the
+      // supervisor's stop while stopped makes the stop the supervisor's.
+      const auto stops = frames_.stopped(state_, t_ms);
+      answer_stops(stops.pressed);
+      if (stops.reset) {
+        apply(*stops.reset == input::Pad::kSupervisor ? OpEvent::kSupervisorReset : OpEvent::kOperatorReset);
       }
       frames_.held_stops(state_, engine_status_);  // what the screen says is held, now
       send(frames_.neutral(), observe);
       break;
+    }
     case OpState::kReloading:
       if (const auto outcome = neutral_frame(observe) ? control.finish_reload() : std::nullopt) {
         if (outcome->ok) gate_.set_weapons(outcome->weapons);
@@ -124,7 +127,7 @@ void Bridge::answer_engine() {
   using mapping::EnableState;
   const auto& e = engine_status_;
   // A stop button first: pressed this tick, this tick's frame is neutral.
-  if (e.stop_pressed) apply(OpEvent::kOperatorStop);
+  answer_stops(e.stop_pressed);
   const bool engine_enabled = e.enable == EnableState::kEnabled;
   if (machine_.state() == OpState::kNotEnabled && engine_enabled) apply(OpEvent::kFreshPress);
   if (machine_.state() == OpState::kEnabled && !engine_enabled) {
@@ -134,49 +137,21 @@ void Bridge::answer_engine() {
   }
 }
 
-void Bridge::on_request(Request request, const RunControl& control) {
-  switch (request) {
-    case Request::kNone: break;
-    case Request::kStop: apply(OpEvent::kShutdown); break;
-    case Request::kSuspend:
-      pause_after_suspend_ = true;
-      begin_suspend();
-      break;
-    case Request::kResumed: resume(control); break;
-    case Request::kReload: begin_reload(control, ""); break;
-  }
-}
-
-void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control) {
-  using T = input::InputEvent::Type;
-  switch (fault.type) {
-    case T::kLinkDown:
-    case T::kLinkTaken:
-      link_.set_fault(fault.type == T::kLinkTaken ? link::FaultLink::Fault::kTaken : link::FaultLink::Fault::kDown);
-      // Answered now: a link back before the next frame is still a new link.
-      apply(link_lost_event());
-      break;
-    case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
-    case T::kSuspend:
-      pause_after_suspend_ = false;
-      begin_suspend();
-      break;
-    case T::kResume: resume(control); break;
-    case T::kReload: begin_reload(control, fault.name); break;
-    case T::kStop: apply(OpEvent::kShutdown); break;
-    default: break;
-  }
+void Bridge::answer_stops(mapping::StopPresses pressed) {
+  if (pressed.by_operator) apply(OpEvent::kOperatorStop);
+  if (pressed.by_supervisor) apply(OpEvent::kSupervisorStop);
 }
 
 Effect Bridge::apply(OpEvent event) {
-  if (event == OpEvent::kOperatorStop || event == OpEvent::kGateTrip) latched_tick_ = tick_;
   Effect effect = machine_.on(event);
   if (effect.rebase) {
     // A stop button pressed and not yet answered is answered before the
-    // rebase makes its press history (a clearing takes the presses made while stopped).
-    if (event != OpEvent::kStopCleared && frames_.take_stop(state_)) {
-      latched_tick_ = tick_;
-      effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
+    // rebase makes its press history (a reset takes the presses made while stopped).
+    const bool reset = event == OpEvent::kOperatorReset || event == OpEvent::kSupervisorReset;
+    const auto pressed = frames_.take_stop(state_);
+    if (!reset && pressed.by_operator) effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
+    if (!reset && pressed.by_supervisor) {
+      effect.changed = machine_.on(OpEvent::kSupervisorStop).changed || effect.changed;
     }
     frames_.restart(state_);
   }
@@ -186,52 +161,6 @@ Effect Bridge::apply(OpEvent event) {
     start_sequence();
   }
   return effect;
-}
-
-void Bridge::begin_suspend() {
-  if (machine_.state() == OpState::kReloading) {
-    suspend_pending_ = true;  // after the reload's outcome
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended) {
-    resume_pending_ = false;  // suspend, resume, suspend: the last word counts
-    return;
-  }
-  if (apply(OpEvent::kSuspend).changed) suspend_frames_due_ = true;
-}
-
-void Bridge::resumed(const RunControl& control) {
-  apply(OpEvent::kResume);
-  if (auto mapping = std::exchange(reload_pending_, std::nullopt)) begin_reload(control, *mapping);
-}
-
-void Bridge::resume(const RunControl& control) {
-  if (suspend_pending_) {
-    suspend_pending_ = false;  // a suspend still waiting behind a reload: answered by this resume
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended && suspend_frames_due_) {
-    resume_pending_ = true;  // answered once the suspend's neutral frames are out
-    return;
-  }
-  resumed(control);
-}
-
-void Bridge::begin_reload(const RunControl& control, const std::string& mapping) {
-  // A second one while one runs is the control's to queue (the files read
-  // again); one while suspended waits for the resume; while stopping it is
-  // ignored (no row).
-  if (machine_.state() == OpState::kReloading) {
-    start_sequence();  // the files read again: neutral frames from now on, as for the first
-    control.begin_reload(mapping);
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended) {
-    reload_pending_ = mapping;
-    return;
-  }
-  if (!apply(OpEvent::kReloadBegin).changed) return;
-  control.begin_reload(mapping);
 }
 
 link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer& observe) {
@@ -287,6 +216,7 @@ void Bridge::pause(const RunControl& control) {
   tick_ = std::max(tick_ + 1, schedule_.next_tick(-1, elapsed) + 1);
   skipped_ = 0;
   // What happened while the process was stopped is history too.
+  state_.begin_tick();
   input_.pump(state_, elapsed / kNsPerMs);
   resume_pending_ = false;
   resumed(control);
@@ -307,6 +237,8 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.result = result;
   r.sent = sent;
   r.state = machine_.state();
+  r.stopped_by = machine_.stopped_by();
+  r.reset_by = machine_.reset_by();
   r.connected = state_.connected();
   r.controller = state_.name();
   r.supervised = input_.supervised();

@@ -15,8 +15,10 @@ class EngineFrames final : public FrameSource {
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
   void restart(const input::InputState& now) override { engine_.restart(now); }
-  bool take_stop(const input::InputState& input) override { return engine_.take_stop(input); }
-  [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return engine_.stop_let_go(input); }
+  mapping::StopPresses take_stop(const input::InputState& input) override { return engine_.take_stop(input); }
+  mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) override {
+    return engine_.stopped(input, now_ms);
+  }
   void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
     engine_.held_stops(input, status);
   }

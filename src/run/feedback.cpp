@@ -17,12 +17,14 @@ FeedbackStatus feedback_status(const TickReport& report) {
           report.link.state == link::LinkState::kUp && report.link.motion_allowed,
           report.enabled() && report.engine.weapons_mode,
           report.state == OpState::kStopped,
+          report.reset_by.has_value(),
           report.engine.speed.index};
 }
 
 std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
   std::vector<FeedbackEvent> events;
   if (after.stopped && !before.stopped) events.push_back(FeedbackEvent::kStopped);
+  if (after.reset && !before.reset) events.push_back(FeedbackEvent::kStopReset);
   if (after.enable == EnableState::kDeadmanNotFresh && before.enable != EnableState::kDeadmanNotFresh) {
     events.push_back(FeedbackEvent::kDeadmanRefused);
   }

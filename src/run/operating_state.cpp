@@ -31,20 +31,25 @@ constexpr auto kTable = std::to_array<Transition>({
     row(S::kEnabled, E::kRelease, S::kNotEnabled),
     row(S::kEnabled, E::kPanic, S::kNotEnabled),
     row(S::kEnabled, E::kEnableTimeout, S::kNotEnabled),
-    // The operator's stop: from any driving state, latched (it outlives the
-    // link, the controller, a reload and a suspend); cleared only with the
-    // stop buttons and the deadman released, and then not enabled, afresh.
+    // A stop button: from any driving state, latched (it outlives the link,
+    // the controller, a reload and a suspend); reset only by a reset hold on
+    // the pad that stopped (or the supervisor's), and then not enabled, afresh.
     row(S::kNoLink, E::kOperatorStop, S::kStopped),
     row(S::kNoController, E::kOperatorStop, S::kStopped),
     row(S::kNotEnabled, E::kOperatorStop, S::kStopped),
     row(S::kEnabled, E::kOperatorStop, S::kStopped),
-    settle(S::kStopped, E::kStopCleared, true),
+    row(S::kNoLink, E::kSupervisorStop, S::kStopped),
+    row(S::kNoController, E::kSupervisorStop, S::kStopped),
+    row(S::kNotEnabled, E::kSupervisorStop, S::kStopped),
+    row(S::kEnabled, E::kSupervisorStop, S::kStopped),
     // The frame gate found a frame breaking a rule (the engine is at fault):
-    // stopped as by a stop button, latched, and cleared the same way.
+    // stopped as by a stop button, latched, and reset the same way.
     row(S::kNoLink, E::kGateTrip, S::kStopped),
     row(S::kNoController, E::kGateTrip, S::kStopped),
     row(S::kNotEnabled, E::kGateTrip, S::kStopped),
     row(S::kEnabled, E::kGateTrip, S::kStopped),
+    settle(S::kStopped, E::kOperatorReset, true),  // the operator's own stop, or the gate's, only
+    settle(S::kStopped, E::kSupervisorReset, true),
     // Reload, suspend, shutdown: from any driving state.
     row(S::kNoLink, E::kReloadBegin, S::kReloading),
     row(S::kNoController, E::kReloadBegin, S::kReloading),
@@ -80,7 +85,7 @@ OperatingState::OperatingState(bool link_up) : state_(S::kNoLink), link_up_(link
 std::span<const Transition> OperatingState::table() { return kTable; }
 
 OpState OperatingState::settled() const {
-  if (stop_latched_) return S::kStopped;
+  if (stopped_by_) return S::kStopped;
   if (!link_up_) return S::kNoLink;
   if (!controller_up_) return S::kNoController;
   return S::kNotEnabled;
@@ -95,8 +100,28 @@ Effect OperatingState::on(OpEvent event) {
     case E::kControllerUp: controller_up_ = true; break;
     case E::kControllerDown: controller_up_ = false; break;
     case E::kOperatorStop:
-    case E::kGateTrip: stop_latched_ = stop_latched_ || state_ != S::kStopping; break;
-    case E::kStopCleared: stop_latched_ = false; break;
+      if (state_ != S::kStopping && !stopped_by_) stopped_by_ = StopBy::kOperator;
+      reset_by_.reset();
+      break;
+    case E::kSupervisorStop:
+      if (state_ != S::kStopping) stopped_by_ = StopBy::kSupervisor;
+      reset_by_.reset();
+      break;
+    case E::kGateTrip:
+      if (state_ != S::kStopping && !stopped_by_) stopped_by_ = StopBy::kGate;
+      reset_by_.reset();
+      break;
+    case E::kOperatorReset:
+    case E::kSupervisorReset: {
+      const StopBy by = event == E::kSupervisorReset ? StopBy::kSupervisor : StopBy::kOperator;
+      // Stopped only; the supervisor resets any stop, the operator only the
+      // operator's (and the gate's: an internal error the operator saw).
+      if (state_ != S::kStopped || (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor)) return {};
+      stopped_by_.reset();
+      reset_by_ = by;
+      break;
+    }
+    case E::kFreshPress: reset_by_.reset(); break;
     default: break;
   }
   for (const auto& t : kTable) {
@@ -134,14 +159,25 @@ std::string_view to_string(OpEvent event) {
     case E::kRelease: return "deadman released";
     case E::kPanic: return "deadman squeezed past panic";
     case E::kEnableTimeout: return "enable timeout";
-    case E::kOperatorStop: return "stop button";
+    case E::kOperatorStop: return "operator's stop";
+    case E::kSupervisorStop: return "supervisor's stop";
     case E::kGateTrip: return "frame gate trip";
-    case E::kStopCleared: return "stop cleared";
+    case E::kOperatorReset: return "operator's reset";
+    case E::kSupervisorReset: return "supervisor's reset";
     case E::kReloadBegin: return "reload";
     case E::kReloadDone: return "reload done";
     case E::kSuspend: return "suspend";
     case E::kResume: return "resume";
     case E::kShutdown: return "shutdown";
+  }
+  return "?";
+}
+
+std::string_view to_string(StopBy by) {
+  switch (by) {
+    case StopBy::kOperator: return "operator";
+    case StopBy::kSupervisor: return "supervisor";
+    case StopBy::kGate: return "frame gate";
   }
   return "?";
 }

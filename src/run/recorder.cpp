@@ -252,6 +252,19 @@ void Recorder::observe(const TickReport& r) {
     state_ = r.state;
     push(record::state(r.t_ms, r.state));
   }
+  if (r.stopped_by != stopped_by_) {
+    stopped_by_ = r.stopped_by;
+    if (r.stopped_by) {
+      const auto& name = *r.stopped_by == StopBy::kSupervisor ? r.supervisor
+                         : *r.stopped_by == StopBy::kOperator ? r.controller
+                                                              : std::string();
+      push(record::stop(r.t_ms, *r.stopped_by, name));
+    }
+  }
+  if (r.reset_by != reset_by_) {
+    reset_by_ = r.reset_by;
+    if (r.reset_by) push(record::reset(r.t_ms, *r.reset_by));
+  }
   if (first_ || r.engine.layer != layer_) {
     layer_ = r.engine.layer;
     push(record::layer(r.t_ms, layer_));

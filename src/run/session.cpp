@@ -70,6 +70,22 @@ std::vector<MappingSource> read_mapping_sources(const std::vector<std::string>& 
   return out;
 }
 
+std::string_view stopper_word(StopBy by) {
+  switch (by) {
+    case StopBy::kOperator: return "operator";
+    case StopBy::kSupervisor: return "supervisor";
+    case StopBy::kGate: return "gate";
+  }
+  return "?";
+}
+
+std::optional<StopBy> parse_stopper(std::string_view word) {
+  for (const auto by : {StopBy::kOperator, StopBy::kSupervisor, StopBy::kGate}) {
+    if (stopper_word(by) == word) return by;
+  }
+  return std::nullopt;
+}
+
 namespace record {
 
 std::string header() { return std::string(kSessionMagic) + " " + std::to_string(kSessionFormat); }
@@ -96,6 +112,13 @@ std::string state(std::int64_t t_ms, OpState s) {
 }
 std::string gate(std::int64_t t_ms, std::string_view fault) {
   return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
+}
+std::string stop(std::int64_t t_ms, StopBy by, std::string_view name) {
+  return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " +
+         nlohmann::json(std::string(name)).dump();
+}
+std::string reset(std::int64_t t_ms, StopBy by) {
+  return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by));
 }
 std::string layer(std::int64_t t_ms, std::string_view layer) {
   return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();

@@ -190,6 +190,16 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
   } else if (kind == "gate") {
     const auto t = time(f);
     s.gate_trips.push_back({t, f.json().get<std::string>()});
+  } else if (kind == "stop" || kind == "reset") {
+    StopRecord r;
+    r.t_ms = time(f);
+    r.reset = kind == "reset";
+    const auto who = f.word();
+    const auto by = parse_stopper(who);
+    if (!by || (r.reset && *by == StopBy::kGate)) throw InputError(pos, "unknown stopper " + quote(who));
+    r.by = *by;
+    if (!r.reset) r.name = f.json().get<std::string>();
+    s.stops.push_back(std::move(r));
   } else if (kind == "layer") {
     const auto t = time(f);
     s.layers.push_back({t, f.json().get<std::string>()});

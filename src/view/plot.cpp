@@ -144,6 +144,14 @@ void draw_bands(Page& page, const std::vector<const PlotSample*>& s) {
       [&](const PlotSample& first, std::int64_t end, std::size_t band) {
         page.rect(page.x(std::max(first.t_ms, page.from())), kBandTop, page.x(end), kBandHeight, kBands[band].colour);
       });
+  // Who stopped, at the start of each stop.
+  runs(
+      s, page.to(), [](const PlotSample& p) { return p.stop; },
+      [&](const PlotSample& first, std::int64_t, const std::string& by) {
+        if (!by.empty())
+          page.text(page.x(std::max(first.t_ms, page.from())) + 2, kBandTop + 14, "stopped by the " + by,
+                    " font-size=\"9\" fill=\"white\"");
+      });
   double x = kLeft;
   for (const auto& b : kBands) {  // the legend
     page.rect(x, kBandTop + kBandHeight + 6, x + 10, 10, b.colour);

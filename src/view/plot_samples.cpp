@@ -1,6 +1,6 @@
 // The plot's samples (andros/view/plot.hpp): a replay's report a tick, or a
 // session's records: one at each change point (a frame record, a state or
-// layer change inside one) and one at the last tick each holds to, never one
+// layer change or a stop record inside one) and one at the last tick each holds to, never one
 // a tick, so that the work is the records', whatever the session's length.
 #include <algorithm>
 #include <vector>
@@ -19,10 +19,14 @@ std::int64_t tick_at_or_after(const timing::FrameClock& clock, std::int64_t t_ms
   return k;
 }
 
+/// Who stopped, as the plot labels it.
+std::string stopper(std::optional<run::StopBy> by) { return by ? std::string(run::to_string(*by)) : std::string(); }
+
 }  // namespace
 
 PlotSample plot_sample(const run::TickReport& r) {
-  return PlotSample{r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent, r.state, r.engine.layer};
+  return PlotSample{r.t_ms,  r.data,         r.sent && r.result == link::SendResult::kSent,
+                    r.state, r.engine.layer, stopper(r.stopped_by)};
 }
 
 std::vector<PlotSample> plot_samples(const run::Session& session) {
@@ -32,19 +36,26 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
   const std::int64_t last = session.end ? session.end->last_tick : (frames.empty() ? -1 : frames.back().tick);
   std::size_t state_at = 0;
   std::size_t layer_at = 0;
+  std::size_t stop_at = 0;
   run::OpState state = run::OpState::kNoLink;
   std::string layer;
-  // The state and layer in effect at tick's time.
+  std::optional<run::StopBy> stop;
+  // The state, layer and stop in effect at tick's time.
   const auto catch_up = [&](std::int64_t t) {
     while (state_at < session.states.size() && session.states[state_at].t_ms <= t)
       state = session.states[state_at++].state;
     while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
       layer = session.layers[layer_at++].text;
+    for (; stop_at < session.stops.size() && session.stops[stop_at].t_ms <= t; ++stop_at) {
+      const auto& r = session.stops[stop_at];
+      stop = r.reset ? std::nullopt : std::optional(r.by);
+    }
   };
   const auto sample = [&](const run::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
     const std::int64_t t = clock.time_of(tick);
     catch_up(t);
-    out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, ticks});
+    out.push_back(
+        PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, stopper(stop), ticks});
   };
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
@@ -59,6 +70,7 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
         next = std::min(next, tick_at_or_after(clock, session.states[state_at].t_ms));
       if (layer_at < session.layers.size())
         next = std::min(next, tick_at_or_after(clock, session.layers[layer_at].t_ms));
+      if (stop_at < session.stops.size()) next = std::min(next, tick_at_or_after(clock, session.stops[stop_at].t_ms));
       next = std::max(next, from + 1);
       sample(f, from, next - from == 1 ? 1 : next - from - 1);
       if (next - from > 1) sample(f, next - 1, 1);  // where it holds to: a step, not a slope

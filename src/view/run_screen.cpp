@@ -184,10 +184,10 @@ Screen render_run_screen(const RunStatus& s, TermSize size) {
                                                : std::string(kWeaponsLayer) + ": an armed fire input fires";
     screen.pin(Line(centred(banner, width), Style::kBanner).one_row());
   }
-  // Stopped by the operator: a red line across the top, above all else.
+  // Stopped by a stop button: a red line across the top, above all else, saying whose.
   const bool stopped = s.state == run::OpState::kStopped;
   if (stopped) {
-    screen.pin(Line(centred(std::string(kStopBanner) + ": stopped by the operator", width), Style::kBanner).one_row());
+    screen.pin(Line(centred(std::string(kStopBanner) + ": " + s.stopped_by, width), Style::kBanner).one_row());
   }
   auto title = Line("andros-bridge run", Style::kBold)
                    .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))

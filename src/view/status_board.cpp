@@ -15,8 +15,8 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// What a report says that the status's words and the log's lines come
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
-  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.engine,
-                  r.link.state, r.link.motion_allowed, r.link.detail);
+  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
+                  r.reset_by, r.engine, r.link.state, r.link.motion_allowed, r.link.detail);
 }
 
 }  // namespace
@@ -47,6 +47,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
       s.supervisor_stop = r.supervisor_connected && r.engine.supervisor_stop;
       s.consent = r.engine.consent;
       s.state = r.state;
+      s.stopped_by = stopped_by_text(r);
       s.enable_text = state_text(r);
       // "deadman released" forever would send the operator looking at the deadman.
       if (const auto note = joystick_note(s.pad_names, s.game_controller);
@@ -104,8 +105,7 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
-    else if (after.state == run::OpState::kStopped)
-      spdlog::warn("STOP: stopped by the operator: {}", after.enable_text);
+    else if (after.state == run::OpState::kStopped) spdlog::warn("STOP: {}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
@@ -161,17 +161,31 @@ std::string state_text(const run::TickReport& r) {
       }
       return "connect a controller, then press the deadman";
     case OpState::kNotEnabled:
+      if (r.reset_by) {
+        return "stop reset by the " + std::string(run::to_string(*r.reset_by)) + ": press the deadman afresh";
+      }
       // The engine saw the deadman held, but driving was interrupted since (link, reload, resume).
       if (r.engine.enable == mapping::EnableState::kEnabled)
         return "driving was interrupted: release and press the deadman again";
       return std::string(describe(r.engine.enable));
     case OpState::kEnabled: return enable_text(r.engine);
-    case OpState::kStopped: return std::string(kStoppedText);
+    case OpState::kStopped: return stopped_by_text(r) + ": " + std::string(kStoppedText);
     case OpState::kSuspended: return "neutral frames sent, link closed until resumed";
     case OpState::kReloading: return "neutral frames while the settings are read";
     case OpState::kStopping: return "sending neutral frames";
   }
   return "?";
+}
+
+std::string stopped_by_text(const run::TickReport& r) {
+  if (!r.stopped_by) return {};
+  if (*r.stopped_by == run::StopBy::kGate) {
+    return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
+  }
+  const bool supervisor = *r.stopped_by == run::StopBy::kSupervisor;
+  const auto& name = supervisor ? r.supervisor : r.controller;
+  return std::string("stopped by the ") + (supervisor ? "supervisor" : "operator") + " (" +
+         (name.empty() ? std::string("controller") : printable_text(name)) + ")";
 }
 
 std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {

@@ -17,6 +17,7 @@
 
 #include "andros/cli/command_line.hpp"
 #include "cli/run_reload.hpp"
+#include "support/frame_doubles.hpp"
 #include "support/temp_dir.hpp"
 
 namespace andros::cli {
@@ -205,7 +206,7 @@ TEST_F(ReloadRead, RefusesWhatNeedsARestartAndABadFile) {
 }
 
 /// A frame source that says which one it is in its neutral frame.
-class Marked final : public run::FrameSource {
+class Marked final : public testing::WithoutStops {
  public:
   explicit Marked(std::uint8_t mark) { neutral_[0] = mark; }
   run::Step step(const input::InputState& /*input*/, std::int64_t /*now_ms*/) override { return {neutral_, {}}; }

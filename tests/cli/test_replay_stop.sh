@@ -8,8 +8,10 @@ core="$DATA/mappings/core.yaml"
 at() { awk -v t="$1" '$1 == t' "$2"; }
 
 # 1. The stop latches through a held deadman and a held stick; releasing the
-# stop alone, or the deadman alone, does not clear it; both released, then a
-# fresh press (stick at rest first) drives again.
+# stop, the deadman, or both, never resets it, nor does a hold of the stop
+# button with the deadman pressed during it; the stop button released after
+# the stop, then held 2 s with the deadman released, does; then a fresh press
+# (stick at rest first) drives again.
 printf 'robot: HD1\nextends: %s\nestop: guide\n' "$core" >"$TMP/stop.yaml"
 cat >"$TMP/stop.events" <<'E'
 0    connect     pad
@@ -23,22 +25,25 @@ cat >"$TMP/stop.events" <<'E'
 400  button      leftshoulder 0
 420  button      guide 0
 500  button      leftshoulder 1
-600  axis        lefty 0
-640  axis        lefty -32768
-700  end
+560  button      leftshoulder 0
+600  button      guide 1
+2700 button      guide 0
+2750 button      leftshoulder 1
+2850 axis        lefty 0
+2890 axis        lefty -32768
+3000 end
 E
 expect_exit 0 "$BIN" replay "$TMP/stop.events" --mapping "$TMP/stop.yaml" --format jsonl
 frames "$TMP/out" >"$TMP/f1"
 [[ $(at 120 "$TMP/f1") == "120 255 128 1" ]] || fail "no drive before the stop: $(tr '\n' ';' <"$TMP/f1")"
-# From the frame after the press on, neutral whatever is held, until both are
-# let go (440: not at 320, stop held; not at 400, deadman pressed while the
-# stop was held at 330) ...
-awk '$1 >= 160 && $1 <= 480 && ($2 != 128 || $3 != 128 || $4 != 0) { exit 1 }' "$TMP/f1" ||
+# From the frame after the press on, neutral whatever is held or let go,
+# until the reset (the hold from 600, done at 2600) and a fresh press (2750) ...
+awk '$1 >= 160 && $1 <= 2720 && ($2 != 128 || $3 != 128 || $4 != 0) { exit 1 }' "$TMP/f1" ||
   fail "motion while stopped: $(tr '\n' ';' <"$TMP/f1")"
-# ... then a fresh press (500) enables, the stick held through it waits for rest (600), drives at 640.
-[[ $(at 520 "$TMP/f1") == "520 128 128 1" ]] || fail "the fresh press after the clearing does not enable: $(tr '\n' ';' <"$TMP/f1")"
-[[ $(at 600 "$TMP/f1") == "600 128 128 1" ]] || fail "a stick held through the stop acts before rest: $(tr '\n' ';' <"$TMP/f1")"
-[[ $(at 640 "$TMP/f1") == "640 255 128 1" ]] || fail "no drive after the stop cleared: $(tr '\n' ';' <"$TMP/f1")"
+# ... which enables, the stick held through it waits for rest (2880), drives at 2920.
+[[ $(at 2760 "$TMP/f1") == "2760 128 128 1" ]] || fail "the fresh press after the reset does not enable: $(tr '\n' ';' <"$TMP/f1")"
+[[ $(at 2880 "$TMP/f1") == "2880 128 128 1" ]] || fail "a stick held through the stop acts before rest: $(tr '\n' ';' <"$TMP/f1")"
+[[ $(at 2920 "$TMP/f1") == "2920 255 128 1" ]] || fail "no drive after the stop was reset: $(tr '\n' ';' <"$TMP/f1")"
 
 # 2. A tap between two frames stops too; a deadman held through it and never
 # released keeps the stop.
@@ -55,7 +60,8 @@ frames "$TMP/out" >"$TMP/f2"
 [[ $(at 120 "$TMP/f2") == "120 255 128 1" ]] || fail "no drive before the tap"
 awk '$1 >= 160 && ($4 != 0 || $2 != 128) { exit 1 }' "$TMP/f2" || fail "a tapped stop did not latch: $(tr '\n' ';' <"$TMP/f2")"
 
-# 3. The stop outlives a link lost and regained, a reload and a suspend.
+# 3. The stop outlives a link lost and regained, a reload and a suspend, and
+# the deadman released and pressed again; the reset hold ends it.
 cat >"$TMP/outlives.events" <<'E'
 0    connect     pad
 40   button      leftshoulder 1
@@ -68,13 +74,17 @@ cat >"$TMP/outlives.events" <<'E'
 500  resume
 600  button      leftshoulder 0
 640  button      leftshoulder 1
-700  axis        lefty -32768
-800  end
+700  button      leftshoulder 0
+720  button      guide 1
+2800 button      guide 0
+2840 button      leftshoulder 1
+2900 axis        lefty -32768
+3000 end
 E
 expect_exit 0 "$BIN" replay "$TMP/outlives.events" --mapping "$TMP/stop.yaml" --format jsonl
 frames "$TMP/out" >"$TMP/f3"
-awk '$1 >= 160 && $1 < 640 && $4 != 0 { exit 1 }' "$TMP/f3" || fail "the stop did not outlive link, reload, suspend: $(tr '\n' ';' <"$TMP/f3")"
-[[ $(at 760 "$TMP/f3") == "760 255 128 1" ]] || fail "no drive once released and pressed afresh: $(tr '\n' ';' <"$TMP/f3")"
+awk '$1 >= 160 && $1 < 2840 && $4 != 0 { exit 1 }' "$TMP/f3" || fail "the stop did not outlive link, reload, suspend: $(tr '\n' ';' <"$TMP/f3")"
+[[ $(at 2920 "$TMP/f3") == "2920 255 128 1" ]] || fail "no drive once reset and pressed afresh: $(tr '\n' ';' <"$TMP/f3")"
 
 # 4. Three-position trigger: past the panic point off at once and latched
 # until fully released; releasing from a squeeze through the middle never
@@ -141,4 +151,11 @@ grep -q "bad2.yaml:3:16: error: deadman_panic needs a trigger deadman" "$TMP/err
 printf 'robot: HD1\nextends: %s\nenable_timeout: 0.5\n' "$core" >"$TMP/bad3.yaml"
 expect_exit 2 "$BIN" check "$TMP/bad3.yaml"
 grep -q "bad3.yaml:3:17: error: enable_timeout 0.5 is out of range" "$TMP/err" || fail "timeout out of range: $(cat "$TMP/err")"
+printf 'robot: HD1\nextends: %s\nestop: hat9left\n' "$core" >"$TMP/bad4.yaml"
+expect_exit 2 "$BIN" check "$TMP/bad4.yaml"
+grep -q "bad4.yaml:3:8: error: estop 'hat9left' is on a hat a controller may not have" "$TMP/err" ||
+  fail "a stop on a hat the pad cannot have: $(cat "$TMP/err")"
+printf 'robot: HD1\nextends: %s\nstop_reset_hold: 12\n' "$core" >"$TMP/bad5.yaml"
+expect_exit 2 "$BIN" check "$TMP/bad5.yaml"
+grep -q "bad5.yaml:3:18: error: stop_reset_hold 12 is out of range 1..10" "$TMP/err" || fail "reset hold out of range: $(cat "$TMP/err")"
 finish

@@ -300,6 +300,34 @@ TEST(InputState, TapsCountAndConnectStartsAfresh) {
   EXPECT_EQ(s.button(a).presses, 0U);
 }
 
+TEST(InputState, EveryChangeBetweenTwoTicksIsKept) {
+  InputState s;
+  const auto lb = *parse_button_name("leftshoulder");
+  const auto lt = *parse_axis_name("lefttrigger");
+  s.apply(ev(0, T::kConnect));
+  s.apply(ev(0, T::kButton, "leftshoulder", 1));  // held at connect: neither a press nor, later, a release of it
+  s.apply(ev(0, T::kAxis, "lefttrigger", 30000));
+  EXPECT_EQ(s.button(lb).releases, 0U);
+  EXPECT_EQ(s.axis_span(lt), (AxisSpan{30000, 30000}));  // the state at connect spans its value alone
+  s.begin_tick();
+  // Released at 90 ms and pressed again at 110 ms, within one tick: down at its end, and one release.
+  s.apply(ev(90, T::kButton, "leftshoulder", 0));
+  s.apply(ev(110, T::kButton, "leftshoulder", 1));
+  EXPECT_TRUE(s.button(lb).down);
+  EXPECT_EQ(s.button(lb).presses, 1U);
+  EXPECT_EQ(s.button(lb).releases, 1U);
+  // A trigger let go and squeezed again: its span keeps where it went.
+  s.apply(ev(95, T::kAxis, "lefttrigger", 0));
+  s.apply(ev(105, T::kAxis, "lefttrigger", 32767));
+  s.apply(ev(115, T::kAxis, "lefttrigger", 30000));
+  EXPECT_EQ(s.axis(lt), 30000);
+  EXPECT_EQ(s.axis_span(lt), (AxisSpan{0, 32767}));
+  // The next tick starts from the value now; counts go on.
+  s.begin_tick();
+  EXPECT_EQ(s.axis_span(lt), (AxisSpan{30000, 30000}));
+  EXPECT_EQ(s.button(lb).releases, 1U);
+}
+
 TEST(InputState, HatDirectionsAreButtons) {
   InputState s;
   s.apply(ev(0, T::kConnect));

@@ -27,7 +27,10 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
 
-  apply_script(in, "90 button leftshoulder 0\n100 button leftshoulder 1\n");
+  apply_script(in, "90 button leftshoulder 0\n");
+  engine.step(in, 100);
+  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
   EXPECT_EQ(f[protocol::signal_id("safety")], 1);
@@ -73,7 +76,9 @@ TEST(Engine, PressesBeforeStartUpAreNotFresh) {
   engine.step(in, 10);
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_NE(describe(engine.status().enable).find("press it again"), std::string_view::npos);
-  apply_script(in, "20 button leftshoulder 0\n30 button leftshoulder 1\n");
+  apply_script(in, "20 button leftshoulder 0\n");
+  engine.step(in, 30);
+  apply_script(in, "40 button leftshoulder 1\n");
   engine.step(in, 50);
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
   EXPECT_EQ(describe(EnableState::kEnabled), "enabled");
@@ -96,7 +101,9 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 0);
-  apply_script(in, "90 button leftshoulder 0\n95 axis lefty 0\n100 button leftshoulder 1\n");
+  apply_script(in, "90 button leftshoulder 0\n95 axis lefty 0\n");
+  engine.step(in, 100);
+  apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 0);  // the toggle did not come back
@@ -122,6 +129,66 @@ TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
   apply_script(in, "130 button a 0\n140 button a 1\n");
   f = protocol::read_signals(engine.step(in, 160));
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 1);
+}
+
+// Every change between two frames counts: a deadman released and pressed
+// again within one tick is a release at that tick, and the press after it is
+// fresh (the stick held through it waits for rest).
+TEST(Engine, ADeadmanLetGoAndPressedWithinOneTickIsARelease) {
+  Engine engine(hd1_mapping(), EngineOptions{});
+  input::InputState in;
+  start_enabled(engine, in);
+  apply_script(in, "50 axis lefty -32768\n");
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 80))[protocol::signal_id("drive")], 255);
+  apply_script(in, "90 button leftshoulder 0\n110 button leftshoulder 1\n");
+  auto f = protocol::read_signals(engine.step(in, 120));
+  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(f[protocol::signal_id("safety")], 0);
+  EXPECT_EQ(f[protocol::signal_id("drive")], 128);
+  f = protocol::read_signals(engine.step(in, 160));
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(f[protocol::signal_id("drive")], 128);                // held through the press: at rest first
+  apply_script(in, "170 axis lefty 0\n180 axis lefty -32768\n");  // at rest and back between two ticks: not seen
+  EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("drive")], 128);
+}
+
+TEST(Engine, APanicSqueezeWithinOneTickLatches) {
+  Engine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\ndeadman_panic: 0.9\nbindings:\n"
+                                  "  - analog: drive\n    axis: lefty\n    invert: true\n"),
+                EngineOptions{});
+  input::InputState in;
+  engine.step(in, 0);
+  apply_script(in, "0 connect\n");
+  engine.step(in, 20);  // the trigger seen released
+  apply_script(in, "30 axis lefttrigger 24000\n");
+  engine.step(in, 40);
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  apply_script(in, "90 axis lefttrigger 32767\n110 axis lefttrigger 24000\n");
+  engine.step(in, 120);
+  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
+  in.begin_tick();
+  engine.step(in, 160);
+  EXPECT_EQ(engine.status().enable, EnableState::kPanic);  // latched until fully released
+  // Fully released and squeezed again within one tick: the latch ends, and the squeeze after it is fresh.
+  apply_script(in, "170 axis lefttrigger 0\n180 axis lefttrigger 24000\n");
+  engine.step(in, 200);
+  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  in.begin_tick();
+  engine.step(in, 240);
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  apply_script(in, "250 axis lefttrigger 32767\n260 axis lefttrigger 0\n");  // past it and fully back: released
+  engine.step(in, 280);
+  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  // Which came first within a tick is not known: a squeeze with a full release and back keeps the latch.
+  apply_script(in, "290 axis lefttrigger 24000\n");
+  engine.step(in, 320);
+  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  apply_script(in, "330 axis lefttrigger 0\n340 axis lefttrigger 32767\n350 axis lefttrigger 24000\n");
+  engine.step(in, 360);
+  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
+  in.begin_tick();
+  engine.step(in, 400);
+  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
 }
 
 TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {

@@ -194,7 +194,9 @@ TEST(EngineSupervisor, TheSupervisorsControllerBackNeedsAFreshDeadmanPress) {
   auto f = protocol::read_signals(engine.step(in, 80));
   EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
   EXPECT_EQ(f[protocol::signal_id("front_art_up")], 0);
-  apply_script(in, "90 button leftshoulder 0\n100 button leftshoulder 1\n");
+  apply_script(in, "90 button leftshoulder 0\n");
+  engine.step(in, 100);
+  apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
   EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
   EXPECT_EQ(f[protocol::signal_id("front_art_up")], 0);  // dpup, held across, waits for a release

@@ -203,7 +203,9 @@ TEST(EngineWeapons, ToggledLayersEndWithTheDeadmanAndAnyStop) {
   EXPECT_EQ(engine.status().layer, "");
   EXPECT_FALSE(engine.status().weapons_mode);
 
-  apply_script(in, "330 button leftshoulder 0\n340 button leftshoulder 1\n345 button y 1\n350 button y 0\n");
+  apply_script(in, "330 button leftshoulder 0\n");
+  engine.step(in, 340);
+  apply_script(in, "340 button leftshoulder 1\n345 button y 1\n350 button y 0\n");
   engine.step(in, 360);
   EXPECT_EQ(engine.status().layer, "weapons");
   apply_script(in, "370 disconnect\n380 connect\n");

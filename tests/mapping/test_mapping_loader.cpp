@@ -48,6 +48,15 @@ TEST_P(MappingErrors, NameFileLineAndColumn) {
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, MappingErrors,
     ::testing::Values(
+        BadMapping{"stop_reset_hold below 1 s", "robot: HD1\ndeadman: leftshoulder\nstop_reset_hold: 0.5\n", 3, 18,
+                   "stop_reset_hold 0.5 is out of range 1..10"},
+        BadMapping{"stop_reset_hold above 10 s", "robot: HD1\ndeadman: leftshoulder\nstop_reset_hold: 11\n", 3, 18,
+                   "stop_reset_hold 11 is out of range 1..10"},
+        BadMapping{"a stop on a hat a pad cannot have", "robot: HD1\ndeadman: leftshoulder\nestop: hat9left\n", 3, 8,
+                   "estop 'hat9left' is on a hat a controller may not have"},
+        BadMapping{"the supervisor's stop on such a hat",
+                   "robot: HD1\ndeadman: leftshoulder\nsupervisor:\n  stop: hat1up\n", 4, 9,
+                   "the supervisor's stop 'hat1up' is on a hat a controller may not have"},
         BadMapping{"unknown top-level key", "robot: HD1\ndeadman: leftshoulder\nrobto: F6A\n", 3, 1,
                    "unknown key 'robto' in a mapping file"},
         BadMapping{"unknown binding key", kHead + "  - signal: tool_on\n    butten: a\n", 5, 5,
@@ -385,6 +394,18 @@ TEST(MappingLoader, DefaultsAndEveryBindingKind) {
 
 // The supervisor's buttons are read on its own controller: the operator's
 // deadman, a layer key or a bound input may be the same button name.
+TEST(MappingLoader, StopResetHoldIsOneToTenSecondsTwoByDefault) {
+  MappingDir dir;
+  EXPECT_EQ(load_mapping(dir.write("d.yaml", "robot: HD1\ndeadman: a\n"))->stop_reset_hold_ms, 2000);
+  EXPECT_EQ(load_mapping(dir.write("lo.yaml", "robot: HD1\ndeadman: a\nstop_reset_hold: 1\n"))->stop_reset_hold_ms,
+            1000);
+  EXPECT_EQ(load_mapping(dir.write("hi.yaml", "robot: HD1\ndeadman: a\nstop_reset_hold: 10\n"))->stop_reset_hold_ms,
+            10000);
+  EXPECT_EQ(load_mapping(dir.write("x.yaml", "robot: HD1\ndeadman: a\nstop_reset_hold: 2.5\nestop: hat0up\n"))
+                ->stop_reset_hold_ms,
+            2500);
+}
+
 TEST(MappingLoader, TheSupervisorSectionNamesButtonsOnTheSecondController) {
   MappingDir dir;
   const auto m = *load_mapping(dir.write("sup.yaml",

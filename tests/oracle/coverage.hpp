@@ -25,6 +25,7 @@ enum class Ending : std::uint8_t {
   kReloadBad,
   kStop,
   kStopButton,
+  kReset,
   kPanic,
   kTimeout,
   kCount
@@ -32,9 +33,9 @@ enum class Ending : std::uint8_t {
 
 inline const char* to_string(Ending e) {
   constexpr const char* kNames[] = {
-      "start",       "connect",       "disconnect",    "deadman release",    "link down",         "link up",
-      "suspend",     "resume",        "reload (same)", "reload (good file)", "reload (bad file)", "stop",
-      "stop button", "panic squeeze", "enable timeout"};
+      "start",       "connect",    "disconnect",    "deadman release",    "link down",         "link up",
+      "suspend",     "resume",     "reload (same)", "reload (good file)", "reload (bad file)", "stop",
+      "stop button", "stop reset", "panic squeeze", "enable timeout"};
   return kNames[static_cast<std::size_t>(e)];
 }
 
@@ -53,6 +54,9 @@ struct OracleCoverage {
   std::int64_t panics = 0;             ///< squeezes past the panic point
   std::int64_t timeouts = 0;           ///< enable timeouts that ended motion
   std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
+  std::int64_t operator_resets = 0;    ///< stops reset by the operator's hold
+  std::int64_t supervisor_resets = 0;  ///< stops reset by the supervisor's hold
+  std::int64_t refused_resets = 0;     ///< the operator's holds done on the supervisor's stop
   std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
   std::int64_t gated = 0;              ///< frames offered to the link, each checked by the frame gate
   std::int64_t rest_held = 0;          ///< enabled frames where the rest rule held drive or pivot at the trim
@@ -60,9 +64,10 @@ struct OracleCoverage {
 
   OracleCoverage& operator+=(const OracleCoverage& o) {
     using C = OracleCoverage;
-    for (const auto count : {&C::frames, &C::motion, &C::weapons, &C::stops_with_frames, &C::suspend_frames,
-                             &C::reload_frames, &C::stop_latches, &C::panics, &C::timeouts, &C::supervisor_stops,
-                             &C::supervised_frames, &C::gated, &C::rest_held, &C::trimmed}) {
+    for (const auto count :
+         {&C::frames, &C::motion, &C::weapons, &C::stops_with_frames, &C::suspend_frames, &C::reload_frames,
+          &C::stop_latches, &C::panics, &C::timeouts, &C::supervisor_stops, &C::operator_resets, &C::supervisor_resets,
+          &C::refused_resets, &C::supervised_frames, &C::gated, &C::rest_held, &C::trimmed}) {
       this->*count += o.*count;
     }
     for (std::size_t i = 0; i < motion_after.size(); ++i) motion_after[i] += o.motion_after[i];

@@ -16,15 +16,20 @@
 // are about: the stop tapped within one tick and the deadman pressed within
 // the next; the stop held through a release and press of the deadman; a
 // trigger squeezed past its panic point and back to the middle; a layer left
-// with its stick pushed; both buttons of an opposing pair.
+// with its stick pushed; both buttons of an opposing pair; resets of a stop
+// (a stop button let go, then held about 2 s, by either pad, the deadman now
+// and then pressed during it); and a deadman let go and pressed again, or the
+// trigger squeezed past its panic point and back, within one frame.
 
 #include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "andros/input/events.hpp"
+#include "oracle/script_writer.hpp"
 
 namespace andros::test {
 
@@ -47,47 +52,19 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   const input::InputKey weapons_layer = button("rightshoulder");
   const input::InputKey fire_button = button("a");
 
-  std::vector<input::InputEvent> events;
-  std::int64_t t = 0;
-  bool connected = true;
-  bool held = false;        // the deadman, as the script last set it
-  bool supervised = false;  // a supervisor's controller in this script
-  const auto add = [&](T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
-    input::InputEvent e;
-    e.t_ms = t;
-    e.type = type;
-    e.key = key;
-    e.value = value;
-    e.name = std::move(name);
-    events.push_back(std::move(e));
-    if (type == T::kButton && key == deadman) held = value != 0;
-    if (type == T::kConnect || type == T::kDisconnect) {
-      connected = type == T::kConnect;
-      held = false;
-    }
+  ScriptWriter<Choices> w(pick, deadman);
+  auto& events = w.events;
+  auto& t = w.t;
+  const bool& connected = w.connected;
+  const bool& held = w.held;
+  bool& supervised = w.supervised;
+  const auto add = [&w](T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
+    w.add(type, key, value, std::move(name));
   };
-  // Time moves on: often not at all (events at one instant), to a frame's
-  // time exactly, just past it, within a frame, or a long while.
-  const auto wait = [&] {
-    switch (pick.below(10)) {
-      case 0:
-      case 1:
-      case 2: break;
-      case 3: t = (t / 40 + 1) * 40; break;
-      case 4: t += 1; break;
-      case 9: t += 100 + pick.below(700); break;
-      default: t += pick.below(60); break;
-    }
-  };
-  // A second event of a pair (link down/up, suspend/resume): within the same
-  // frame, within a stop's or suspend's neutral frames, or later.
-  const auto pair_gap = [&] {
-    switch (pick.below(4)) {
-      case 0: t += pick.below(40); break;
-      case 1: t += 40 + pick.below(100); break;
-      default: t += 150 + pick.below(800); break;
-    }
-  };
+  const auto supervisor = [&w](T type, input::InputKey key = {}, int value = 0) { w.supervisor(type, key, value); };
+  const auto wait = [&w] { w.wait(); };
+  const auto pair_gap = [&w] { w.pair_gap(); };
+  const auto next_tick = [&w](int within) { w.next_tick(within); };
   const auto rearm = [&] {     // the operator lets go of the deadman and presses it again, stick forward
     if (pick.below(3) == 0) {  // a trigger deadman (some mappings): released, squeezed to the middle
       add(T::kAxis, arm, 0);
@@ -113,9 +90,6 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(T::kButton, weapons_layer, 0);
   };
 
-  const auto next_tick = [&](int within) {
-    t = (t / 40 + 1) * 40 + 1 + pick.below(static_cast<std::uint32_t>(within));
-  };
   const auto stick = [&] {
     t += pick.below(50);
     add(T::kAxis, drive, pick.below(3) == 0 ? 0 : -32768);
@@ -172,11 +146,37 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 40 + pick.below(160);
     if (pick.below(2) == 0) add(T::kAxis, drive, 0);
   };
-
-  const auto supervisor = [&](T type, input::InputKey key = {}, int value = 0) {
-    add(type, key, value);
-    events.back().pad = input::Pad::kSupervisor;
+  // A reset: the stop button let go, then held about 2 s (the supervisor's, when there is one, now and then).
+  const auto reset_hold = [&] {
+    const bool by_supervisor = supervised && pick.below(2) == 0;
+    const auto press = [&](int value) {
+      if (by_supervisor) supervisor(T::kButton, button("guide"), value);
+      else add(T::kButton, button("guide"), value);
+    };
+    if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
+    press(0);
+    t += pick.below(100);
+    press(1);
+    const auto hold = pick.below(4) == 0 ? pick.below(2000) : 1950 + pick.below(300);
+    if (pick.below(8) == 0) {  // the deadman pressed during the hold: no reset
+      t += pick.below(static_cast<std::uint32_t>(hold) + 1);
+      add(T::kButton, deadman, 1);
+      t += 10;
+      add(T::kButton, deadman, 0);
+    } else {
+      t += hold;
+    }
+    press(0);
   };
+  // Within one frame: the deadman let go and pressed again, or the trigger (a
+  // deadman on some mappings) squeezed past the panic point and back.
+  const auto blip_within_a_frame = [&](input::InputKey key, int away, int back) {
+    next_tick(10);
+    add(key.is_button() ? T::kButton : T::kAxis, key, away);
+    t += 1 + pick.below(25);
+    add(key.is_button() ? T::kButton : T::kAxis, key, back);
+  };
+
   add(T::kConnect);
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
   supervised = pick.below(2) == 0;                      // a supervisor's controller in every other script
@@ -210,7 +210,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(28)) {
+      switch (pick.below(33)) {
         case 0:
         case 1:
         case 2:
@@ -277,13 +277,18 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           add(T::kButton, button("dpdown"), 0);
           break;
         case 27: fire(); break;
+        case 28:
+        case 29:
+        case 30: reset_hold(); break;
+        case 31: blip_within_a_frame(deadman, 0, 1); break;
+        case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
         default: rearm(); break;
       }
     }
   }
   t += pick.below(200);
   add(T::kEnd);
-  return events;
+  return std::move(w.events);
 }
 
 }  // namespace andros::test

@@ -48,7 +48,8 @@ class LayerRest {
       for (std::size_t i = 0; i < m.layers.size(); ++i) {
         const auto& layer = m.layers[i];
         if (!layer.toggle || !layer.input.key.is_button()) continue;
-        for (auto n = presses_[layer.input.key]; n > 0; --n) toggled_ = toggled_ == static_cast<int>(i) ? -1 : static_cast<int>(i);
+        for (auto n = presses_[layer.input.key]; n > 0; --n)
+          toggled_ = toggled_ == static_cast<int>(i) ? -1 : static_cast<int>(i);
       }
     } else {
       toggled_ = -1;

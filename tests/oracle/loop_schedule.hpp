@@ -24,7 +24,9 @@ class LoopSchedule {
  public:
   explicit LoopSchedule(LoopOptions options) : o_(options) {}
 
-  [[nodiscard]] std::int64_t tick_of(std::int64_t t) const { return (t + o_.period_ms - 1) / o_.period_ms * o_.period_ms; }
+  [[nodiscard]] std::int64_t tick_of(std::int64_t t) const {
+    return (t + o_.period_ms - 1) / o_.period_ms * o_.period_ms;
+  }
 
   // A reload sends its neutral frames from its tick on until the link took
   // 3, or for as long as a stop may take when it refuses them.
@@ -33,10 +35,17 @@ class LoopSchedule {
            t < *reload_tick_ + o_.stop_ticks * o_.period_ms;
   }
 
-  /// A reload asked for at t finds one not yet applied (read again, or waiting for a resume).
-  [[nodiscard]] bool reload_pending(std::int64_t t) const {
-    const std::int64_t tick = tick_of(t);
-    return reloading(tick) || reload_after_resume_ || suspended_ || (reload_tick_ && tick < *reload_tick_);
+  /// At a tick: a suspend's neutral frames still going out (resumed or not:
+  /// the loop answers a resume after them), until the link took 3 or for as
+  /// long as a stop may take. Unknown (false) for a suspend that waits for a reload.
+  [[nodiscard]] bool suspending(std::int64_t t) const {
+    return suspend_tick_ && t >= *suspend_tick_ && suspend_sent_ < o_.stop_frames &&
+           t < *suspend_tick_ + o_.stop_ticks * o_.period_ms;
+  }
+
+  /// At a tick: a reload under way (its neutral frames going out, or to go out once a suspend's are).
+  [[nodiscard]] bool reload_under_way(std::int64_t tick) const {
+    return reloading(tick) || (reload_tick_ && tick < *reload_tick_);
   }
 
   /// Link events; true when the event changed the link (a link lost, or back: a new link).
@@ -52,6 +61,7 @@ class LoopSchedule {
     suspended_ = true;
     // (One asked for during a reload waits for it: its frames' tick is not known here.)
     suspend_tick_ = reloading(tick_of(t)) ? std::nullopt : std::optional(tick_of(t));
+    suspend_sent_ = 0;
     owed_ += o_.stop_frames;
   }
 
@@ -123,9 +133,9 @@ class LoopSchedule {
     if (owed) --owed_;
     if (stopped_ && owed && t >= stop_tick_ && t < stop_tick_ + o_.stop_frames * o_.period_ms) ++stop_frames_on_time_;
     if (reloading(t)) ++reload_sent_;
+    if (suspending(t)) ++suspend_sent_;
     return owed;
   }
-
 
  public:
   [[nodiscard]] bool link_up() const { return link_up_; }
@@ -171,6 +181,7 @@ class LoopSchedule {
   bool link_up_ = true;  ///< replay's sink is there from the start
   bool suspended_ = false;
   std::optional<std::int64_t> suspend_tick_;  ///< the tick of the last suspend's first neutral frame
+  int suspend_sent_ = 0;                      ///< its neutral frames delivered so far
   std::optional<std::int64_t> reload_tick_;
   int reload_sent_ = 0;               ///< its neutral frames delivered so far
   bool reload_after_resume_ = false;  ///< a reload asked for while suspended

@@ -47,7 +47,9 @@ struct OraclePads {
     return it != buttons.end() && it->second;
   }
   // A deadman down as the engine reads it: a button held, a trigger at half its travel or past.
-  [[nodiscard]] bool down(input::InputKey key) const { return key.is_button() ? held(key) : axis(key) >= kTriggerPressed; }
+  [[nodiscard]] bool down(input::InputKey key) const {
+    return key.is_button() ? held(key) : axis(key) >= kTriggerPressed;
+  }
   [[nodiscard]] bool sup_held(std::optional<input::InputKey> key) const {
     if (!key) return false;
     const auto it = sup_buttons.find(*key);

@@ -1,12 +1,15 @@
 #pragma once
 // What the oracle (safety_oracle.hpp) reads off the mappings a script may
 // run: the initial one and every good file its reloads name. Permissive over
-// all of them where it cannot know which one is in place: a stop button only
-// when all have that one, a panic point and a timeout only when all have one
+// all of them where a rule reads them so: the supervisor's stop button (its
+// presses counted) only when all have that one, a panic point and a timeout only when all have one
 // (the most lenient of them), the deadmen of any (a press of any may
-// enable), the deadmen of all (the stop's clearing waits for them), the
-// arming inputs of any. The mapping in place (the last good one loaded) is
-// known exactly: a reload sends neutral frames until it is in place.
+// enable), the deadmen of all (a release of one makes the tick neutral), the
+// arming inputs of any. The mapping in force is known exactly: a reload's is
+// in force once its neutral frames are out (the caller says when), a reload
+// of the same file while another is under way (or waits for a resume) keeps
+// the one in force, a bad one cancels a good one not yet in force, and one
+// asked for while suspended waits for the resume (the last one asked).
 
 #include <algorithm>
 #include <cmath>
@@ -22,21 +25,24 @@
 namespace andros::test {
 
 struct PossibleMappings {
-  std::optional<input::InputKey> estop;     ///< the stop button every possible mapping has
   std::optional<input::InputKey> sup_stop;  ///< the supervisor's stop button every possible mapping has
   std::optional<std::int64_t> timeout_ms;
-  std::optional<int> panic;  ///< the raw trigger value of the panic point
+  std::optional<int> panic;                  ///< the raw trigger value of the panic point
   std::set<input::InputKey> deadmen;         ///< every possible mapping's
-  std::set<input::InputKey> common_deadmen;  ///< the deadmen every possible mapping has (the stop's clearing)
+  std::set<input::InputKey> common_deadmen;  ///< the deadmen every possible mapping has (a release's neutral tick)
   std::map<protocol::SignalId, std::set<input::InputKey>> arms;
-  const mapping::Mapping* current = nullptr;  ///< the mapping in place once a reload is done
-  bool known = true;  ///< false: a reload may have been cancelled by a later one, current is a guess
+  const mapping::Mapping* current = nullptr;  ///< the mapping in force
+  const mapping::Mapping* pending = nullptr;  ///< a reload's, in force once the reload is done
+  /// The last reload asked for while suspended, answered after the resume.
+  struct Queued {
+    bool any = false;
+    const mapping::Mapping* loaded = nullptr;
+    bool same_file = false;
+  } queued;
 
   void add(const mapping::Mapping& m) {
     const bool first = current == nullptr;
-    current = &m;
-    const std::optional<input::InputKey> e = m.estop ? std::optional(m.estop->key) : std::nullopt;
-    estop = first || estop == e ? e : std::nullopt;
+    if (first) current = &m;
     const std::optional<input::InputKey> s = m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt;
     sup_stop = first || sup_stop == s ? s : std::nullopt;
     const auto lenient = [first](auto& have, auto value) {
@@ -62,15 +68,24 @@ struct PossibleMappings {
     for (const auto& layer : m.layers) weapons(layer.bindings);
   }
 
-  /// A reload: loaded, the mapping it brings (nullptr: none, or the same
-  /// file again); pending, another reload not yet applied, which one without
-  /// a mapping cancels (the mapping in place is then a guess). True when the
-  /// stop buttons known changed.
-  bool reload(const mapping::Mapping* loaded, bool pending) {
-    const auto stops = std::pair(estop, sup_stop);
+  /// A reload: loaded, the mapping it brings (nullptr: none, a bad file or
+  /// the same file again, same_file); queue, asked for while suspended.
+  void reload(const mapping::Mapping* loaded, bool same_file, bool queue) {
     if (loaded != nullptr) add(*loaded);
-    known = loaded != nullptr || (known && !pending);
-    return stops != std::pair(estop, sup_stop);
+    if (queue) queued = {true, loaded, same_file};
+    else pending = loaded != nullptr ? loaded : same_file ? current : nullptr;
+  }
+  /// The resume: the reload asked for while suspended begins (the same file: the one in force then).
+  void resumed() {
+    const Queued q = std::exchange(queued, Queued{});
+    if (q.any) pending = q.loaded != nullptr ? q.loaded : q.same_file ? current : nullptr;
+  }
+  /// The reload done: its mapping in force. True when there was one (read
+  /// afresh, even the same file: a new engine).
+  bool take_up() {
+    if (pending == nullptr) return false;
+    current = std::exchange(pending, nullptr);
+    return true;
   }
 
   /// A weapon's arming input (of any possible mapping) held.

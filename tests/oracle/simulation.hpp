@@ -61,6 +61,19 @@ inline std::string script_text(const std::vector<input::InputEvent>& script) {
   return text;
 }
 
+/// The loop's state at a frame it sent, against the oracle's stop latch
+/// (which reads the reset holds exactly as the loop must): a stop latched and
+/// not reset is "stopped" (unless a suspend, a reload or the shutdown
+/// outranks it), and "stopped" is a stop latched and not reset, so that a
+/// reset made late, or never, breaks a rule as one made early does.
+inline std::string stop_said(run::OpState state, bool latched) {
+  using S = run::OpState;
+  if (state == S::kSuspended || state == S::kReloading || state == S::kStopping) return {};
+  if (latched == (state == S::kStopped)) return {};
+  return "the loop said \"" + std::string(run::to_string(state)) + "\" where the stop is " +
+         (latched ? "latched, not reset" : "reset (or none was latched)");
+}
+
 struct SimulationOutcome {
   std::string violation;  ///< empty: every frame kept the rules
   OracleCoverage coverage;
@@ -86,8 +99,10 @@ inline SimulationOutcome simulate(
   // And what the loop says is what it sent: a frame the link took carries safety = 1 exactly when the
   // state after its tick is "enabled" (the screen, the pad's light and the status read that state).
   std::string said;
+  run::OpState state = run::OpState::kNoLink;  ///< the loop's, at the frame it just sent
   options.observe = [&](const run::TickReport& r) {
     observe(r);
+    state = r.state;
     if (r.sent) ++gated;
     if (!r.gate_fault.empty() && gate_fault.empty())
       gate_fault = "the frame gate tripped at t=" + std::to_string(r.t_ms) + ": " + r.gate_fault;
@@ -102,8 +117,9 @@ inline SimulationOutcome simulate(
     run::replay(player, mapping::Engine(valid, options.engine), options,
                 [&](std::int64_t t, const protocol::DataBytes& data) {
                   if (!out.violation.empty()) return;
-                  if (auto v = oracle.frame(t, data); !v.empty())
-                    out.violation = "frame at t=" + std::to_string(t) + ": " + v;
+                  std::string v = oracle.frame(t, data);
+                  if (v.empty()) v = stop_said(state, oracle.stop_latched());
+                  if (!v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
                 });
   } catch (const std::exception& e) {
     out.violation = std::string("replay threw: ") + e.what();

@@ -13,8 +13,9 @@
 
 namespace andros::test {
 
-/// The event that ends a latched stop (its reset): the one place that names it.
-constexpr run::OpEvent kStopReset = run::OpEvent::kStopCleared;
+/// Who latched a stop, as the contract has it: the supervisor may reset any
+/// stop, the operator only the operator's (and the frame gate's).
+enum class Stopper : std::uint8_t { kNone, kOperator, kSupervisor, kGate };
 
 class StateOracle {
  public:
@@ -41,7 +42,22 @@ class StateOracle {
       case E::kControllerDown: controller_ = false; break;
       case E::kOperatorStop:
       case E::kGateTrip:  // the frame gate stopped a frame: a stop like the button's
-        if (!shutdown_) stop_ = owed_stop_ = true;
+        if (!shutdown_) {
+          if (!stop_) stopper_ = event == E::kGateTrip ? Stopper::kGate : Stopper::kOperator;
+          stop_ = owed_stop_ = true;
+        }
+        break;
+      case E::kSupervisorStop:  // the stop is the supervisor's from now on
+        if (!shutdown_) {
+          stopper_ = Stopper::kSupervisor;
+          stop_ = owed_stop_ = true;
+        }
+        break;
+      case E::kOperatorReset:  // stopped: the operator's own stop (or the gate's) only
+        if (stop_ && before == run::OpState::kStopped && stopper_ != Stopper::kSupervisor) stop_ = false;
+        break;
+      case E::kSupervisorReset:  // stopped: any stop
+        if (stop_ && before == run::OpState::kStopped) stop_ = false;
         break;
       case E::kReloadBegin:
       case E::kSuspend:
@@ -49,7 +65,6 @@ class StateOracle {
       case E::kShutdown: shutdown_ = true; break;
       default: break;
     }
-    if (event == kStopReset) stop_ = false;
     // A rebase pays what is owed once its cause is over.
     if (effect.rebase) {
       owed_other_ = false;
@@ -90,6 +105,7 @@ class StateOracle {
       case E::kPanic:
       case E::kEnableTimeout:
       case E::kOperatorStop:
+      case E::kSupervisorStop:
       case E::kGateTrip:
       case E::kReloadBegin:
       case E::kSuspend:
@@ -102,6 +118,7 @@ class StateOracle {
   bool link_;
   bool controller_ = false;
   bool stop_ = false;
+  Stopper stopper_ = Stopper::kNone;
   bool shutdown_ = false;
   bool owed_link_ = false;   // a link lost: rebase once it is back
   bool owed_stop_ = false;   // a stop latched: rebase once it is reset

@@ -11,6 +11,7 @@
 #include "andros/link/pty_pair.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
+#include "support/frame_doubles.hpp"
 #include "support/frame_reader.hpp"
 
 namespace andros::run {
@@ -21,7 +22,7 @@ const FrameRules kRules{false, 0x3C};
 
 /// A stand-in for the mapping engine: drive 200 while button a is held,
 /// pressed after the last restart.
-class PressToDrive final : public FrameSource {
+class PressToDrive final : public testing::WithoutStops {
  public:
   Step step(const input::InputState& input, std::int64_t) override {
     const auto a = input.button(*input::parse_button_name("a"));
@@ -332,7 +333,7 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDownAndSaysNoLink) {
 }
 
 /// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
-class StallOnce final : public FrameSource {
+class StallOnce final : public testing::WithoutStops {
  public:
   explicit StallOnce(VirtualClock& clock) : clock_(clock) {}
   Step step(const input::InputState& input, std::int64_t now_ms) override {

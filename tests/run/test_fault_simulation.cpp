@@ -1,6 +1,8 @@
 // Deterministic fault simulation (docs/testing.md): random event scripts with
 // faults (the controller lost and back, link flaps and take-overs, reloads
-// of good, bad and missing mappings, suspend and resume, a stop) through
+// of good, bad and missing mappings, suspend and resume, a stop; stop
+// buttons on either pad and their resets, a deadman let go and pressed again
+// or a trigger squeezed past its panic point within one frame) through
 // replay, the run loop itself on a virtual clock, over every shipped mapping
 // with weapons off and on. Every delivered frame is checked by
 // tests/oracle/safety_oracle.hpp, which reads only the script and the frame
@@ -208,6 +210,11 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: %lld frames of a mapping with a centre trim, %lld enabled frames with drive or pivot "
       "held at it by the rest rule\n",
       static_cast<long long>(coverage.trimmed), static_cast<long long>(coverage.rest_held));
+  std::printf(
+      "fault simulation: %lld stops reset by the operator and %lld by the supervisor (%lld operator's holds on "
+      "the supervisor's stop refused)\n",
+      static_cast<long long>(coverage.operator_resets), static_cast<long long>(coverage.supervisor_resets),
+      static_cast<long long>(coverage.refused_resets));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
@@ -225,10 +232,14 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.timeouts, 0);
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
-  EXPECT_GT(coverage.gated, coverage.frames);
+  EXPECT_GT(coverage.gated, coverage.frames);  // the gate saw every frame, those the link refused too
   EXPECT_GT(coverage.trimmed, coverage.frames / 2);
-  EXPECT_GT(coverage.rest_held, 0);  // the gate saw every frame, those the link refused too
-  for (const auto after : {Ending::kStopButton, Ending::kPanic, Ending::kTimeout}) {
+  EXPECT_GT(coverage.rest_held, 0);
+  EXPECT_GT(coverage.operator_resets, 0);
+  EXPECT_GT(coverage.supervisor_resets, 0);
+  EXPECT_GT(coverage.refused_resets, 0);
+  // After a stop, motion comes only after its reset (the last interruption before the press is the reset).
+  for (const auto after : {Ending::kReset, Ending::kPanic, Ending::kTimeout}) {
     EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
   }
 }

@@ -56,6 +56,15 @@ TEST(FeedbackEvents, AStopAndATimeoutHaveTheirOwn) {
   EXPECT_EQ(feedback_events(kEnabled, feedback_status(r)), (Events{E::kTimedOut, E::kDisabled}));
   // Their patterns are the stop's red and a light of their own.
   EXPECT_EQ(mapping::default_feedback_pattern(E::kStopped).led, (std::array<std::uint8_t, 3>{255, 0, 0}));
+  // A reset: a rumble of its own, once, when the stop ends by it (not by a suspend).
+  r.engine.enable = EnableState::kDeadmanReleased;
+  r.reset_by = StopBy::kSupervisor;
+  const auto reset = feedback_status(r);
+  EXPECT_EQ(feedback_events(stopped, reset), Events{E::kStopReset});
+  EXPECT_TRUE(feedback_events(reset, reset).empty());
+  r.reset_by.reset();
+  r.state = OpState::kSuspended;
+  EXPECT_TRUE(feedback_events(stopped, feedback_status(r)).empty());
 }
 
 TEST(FeedbackStatus, EnabledIsTheOperatingStatesNotTheEngines) {

@@ -19,10 +19,14 @@ using E = OpEvent;
 
 constexpr std::array kStates = {S::kNoLink,  S::kNoController, S::kNotEnabled, S::kEnabled,
                                 S::kStopped, S::kSuspended,    S::kReloading,  S::kStopping};
-constexpr std::array kEvents = {E::kLinkUp,     E::kLinkDown,    E::kLinkTaken,   E::kControllerUp,  E::kControllerDown,
-                                E::kFreshPress, E::kRelease,     E::kPanic,       E::kEnableTimeout, E::kOperatorStop,
-                                E::kGateTrip,   E::kStopCleared, E::kReloadBegin, E::kReloadDone,    E::kSuspend,
-                                E::kResume,     E::kShutdown};
+constexpr std::array kEvents = {E::kLinkUp,         E::kLinkDown,        E::kLinkTaken,      E::kControllerUp,
+                                E::kControllerDown, E::kFreshPress,      E::kRelease,        E::kPanic,
+                                E::kEnableTimeout,  E::kOperatorStop,    E::kSupervisorStop, E::kGateTrip,
+                                E::kOperatorReset,  E::kSupervisorReset, E::kReloadBegin,    E::kReloadDone,
+                                E::kSuspend,        E::kResume,          E::kShutdown};
+
+bool is_reset(E e) { return e == E::kOperatorReset || e == E::kSupervisorReset; }
+bool is_stop(E e) { return e == E::kOperatorStop || e == E::kSupervisorStop || e == E::kGateTrip; }
 
 /// The conditions a machine can be in while in `state`: link up or not, controller up or not.
 struct Start {
@@ -97,8 +101,7 @@ TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
                        : row.event == E::kControllerDown ? false
                                                          : start.controller;
       // A stop latched before the row (or by it) still holds after it, unless the row clears it.
-      const bool latched = (start.state == S::kStopped || row.event == E::kOperatorStop || row.event == E::kGateTrip) &&
-                           row.event != E::kStopCleared;
+      const bool latched = (start.state == S::kStopped || is_stop(row.event)) && !is_reset(row.event);
       const S want = row.settle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
       EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);
@@ -175,7 +178,7 @@ TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
     if (start.state == S::kStopping) continue;
     for (const auto first : kEvents) {
       for (const auto second : kEvents) {
-        if (first == E::kStopCleared || second == E::kStopCleared) continue;
+        if (is_reset(first) || is_reset(second)) continue;
         if (first == E::kShutdown || second == E::kShutdown) continue;
         auto m = reach(start);
         m.on(E::kOperatorStop);
@@ -198,13 +201,51 @@ TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
     m.on(end);
     EXPECT_EQ(m.state(), S::kStopped) << to_string(begin);
   }
-  // Cleared: not enabled, rebased; a fresh press is still needed.
+  // Reset: not enabled, rebased; a fresh press is still needed.
   auto m = reach({S::kEnabled, true, true});
   m.on(E::kOperatorStop);
-  const Effect cleared = m.on(E::kStopCleared);
+  const Effect cleared = m.on(E::kOperatorReset);
   EXPECT_EQ(m.state(), S::kNotEnabled);
   EXPECT_TRUE(cleared.rebase);
   EXPECT_FALSE(m.stop_latched());
+  EXPECT_EQ(m.reset_by(), StopBy::kOperator);
+  m.on(E::kFreshPress);
+  EXPECT_EQ(m.state(), S::kEnabled);
+  EXPECT_FALSE(m.reset_by());  // said until enabled again
+}
+
+TEST(OperatingState, TheSupervisorResetsAnyStopTheOperatorOnlyTheOperators) {
+  // The supervisor's stop: the operator's reset changes nothing, whatever comes before it.
+  for (const auto first : {E::kSupervisorStop, E::kOperatorStop}) {
+    auto m = reach({S::kEnabled, true, true});
+    m.on(first);
+    m.on(E::kSupervisorStop);  // the supervisor's, though the operator's came first
+    EXPECT_EQ(m.stopped_by(), StopBy::kSupervisor);
+    const Effect refused = m.on(E::kOperatorReset);
+    EXPECT_FALSE(refused.changed);
+    EXPECT_FALSE(refused.rebase);
+    EXPECT_EQ(m.state(), S::kStopped);
+    EXPECT_EQ(m.stopped_by(), StopBy::kSupervisor);
+    m.on(E::kSupervisorReset);
+    EXPECT_EQ(m.state(), S::kNotEnabled);
+    EXPECT_EQ(m.reset_by(), StopBy::kSupervisor);
+  }
+  // The operator's stop stays the operator's when the operator presses again; the supervisor resets it too.
+  auto m = reach({S::kEnabled, true, true});
+  m.on(E::kOperatorStop);
+  m.on(E::kOperatorStop);
+  EXPECT_EQ(m.stopped_by(), StopBy::kOperator);
+  m.on(E::kSupervisorReset);
+  EXPECT_EQ(m.state(), S::kNotEnabled);
+  // A reset outside "stopped" (a suspend or a reload under way) resets nothing.
+  for (const auto& [begin, end] : {std::pair{E::kSuspend, E::kResume}, std::pair{E::kReloadBegin, E::kReloadDone}}) {
+    auto n = reach({S::kEnabled, true, true});
+    n.on(E::kOperatorStop);
+    n.on(begin);
+    n.on(E::kSupervisorReset);
+    n.on(end);
+    EXPECT_EQ(n.state(), S::kStopped) << to_string(begin);
+  }
 }
 
 TEST(OperatingState, StoppingIsTheEnd) {

@@ -114,9 +114,8 @@ TEST_F(OracleTest, RefusesWeaponsWithoutArmingOrWithoutTheOption) {
 TEST_F(OracleTest, RefusesBothOfAnOpposingPair) {
   auto o = oracle(std::string(kDriving) + "400 end\n");
   ASSERT_EQ(o.frame(0, frame()), "");
-  const auto both = frame({{protocol::signal_id("safety"), 1},
-                           {protocol::signal_id("zoom_up"), 1},
-                           {protocol::signal_id("zoom_down"), 1}});
+  const auto both = frame(
+      {{protocol::signal_id("safety"), 1}, {protocol::signal_id("zoom_up"), 1}, {protocol::signal_id("zoom_down"), 1}});
   EXPECT_EQ(o.frame(40, both), "zoom_down and zoom_up both 1 (an opposing pair)");
 }
 
@@ -131,27 +130,34 @@ TEST_F(OracleTest, RefusesANeutralFrameAtTheTrim) {
 TEST_F(OracleTest, HoldsDriveAtTheTrimUntilItsStickIsAtRest) {
   // Enabled with the stick already pushed: drive rests at the trim until the stick comes back.
   const auto at = [](int drive) {
-    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), drive}, {protocol::signal_id("pivot"), 124}});
+    return frame({{protocol::signal_id("safety"), 1},
+                  {protocol::signal_id("drive"), drive},
+                  {protocol::signal_id("pivot"), 124}});
   };
-  auto o = oracle("0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
-                  "130 axis lefty -32768\n400 end\n",
-                  false, kTrim);
+  auto o = oracle(
+      "0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
+      "130 axis lefty -32768\n400 end\n",
+      false, kTrim);
   ASSERT_EQ(o.frame(0, frame()), "");
   EXPECT_EQ(o.frame(40, at(124)), "");
   EXPECT_EQ(o.frame(80, at(255)),
             "drive = 255, not the centre 124, before its stick was seen at rest (layer \"\", or just enabled)");
-  auto later = oracle("0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
-                      "130 axis lefty -32768\n400 end\n",
-                      false, kTrim);
+  auto later = oracle(
+      "0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
+      "130 axis lefty -32768\n400 end\n",
+      false, kTrim);
   for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(later.frame(t, t == 0 ? frame() : at(124)), "") << t;
   EXPECT_EQ(later.frame(160, at(255)), "");  // seen at rest at 120
 }
 
 TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
   // HD1: the arm layer (right stick click) takes the left stick; leaving it with the stick pushed, drive waits.
-  auto o = oracle(std::string(kDriving) + "100 button rightstick 1\n105 button rightstick 0\n"
+  auto o = oracle(std::string(kDriving) +
+                  "100 button rightstick 1\n105 button rightstick 0\n"
                   "200 button rightstick 1\n205 button rightstick 0\n400 end\n");
-  const auto drive = [](int v) { return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), v}}); };
+  const auto drive = [](int v) {
+    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), v}});
+  };
   ASSERT_EQ(o.frame(0, frame()), "");
   for (const std::int64_t t : {40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, drive(t <= 80 ? 255 : 128)), "") << t;
   EXPECT_EQ(o.frame(240, drive(255)),
@@ -161,15 +167,102 @@ TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
 TEST_F(OracleTest, AStopOutlivesItsOwnTickAndTheDeadmanAlone) {
   // Tapped within one tick, the deadman up: still stopped at that tick, and
   // the deadman pressed before the next one does not enable.
-  auto o = oracle("0 connect\n20 button leftshoulder 1\n50 button leftshoulder 0\n85 button guide 1\n"
-                  "90 button guide 0\n130 button leftshoulder 1\n400 end\n");
+  auto o = oracle(
+      "0 connect\n20 button leftshoulder 1\n50 button leftshoulder 0\n85 button guide 1\n"
+      "90 button guide 0\n130 button leftshoulder 1\n400 end\n");
   for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(o.frame(t, frame()), "") << t;
-  EXPECT_EQ(o.frame(160, moving()), "safety = 1 while not enabled (stopped by the stop button)");
+  EXPECT_EQ(o.frame(160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
   // Held through a release and a press of the deadman: never cleared.
-  auto held = oracle("0 connect\n20 button leftshoulder 1\n50 button guide 1\n100 button leftshoulder 0\n"
-                     "150 button leftshoulder 1\n400 end\n");
+  auto held = oracle(
+      "0 connect\n20 button leftshoulder 1\n50 button guide 1\n100 button leftshoulder 0\n"
+      "150 button leftshoulder 1\n400 end\n");
   for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(held.frame(t, t == 40 ? moving() : frame()), "") << t;
-  EXPECT_EQ(held.frame(200, moving()), "safety = 1 while not enabled (stopped by the stop button)");
+  EXPECT_EQ(held.frame(200, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+}
+
+// Neutral frames from `from` up to `to` (not included): none of them breaks a rule.
+void neutral_until(test::SafetyOracle& o, std::int64_t from, std::int64_t to, const protocol::DataBytes& neutral) {
+  for (std::int64_t t = from; t < to; t += 40) ASSERT_EQ(o.frame(t, neutral), "") << t;
+}
+
+// Stopped at 80; the stop button released, then pressed at 110 with the deadman released: a hold from 120.
+constexpr const char* kStopThenHold =
+    "0 connect\n20 button leftshoulder 1\n50 button guide 1\n60 button guide 0\n100 button leftshoulder 0\n"
+    "110 button guide 1\n";
+
+TEST_F(OracleTest, AResetHoldOfTheStopButtonEndsTheStopAndAFreshPressDrives) {
+  // Held 2 s (stop_reset_hold's default) from the tick at 120: reset at 2120, then a fresh press.
+  auto o = oracle(std::string(kStopThenHold) + "2130 button guide 0\n2135 button leftshoulder 1\n3000 end\n");
+  neutral_until(o, 0, 2160, frame());
+  EXPECT_EQ(o.frame(2160, moving()), "");
+  // One tick short of the hold: still stopped.
+  auto short_hold = oracle(std::string(kStopThenHold) + "2090 button guide 0\n2095 button leftshoulder 1\n3000 end\n");
+  neutral_until(short_hold, 0, 2160, frame());
+  EXPECT_EQ(short_hold.frame(2160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  // The deadman pressed during the hold: no reset.
+  auto touched = oracle(std::string(kStopThenHold) +
+                        "1000 button leftshoulder 1\n1010 button leftshoulder 0\n2130 button guide 0\n"
+                        "2135 button leftshoulder 1\n3000 end\n");
+  neutral_until(touched, 0, 2160, frame());
+  EXPECT_EQ(touched.frame(2160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+}
+
+TEST_F(OracleTest, RefusesTheOperatorsResetOfTheSupervisorsStop) {
+  const std::string stops = ANDROS_TEST_DATA_DIR "/mappings/stops.yaml";
+  // The supervisor's stop at 80; the operator's hold from 160 (2 s: 2160) is refused.
+  const std::string script =
+      "0 connect\n0 supervisor connect\n20 button leftshoulder 1\n50 supervisor button guide 1\n"
+      "60 supervisor button guide 0\n100 button leftshoulder 0\n130 button guide 1\n2200 button guide 0\n"
+      "2205 button leftshoulder 1\n";
+  auto refused = oracle(script + "5000 end\n", false, stops);
+  neutral_until(refused, 0, 2240, frame());
+  EXPECT_EQ(refused.frame(2240, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  EXPECT_EQ(refused.coverage().refused_resets, 1);
+  // The supervisor's hold, from the tick at 2280 (the deadman pressed since the one at 2200 touches the
+  // one at 2240), resets at 4280.
+  auto reset = oracle(script +
+                          "2210 button leftshoulder 0\n2250 supervisor button guide 1\n"
+                          "4290 button leftshoulder 1\n5000 end\n",
+                      false, stops);
+  neutral_until(reset, 0, 4280, frame());
+  ASSERT_EQ(reset.frame(4280, frame()), "");
+  EXPECT_EQ(reset.coverage().supervisor_resets, 1);
+  EXPECT_EQ(reset.frame(4320, moving()), "");
+}
+
+TEST_F(OracleTest, RefusesMotionAtATickWhoseDeadmanWasLetGoAndPressedAgainSinceTheLast) {
+  auto o = oracle(std::string(kDriving) + "90 button leftshoulder 0\n110 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : moving()), "") << t;
+  EXPECT_EQ(o.frame(120, moving()), "safety = 1 while not enabled (the deadman let go since the last tick)");
+  auto next = oracle(std::string(kDriving) + "90 button leftshoulder 0\n110 button leftshoulder 1\n400 end\n");
+  for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(next.frame(t, t == 0 || t == 120 ? frame() : moving()), "");
+  // The press after it is fresh (the stick, pushed since before it, waits for rest: drive stays at centre).
+  EXPECT_EQ(next.frame(160, frame({{protocol::signal_id("safety"), 1}})), "");
+}
+
+TEST_F(OracleTest, RefusesMotionAfterAPanicSqueezeAndBackWithinATick) {
+  // safety.yaml: a trigger deadman (LT) off past 0.9, squeezed past it and back to the middle between two ticks.
+  const std::string safety = ANDROS_TEST_DATA_DIR "/mappings/safety.yaml";
+  const auto enabled = frame({{protocol::signal_id("safety"), 1}});
+  auto o = oracle(
+      "0 connect\n20 axis lefttrigger 20000\n85 axis lefttrigger 32767\n95 axis lefttrigger 20000\n"
+      "400 end\n",
+      false, safety);
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(o.frame(t, t == 0 ? frame() : enabled), "") << t;
+  EXPECT_EQ(o.frame(120, enabled),
+            "safety = 1 while not enabled (deadman held but not pressed since the last panic squeeze)");
+  EXPECT_EQ(o.coverage().panics, 1);
+}
+
+// The loop's state against the oracle's stop latch: a reset made late (or never) is named as an early one is.
+TEST(OracleStopSaid, TheLoopIsStoppedExactlyWhileAStopIsLatchedAndNotReset) {
+  EXPECT_EQ(test::stop_said(OpState::kStopped, true), "");
+  EXPECT_EQ(test::stop_said(OpState::kNotEnabled, false), "");
+  EXPECT_EQ(test::stop_said(OpState::kSuspended, true), "");  // a suspend, a reload, the shutdown outrank it
+  EXPECT_EQ(test::stop_said(OpState::kStopped, false),
+            "the loop said \"stopped\" where the stop is reset (or none was latched)");
+  EXPECT_EQ(test::stop_said(OpState::kNotEnabled, true),
+            "the loop said \"not enabled\" where the stop is latched, not reset");
 }
 
 }  // namespace

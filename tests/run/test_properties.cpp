@@ -50,6 +50,17 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
       const auto key = *input::parse_button_name(busy[rng.below(busy.size())]);
       // The deadman is held more often than not, so that sessions last long enough to do something.
       add(T::kButton, key, key == deadman ? static_cast<int>(rng.below(4) != 0) : static_cast<int>(rng.below(2)));
+    } else if (roll == 30) {  // a stop's reset: the stop button let go, then held about 2 s
+      const auto guide = *input::parse_button_name("guide");
+      add(T::kButton, guide, 0);
+      t += rng.below(60);
+      add(T::kButton, guide, 1);
+      t += 1900 + rng.below(300);
+      add(T::kButton, guide, 0);
+    } else if (roll == 31) {  // the deadman let go and pressed again between two frames
+      add(T::kButton, deadman, 0);
+      t += rng.below(30);
+      add(T::kButton, deadman, 1);
     } else if (roll < 38) {  // the weapons' arming trigger (LT), squeezed or at rest
       add(T::kAxis, *input::parse_axis_name("lefttrigger"), rng.below(2) == 0 ? 0 : 32767);
     } else if (roll < 65) {
@@ -68,49 +79,76 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
 }
 
 // The safety rules' `enabled` (docs/mapping.md), read straight off the events: connected,
-// deadman down, and pressed (0 -> 1) after the connect, not at its instant;
-// and not stopped by the operator: the stop button (docs/mapping.md, "Stop")
-// pressed or held latches at a frame, which clears at a later frame once the
-// pad is there with the stop button and the deadman up, and a press from then
-// on is fresh.
+// deadman down, and pressed (0 -> 1) after the connect, not at its instant,
+// and not let go since the last frame (every change between two frames
+// counts); and not stopped: the stop button (docs/mapping.md, "Stop") pressed
+// or held latches at a frame; it is reset at a frame once the stop button,
+// pressed after the stop with the deadman neither held nor pressed since the
+// last frame, has been held for the hold (2 s) with the deadman neither held
+// nor pressed at any frame of it; after the reset a press from then on is
+// fresh, and the stop button held on stops nothing until let go.
 class EnabledOracle {
  public:
-  EnabledOracle(input::InputKey deadman, std::optional<input::InputKey> estop) : deadman_(deadman), estop_(estop) {}
+  EnabledOracle(input::InputKey deadman, std::optional<input::InputKey> estop, std::int64_t hold_ms)
+      : deadman_(deadman), estop_(estop), hold_ms_(hold_ms) {}
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     if (e.type == T::kConnect) {
       connected_ = true;
       connect_t_ = e.t_ms;
       // A new session: a stop tapped in the old one since the last frame went with it (docs/mapping.md, "Stop").
-      down_ = fresh_ = stop_down_ = stop_pressed_ = false;
+      down_ = fresh_ = stop_down_ = stop_pressed_ = stop_let_go_ = deadman_pressed_ = let_go_ = false;
+      held_from_reset_ = false;
+      hold_since_.reset();
     } else if (e.type == T::kDisconnect) {
       connected_ = down_ = fresh_ = stop_down_ = false;
-    } else if (connected_ && e.type == T::kButton && e.key == deadman_) {
-      if (e.value == 1 && !down_ && e.t_ms != connect_t_) fresh_ = true;
+      hold_since_.reset();
+    } else if (connected_ && e.type == T::kButton && e.key == deadman_ && e.t_ms != connect_t_) {
+      if (e.value == 1 && !down_) fresh_ = deadman_pressed_ = true;
+      if (e.value == 0 && down_) let_go_ = true;
       down_ = e.value == 1;
+    } else if (connected_ && e.type == T::kButton && e.key == deadman_) {
+      down_ = e.value == 1;  // the state at connect: not a press
     } else if (connected_ && e.type == T::kButton && e.key == estop_) {
-      if (e.value == 1 && !stop_down_ && e.t_ms != connect_t_) stop_pressed_ = true;
+      const bool initial = e.t_ms == connect_t_;
+      if (e.value == 1 && !stop_down_ && !initial) stop_pressed_ = true;
+      if (e.value == 0 && stop_down_ && !initial) stop_let_go_ = true;
+      if (e.value == 0) held_from_reset_ = false;
       stop_down_ = e.value == 1;
     }
   }
-  /// At each frame, after its events.
-  void frame() {
-    if (connected_ && (stop_pressed_ || stop_down_) && !stopped_) {
+  /// At each frame t, after its events.
+  void frame(std::int64_t t) {
+    let_go_this_frame_ = let_go_;
+    if (!stopped_ && connected_ && (stop_pressed_ || (stop_down_ && !held_from_reset_))) {
       stopped_ = true;
-    } else if (stopped_ && connected_ && !stop_down_ && !down_) {
-      stopped_ = false;
-      fresh_ = false;
+      hold_since_.reset();
+    } else if (stopped_ && connected_) {
+      const bool touched = down_ || deadman_pressed_;
+      if (stop_let_go_ || !stop_down_ || touched) hold_since_.reset();
+      if (stop_pressed_ && stop_down_ && !touched) hold_since_ = t;
+      if (hold_since_ && t - *hold_since_ >= hold_ms_) {
+        stopped_ = false;
+        fresh_ = false;  // afresh: a press from now on
+        held_from_reset_ = stop_down_;
+        hold_since_.reset();
+        ++resets;
+      }
     }
-    stop_pressed_ = false;
+    stop_pressed_ = stop_let_go_ = deadman_pressed_ = let_go_ = false;
   }
-  [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_ && !stopped_; }
+  [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_ && !stopped_ && !let_go_this_frame_; }
   [[nodiscard]] bool stopped() const { return stopped_; }
+  int resets = 0;
 
  private:
   input::InputKey deadman_;
   std::optional<input::InputKey> estop_;
-  bool connected_ = false, down_ = false, fresh_ = false;
-  bool stop_down_ = false, stop_pressed_ = false, stopped_ = false;
+  std::int64_t hold_ms_;
+  bool connected_ = false, down_ = false, fresh_ = false, deadman_pressed_ = false, let_go_ = false;
+  bool let_go_this_frame_ = false;
+  bool stop_down_ = false, stop_pressed_ = false, stop_let_go_ = false, stopped_ = false, held_from_reset_ = false;
+  std::optional<std::int64_t> hold_since_;
   std::int64_t connect_t_ = -1;
 };
 
@@ -159,7 +197,8 @@ class CentreOracle {
 
 using Coverage = std::array<int, protocol::kSignalCount>;
 
-int stops = 0;  ///< frames in "stopped by the operator", over all scripts
+int stops = 0;   ///< frames in "stopped", over all scripts
+int resets = 0;  ///< stops reset, over all scripts
 
 void check_script(const mapping::ValidMapping& valid, const std::vector<input::InputEvent>& script, bool weapons,
                   Coverage& coverage) {
@@ -170,7 +209,8 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
   input::ScriptPlayer player(in);
   mapping::Engine engine(valid, mapping::EngineOptions{weapons, 0x5A});
   EnabledOracle oracle(mapping.deadman->key,
-                       mapping.estop ? std::optional<input::InputKey>(mapping.estop->key) : std::nullopt);
+                       mapping.estop ? std::optional<input::InputKey>(mapping.estop->key) : std::nullopt,
+                       mapping.stop_reset_hold_ms);
   CentreOracle centre(mapping);
   std::size_t next_event = 0;
   protocol::ControlState previous = protocol::read_signals(engine.neutral());
@@ -182,7 +222,7 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
       oracle.apply(script[next_event]);
       centre.apply(script[next_event]);
     }
-    oracle.frame();
+    oracle.frame(t);
     const auto s = protocol::read_signals(data);
     const bool enabled = oracle.enabled();
     const auto where = [&] { return "t=" + std::to_string(t) + " in\n" + text; };
@@ -201,6 +241,8 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
     }
     centre.end_frame(enabled);
     stops += oracle.stopped() ? 1 : 0;
+    resets += oracle.resets;
+    oracle.resets = 0;
     for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
       const auto id = static_cast<protocol::SignalId>(i);
       const auto& sig = protocol::kSignals[i];
@@ -255,6 +297,7 @@ TEST(Properties, RandomScriptsThroughEveryShippedMapping) {
     EXPECT_GT(coverage[*protocol::find_signal(name)], 0) << name << " never sent";
   }
   EXPECT_GT(stops, 0) << "no script pressed the stop button";
+  EXPECT_GT(resets, 0) << "no script reset a stop";
 }
 
 /// What a replay did on each tick: its report's time, frame, state and engine status.

@@ -307,6 +307,23 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
   }
 }
 
+TEST(Recorder, WhoStoppedAndWhoResetAreRecordedAndReplayed) {
+  RecordedRun live;
+  live.run(
+      "0 connect Pad A\n40 button leftshoulder 1\n200 button guide 1\n300 button guide 0\n"
+      "320 button leftshoulder 0\n400 button guide 1\n2600 button guide 0\n2800 button leftshoulder 1\n3000 end\n");
+  const Session s = read_session(live.session);
+  ASSERT_EQ(s.stops.size(), 2u);
+  EXPECT_FALSE(s.stops[0].reset);
+  EXPECT_EQ(s.stops[0].by, StopBy::kOperator);
+  EXPECT_EQ(s.stops[0].name, "Pad A");
+  EXPECT_TRUE(s.stops[1].reset);
+  EXPECT_EQ(s.stops[1].by, StopBy::kOperator);
+  EXPECT_GE(s.stops[1].t_ms - s.stops[0].t_ms, 2000);
+  const auto result = replay_session(s, load_recorded_mapping, [](const TickReport&) {});
+  EXPECT_TRUE(result.identical) << result.difference;
+}
+
 TEST(Recorder, AReplayNamesTheFirstFrameThatDiffers) {
   RecordedRun live;
   live.run(kDriveWithFaults);

@@ -47,10 +47,10 @@ TEST(ReplaySupervisor, EachReportNamesBothControllersAndTheStateWaitsForBoth) {
   EXPECT_EQ(alone.back().state, OpState::kEnabled);  // a script without a supervisor runs as before
 }
 
-// The supervisor's stop latches "stopped by the operator" as the operator's
-// own does: a tap is enough, the deadman held through it keeps it, and it
-// clears only with the supervisor's stop and the operator's deadman both
-// released, the deadman then pressed afresh.
+// The supervisor's stop latches as the operator's own does, and is the
+// supervisor's: a tap is enough, the deadman released and pressed never
+// resets it; the supervisor's stop released after it, then held 2 s with
+// the deadman released, does; the deadman must then be pressed afresh.
 TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
   const auto states = [](const std::string& script) {
     std::vector<OpState> out;
@@ -58,12 +58,36 @@ TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
     return out;
   };
   using S = OpState;
-  // 0..280 every 40 ms: a tap at 90, LB released at 170, pressed again at 210.
+  // 0..280 every 40 ms: a tap at 90, LB released at 170, pressed again at 210: still stopped.
   EXPECT_EQ(states("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
                    "90 supervisor button x 1\n95 supervisor button x 0\n"
                    "170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n"),
-            (std::vector<S>{S::kNotEnabled, S::kEnabled, S::kEnabled, S::kStopped, S::kStopped, S::kNotEnabled,
-                            S::kEnabled, S::kEnabled}));
+            (std::vector<S>{S::kNotEnabled, S::kEnabled, S::kEnabled, S::kStopped, S::kStopped, S::kStopped,
+                            S::kStopped, S::kStopped}));
+  // Reset by the supervisor's hold (from 160, done at 2160); who stopped and who reset in the reports.
+  const auto r = replay_reports(
+      "0 connect Pad A\n0 supervisor connect Pad B\n10 button leftshoulder 1\n"
+      "90 supervisor button x 1\n95 supervisor button x 0\n130 button leftshoulder 0\n"
+      "150 supervisor button x 1\n2300 supervisor button x 0\n2330 button leftshoulder 1\n2400 end\n",
+      kSupervisorMapping);
+  ASSERT_EQ(r.size(), 61U);  // 0 .. 2400
+  EXPECT_EQ(r[3].state, S::kStopped);
+  EXPECT_EQ(r[3].stopped_by, StopBy::kSupervisor);
+  EXPECT_EQ(r[53].state, S::kStopped);     // 2120
+  EXPECT_EQ(r[54].state, S::kNotEnabled);  // 2160: reset, and not enabled
+  EXPECT_FALSE(r[54].stopped_by);
+  EXPECT_EQ(r[54].reset_by, StopBy::kSupervisor);
+  EXPECT_EQ(r[59].state, S::kEnabled);  // 2360: the fresh press
+  EXPECT_FALSE(r[59].reset_by);
+}
+
+TEST(ReplaySupervisor, TheSupervisorsHeldStopIsShownWhileStopped) {
+  using S = OpState;
+  const auto states = [](const std::string& script) {
+    std::vector<OpState> out;
+    for (const auto& t : replay_reports(script, kSupervisorMapping)) out.push_back(t.state);
+    return out;
+  };
   // Held by the supervisor through the deadman's release and press: still stopped.
   EXPECT_EQ(states("0 connect\n0 supervisor connect\n10 button leftshoulder 1\n"
                    "90 supervisor button x 1\n170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n")

@@ -189,6 +189,36 @@ TEST(Session, RecordsReadBack) {
   EXPECT_EQ(s.live_ticks(), 11 - 2);
 }
 
+// Who stopped and who reset: records of their own, read back in order.
+TEST(Session, StopAndResetRecordsReadBack) {
+  testing::TempDir dir;
+  RecordChain chain;
+  std::string text;
+  SessionSettings settings;
+  settings.robot = "HD1";
+  settings.mapping_file = "/m/hd1.yaml";
+  settings.rate_millihertz = 25'000;
+  settings.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
+  for (const auto& p :
+       {record::header(), record::program("1.0"), record::settings(settings),
+        record::stop(120, StopBy::kOperator, "Pad A"), record::stop(160, StopBy::kSupervisor, "Pad \"B\""),
+        record::reset(2200, StopBy::kSupervisor), record::end(2400, 60, 60, "x")}) {
+    text += chain.line(p);
+  }
+  EXPECT_EQ(record::stop(120, StopBy::kOperator, "Pad A"), "stop 120 operator \"Pad A\"");
+  EXPECT_EQ(record::reset(2200, StopBy::kSupervisor), "reset 2200 supervisor");
+  const auto s = read_session(dir.write("r.andros-session", text));
+  ASSERT_EQ(s.stops.size(), 3u);
+  EXPECT_FALSE(s.stops[0].reset);
+  EXPECT_EQ(s.stops[0].by, StopBy::kOperator);
+  EXPECT_EQ(s.stops[0].name, "Pad A");
+  EXPECT_EQ(s.stops[1].by, StopBy::kSupervisor);
+  EXPECT_EQ(s.stops[1].name, "Pad \"B\"");
+  EXPECT_TRUE(s.stops[2].reset);
+  EXPECT_EQ(s.stops[2].t_ms, 2200);
+  EXPECT_EQ(s.stops[2].by, StopBy::kSupervisor);
+}
+
 /// The lines of a session whose settings record is made from `settings` and
 /// then rewritten by edit, the way an older recorder wrote it.
 std::string session_text(const std::string& header, const SessionSettings& settings,

@@ -21,8 +21,11 @@ inline mapping::ValidMapping mapping_from_yaml(const std::string& text) {
   return mapping::load_mapping(dir.write("m.yaml", text));
 }
 
-/// Applies event-script lines ("T connect", "T button NAME 0|1", ...) to the input state.
+/// Applies event-script lines ("T connect", "T button NAME 0|1", ...) to the
+/// input state, as the run loop's pump does: the tick's events, after its
+/// begin_tick (an axis's span starts again from its value now).
 inline void apply_script(input::InputState& state, const std::string& text) {
+  state.begin_tick();
   for (const auto& e : input::parse_event_script(text, "t.events")) state.apply(e);
 }
 

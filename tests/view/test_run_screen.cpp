@@ -197,17 +197,18 @@ TEST(RunScreen, NotEnabledLinkDownAndNoControllerAreSaidInRed) {
   EXPECT_NE(ok.find("\x1b[1;97;41m"), std::string::npos) << ok;
 }
 
-TEST(RunScreen, StoppedByTheOperatorIsARedLineAboveAll) {
+TEST(RunScreen, StoppedIsARedLineAboveAllSayingWhoStopped) {
   RunStatus s = driving(false);
   s.state = run::OpState::kStopped;
-  s.enable_text = std::string(kStoppedText);
+  s.stopped_by = "stopped by the supervisor (Pad 2)";
+  s.enable_text = s.stopped_by + ": " + std::string(kStoppedText);
   s.layer.clear();
   const auto lines = shown(s, {80, 24});
-  EXPECT_EQ(lines[0], "                         STOP: stopped by the operator                          ");
+  EXPECT_EQ(lines[0], "                    STOP: stopped by the supervisor (Pad 2)                     ");
   EXPECT_TRUE(lines[1].starts_with("andros-bridge run")) << lines[1];
-  EXPECT_EQ(lines[2], "state       STOPPED: release the stop button and the deadman, then press the");
+  EXPECT_EQ(lines[2], "state       STOPPED: stopped by the supervisor (Pad 2): to reset, release the");
   const auto text = render_run_screen(s, {80, 24}).render({80, 24}, true);
-  EXPECT_NE(text.find("\x1b[1;97;41m                         STOP"), std::string::npos) << text;
+  EXPECT_NE(text.find("\x1b[1;97;41m                    STOP"), std::string::npos) << text;
   // On a tiny terminal the stop is what stays.
   EXPECT_NE(shown(s, {30, 2})[0].find("STOP"), std::string::npos);
   // Not stopped: no such line.

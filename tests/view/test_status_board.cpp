@@ -235,15 +235,55 @@ TEST(RunStatusBoard, NoSpeedLevelsNoWordOfThem) {
   EXPECT_EQ(log.text().find("speed"), std::string::npos) << log.text();
 }
 
+/// A tick with the supervisor's controller "Pad B" configured and connected.
+run::TickReport supervised_tick(std::int64_t t_ms) {
+  auto r = tick(t_ms);
+  r.supervised = true;
+  r.supervisor_connected = true;
+  r.supervisor = "Pad B";
+  return r;
+}
+
+// Who stopped and who reset: on the state line, the STOP banner's words and the log.
+TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
+  const LogCapture log;
+  RunStatusBoard board(RunStatus{});
+  auto r = supervised_tick(40);
+  board.observe(r);
+  r.t_ms = 80;
+  r.state = run::OpState::kStopped;
+  r.stopped_by = run::StopBy::kSupervisor;
+  board.observe(r);
+  auto s = board.status();
+  EXPECT_EQ(s.stopped_by, "stopped by the supervisor (Pad B)");
+  EXPECT_EQ(s.enable_text, "stopped by the supervisor (Pad B): " + std::string(kStoppedText));
+  r.t_ms = 120;
+  r.state = run::OpState::kNotEnabled;
+  r.stopped_by.reset();
+  r.reset_by = run::StopBy::kSupervisor;
+  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  board.observe(r);
+  s = board.status();
+  EXPECT_EQ(s.stopped_by, "");
+  EXPECT_EQ(s.enable_text, "stop reset by the supervisor: press the deadman afresh");
+  r.t_ms = 160;
+  r.state = run::OpState::kStopped;
+  r.reset_by.reset();
+  r.stopped_by = run::StopBy::kOperator;
+  board.observe(r);
+  EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
+  const auto text = log.text();
+  EXPECT_EQ(count(text, "warning: STOP: stopped by the supervisor (Pad B): to reset"), 1U) << text;
+  EXPECT_EQ(count(text, "info: not enabled: stop reset by the supervisor: press the deadman afresh\n"), 1U) << text;
+  EXPECT_EQ(count(text, "warning: STOP: stopped by the operator (pad): to reset"), 1U) << text;
+}
+
 // The supervisor's controller: on the board, in the log once per change, and
 // named in the state when it is what is missing.
 TEST(RunStatusBoard, TheSupervisorsControllerIsShownAndItsComingAndGoingLogged) {
   const LogCapture log;
   RunStatusBoard board(RunStatus{});
-  auto r = tick(40);
-  r.supervised = true;
-  r.supervisor_connected = true;
-  r.supervisor = "Pad B";
+  auto r = supervised_tick(40);
   r.engine.supervisor_stop = true;
   r.engine.consent = mapping::ConsentState::kGiven;
   board.observe(r);

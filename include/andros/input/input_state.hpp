@@ -124,8 +124,20 @@ struct ButtonState {
   /// at connect: a tap between two frames still shows, and a deadman held at
   /// connect is not a fresh press.
   std::uint32_t presses = 0;
+  /// Releases (1 -> 0), counted as presses are: a button released and
+  /// pressed again between two frames still shows as a release.
+  std::uint32_t releases = 0;
 
   bool operator==(const ButtonState&) const = default;
+};
+
+/// The values an axis took since the tick began (InputState::begin_tick):
+/// a trigger squeezed and let go between two frames still shows.
+struct AxisSpan {
+  std::int16_t low = 0;
+  std::int16_t high = 0;
+
+  bool operator==(const AxisSpan&) const = default;
 };
 
 /// One controller's state: its buttons, axes and hats as the events left them.
@@ -144,8 +156,12 @@ class PadState {
 
   [[nodiscard]] ButtonState button(InputKey key) const;
   [[nodiscard]] std::int16_t axis(InputKey key) const;
+  /// Every value the axis took since the tick began, its value then included.
+  [[nodiscard]] AxisSpan axis_span(InputKey key) const;
   /// The hat's SDL_HAT_* mask (0 = centred).
   [[nodiscard]] int hat(int hat_index) const;
+  /// A new tick: each axis's span is its value now.
+  void begin_tick() { spans_.clear(); }
 
   /// The same controller session in the same state: every read above gives the same answer.
   bool operator==(const PadState&) const = default;
@@ -159,6 +175,7 @@ class PadState {
   std::string name_;
   std::map<InputKey, ButtonState> buttons_;
   std::map<InputKey, std::int16_t> axes_;
+  std::map<InputKey, AxisSpan> spans_;  ///< the axes moved since the tick began
 };
 
 /// The input state a frame is computed from: the operator's controller (read
@@ -176,6 +193,7 @@ class InputState {
   [[nodiscard]] const std::string& name() const { return operator_pad_.name(); }
   [[nodiscard]] ButtonState button(InputKey key) const { return operator_pad_.button(key); }
   [[nodiscard]] std::int16_t axis(InputKey key) const { return operator_pad_.axis(key); }
+  [[nodiscard]] AxisSpan axis_span(InputKey key) const { return operator_pad_.axis_span(key); }
   /// The hat's SDL_HAT_* mask (0 = centred).
   [[nodiscard]] int hat(int hat_index) const { return operator_pad_.hat(hat_index); }
 
@@ -183,6 +201,14 @@ class InputState {
   [[nodiscard]] const PadState& supervisor() const { return supervisor_pad_; }
   /// The operator's controller, whole (what the members above read).
   [[nodiscard]] const PadState& operator_pad() const { return operator_pad_; }
+
+  /// A new tick (the run loop, before each pump): the events applied from
+  /// now on are this tick's. Presses and releases are counted whatever the
+  /// tick; an axis's span (axis_span) starts again from its value now.
+  void begin_tick() {
+    operator_pad_.begin_tick();
+    supervisor_pad_.begin_tick();
+  }
 
   /// The fault events applied since the last call, in order (the run loop
   /// answers them; the input state itself ignores them).

@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "andros/input/input_state.hpp"
+#include "andros/mapping/deadman.hpp"
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/mapping/safety.hpp"
+#include "andros/mapping/stop_buttons.hpp"
 #include "andros/protocol/frame.hpp"
 
 namespace andros::mapping {
@@ -31,6 +33,9 @@ struct EngineOptions {
 
 class Engine {
  public:
+  /// Levels (arm_speed, light) are kept in 1/kMilli units.
+  static constexpr std::int64_t kMilli = 1000;
+
   /// Runs a validated mapping (validate(), load_mapping()); a hand-built one
   /// without a deadman is never enabled, so it only ever sends neutral frames.
   Engine(ValidMapping mapping, EngineOptions options);
@@ -50,14 +55,14 @@ class Engine {
   /// and the speed level is the mapping's initial one.
   void restart(const input::InputState& now);
 
-  /// Whether a stop button was pressed since the last step (or the last call)
-  /// or is held, taking the press (for the ticks on which the loop does not
-  /// step: stopped, a reload's, a suspend's neutral frames; and before a
-  /// restart, which makes every press history).
-  bool take_stop(const input::InputState& input);
-  /// Stopped by the operator, the hands have let go: a controller there, no
-  /// stop button and not the deadman held (the latch may clear).
-  [[nodiscard]] bool stop_let_go(const input::InputState& input) const;
+  /// The stop buttons pressed since the last step (or the last call) or
+  /// held, taking the presses (for the ticks on which the loop does not
+  /// step: a reload's, a suspend's neutral frames; and before a restart,
+  /// which makes every press history). Ends any reset hold.
+  StopPresses take_stop(const input::InputState& input);
+  /// Stopped (the loop does not step), once per tick: the stop buttons
+  /// pressed since the last call, and a reset hold completed (StopButtons).
+  StoppedTick stopped(const input::InputState& input, std::int64_t now_ms);
   /// The stop buttons held now into status (stop_held, supervisor_stop), without a step.
   void held_stops(const input::InputState& input, EngineStatus& status) const;
 
@@ -91,14 +96,8 @@ class Engine {
   [[nodiscard]] bool held(const input::InputState& input, input::InputKey key, bool invert = false,
                           double threshold = kDefaultThreshold) const;
   [[nodiscard]] std::uint32_t new_presses(const input::InputState& input, input::InputKey key) const;
-  [[nodiscard]] bool deadman_held(const input::InputState& input) const;
-  [[nodiscard]] EnableState enable_state(const input::InputState& input);
-  /// The panic position of a trigger deadman: true while it is latched off.
-  [[nodiscard]] bool panic(const input::InputState& input);
   /// Notes whether any input the mapping reads changed since the last change (the enable timeout).
   void note_activity(const input::InputState& input, std::int64_t now_ms);
-  /// The enable timeout has run out: not enabled until the deadman is released and pressed again.
-  void time_out(const input::InputState& input);
   void update_layer(const input::InputState& input, bool enabled);
   /// The speed buttons' presses (enabled only); a new level holds drive and pivot's sticks back.
   void update_speed(const input::InputState& input);
@@ -125,16 +124,11 @@ class Engine {
   bool started_ = false;
   std::uint32_t connection_ = 0;
   std::uint32_t supervisor_connection_ = 0;                ///< the supervisor's controller session
-  std::uint32_t stop_connection_ = 0;                      ///< the supervisor's session its stop presses are counted in
-  std::uint32_t stop_presses_ = 0;                         ///< the supervisor's stop presses already reported
   std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
-  std::uint32_t deadman_base_ = 0;                         ///< deadman presses that are not fresh
-  bool deadman_released_seen_ = false;                     ///< a trigger deadman was seen released this session
-  bool panic_latched_ = false;                             ///< squeezed past the panic point, not yet fully released
-  bool timed_out_ = false;                                 ///< the enable timeout ran out, the deadman not yet released
-  bool was_enabled_ = false;                               ///< at the last step
-  std::uint32_t estop_seen_ = 0;                           ///< stop-button presses already acted on
-  std::int64_t last_activity_ms_ = 0;                      ///< the last step that saw an input change
+  Deadman deadman_;
+  bool was_enabled_ = false;  ///< at the last step
+  StopButtons stops_;
+  std::int64_t last_activity_ms_ = 0;                               ///< the last step that saw an input change
   std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that step
   std::map<input::InputKey, std::int16_t> activity_axes_;
   int layer_ = -1;                               ///< active layer, -1 = base

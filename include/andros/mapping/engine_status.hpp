@@ -42,6 +42,16 @@ enum class ConsentState : std::uint8_t {
   kGiven,     ///< held and counting: an armed fire input fires
 };
 
+/// The stop buttons pressed (or held): whose controller each was on.
+struct StopPresses {
+  bool by_operator = false;    ///< the operator's `estop`
+  bool by_supervisor = false;  ///< the supervisor's `stop`
+
+  [[nodiscard]] bool any() const { return by_operator || by_supervisor; }
+  explicit operator bool() const { return any(); }
+  bool operator==(const StopPresses&) const = default;
+};
+
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;                       ///< the active layer's name ("" for the base layer)
@@ -51,7 +61,7 @@ struct EngineStatus {
   bool weapons_mode = false;
   /// A stop button was pressed or is held this tick (the operator's `estop`,
   /// the supervisor's `stop`): the run loop latches the stop.
-  bool stop_pressed = false;
+  StopPresses stop_pressed;
   /// One is held now: the latched stop cannot clear yet.
   bool stop_held = false;
   /// The supervisor's `stop` is held (for the view: whose stop it is).

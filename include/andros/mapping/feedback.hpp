@@ -14,7 +14,8 @@ namespace andros::mapping {
 /// What the operator is told through the controller, most important first:
 /// when several happen in one tick, the first with a pattern plays.
 enum class FeedbackEvent : std::uint8_t {
-  kStopped,         ///< stopped by the operator (a stop button)
+  kStopped,         ///< stopped by a stop button
+  kStopReset,       ///< a stop was reset (a reset hold): press the deadman afresh
   kDeadmanRefused,  ///< the deadman is held but not fresh (held at connect or start-up, or stuck)
   kLinkLost,        ///< the link to the vehicle went down
   kTimedOut,        ///< the enable timeout ended "enabled"
@@ -26,7 +27,7 @@ enum class FeedbackEvent : std::uint8_t {
   kSpeedLevel,      ///< the speed level changed: as many pulses as the new level's number
 };
 
-inline constexpr std::size_t kFeedbackEventCount = 10;
+inline constexpr std::size_t kFeedbackEventCount = 11;
 
 /// The event's key in a mapping's `feedback:` section ("deadman_refused", ...).
 std::string_view feedback_event_name(FeedbackEvent event);

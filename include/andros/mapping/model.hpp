@@ -36,6 +36,10 @@ inline constexpr int kMaxKnobRate = 25500;  ///< units per second: 0 to 255 in 1
 inline constexpr double kDeadmanPanicMin = kDefaultThreshold;
 /// After a panic the trigger counts as fully released below this travel.
 inline constexpr double kDeadmanFullyReleased = 0.1;
+/// `stop_reset_hold:` in seconds: how long a stop button is held to reset a stop.
+inline constexpr double kStopResetHoldMinS = 1.0;
+inline constexpr double kStopResetHoldMaxS = 10.0;
+inline constexpr std::int64_t kStopResetHoldDefaultMs = 2000;
 /// `enable_timeout:` in seconds: at least one frame period, at most an hour.
 inline constexpr double kEnableTimeoutMinS = 1.0;
 inline constexpr double kEnableTimeoutMaxS = 3600.0;
@@ -171,6 +175,9 @@ struct Mapping {
   /// vehicle until it and the deadman are released and the deadman is pressed
   /// afresh. Bound to nothing else in any layer.
   std::optional<InputUse> estop;
+  /// A latched stop is reset by its controller's stop button released after
+  /// the stop, then held this long with the deadman released (`stop_reset_hold:`, in ms here).
+  std::int64_t stop_reset_hold_ms = kStopResetHoldDefaultMs;
   /// A trigger deadman squeezed to this fraction or past it is off, and stays
   /// off until fully released (`deadman_panic:`); none: no panic position.
   std::optional<double> deadman_panic;

@@ -19,6 +19,7 @@
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
+#include "andros/mapping/stop_buttons.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/frame_gate.hpp"
 #include "andros/run/operating_state.hpp"
@@ -44,16 +45,16 @@ class FrameSource {
   /// Starts afresh from the input as it is now: every press it has counted
   /// is history, and the deadman needs a fresh press after it.
   virtual void restart(const input::InputState& now) = 0;
-  /// A stop button pressed since the last step (or the last call) or held;
-  /// the press is taken (for the ticks that do not step: stopped, a reload's
-  /// and a suspend's frames; and before a rebase makes it history).
-  virtual bool take_stop(const input::InputState& /*input*/) { return false; }
-  /// Stopped by the operator: the hands have let go (a controller there, no
-  /// stop button and not the deadman held), so the stop may clear.
-  [[nodiscard]] virtual bool stop_let_go(const input::InputState& /*input*/) const { return true; }
-  /// Stopped (the engine is not stepped): which stop buttons are held now,
-  /// into status (stop_held, supervisor_stop), for the screen.
-  virtual void held_stops(const input::InputState& /*input*/, mapping::EngineStatus& /*status*/) const {}
+  /// The stop buttons pressed since the last step (or the last call) or
+  /// held; the presses are taken (for the ticks that do not step: a
+  /// reload's and a suspend's frames; and before a rebase makes them history).
+  virtual mapping::StopPresses take_stop(const input::InputState& input) = 0;
+  /// Stopped (the engine is not stepped), once per tick at now_ms: the stop
+  /// buttons pressed since the last call, and a reset hold completed.
+  virtual mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) = 0;
+  /// Stopped: which stop buttons are held now, into status (stop_held,
+  /// supervisor_stop), for the screen.
+  virtual void held_stops(const input::InputState& input, mapping::EngineStatus& status) const = 0;
 };
 
 /// What one tick did, for the status view and the log. Values only, copied by
@@ -67,6 +68,8 @@ struct TickReport {
   link::SendResult result = link::SendResult::kDown;
   bool sent = true;                   ///< false: nothing was offered this tick (suspended, link closed)
   OpState state = OpState::kNoLink;   ///< after this tick: what the screen, pad, log and service say
+  std::optional<StopBy> stopped_by;   ///< a stop latched: whose (OperatingState::stopped_by)
+  std::optional<StopBy> reset_by;     ///< who reset the last stop, until the next stop or enabled
   bool connected = false;             ///< a controller is connected
   std::string controller;             ///< its name (may be empty)
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
@@ -172,6 +175,8 @@ class Bridge {
   void begin_reload(const RunControl& control, const std::string& mapping);
   /// After the engine's step: a stop button, the panic, the timeout, the deadman through the machine.
   void answer_engine();
+  /// Stop buttons pressed, through the machine (the operator's first: a stop by both is the supervisor's).
+  void answer_stops(mapping::StopPresses pressed);
   /// The frame through the gate, then to the link; answers what the link did, reports.
   link::SendResult send(const protocol::DataBytes& offered, const Observer& observe);
   /// A stop's, suspend's or reload's neutral frames: counted from start_sequence().
@@ -202,7 +207,6 @@ class Bridge {
   Nanos start_{0};
   std::int64_t tick_ = 0;  ///< the tick to run next
   std::int64_t skipped_ = 0;
-  std::int64_t latched_tick_ = -1;    ///< the tick of the last stop button answered: a stop clears on a later one
   int sequence_sent_ = 0;             ///< neutral frames of the current stop, suspend or reload the link took
   int sequence_ticks_ = 0;            ///< and ticks it has had
   bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames

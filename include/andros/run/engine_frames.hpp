@@ -23,8 +23,10 @@ class ReloadableFrames : public FrameSource {
   Step step(const input::InputState& input, std::int64_t now_ms) override { return inner_->step(input, now_ms); }
   [[nodiscard]] protocol::DataBytes neutral() const override { return inner_->neutral(); }
   void restart(const input::InputState& now) override { inner_->restart(now); }
-  bool take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
-  [[nodiscard]] bool stop_let_go(const input::InputState& input) const override { return inner_->stop_let_go(input); }
+  mapping::StopPresses take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
+  mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) override {
+    return inner_->stopped(input, now_ms);
+  }
   void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
     inner_->held_stops(input, status);
   }

@@ -19,7 +19,8 @@ struct FeedbackStatus {
   bool enabled = false;         ///< the operating state is "enabled": frames follow the controller
   bool link_up = false;         ///< the link is up and frames follow the controller
   bool weapons_mode = false;    ///< EngineStatus::weapons_mode
-  bool stopped = false;         ///< the operating state is "stopped by the operator"
+  bool stopped = false;         ///< the operating state is "stopped" (a stop button)
+  bool reset = false;           ///< the last stop was reset, not yet enabled since (TickReport::reset_by)
   std::size_t speed_level = 0;  ///< EngineStatus::speed's index
 
   bool operator==(const FeedbackStatus&) const = default;

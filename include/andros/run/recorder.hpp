@@ -99,6 +99,8 @@ class Recorder {
   bool first_ = true;
   // What the last report said, for the records written only on a change.
   OpState state_ = OpState::kNoLink;
+  std::optional<StopBy> stopped_by_;  ///< as the last report said
+  std::optional<StopBy> reset_by_;
   std::string layer_;
   link::LinkState link_state_ = link::LinkState::kConnecting;
   bool link_motion_ = true;

@@ -106,6 +106,9 @@ std::string frame(const TickReport& report, std::int64_t gap);
 std::string state(std::int64_t t_ms, OpState state);
 /// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
 std::string gate(std::int64_t t_ms, std::string_view fault);
+/// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
+std::string stop(std::int64_t t_ms, StopBy by, std::string_view name);
+std::string reset(std::int64_t t_ms, StopBy by);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
@@ -168,6 +171,16 @@ struct StateRecord {
   OpState state = OpState::kNoLink;
 };
 
+/// `stop T operator|supervisor|gate "NAME"` (whose stop latched, or became
+/// whose; the gate's: the frame gate tripped), `reset T operator|supervisor`
+/// (who reset it).
+struct StopRecord {
+  std::int64_t t_ms = 0;
+  bool reset = false;  ///< a reset; false: a stop
+  StopBy by = StopBy::kOperator;
+  std::string name;  ///< the controller's name (a stop's)
+};
+
 struct EndRecord {
   std::int64_t t_ms = 0;
   std::int64_t last_tick = 0;
@@ -190,6 +203,7 @@ struct Session {
   std::vector<FrameRecord> frames;
   std::vector<StateRecord> states;
   std::vector<TimedText> gate_trips;  ///< frames the frame gate replaced: when, and the rule they broke
+  std::vector<StopRecord> stops;      ///< stops and resets, in order
   std::vector<TimedText> layers;
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;
@@ -218,5 +232,8 @@ Session read_session(const std::filesystem::path& path);
 std::string_view request_name(Request request);
 std::optional<Request> parse_request(std::string_view name);
 std::optional<OpState> parse_op_state(std::string_view name);
+/// A stop record's WHO: "operator", "supervisor", "gate" (the frame gate's trip).
+std::string_view stopper_word(StopBy by);
+std::optional<StopBy> parse_stopper(std::string_view word);
 
 }  // namespace andros::run

@@ -73,6 +73,7 @@ struct RunStatus {
   std::optional<bool> game_controller;
   bool pad_names = true;                       ///< the mapping reads game-controller names (leftshoulder, leftx...)
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
+  std::string stopped_by;                      ///< a stop latched: "stopped by the supervisor (NAME)" (stopped_by_text)
   std::string enable_text;    ///< the state in words: why not enabled, or what enabled still holds back
   std::string layer;          ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;  ///< enabled in a layer with weapons: the WEAPONS LAYER banner

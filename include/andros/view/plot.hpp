@@ -22,6 +22,7 @@ struct PlotSample {
   bool sent = false;  ///< the link took the frame
   run::OpState state = run::OpState::kNoLink;
   std::string layer;       ///< "" for the base layer
+  std::string stop;        ///< a stop latched: whose ("operator", "supervisor", "frame gate"); "" when none
   std::int64_t ticks = 1;  ///< the ticks it stands for: itself and those after it that repeat it
 };
 

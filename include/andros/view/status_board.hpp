@@ -58,9 +58,13 @@ class RunStatusBoard {
 /// stick pushed through the deadman press explains itself.
 std::string enable_text(const mapping::EngineStatus& status);
 
-/// What "stopped by the operator" asks of the operator (the state line and the banner).
+/// What "stopped" asks of the operator (the state line, after who stopped).
 inline constexpr std::string_view kStoppedText =
-    "release the stop button and the deadman, then press the deadman afresh";
+    "to reset, release the stop button, then hold it with the deadman released; then press the deadman afresh";
+
+/// Who stopped, for the STOP banner, the log and the state line: "stopped by
+/// the supervisor (NAME)"; "" when no stop is latched.
+std::string stopped_by_text(const run::TickReport& report);
 
 /// The operating state in words for the screen, the log and the service
 /// status: why nothing moves, or (enabled) what the engine still holds back.

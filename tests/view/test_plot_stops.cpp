@@ -1,0 +1,61 @@
+// Who stopped, where it is said outside the screen: the plot labels each stop
+// with whose it was (from a replay's reports and from a session's records),
+// and the service's STATUS= line carries the state's words.
+#include <gtest/gtest.h>
+
+#include "andros/view/plot.hpp"
+#include "andros/view/status_board.hpp"
+#include "cli/run_service.hpp"
+
+namespace andros::view {
+namespace {
+
+TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
+  run::TickReport r;
+  r.state = run::OpState::kEnabled;
+  PlotInput in;
+  in.samples.push_back(plot_sample(r));
+  r.t_ms = 40;
+  r.state = run::OpState::kStopped;
+  r.stopped_by = run::StopBy::kSupervisor;
+  in.samples.push_back(plot_sample(r));
+  r.t_ms = 80;
+  in.samples.push_back(plot_sample(r));
+  const auto svg = render_plot_svg(in);
+  EXPECT_NE(svg.find(">stopped by the supervisor<"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("stopped by the operator"), std::string::npos);
+
+  // From a session: the stop record names whose, the reset ends it.
+  run::Session s;
+  s.settings.rate_millihertz = 25'000;
+  s.frames.emplace_back();  // tick 0, repeated to the end
+  s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};
+  s.stops = {{.t_ms = 40, .reset = false, .by = run::StopBy::kOperator, .name = "Pad A"},
+             {.t_ms = 120, .reset = true, .by = run::StopBy::kOperator, .name = ""}};
+  s.end.emplace();
+  s.end->t_ms = 160;
+  s.end->last_tick = 4;
+  const auto samples = plot_samples(s);
+  ASSERT_EQ(samples.size(), 5U);
+  EXPECT_EQ(samples[0].stop, "");
+  EXPECT_EQ(samples[1].stop, "operator");
+  EXPECT_EQ(samples[2].stop, "operator");
+  EXPECT_EQ(samples[3].stop, "");
+}
+
+TEST(ServiceStatus, SaysWhoStoppedAndWhoReset) {
+  RunStatus s;
+  s.robot = "HD1";
+  s.state = run::OpState::kStopped;
+  s.enable_text = "stopped by the supervisor (Pad B): " + std::string(kStoppedText);
+  EXPECT_NE(cli::service_status_line(s).find("HD1; stopped: stopped by the supervisor (Pad B): to reset"),
+            std::string::npos)
+      << cli::service_status_line(s);
+  s.state = run::OpState::kNotEnabled;
+  s.enable_text = "stop reset by the operator: press the deadman afresh";
+  EXPECT_NE(cli::service_status_line(s).find("not enabled: stop reset by the operator: press the deadman afresh"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace andros::view
