@@ -13,7 +13,7 @@
 # Exit 1 when a mutation is caught by no seed, when the unmutated code fails
 # a seed, or when a mutation's text is no longer in its file (the code moved:
 # update its line here). A run cut short puts the file back, but an object
-# compiled from the mutation may then be newer than it: touch the four files
+# compiled from the mutation may then be newer than it: touch the mutated files
 # before the next build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,19 +22,19 @@ seeds=${ANDROS_SIM_SCRIPTS:-10000}
 
 # name | file | perl substitution (applied to the whole file: -0)
 mutations=(
-  "a stop cleared in the tick it latched|src/run/bridge.cpp|s/latched_tick_ < tick_/latched_tick_ <= tick_/"
-  "a panic latch cleared without the full release|src/mapping/engine.cpp|s/panic_latched_ && travel < kDeadmanFullyReleased/panic_latched_ \&\& travel < *mapping_->deadman_panic/"
+  "a stop reset 400 ms before the full hold|src/mapping/stop_buttons.cpp|s/now_ms - \*b.hold_since < hold_ms_\)/now_ms - *b.hold_since < hold_ms_ - 400)/"
+  "a panic latch cleared without the full release|src/mapping/deadman.cpp|s/!past\(lowest, kDeadmanFullyReleased\)/!past(lowest, *panic_)/"
   "neutral drive and pivot taken from the trim|src/mapping/safety.cpp|s/if \(!ctx.enabled\) v = protocol::kNeutralCentre;/if (!ctx.enabled) v = static_cast<std::uint8_t>(ctx.center);/"
   "the opposing-pair interlock removed|src/mapping/safety.cpp|s/asked\[\*partner\] != 0\) state.values\[i\] = 0;/asked[*partner] != 0 \&\& false) state.values[i] = 0;/"
   "the rest rule skipped when a layer is left|src/mapping/safety.cpp|s/const bool changed = edge \|\| was == before.end\(\) \|\| !same_bindings\(was->second, readers\);/const bool changed = edge || (layer >= layer_ \&\& (was == before.end() || !same_bindings(was->second, readers)));/"
   "a resume (SIGCONT) while enabled without a rebase|src/run/operating_state.cpp|s/settle\(S::kEnabled, E::kResume, true\)/settle(S::kEnabled, E::kResume, false)/"
   "the state machine reading last tick's engine status|src/run/bridge.cpp|s/(      engine_status_ = std::move\(step.status\);\n)((?:.*\n){2})(      answer_engine\(\);\n)/\$2\$3\$1/"
-  "a stop pressed again while stopped not taken|src/run/bridge.cpp|s/if \(!frames_.take_stop\(state_\) && latched_tick_/if (latched_tick_/"
-  "a deadman held at connect taken for a fresh press|src/mapping/engine.cpp|s/input.button\(key\).presses > deadman_base_/input.button(key).presses >= deadman_base_/"
-  "a weapon armed without its arming input held|src/mapping/engine.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && rest_.consent\(\);/const bool arm = b.arm \&\& rest_.consent();/"
+  "the deadman touched during a reset hold ignored|src/mapping/stop_buttons.cpp|s/if \(pressed && now.down && !deadman_touched\)/if (pressed \&\& now.down)/"
+  "a deadman held at connect taken for a fresh press|src/mapping/deadman.cpp|s/input.button\(\*key_\).presses > base_/input.button(*key_).presses >= base_/"
+  "a weapon armed without its arming input held|src/mapping/engine_bindings.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && rest_.consent\(\);/const bool arm = b.arm \&\& rest_.consent();/"
   "a link regained without a rebase|src/run/operating_state.cpp|s/settle\(S::kNoLink, E::kLinkUp, true\)/settle(S::kNoLink, E::kLinkUp, false)/"
   "the enable timeout never falls due|src/mapping/engine.cpp|s/if \(mapping_->enable_timeout_ms && now_ms - last_activity_ms_/if (false \&\& mapping_->enable_timeout_ms \&\& now_ms - last_activity_ms_/"
-  "the supervisor's stop button ignored|src/mapping/engine.cpp|s/stop = stop \|\| b.down \|\| b.presses > stop_presses_;/stop = stop || (false \&\& (b.down || b.presses > stop_presses_));/"
+  "the supervisor's stop button ignored|src/mapping/stop_buttons.cpp|s/const bool by_supervisor = take\(input.supervisor\(\), supervisor_\);/const bool by_supervisor = take(input.supervisor(), supervisor_) \&\& false;/"
 )
 
 [[ -f $build_dir/CMakeCache.txt ]] || { echo "no build in $build_dir: run scripts/build.sh first" >&2; exit 1; }
