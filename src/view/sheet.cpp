@@ -301,7 +301,9 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   if (m.supervisor) {
     // On the second controller: not drawn on the operator's pad, said here.
     std::string text = "Supervisor's controller (run --supervisor): " + label(m.supervisor->stop.key) +
-                       " stops (latched until released, then the deadman pressed afresh)";
+                       " stops (latched; released, then held " +
+                       figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) +
+                       " s, it resets any stop; then the deadman pressed afresh)";
     if (m.supervisor->weapons_consent) {
       text += "; " + label(m.supervisor->weapons_consent->key) +
               " held is the weapons consent (a two-person rule: pressed after the weapons became possible)";
@@ -309,8 +311,10 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
     out.push_back(text + ". Losing either controller stops motion.");
   }
   if (m.estop) {
-    out.push_back("STOP: a press of " + label(m.estop->key) + " stops the vehicle and stays stopped until " +
-                  label(m.estop->key) + " and the deadman are released; then press the deadman afresh.");
+    out.push_back("STOP: a press of " + label(m.estop->key) +
+                  " stops the vehicle; it stays stopped until reset on the controller that stopped: release " +
+                  label(m.estop->key) + ", then hold it " + figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) +
+                  " s with the deadman released; then press the deadman afresh.");
   }
   if (m.enable_timeout_ms) {
     char timeout[160];

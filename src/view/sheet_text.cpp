@@ -31,7 +31,9 @@ std::string render_sheet_text(const Sheet& sheet) {
   if (!sheet.deadman.empty()) {
     out += "Hold " + sheet.deadman + " (the deadman) to move anything; after connecting, press it afresh.\n";
   }
-  if (!sheet.stop.empty()) out += "Press " + sheet.stop + " to STOP: latched until it and the deadman are released.\n";
+  if (!sheet.stop.empty()) {
+    out += "Press " + sheet.stop + " to STOP: latched until reset on that controller (see the notes).\n";
+  }
   for (const auto& panel : sheet.panels) {
     out += "\n" + upper(panel.title) + ": " + panel.how + "\n";
     out += "  " + padded("input", kInputColumn) + padded("mark", kMarkColumn) + "function\n";
@@ -47,7 +49,7 @@ std::string render_sheet_text(const Sheet& sheet) {
   out += "\nNOTES\n";
   auto notes = sheet.notes;
   notes.emplace_back(
-      "Marks: DEADMAN enables motion, STOP stops until released with the deadman, LAYER switches "
+      "Marks: DEADMAN enables motion, STOP stops until reset, LAYER switches "
       "layers, ARMING is held to fire a WEAPON, TOGGLE flips on each press, KNOB moves a level while "
       "held, SELECTOR steps a rotary switch" +
       std::string(sheet.speed ? ", SPEED steps the speed level" : "") +

@@ -174,12 +174,29 @@ TEST(Sheet, NotesGiveTheSupervisorsButtons) {
       has("Weapons fire only when the run has --weapons, the deadman (LB) is held and the arming input "
           "(RB) is held, and the supervisor holds its consent."));
   EXPECT_TRUE(
-      has("Supervisor's controller (run --supervisor): X stops (latched until released, then the deadman "
-          "pressed afresh); A held is the weapons consent (a two-person rule: pressed after the weapons "
-          "became possible). Losing either controller stops motion."));
+      has("Supervisor's controller (run --supervisor): X stops (latched; released, then held 2 s, it resets any "
+          "stop; then the deadman pressed afresh); A held is the weapons consent (a two-person rule: pressed after "
+          "the weapons became possible). Losing either controller stops motion."));
   EXPECT_NE(render_sheet_text(s).find("Supervisor's controller"), std::string::npos);
   EXPECT_NE(render_sheet_svg(s).find("Supervisor"), std::string::npos);
   for (const auto& n : kinds_sheet().notes) EXPECT_EQ(n.find("upervisor"), std::string::npos) << n;
+}
+
+// Issue 25: what the sheet says of a stop is the reset by the book, never the
+// old "released with the deadman".
+TEST(Sheet, TheStopNoteIsTheResetHold) {
+  const auto s = build_sheet(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"));
+  const auto text = render_sheet_text(s);
+  EXPECT_NE(text.find("Press Guide to STOP: latched until reset on that controller (see the notes).\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(std::find(s.notes.begin(), s.notes.end(),
+                      "STOP: a press of Guide stops the vehicle; it stays stopped until reset on the controller that "
+                      "stopped: release Guide, then hold it 2 s with the deadman released; then press the deadman "
+                      "afresh."),
+            s.notes.end());
+  EXPECT_EQ(text.find("deadman are released"), std::string::npos) << text;
+  EXPECT_EQ(render_sheet_svg(s).find("deadman are released"), std::string::npos);
 }
 
 TEST(Sheet, PlainJoystickGetsListPanels) {
