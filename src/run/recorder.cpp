@@ -255,10 +255,7 @@ void Recorder::observe(const TickReport& r) {
   if (r.stopped_by != stopped_by_) {
     stopped_by_ = r.stopped_by;
     if (r.stopped_by) {
-      const auto& name = *r.stopped_by == StopBy::kSupervisor ? r.supervisor
-                         : *r.stopped_by == StopBy::kOperator ? r.controller
-                                                              : std::string();
-      push(record::stop(r.t_ms, *r.stopped_by, name));
+      push(record::stop(r.t_ms, *r.stopped_by, r.stopper_name()));
     }
   }
   if (r.reset_by != reset_by_) {

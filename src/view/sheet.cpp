@@ -243,6 +243,11 @@ std::string speed_note(const mapping::Mapping& m) {
   return out;
 }
 
+/// How long a stop button is held to reset a stop: "2 s".
+std::string reset_hold(const mapping::Mapping& m) {
+  return figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) + " s";
+}
+
 /// How the deadman is held, when it is not a plain button: "past half way;
 /// off past 90% until fully released".
 std::string deadman_detail(const mapping::Mapping& m) {
@@ -301,9 +306,8 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   if (m.supervisor) {
     // On the second controller: not drawn on the operator's pad, said here.
     std::string text = "Supervisor's controller (run --supervisor): " + label(m.supervisor->stop.key) +
-                       " stops (latched; released, then held " +
-                       figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) +
-                       " s, it resets any stop; then the deadman pressed afresh)";
+                       " stops (latched; released, then held " + reset_hold(m) +
+                       ", it resets any stop; then the deadman pressed afresh)";
     if (m.supervisor->weapons_consent) {
       text += "; " + label(m.supervisor->weapons_consent->key) +
               " held is the weapons consent (a two-person rule: pressed after the weapons became possible)";
@@ -313,8 +317,8 @@ std::vector<std::string> notes(const mapping::Mapping& m) {
   if (m.estop) {
     out.push_back("STOP: a press of " + label(m.estop->key) +
                   " stops the vehicle; it stays stopped until reset on the controller that stopped: release " +
-                  label(m.estop->key) + ", then hold it " + figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) +
-                  " s with the deadman released; then press the deadman afresh.");
+                  label(m.estop->key) + ", then hold it " + reset_hold(m) +
+                  " with the deadman released; then press the deadman afresh.");
   }
   if (m.enable_timeout_ms) {
     char timeout[160];

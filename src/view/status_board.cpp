@@ -182,9 +182,8 @@ std::string stopped_by_text(const run::TickReport& r) {
   if (*r.stopped_by == run::StopBy::kGate) {
     return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
   }
-  const bool supervisor = *r.stopped_by == run::StopBy::kSupervisor;
-  const auto& name = supervisor ? r.supervisor : r.controller;
-  return std::string("stopped by the ") + (supervisor ? "supervisor" : "operator") + " (" +
+  const auto name = r.stopper_name();
+  return "stopped by the " + std::string(run::to_string(*r.stopped_by)) + " (" +
          (name.empty() ? std::string("controller") : printable_text(name)) + ")";
 }
 

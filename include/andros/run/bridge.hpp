@@ -85,6 +85,12 @@ struct TickReport {
   [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
+  /// The name of the controller whose stop is latched ("" when none is, or the frame gate's).
+  [[nodiscard]] std::string stopper_name() const {
+    if (stopped_by == StopBy::kSupervisor) return supervisor;
+    if (stopped_by == StopBy::kOperator) return controller;
+    return {};
+  }
 };
 
 struct BridgeOptions {
