@@ -35,7 +35,8 @@ protocol::DataBytes neutral_frame() {
 
 class FixedFrames final : public run::FrameSource {
  public:
-  run::Step step(const input::InputState&, std::int64_t) override { return {neutral_frame(), {}}; }
+  mapping::InputFacts facts(const input::InputState&, std::int64_t, bool) override { return {}; }
+  run::Step step(const input::InputState&, std::int64_t, bool) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
   void restart(const input::InputState&) override {}
   // No stop buttons: nothing stops, nothing resets.

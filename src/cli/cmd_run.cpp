@@ -51,7 +51,7 @@ run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
   // One sigpending() a tick rather than a sigtimedwait() for each signal set:
   // the sets are asked only when a signal waits or the stop knows something.
   if (!stop.has_unread() && !signals_pending()) return run::Request::kNone;
-  if (stop.requested()) return run::Request::kStop;
+  if (stop.requested()) return run::Request::kShutdown;
   if (stop.reload_requested()) return run::Request::kReload;
   switch (job.poll()) {
     case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;

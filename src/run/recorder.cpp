@@ -231,7 +231,7 @@ void Recorder::request(Request request) {
   if (request == Request::kNone) return;
   // A stop asked once is answered on every tick after it until the run ends:
   // one record says it (one Ctrl-C, one `request stop`).
-  if (request == Request::kStop && std::exchange(stop_recorded_, true)) return;
+  if (request == Request::kShutdown && std::exchange(stop_recorded_, true)) return;
   push(record::request(t_ms_, request));
 }
 

@@ -171,7 +171,7 @@ std::int64_t Session::length_ms() const {
 std::string_view request_name(Request r) {
   switch (r) {
     case Request::kNone: return "none";
-    case Request::kStop: return "stop";
+    case Request::kShutdown: return "stop";
     case Request::kSuspend: return "suspend";
     case Request::kResumed: return "resumed";
     case Request::kReload: return "reload";
@@ -180,7 +180,7 @@ std::string_view request_name(Request r) {
 }
 
 std::optional<Request> parse_request(std::string_view name) {
-  for (const auto r : {Request::kStop, Request::kSuspend, Request::kResumed, Request::kReload}) {
+  for (const auto r : {Request::kShutdown, Request::kSuspend, Request::kResumed, Request::kReload}) {
     if (request_name(r) == name) return r;
   }
   return std::nullopt;

@@ -126,11 +126,11 @@ TEST(RecordLimits, OneStopRequestIsOneRecordHoweverManyTicksAnswerIt) {
     SessionWriter writer(std::make_unique<MemorySink>(text));
     Recorder recorder(writer);
     recorder.pumped(40, {});
-    recorder.request(Request::kStop);  // Ctrl-C: the stop is asked again on each tick of the shutdown
+    recorder.request(Request::kShutdown);  // Ctrl-C: the stop is asked again on each tick of the shutdown
     recorder.pumped(80, {});
-    recorder.request(Request::kStop);
+    recorder.request(Request::kShutdown);
     recorder.pumped(120, {});
-    recorder.request(Request::kStop);
+    recorder.request(Request::kShutdown);
     recorder.request(Request::kReload);
     writer.close(5000);
   }
