@@ -18,7 +18,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/base/sha256.hpp"
-#include "andros/run/recorder.hpp"
+#include "andros/record/recorder.hpp"
 
 namespace {
 
@@ -48,8 +48,8 @@ void measure(Way way, bool moving, std::int64_t ticks) {
   loop_ns.reserve(static_cast<std::size_t>(ticks));
   const double cpu0 = cpu_s();
   {
-    run::SessionWriter writer(std::make_unique<run::FileRecordSink>(path.string()));
-    run::Recorder recorder(writer);
+    record::SessionWriter writer(std::make_unique<record::FileRecordSink>(path.string()));
+    record::Recorder recorder(writer);
     Sha256 digest;
     run::TickReport r;
     r.state = run::OpState::kEnabled;
@@ -62,7 +62,7 @@ void measure(Way way, bool moving, std::int64_t ticks) {
       const std::int64_t t0 = monotonic_ns();
       switch (way) {
         case Way::kChanges: recorder.observe(r); break;
-        case Way::kEveryFrame: writer.push(run::record::frame(r, 0)); break;
+        case Way::kEveryFrame: writer.push(record::payload::frame(r, 0)); break;
         case Way::kDigest: {
           const auto frame = protocol::encode(r.data);
           digest.update(std::string_view(reinterpret_cast<const char*>(frame.data()), frame.size()));

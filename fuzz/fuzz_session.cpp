@@ -13,8 +13,8 @@
 #include <string>
 
 #include "andros/base/error.hpp"
-#include "andros/run/session.hpp"
-#include "andros/run/session_replay.hpp"
+#include "andros/record/session.hpp"
+#include "andros/record/session_replay.hpp"
 #include "andros/view/plot.hpp"
 #include "andros/view/session_export.hpp"
 #include "fuzz_check.hpp"
@@ -35,11 +35,11 @@ const std::string& input_path() {
 /// The most ticks a seed's replay and export run: a fuzzer's minute, not a day's.
 constexpr std::int64_t kTicksTried = 20'000;
 
-void check_session(const andros::run::Session& s) {
+void check_session(const andros::record::Session& s) {
   std::int64_t previous = -1;
   for (const auto& f : s.frames) {
     check(f.tick > previous && f.tick - f.gap > previous);
-    check(f.t_ms >= 0 && f.t_ms <= andros::run::kMaxSessionMs);
+    check(f.t_ms >= 0 && f.t_ms <= andros::record::kMaxSessionMs);
     previous = f.tick;
   }
   if (s.end && !s.frames.empty()) check(s.end->last_tick >= s.frames.back().tick);
@@ -50,7 +50,7 @@ void check_session(const andros::run::Session& s) {
   std::ostringstream table;
   andros::view::export_session(s, andros::view::ExportFormat::kCsv, table);
   try {
-    (void)andros::run::replay_session(s);
+    (void)andros::record::replay_session(s);
   } catch (const andros::InputError&) {
     // A mapping the session names that does not load, records dropped: refused, said.
   }
@@ -65,14 +65,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fclose(f);
   }
   try {
-    const auto result = andros::run::verify_session(path);
+    const auto result = andros::record::verify_session(path);
     check(result.intact || !result.problem.empty());
     if (result.intact) check(result.records > 0 && result.last_hash.size() == 64);
   } catch (const andros::InputError& e) {
     check(e.pos().file == path);
   }
   try {
-    check_session(andros::run::read_session(path));
+    check_session(andros::record::read_session(path));
   } catch (const andros::InputError& e) {
     check(e.pos().file == path);
   }

@@ -5,7 +5,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/output_file.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "andros/view/session_export.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
@@ -21,7 +21,7 @@ struct ExportOptions {
 
 void run_export(const ExportOptions& opt) {
   const auto format = view::parse_export_format(opt.format, SourcePos{"--format"});
-  const auto session = run::read_session(opt.session);
+  const auto session = record::read_session(opt.session);
   // Written as the rows come: a failed write leaves FILE as it was.
   OutputFile out(opt.output.empty() ? "-" : opt.output);
   view::export_session(session, format, out.stream());

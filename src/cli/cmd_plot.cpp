@@ -15,8 +15,8 @@
 #include "andros/cli/config.hpp"
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/replay.hpp"
-#include "andros/run/session.hpp"
 #include "andros/timing/rate.hpp"
 #include "andros/view/plot.hpp"
 #include "commands.hpp"
@@ -63,7 +63,7 @@ bool is_session(const std::string& path) {
   std::string first(64, '\0');
   in.read(first.data(), static_cast<std::streamsize>(first.size()));
   first.resize(static_cast<std::size_t>(in.gcount()));
-  return run::is_session_start(first);
+  return record::is_session_start(first);
 }
 
 view::PlotInput from_session(const PlotOptions& opt) {
@@ -73,7 +73,7 @@ view::PlotInput from_session(const PlotOptions& opt) {
                        "not for a session: it is drawn with the settings it recorded");
     }
   }
-  const auto s = run::read_session(opt.source);
+  const auto s = record::read_session(opt.source);
   view::PlotInput in;
   in.title = fmt::format("{} drive, mapping {}", s.settings.robot, file_name(s.settings.mapping_file));
   in.settings = fmt::format("{} Hz, code {:02X}, {}, input {}, port {}", timing::rate_text(s.settings.rate_millihertz),
@@ -82,9 +82,9 @@ view::PlotInput from_session(const PlotOptions& opt) {
   in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started, s.host,
                           s.version);
   // Drawn all the same, but never passed off as a whole record.
-  const auto check = run::verify_session(opt.source);
+  const auto check = record::verify_session(opt.source);
   if (!check.intact) in.source += "; NOT INTACT: " + check.problem;
-  else if (check.cut_short_line != 0) in.source += "; " + run::cut_short_text(check);
+  else if (check.cut_short_line != 0) in.source += "; " + record::cut_short_text(check);
   if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
   in.samples = view::plot_samples(s);
   return in;

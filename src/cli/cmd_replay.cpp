@@ -14,9 +14,9 @@
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/frame_output.hpp"
+#include "andros/record/session.hpp"
+#include "andros/record/session_replay.hpp"
 #include "andros/run/replay.hpp"
-#include "andros/run/session.hpp"
-#include "andros/run/session_replay.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 
@@ -44,7 +44,7 @@ bool is_session_file(const std::string& path) {
   std::string first(64, '\0');
   in.read(first.data(), static_cast<std::streamsize>(first.size()));
   first.resize(static_cast<std::size_t>(in.gcount()));
-  return run::is_session_start(first);
+  return record::is_session_start(first);
 }
 
 /// A session replayed with its own settings and mapping: are its frames what the loop makes again?
@@ -55,13 +55,13 @@ int replay_session_file(const ReplayOptions& opt) {
       throw InputError(SourcePos{std::string(flag)}, "not for a session: it replays with the settings it recorded");
     }
   }
-  const auto check = run::verify_session(opt.events);
+  const auto check = record::verify_session(opt.events);
   if (!check.intact) {
     std::cout << "NOT INTACT: " << check.problem << " (andros-bridge verify)\n";
     return kExitRuntime;
   }
-  const auto session = run::read_session(opt.events);
-  const auto result = run::replay_session(session);
+  const auto session = record::read_session(opt.events);
+  const auto result = record::replay_session(session);
   if (!result.identical) {
     std::cout << "DIFFERENT after " << result.compared << " identical frames: " << result.difference << "\n";
     return kExitRuntime;

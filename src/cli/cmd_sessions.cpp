@@ -8,7 +8,7 @@
 #include <string>
 
 #include "andros/base/error.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 
@@ -45,12 +45,12 @@ void run_sessions(const std::string& dir_given) {
     const auto name = bare ? path.filename().string() : std::filesystem::absolute(path).string();
     std::string verdict;
     try {
-      const auto check = run::verify_session(path);
+      const auto check = record::verify_session(path);
       verdict = !check.intact               ? "NOT INTACT"
                 : check.cut_short_line != 0 ? "intact, cut short"
                 : check.closed              ? "intact"
                                             : "intact, not closed";
-      const auto s = run::read_session(path);
+      const auto s = record::read_session(path);
       std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", start_text(s.started),
                                duration_text(s.length_ms()), s.settings.robot, s.frames_sent(), verdict, name);
     } catch (const std::exception& e) {

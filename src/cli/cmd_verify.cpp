@@ -6,7 +6,7 @@
 #include <string>
 
 #include "andros/base/error.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 
@@ -17,13 +17,13 @@ int run_verify(const std::string& path) {
   std::error_code ec;
   // Anything else that is there (a FIFO, a device) is refused by the reading, saying what it is.
   if (!std::filesystem::exists(path, ec)) throw InputError(SourcePos{path}, "no such session file");
-  const auto result = run::verify_session(path);
+  const auto result = record::verify_session(path);
   if (!result.intact) {
     std::cout << "NOT INTACT: " << result.problem << "\n";
     return kExitRuntime;
   }
   // Half a record at the end is a run cut off, told apart from an edit: the records before it stand.
-  if (result.cut_short_line != 0) std::cout << run::cut_short_text(result) << "\n";
+  if (result.cut_short_line != 0) std::cout << record::cut_short_text(result) << "\n";
   else std::cout << "intact (" << result.records << " records)\n";
   std::cout << (result.closed ? "closed: the run ended and its last record is here\n"
                               : "not closed: the run is still going, ended without closing it (a crash, power "

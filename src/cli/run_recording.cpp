@@ -14,9 +14,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-run::SessionSettings session_settings(const Settings& config, const std::string& robot, const std::string& mapping_file,
-                                      int center, std::vector<run::MappingSource> sources) {
-  run::SessionSettings s;
+record::SessionSettings session_settings(const Settings& config, const std::string& robot,
+                                         const std::string& mapping_file, int center,
+                                         std::vector<record::MappingSource> sources) {
+  record::SessionSettings s;
   s.robot = robot;
   s.mapping_file = mapping_file;
   s.rate_millihertz = config.rate.millihertz;
@@ -47,7 +48,7 @@ std::string host_name() {
 
 }  // namespace
 
-RunRecording::RunRecording(fs::path path, std::unique_ptr<run::RecordSink> sink, input::InputSource& input,
+RunRecording::RunRecording(fs::path path, std::unique_ptr<record::RecordSink> sink, input::InputSource& input,
                            RotationLimits rotation)
     : path_(std::move(path)),
       writer_(std::move(sink)),
@@ -63,14 +64,14 @@ std::unique_ptr<RunRecording> RunRecording::start(const Settings& config, const 
   const fs::path path = new_session_path(dir, now, static_cast<long>(getpid()));
   const RotationLimits limits{static_cast<std::uint64_t>(config.record_max_mb) * 1'000'000ULL,
                               static_cast<std::int64_t>(config.record_max_days) * 24 * 3600};
-  std::unique_ptr<run::RecordSink> sink;
+  std::unique_ptr<record::RecordSink> sink;
   try {
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw RuntimeError(dir.string() + ": cannot create: " + ec.message());
     for (const auto& old : rotate_sessions(dir, limits, path, now))
       spdlog::info("recorder: removed {} (rotation)", old.string());
-    sink = std::make_unique<run::FileRecordSink>(path.string());
+    sink = std::make_unique<record::FileRecordSink>(path.string());
   } catch (const std::exception& e) {
     // Driving goes on without a record: said loudly, once.
     spdlog::warn("recorder: {}: this run is not recorded", e.what());
@@ -86,7 +87,7 @@ std::unique_ptr<RunRecording> RunRecording::start(const Settings& config, const 
 }
 
 run::RunControl RunRecording::control(run::RunControl inner, const Settings& config, const RunReload& reload) {
-  return run::recorded_control(std::move(inner), recorder_, [this, &config, &reload] {
+  return record::recorded_control(std::move(inner), recorder_, [this, &config, &reload] {
     const auto& applied = reload.applied();
     auto settings = session_settings(config, applied.robot, applied.mapping_file, applied.center, applied.sources);
     settings.supervised = input_.supervised();

@@ -10,8 +10,8 @@
 #include "andros/cli/settings.hpp"
 #include "andros/input/input_source.hpp"
 #include "andros/link/link.hpp"
-#include "andros/run/recorded_loop.hpp"
-#include "andros/run/recorder.hpp"
+#include "andros/record/recorded_loop.hpp"
+#include "andros/record/recorder.hpp"
 #include "andros/view/operator_screens.hpp"
 #include "run_reload.hpp"
 #include "session_files.hpp"
@@ -40,14 +40,14 @@ class RunRecording {
 
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
-  RunRecording(std::filesystem::path path, std::unique_ptr<run::RecordSink> sink, input::InputSource& input,
+  RunRecording(std::filesystem::path path, std::unique_ptr<record::RecordSink> sink, input::InputSource& input,
                RotationLimits rotation);
 
  private:
   std::filesystem::path path_;
-  run::SessionWriter writer_;
-  run::Recorder recorder_;
-  run::RecordingInput input_;
+  record::SessionWriter writer_;
+  record::Recorder recorder_;
+  record::RecordingInput input_;
   RotationLimits rotation_;
   bool warned_ = false;  ///< the first record dropped or lost has been logged
 };

@@ -43,7 +43,7 @@ EngineSetup load_engine(const Settings& settings) {
   setup.feedback = mapping->feedback;
   setup.supervisor_buttons = mapping->supervisor.has_value();
   setup.pad_names = reads_pad_names(*mapping);
-  setup.sources = run::read_mapping_sources(mapping->chain);
+  setup.sources = record::read_mapping_sources(mapping->chain);
   setup.frames = run::make_engine_frames(
       mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   return setup;

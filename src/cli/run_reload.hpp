@@ -14,10 +14,10 @@
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/settings.hpp"
 #include "andros/mapping/feedback.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
-#include "andros/run/session.hpp"
 #include "andros/view/status_board.hpp"
 #include "run_service.hpp"
 
@@ -32,8 +32,8 @@ struct EngineSetup {
   int center = mapping::kDefaultCenter;  ///< drive and pivot's rest value (for the gauges)
   bool pad_names = true;                 ///< it reads game-controller names (a plain joystick sends none)
   mapping::FeedbackTable feedback;
-  bool supervisor_buttons = false;          ///< the mapping has a `supervisor:` section
-  std::vector<run::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
+  bool supervisor_buttons = false;             ///< the mapping has a `supervisor:` section
+  std::vector<record::MappingSource> sources;  ///< the mapping's files as read, for the flight recorder
 };
 
 /// Loads the mapping the settings name and builds its engine. Throws
@@ -144,7 +144,7 @@ class RunReload {
     std::string robot;
     std::string mapping_file;
     int center = mapping::kDefaultCenter;
-    std::vector<run::MappingSource> sources;
+    std::vector<record::MappingSource> sources;
   };
   [[nodiscard]] const Applied& applied() const { return applied_; }
 

@@ -12,7 +12,7 @@
 
 #include "andros/base/unique_fd.hpp"
 
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 
 namespace andros::cli {
 namespace fs = std::filesystem;
@@ -32,7 +32,7 @@ UniqueFd open_session(const fs::path& path) {
   if (!fd || ::fstat(fd.get(), &st) != 0 || !S_ISREG(st.st_mode)) return {};
   char first[64];
   const auto n = ::pread(fd.get(), first, sizeof first, 0);
-  if (n <= 0 || !run::is_session_start(std::string_view(first, static_cast<std::size_t>(n)))) return {};
+  if (n <= 0 || !record::is_session_start(std::string_view(first, static_cast<std::size_t>(n)))) return {};
   return fd;
 }
 
@@ -61,14 +61,15 @@ fs::path new_session_path(const fs::path& dir, std::time_t now, long pid) {
   localtime_r(&now, &local);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-  return dir / (std::string(stamp) + "-" + std::to_string(pid) + std::string(run::kSessionExtension));
+  return dir / (std::string(stamp) + "-" + std::to_string(pid) + std::string(record::kSessionExtension));
 }
 
 std::vector<fs::path> list_sessions(const fs::path& dir) {
   std::vector<fs::path> out;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    if (entry.path().extension() == run::kSessionExtension && open_session(entry.path())) out.push_back(entry.path());
+    if (entry.path().extension() == record::kSessionExtension && open_session(entry.path()))
+      out.push_back(entry.path());
   }
   std::sort(out.begin(), out.end());
   return out;

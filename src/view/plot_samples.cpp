@@ -29,7 +29,7 @@ PlotSample plot_sample(const run::TickReport& r) {
                     r.state, r.engine.layer, stopper(r.stopped_by)};
 }
 
-std::vector<PlotSample> plot_samples(const run::Session& session) {
+std::vector<PlotSample> plot_samples(const record::Session& session) {
   std::vector<PlotSample> out;
   const timing::FrameClock clock(session.settings.rate_millihertz);
   const auto& frames = session.frames;
@@ -51,7 +51,7 @@ std::vector<PlotSample> plot_samples(const run::Session& session) {
       stop = r.reset ? std::nullopt : std::optional(r.by);
     }
   };
-  const auto sample = [&](const run::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
+  const auto sample = [&](const record::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
     const std::int64_t t = clock.time_of(tick);
     catch_up(t);
     out.push_back(

@@ -22,7 +22,7 @@ std::string csv(std::string_view text) {
 /// What is in effect at each tick: the records with a time, taken in order.
 class Cursor {
  public:
-  explicit Cursor(const run::Session& s) : s_(s) {}
+  explicit Cursor(const record::Session& s) : s_(s) {}
   void at(std::int64_t t) {
     while (state_at_ < s_.states.size() && s_.states[state_at_].t_ms <= t) state = s_.states[state_at_++].state;
     while (layer_at_ < s_.layers.size() && s_.layers[layer_at_].t_ms <= t) layer = s_.layers[layer_at_++].text;
@@ -37,7 +37,7 @@ class Cursor {
   std::string layer;
 
  private:
-  const run::Session& s_;
+  const record::Session& s_;
   std::size_t state_at_ = 0;
   std::size_t layer_at_ = 0;
   std::size_t request_at_ = 0;
@@ -52,7 +52,7 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos) {
   throw InputError(pos, "expected csv or jsonl, got " + quote(text));
 }
 
-void export_session(const run::Session& s, ExportFormat format, std::ostream& out) {
+void export_session(const record::Session& s, ExportFormat format, std::ostream& out) {
   const timing::FrameClock clock(s.settings.rate_millihertz);
   if (format == ExportFormat::kCsv) {
     out << "t,tick,state,stop,layer,link";
@@ -73,7 +73,7 @@ void export_session(const run::Session& s, ExportFormat format, std::ostream& ou
       const auto state = run::to_string(cursor.state);
       if (format == ExportFormat::kCsv) {
         out << seconds << ',' << tick << ',' << state << ',' << cursor.stop() << ',' << csv(cursor.layer) << ','
-            << run::result_name(f);
+            << record::result_name(f);
         for (std::size_t k = 0; k < protocol::kSignalCount; ++k) out << ',' << int{values.values[k]};
         out << '\n';
         continue;
@@ -83,7 +83,7 @@ void export_session(const run::Session& s, ExportFormat format, std::ostream& ou
                                  {"state", state},
                                  {"stop", cursor.stop()},
                                  {"layer", cursor.layer},
-                                 {"link", run::result_name(f)}};
+                                 {"link", record::result_name(f)}};
       for (std::size_t k = 0; k < protocol::kSignalCount; ++k)
         row[std::string(protocol::kSignals[k].name)] = values.values[k];
       out << row.dump() << '\n';

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "andros/base/unique_fd.hpp"
-#include "andros/run/record_sink.hpp"
+#include "andros/record/record_sink.hpp"
 #include "cli/session_files.hpp"
 #include "support/temp_dir.hpp"
 
@@ -115,7 +115,7 @@ TEST(SessionFiles, TheRecordersFileIsLockedWhileItIsOpen) {
   testing::TempDir dir;
   const auto path = dir.path() / "20200101-000000-1.andros-session";
   {
-    run::FileRecordSink sink(path.string());
+    record::FileRecordSink sink(path.string());
     std::string error;
     ASSERT_TRUE(sink.write("0 andros-session 2 " + std::string(64, '0') + "\n", error)) << error;
     const UniqueFd other(::open(path.c_str(), O_RDONLY | O_CLOEXEC));

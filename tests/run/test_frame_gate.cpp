@@ -13,10 +13,10 @@
 #include "andros/base/text_file.hpp"
 #include "andros/input/script_player.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/record/recorder.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/engine_frames.hpp"
 #include "andros/run/frame_gate.hpp"
-#include "andros/run/recorder.hpp"
-#include "andros/run/session.hpp"
 #include "support/faulty_frames.hpp"
 #include "support/temp_dir.hpp"
 
@@ -191,9 +191,9 @@ TEST(FrameGate, ATripIsRecordedInTheSession) {
   testing::TempDir dir;
   const auto path = dir.path() / "gate.andros-session";
   {
-    SessionWriter writer(std::make_unique<FileRecordSink>(path.string()));
-    Recorder recorder(writer);
-    SessionSettings settings;
+    record::SessionWriter writer(std::make_unique<record::FileRecordSink>(path.string()));
+    record::Recorder recorder(writer);
+    record::SessionSettings settings;
     settings.robot = "HD1";
     settings.rate_millihertz = 25'000;
     settings.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
@@ -208,7 +208,7 @@ TEST(FrameGate, ATripIsRecordedInTheSession) {
     recorder.end("end of the input");
     ASSERT_TRUE(writer.close(5000));
   }
-  const auto s = read_session(path);
+  const auto s = record::read_session(path);
   ASSERT_EQ(s.gate_trips.size(), 1u);
   EXPECT_EQ(s.gate_trips[0].t_ms, 120);
   EXPECT_EQ(s.gate_trips[0].text, "pt_left = 1 while not enabled");

@@ -25,6 +25,8 @@ expect_refused() {  # FILE INCLUDE-LINE WHAT
 expect_refused include/andros/protocol/frame.hpp '#include "andros/mapping/engine.hpp"' "protocol including mapping"
 expect_refused src/base/text.cpp '#include "andros/cli/config.hpp"' "base including cli"
 expect_refused src/run/bridge.cpp '#include "andros/view/operator_screens.hpp"' "run including view"
+expect_refused src/run/bridge.cpp '#include "andros/record/session.hpp"' "run including record"
+expect_refused include/andros/record/session.hpp '#include "andros/view/plot.hpp"' "record including view"
 expect_refused src/link/tcp_link.cpp '#include "andros/io/link.hpp"' "an include outside the stage folders"
 
 # Same-stage and downward includes stay allowed.

@@ -9,16 +9,16 @@
 namespace andros::view {
 namespace {
 
-run::Session quiet_hour() {
-  run::Session s;
+record::Session quiet_hour() {
+  record::Session s;
   s.settings.rate_millihertz = 25'000;
   protocol::DataBytes moving{};
   moving[7] = 0xFF;
-  s.frames = {run::FrameRecord{.tick = 0, .t_ms = 0},
-              run::FrameRecord{.tick = 50'000, .t_ms = 2'000'000, .data = moving},
-              run::FrameRecord{.tick = 50'001, .t_ms = 2'000'040}};
+  s.frames = {record::FrameRecord{.tick = 0, .t_ms = 0},
+              record::FrameRecord{.tick = 50'000, .t_ms = 2'000'000, .data = moving},
+              record::FrameRecord{.tick = 50'001, .t_ms = 2'000'040}};
   s.states = {{0, run::OpState::kNotEnabled}, {1'000'000, run::OpState::kEnabled}};
-  s.end = run::EndRecord{.t_ms = 3'600'000, .last_tick = 90'000, .frames_sent = 90'001, .why = "SIGINT"};
+  s.end = record::EndRecord{.t_ms = 3'600'000, .last_tick = 90'000, .frames_sent = 90'001, .why = "SIGINT"};
   return s;
 }
 

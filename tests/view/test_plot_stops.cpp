@@ -26,7 +26,7 @@ TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
   EXPECT_EQ(svg.find("stopped by the operator"), std::string::npos);
 
   // From a session: the stop record names whose, the reset ends it.
-  run::Session s;
+  record::Session s;
   s.settings.rate_millihertz = 25'000;
   s.frames.emplace_back();  // tick 0, repeated to the end
   s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "andros/protocol/frame.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/session.hpp"
 
 namespace andros::view {
 
@@ -41,7 +41,7 @@ PlotSample plot_sample(const run::TickReport& report);
 /// The ticks the live loop ran, from the session's records: a sample at each
 /// change point and at the last tick each holds to (work and memory as the
 /// records', not the ticks').
-std::vector<PlotSample> plot_samples(const run::Session& session);
+std::vector<PlotSample> plot_samples(const record::Session& session);
 
 /// The page: 297 x 210 mm.
 std::string render_plot_svg(const PlotInput& input);

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "andros/base/error.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 
 namespace andros::view {
 
@@ -22,6 +22,6 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos);
 /// stop request on, while the run stops), `layer`, `link` (sent, busy, down
 /// or none: what became of the frame), then every signal of the frame by name.
 /// CSV has a header row; JSONL a JSON object a line.
-void export_session(const run::Session& session, ExportFormat format, std::ostream& out);
+void export_session(const record::Session& session, ExportFormat format, std::ostream& out);
 
 }  // namespace andros::view

@@ -12,25 +12,25 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/text_file.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "support/temp_dir.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 const std::string kData(32, '0');  // 16 data bytes, as a frame record holds them
 
 /// Payloads of a small session that read_session takes: 25 Hz, hd1's text.
-std::vector<std::string> payloads(const std::string& end = record::end(400, 10, 11, "SIGINT")) {
+std::vector<std::string> payloads(const std::string& end = payload::end(400, 10, 11, "SIGINT")) {
   SessionSettings s;
   s.robot = "HD1";
   s.mapping_file = "/m/hd1.yaml";
   s.rate_millihertz = 25'000;
   s.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
-  return {record::header(),
-          record::program("9.9.9"),
-          record::started("2024-05-01T12:00:00+0200", 42, "bench"),
-          record::settings(s),
+  return {payload::header(),
+          payload::program("9.9.9"),
+          payload::started("2024-05-01T12:00:00+0200", 42, "bench"),
+          payload::settings(s),
           "frame 0 0 sent " + kData + " gap=0",
           "state 0 not enabled",
           "frame 4 160 sent " + std::string(31, '0') + "1 gap=0",
@@ -135,19 +135,19 @@ TEST(SessionBounds, ALineLongerThanTheCapIsRefusedWhileItIsRead) {
 TEST(SessionBounds, AnEndTickFarPastTheLastFrameIsAnErrorAtItsLine) {
   testing::TempDir dir;
   // One number edited, the chain made again.
-  const auto edited = write(dir, chained(payloads(record::end(400, 100'000'000'000, 11, "SIGINT"))));
+  const auto edited = write(dir, chained(payloads(payload::end(400, 100'000'000'000, 11, "SIGINT"))));
   EXPECT_EQ(error_line(edited), 8);
   EXPECT_NE(error_text(edited).find("tick 100000000000: not within a session"), std::string::npos)
       << error_text(edited);
   // Its time edited to match: still past what a session holds.
-  const auto both = write(dir, chained(payloads(record::end(4'000'000'000'000, 100'000'000'000, 11, "SIGINT"))));
+  const auto both = write(dir, chained(payloads(payload::end(4'000'000'000'000, 100'000'000'000, 11, "SIGINT"))));
   EXPECT_EQ(error_line(both), 8);
   // Within a day, a tick that does not fall at its time.
-  const auto astray = write(dir, chained(payloads(record::end(400, 2'000'000, 11, "SIGINT"))));
+  const auto astray = write(dir, chained(payloads(payload::end(400, 2'000'000, 11, "SIGINT"))));
   EXPECT_NE(error_text(astray).find("tick 2000000 falls at 80000000 ms at 25 Hz, not 400"), std::string::npos)
       << error_text(astray);
   // Before the last frame record.
-  const auto early = write(dir, chained(payloads(record::end(120, 3, 11, "SIGINT"))));
+  const auto early = write(dir, chained(payloads(payload::end(120, 3, 11, "SIGINT"))));
   EXPECT_NE(error_text(early).find("before the last frame record's"), std::string::npos) << error_text(early);
 }
 
@@ -168,4 +168,4 @@ TEST(SessionBounds, FrameRecordsAreCheckedAgainstTheirRateAndGaps) {
 }
 
 }  // namespace
-}  // namespace andros::run
+}  // namespace andros::record

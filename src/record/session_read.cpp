@@ -1,4 +1,4 @@
-// read_session (andros/run/session.hpp): the records back into what replay
+// read_session (andros/record/session.hpp): the records back into what replay
 // and plot need, each checked as it is read against what a session can hold:
 // its ticks fall at the recorded rate's times, within a day.
 #include <nlohmann/json.hpp>
@@ -10,11 +10,11 @@
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
 #include "andros/input/events.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "andros/timing/rate.hpp"
 #include "session_lines.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 /// The rates run sends at: 1 Hz up to what its fastest line carries (115,200 baud, 360 bits a frame).
@@ -196,7 +196,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     r.reset = kind == "reset";
     const auto who = f.word();
     const auto by = parse_stopper(who);
-    if (!by || (r.reset && *by == StopBy::kGate)) throw InputError(pos, "unknown stopper " + quote(who));
+    if (!by || (r.reset && *by == run::StopBy::kGate)) throw InputError(pos, "unknown stopper " + quote(who));
     r.by = *by;
     if (!r.reset) r.name = f.json().get<std::string>();
     s.stops.push_back(std::move(r));
@@ -277,4 +277,4 @@ Session read_session(const std::filesystem::path& path) {
   return s;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -6,10 +6,10 @@
 #include <functional>
 
 #include "andros/input/input_source.hpp"
+#include "andros/record/recorder.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/recorder.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 /// The input as the loop sees it, with every event it applies recorded.
 class RecordingInput final : public input::InputSource {
@@ -30,6 +30,7 @@ class RecordingInput final : public input::InputSource {
 /// The loop's controls with what they answer recorded: requests, the end of a
 /// job-control stop, reload outcomes (with the settings they put in place:
 /// settings() is asked after an ok one).
-RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings);
+run::RunControl recorded_control(run::RunControl control, Recorder& recorder,
+                                 std::function<SessionSettings()> settings);
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -1,10 +1,10 @@
-#include "andros/run/recorder.hpp"
+#include "andros/record/recorder.hpp"
 
 #include <chrono>
 #include <functional>
 #include <utility>
 
-namespace andros::run {
+namespace andros::record {
 
 struct SessionWriter::Shared {
   explicit Shared(std::unique_ptr<RecordSink> s, std::size_t capacity) : sink(std::move(s)), ring(capacity) {}
@@ -91,7 +91,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   };
   // What went missing, said by a `dropped N` record where it fits (never before the header).
   const auto tell = [&] {
-    if (missing != 0 && chain.records() != 0 && put([&] { return chain.line(record::dropped(missing)); })) missing = 0;
+    if (missing != 0 && chain.records() != 0 && put([&] { return chain.line(payload::dropped(missing)); })) missing = 0;
   };
   // Whole records or none: a batch at once, else record by record as many as
   // fit, and a `dropped N` record for the rest, where they went missing.
@@ -102,7 +102,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
     } else if (bool told = false; put([&] {
                  std::string text;
                  if (missing != 0 && chain.records() != 0) {
-                   text = chain.line(record::dropped(missing));
+                   text = chain.line(payload::dropped(missing));
                    told = true;
                  }
                  for (const auto& payload : batch) text += chain.line(payload);
@@ -208,11 +208,11 @@ std::string SessionWriter::last_hash() const {
 
 void Recorder::header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
                       const SessionSettings& settings, const link::LinkStatus& link_before) {
-  push(record::header());
-  push(record::program(version));
-  push(record::started(local_time, pid, host));
-  push(record::settings(settings));
-  push(record::link(-1, link_before));
+  push(payload::header());
+  push(payload::program(version));
+  push(payload::started(local_time, pid, host));
+  push(payload::settings(settings));
+  push(payload::link(-1, link_before));
   link_state_ = link_before.state;
   link_motion_ = link_before.motion_allowed;
   link_detail_ = link_before.detail;
@@ -221,63 +221,63 @@ void Recorder::header(std::string_view version, std::string_view local_time, lon
 void Recorder::pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events) {
   t_ms_ = t_ms;
   if (after_pause_) {
-    push(record::pause(t_ms));
+    push(payload::pause(t_ms));
     after_pause_ = false;
   }
-  for (const auto& e : events) push(record::event(e));
+  for (const auto& e : events) push(payload::event(e));
 }
 
-void Recorder::request(Request request) {
-  if (request == Request::kNone) return;
+void Recorder::request(run::Request request) {
+  if (request == run::Request::kNone) return;
   // A stop asked once is answered on every tick after it until the run ends:
   // one record says it (one Ctrl-C, one `request stop`).
-  if (request == Request::kShutdown && std::exchange(stop_recorded_, true)) return;
-  push(record::request(t_ms_, request));
+  if (request == run::Request::kShutdown && std::exchange(stop_recorded_, true)) return;
+  push(payload::request(t_ms_, request));
 }
 
-void Recorder::reloaded(const ReloadOutcome& outcome, const SessionSettings* settings) {
-  if (outcome.ok && settings != nullptr) push(record::settings(*settings));
-  push(record::reload(t_ms_, outcome));
+void Recorder::reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) {
+  if (outcome.ok && settings != nullptr) push(payload::settings(*settings));
+  push(payload::reload(t_ms_, outcome));
 }
 
 void Recorder::input_end(std::int64_t t_ms) {
   if (input_ended_) return;
   input_ended_ = true;
-  push(record::input_end(t_ms));
+  push(payload::input_end(t_ms));
 }
 
-void Recorder::observe(const TickReport& r) {
-  if (!r.gate_fault.empty()) push(record::gate(r.t_ms, r.gate_fault));
+void Recorder::observe(const run::TickReport& r) {
+  if (!r.gate_fault.empty()) push(payload::gate(r.t_ms, r.gate_fault));
   if (first_ || r.state != state_) {
     state_ = r.state;
-    push(record::state(r.t_ms, r.state));
+    push(payload::state(r.t_ms, r.state));
   }
   if (r.stopped_by != stopped_by_) {
     stopped_by_ = r.stopped_by;
     if (r.stopped_by) {
-      push(record::stop(r.t_ms, *r.stopped_by, r.stopper_name()));
+      push(payload::stop(r.t_ms, *r.stopped_by, r.stopper_name()));
     }
   }
   if (r.reset_by != reset_by_) {
     reset_by_ = r.reset_by;
-    if (r.reset_by) push(record::reset(r.t_ms, *r.reset_by));
+    if (r.reset_by) push(payload::reset(r.t_ms, *r.reset_by));
   }
   if (first_ || r.engine.layer != layer_) {
     layer_ = r.engine.layer;
-    push(record::layer(r.t_ms, layer_));
+    push(payload::layer(r.t_ms, layer_));
   }
   if (r.link.state != link_state_ || r.link.motion_allowed != link_motion_ || r.link.detail != link_detail_) {
     link_state_ = r.link.state;
     link_motion_ = r.link.motion_allowed;
     link_detail_ = r.link.detail;
-    push(record::link(r.t_ms, r.link));
+    push(payload::link(r.t_ms, r.link));
   }
   const std::int64_t gap = r.tick - last_tick_ - 1;
   if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_) {
     data_ = r.data;
     result_ = r.result;
     sent_ = r.sent;
-    push(record::frame(r, gap));
+    push(payload::frame(r, gap));
   }
   if (r.sent && r.result == link::SendResult::kSent) ++frames_sent_;
   last_tick_ = r.tick;
@@ -285,6 +285,6 @@ void Recorder::observe(const TickReport& r) {
   first_ = false;
 }
 
-void Recorder::end(std::string_view why) { push(record::end(last_t_ms_, last_tick_, frames_sent_, why)); }
+void Recorder::end(std::string_view why) { push(payload::end(last_t_ms_, last_tick_, frames_sent_, why)); }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -12,10 +12,10 @@
 #include <sstream>
 #include <string>
 
-#include "andros/run/recorder.hpp"
+#include "andros/record/recorder.hpp"
 #include "support/temp_dir.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 std::string file_text(const std::filesystem::path& path) {
@@ -39,9 +39,9 @@ TEST(RecordLimits, AFileSizeLimitCutsBackToTheLastWholeRecordAndSaysWhatWasDropp
     const rlimit limit{10'000, 10'000};
     setrlimit(RLIMIT_FSIZE, &limit);
     SessionWriter writer(std::make_unique<FileRecordSink>(path.string()));
-    writer.push(record::header());
+    writer.push(payload::header());
     for (int i = 0; i < 300; ++i) writer.push(event(i));
-    writer.push(record::end(12000, 300, 0, "end"));
+    writer.push(payload::end(12000, 300, 0, "end"));
     const bool whole = writer.close(5000);
     _exit(!whole && writer.lost() > 0 && writer.error() == "File too large" ? 0 : 3);
   }
@@ -87,13 +87,13 @@ TEST(RecordLimits, AfterAFailedWriteTheChainGoesOnFromTheLastWholeRecordWithADro
   std::string text;
   auto sink = std::make_unique<FullForAWhileSink>(text);
   SessionWriter writer(std::move(sink));
-  writer.push(record::header());
+  writer.push(payload::header());
   // Let the first write happen on its own before the rest come.
   for (int spin = 0; spin < 5000 && writer.written() == 0; ++spin) usleep(1000);
   ASSERT_EQ(writer.written(), 1u);
   for (int i = 0; i < 5; ++i) writer.push(event(i));
   for (int spin = 0; spin < 5000 && writer.lost() == 0; ++spin) usleep(1000);
-  writer.push(record::end(200, 5, 0, "end"));
+  writer.push(payload::end(200, 5, 0, "end"));
   EXPECT_FALSE(writer.close(5000));
   EXPECT_EQ(writer.error(), "No space left on device");
   const auto path = dir.write("s.andros-session", text);
@@ -126,12 +126,12 @@ TEST(RecordLimits, OneStopRequestIsOneRecordHoweverManyTicksAnswerIt) {
     SessionWriter writer(std::make_unique<MemorySink>(text));
     Recorder recorder(writer);
     recorder.pumped(40, {});
-    recorder.request(Request::kShutdown);  // Ctrl-C: the stop is asked again on each tick of the shutdown
+    recorder.request(run::Request::kShutdown);  // Ctrl-C: the stop is asked again on each tick of the shutdown
     recorder.pumped(80, {});
-    recorder.request(Request::kShutdown);
+    recorder.request(run::Request::kShutdown);
     recorder.pumped(120, {});
-    recorder.request(Request::kShutdown);
-    recorder.request(Request::kReload);
+    recorder.request(run::Request::kShutdown);
+    recorder.request(run::Request::kReload);
     writer.close(5000);
   }
   EXPECT_EQ(text.find("request 80"), std::string::npos) << text;
@@ -142,7 +142,7 @@ TEST(RecordLimits, OneStopRequestIsOneRecordHoweverManyTicksAnswerIt) {
 TEST(RecordLimits, ARecordLongerThanAReaderTakesIsDroppedNotWritten) {
   std::string text;
   SessionWriter writer(std::make_unique<MemorySink>(text));
-  EXPECT_TRUE(writer.push(record::header()));
+  EXPECT_TRUE(writer.push(payload::header()));
   EXPECT_FALSE(writer.push("settings " + std::string(kMaxSessionLine, 'x')));
   EXPECT_EQ(writer.dropped(), 1u);
   writer.close(5000);
@@ -151,4 +151,4 @@ TEST(RecordLimits, ARecordLongerThanAReaderTakesIsDroppedNotWritten) {
 }
 
 }  // namespace
-}  // namespace andros::run
+}  // namespace andros::record

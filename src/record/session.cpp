@@ -1,4 +1,4 @@
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -11,7 +11,7 @@
 #include "andros/base/text.hpp"
 #include "andros/input/events.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 nlohmann::json settings_json(const SessionSettings& s) {
@@ -70,23 +70,23 @@ std::vector<MappingSource> read_mapping_sources(const std::vector<std::string>& 
   return out;
 }
 
-std::string_view stopper_word(StopBy by) {
+std::string_view stopper_word(run::StopBy by) {
   switch (by) {
-    case StopBy::kOperator: return "operator";
-    case StopBy::kSupervisor: return "supervisor";
-    case StopBy::kGate: return "gate";
+    case run::StopBy::kOperator: return "operator";
+    case run::StopBy::kSupervisor: return "supervisor";
+    case run::StopBy::kGate: return "gate";
   }
   return "?";
 }
 
-std::optional<StopBy> parse_stopper(std::string_view word) {
-  for (const auto by : {StopBy::kOperator, StopBy::kSupervisor, StopBy::kGate}) {
+std::optional<run::StopBy> parse_stopper(std::string_view word) {
+  for (const auto by : {run::StopBy::kOperator, run::StopBy::kSupervisor, run::StopBy::kGate}) {
     if (stopper_word(by) == word) return by;
   }
   return std::nullopt;
 }
 
-namespace record {
+namespace payload {
 
 std::string header() { return std::string(kSessionMagic) + " " + std::to_string(kSessionFormat); }
 std::string program(std::string_view version) { return "program andros-bridge " + std::string(version); }
@@ -95,29 +95,29 @@ std::string started(std::string_view local_time, long pid, std::string_view host
 }
 std::string settings(const SessionSettings& s) { return "settings " + settings_json(s).dump(); }
 std::string event(const input::InputEvent& e) { return "event " + input::format_event(e); }
-std::string request(std::int64_t t_ms, Request r) {
+std::string request(std::int64_t t_ms, run::Request r) {
   return "request " + std::to_string(t_ms) + " " + std::string(request_name(r));
 }
 std::string pause(std::int64_t t_ms) { return "pause " + std::to_string(t_ms); }
-std::string reload(std::int64_t t_ms, const ReloadOutcome& o) {
+std::string reload(std::int64_t t_ms, const run::ReloadOutcome& o) {
   return "reload " + std::to_string(t_ms) + (o.ok ? " ok " : " failed ") + nlohmann::json(o.message).dump();
 }
-std::string frame(const TickReport& r, std::int64_t gap) {
+std::string frame(const run::TickReport& r, std::int64_t gap) {
   FrameRecord f{.offered = r.sent, .result = r.result};
   return "frame " + std::to_string(r.tick) + " " + std::to_string(r.t_ms) + " " + std::string(result_name(f)) + " " +
          protocol::to_hex(r.data) + " gap=" + std::to_string(gap);
 }
-std::string state(std::int64_t t_ms, OpState s) {
-  return "state " + std::to_string(t_ms) + " " + std::string(to_string(s));
+std::string state(std::int64_t t_ms, run::OpState s) {
+  return "state " + std::to_string(t_ms) + " " + std::string(run::to_string(s));
 }
 std::string gate(std::int64_t t_ms, std::string_view fault) {
   return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
 }
-std::string stop(std::int64_t t_ms, StopBy by, std::string_view name) {
+std::string stop(std::int64_t t_ms, run::StopBy by, std::string_view name) {
   return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " +
          nlohmann::json(std::string(name)).dump();
 }
-std::string reset(std::int64_t t_ms, StopBy by) {
+std::string reset(std::int64_t t_ms, run::StopBy by) {
   return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by));
 }
 std::string layer(std::int64_t t_ms, std::string_view layer) {
@@ -134,7 +134,7 @@ std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_
          std::to_string(frames_sent) + " " + nlohmann::json(std::string(why)).dump();
 }
 
-}  // namespace record
+}  // namespace payload
 
 const FrameRecord* Session::frame_at(std::int64_t tick) const {
   const auto it = std::upper_bound(frames.begin(), frames.end(), tick,
@@ -168,30 +168,30 @@ std::int64_t Session::length_ms() const {
   return frames.empty() ? 0 : frames.back().t_ms;
 }
 
-std::string_view request_name(Request r) {
+std::string_view request_name(run::Request r) {
   switch (r) {
-    case Request::kNone: return "none";
-    case Request::kShutdown: return "stop";
-    case Request::kSuspend: return "suspend";
-    case Request::kResumed: return "resumed";
-    case Request::kReload: return "reload";
+    case run::Request::kNone: return "none";
+    case run::Request::kShutdown: return "stop";
+    case run::Request::kSuspend: return "suspend";
+    case run::Request::kResumed: return "resumed";
+    case run::Request::kReload: return "reload";
   }
   return "?";
 }
 
-std::optional<Request> parse_request(std::string_view name) {
-  for (const auto r : {Request::kShutdown, Request::kSuspend, Request::kResumed, Request::kReload}) {
+std::optional<run::Request> parse_request(std::string_view name) {
+  for (const auto r : {run::Request::kShutdown, run::Request::kSuspend, run::Request::kResumed, run::Request::kReload}) {
     if (request_name(r) == name) return r;
   }
   return std::nullopt;
 }
 
-std::optional<OpState> parse_op_state(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(OpState::kStopping); ++i) {
-    const auto s = static_cast<OpState>(i);
-    if (to_string(s) == name) return s;
+std::optional<run::OpState> parse_op_state(std::string_view name) {
+  for (int i = 0; i <= static_cast<int>(run::OpState::kStopping); ++i) {
+    const auto s = static_cast<run::OpState>(i);
+    if (run::to_string(s) == name) return s;
   }
   return std::nullopt;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -4,9 +4,9 @@
 #include <limits>
 
 #include "andros/base/text.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 constexpr std::size_t kHashDigits = 64;
@@ -46,4 +46,4 @@ bool SessionLines::cut_short(std::string_view line) {
   return true;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -21,7 +21,7 @@
 #include "andros/run/bridge.hpp"
 #include "andros/run/operating_state.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 /// The first record's kind: a file whose first line is `0 andros-session ...` is a session.
 inline constexpr std::string_view kSessionMagic = "andros-session";
@@ -90,32 +90,32 @@ struct SessionSettings {
 };
 
 /// The payloads of the records, one a function (no SEQ, no hash).
-namespace record {
+namespace payload {
 std::string header();
 std::string program(std::string_view version);
 std::string started(std::string_view local_time, long pid, std::string_view host);
 /// `settings {json}`: the settings and the mapping's files (text and SHA-256).
 std::string settings(const SessionSettings& settings);
 std::string event(const input::InputEvent& event);
-std::string request(std::int64_t t_ms, Request request);
+std::string request(std::int64_t t_ms, run::Request request);
 std::string pause(std::int64_t t_ms);
-std::string reload(std::int64_t t_ms, const ReloadOutcome& outcome);
+std::string reload(std::int64_t t_ms, const run::ReloadOutcome& outcome);
 /// `frame TICK T RESULT DATA gap=N`: written when the frame, its result or
 /// the tick's place changes; the ticks between repeat the last one.
-std::string frame(const TickReport& report, std::int64_t gap);
-std::string state(std::int64_t t_ms, OpState state);
+std::string frame(const run::TickReport& report, std::int64_t gap);
+std::string state(std::int64_t t_ms, run::OpState state);
 /// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
 std::string gate(std::int64_t t_ms, std::string_view fault);
 /// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
-std::string stop(std::int64_t t_ms, StopBy by, std::string_view name);
-std::string reset(std::int64_t t_ms, StopBy by);
+std::string stop(std::int64_t t_ms, run::StopBy by, std::string_view name);
+std::string reset(std::int64_t t_ms, run::StopBy by);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
 std::string input_end(std::int64_t t_ms);
 std::string dropped(std::uint64_t count);
 std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why);
-}  // namespace record
+}  // namespace payload
 
 /// What verify_session() found.
 struct VerifyResult {
@@ -155,7 +155,7 @@ std::string_view result_name(const FrameRecord& frame);
 
 struct ReloadRecord {
   std::int64_t t_ms = 0;
-  ReloadOutcome outcome;
+  run::ReloadOutcome outcome;
   std::optional<SessionSettings> settings;  ///< what an ok reload put in place
 };
 
@@ -168,7 +168,7 @@ struct LinkRecord {
 
 struct StateRecord {
   std::int64_t t_ms = 0;
-  OpState state = OpState::kNoLink;
+  run::OpState state = run::OpState::kNoLink;
 };
 
 /// `stop T operator|supervisor|gate "NAME"` (whose stop latched, or became
@@ -177,7 +177,7 @@ struct StateRecord {
 struct StopRecord {
   std::int64_t t_ms = 0;
   bool reset = false;  ///< a reset; false: a stop
-  StopBy by = StopBy::kOperator;
+  run::StopBy by = run::StopBy::kOperator;
   std::string name;  ///< the controller's name (a stop's)
 };
 
@@ -229,11 +229,11 @@ struct Session {
 /// read, but for a last line cut short, which is left out (cut_short_line).
 Session read_session(const std::filesystem::path& path);
 
-std::string_view request_name(Request request);
-std::optional<Request> parse_request(std::string_view name);
-std::optional<OpState> parse_op_state(std::string_view name);
+std::string_view request_name(run::Request request);
+std::optional<run::Request> parse_request(std::string_view name);
+std::optional<run::OpState> parse_op_state(std::string_view name);
 /// A stop record's WHO: "operator", "supervisor", "gate" (the frame gate's trip).
-std::string_view stopper_word(StopBy by);
-std::optional<StopBy> parse_stopper(std::string_view word);
+std::string_view stopper_word(run::StopBy by);
+std::optional<run::StopBy> parse_stopper(std::string_view word);
 
-}  // namespace andros::run
+}  // namespace andros::record

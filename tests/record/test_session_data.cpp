@@ -12,10 +12,10 @@
 #include "andros/base/error.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/mapping/loader.hpp"
-#include "andros/run/session_replay.hpp"
+#include "andros/record/session_replay.hpp"
 #include "support/temp_dir.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 namespace fs = std::filesystem;
@@ -103,4 +103,4 @@ TEST(SessionData, ARecordedBaseOfAnotherNameIsNotTaken) {
 }
 
 }  // namespace
-}  // namespace andros::run
+}  // namespace andros::record

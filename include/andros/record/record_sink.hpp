@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace andros::run {
+namespace andros::record {
 
 class RecordSink {
  public:
@@ -39,4 +39,4 @@ class FileRecordSink final : public RecordSink {
   bool broken_ = false;      ///< a failed write could not be cut back: nothing more is appended
 };
 
-}  // namespace andros::run
+}  // namespace andros::record

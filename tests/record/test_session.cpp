@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "support/temp_dir.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 /// A small session, whole: its lines.
@@ -23,14 +23,14 @@ std::vector<std::string> session_lines() {
     line.pop_back();  // newline
     lines.push_back(line);
   };
-  add(record::header());
-  add(record::program("9.9.9"));
+  add(payload::header());
+  add(payload::program("9.9.9"));
   add("event 0       connect     pad");
   add("event 40      button      a 1");
   add("state 40 enabled");
   add("event 80      button      a 0");
   add("state 80 not enabled");
-  add(record::end(120, 3, 4, "SIGINT"));
+  add(payload::end(120, 3, 4, "SIGINT"));
   return lines;
 }
 
@@ -142,18 +142,19 @@ TEST(Session, RecordsReadBack) {
       .input = "sdl",
       .config = "",
       .sources = {{"/m/hd1.yaml", "robot: HD1\nextends: common.yaml\n"}, {"/m/common.yaml", "x: 1\n"}}};
-  TickReport r;
+  run::TickReport r;
   r.tick = 7;
   r.t_ms = 280;
   r.data[3] = 0xAB;
   r.result = link::SendResult::kBusy;
   std::string text;
   for (const auto& p :
-       {record::header(), record::program("1.0"), record::started("2024-05-01T12:00:00+0200", 42, "bench"),
-        record::settings(settings), record::link(-1, link::LinkStatus{}), record::frame(r, 2),
-        record::request(280, Request::kSuspend), record::pause(1300), record::layer(280, "arm"),
-        record::state(280, OpState::kNotEnabled), record::gate(280, "drive = 140 while not enabled (neutral is 128)"),
-        record::input_end(400), record::end(400, 10, 9, "end of the input")}) {
+       {payload::header(), payload::program("1.0"), payload::started("2024-05-01T12:00:00+0200", 42, "bench"),
+        payload::settings(settings), payload::link(-1, link::LinkStatus{}), payload::frame(r, 2),
+        payload::request(280, run::Request::kSuspend), payload::pause(1300), payload::layer(280, "arm"),
+        payload::state(280, run::OpState::kNotEnabled),
+        payload::gate(280, "drive = 140 while not enabled (neutral is 128)"), payload::input_end(400),
+        payload::end(400, 10, 9, "end of the input")}) {
     text += chain.line(p);
   }
   const auto s = read_session(dir.write("r.andros-session", text));
@@ -182,7 +183,7 @@ TEST(Session, RecordsReadBack) {
   ASSERT_EQ(s.layers.size(), 1u);
   EXPECT_EQ(s.layers[0].text, "arm");
   ASSERT_EQ(s.states.size(), 1u);
-  EXPECT_EQ(s.states[0].state, OpState::kNotEnabled);
+  EXPECT_EQ(s.states[0].state, run::OpState::kNotEnabled);
   EXPECT_EQ(s.input_end, 400);
   ASSERT_TRUE(s.end);
   EXPECT_EQ(s.end->frames_sent, 9u);
@@ -200,23 +201,23 @@ TEST(Session, StopAndResetRecordsReadBack) {
   settings.rate_millihertz = 25'000;
   settings.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
   for (const auto& p :
-       {record::header(), record::program("1.0"), record::settings(settings),
-        record::stop(120, StopBy::kOperator, "Pad A"), record::stop(160, StopBy::kSupervisor, "Pad \"B\""),
-        record::reset(2200, StopBy::kSupervisor), record::end(2400, 60, 60, "x")}) {
+       {payload::header(), payload::program("1.0"), payload::settings(settings),
+        payload::stop(120, run::StopBy::kOperator, "Pad A"), payload::stop(160, run::StopBy::kSupervisor, "Pad \"B\""),
+        payload::reset(2200, run::StopBy::kSupervisor), payload::end(2400, 60, 60, "x")}) {
     text += chain.line(p);
   }
-  EXPECT_EQ(record::stop(120, StopBy::kOperator, "Pad A"), "stop 120 operator \"Pad A\"");
-  EXPECT_EQ(record::reset(2200, StopBy::kSupervisor), "reset 2200 supervisor");
+  EXPECT_EQ(payload::stop(120, run::StopBy::kOperator, "Pad A"), "stop 120 operator \"Pad A\"");
+  EXPECT_EQ(payload::reset(2200, run::StopBy::kSupervisor), "reset 2200 supervisor");
   const auto s = read_session(dir.write("r.andros-session", text));
   ASSERT_EQ(s.stops.size(), 3u);
   EXPECT_FALSE(s.stops[0].reset);
-  EXPECT_EQ(s.stops[0].by, StopBy::kOperator);
+  EXPECT_EQ(s.stops[0].by, run::StopBy::kOperator);
   EXPECT_EQ(s.stops[0].name, "Pad A");
-  EXPECT_EQ(s.stops[1].by, StopBy::kSupervisor);
+  EXPECT_EQ(s.stops[1].by, run::StopBy::kSupervisor);
   EXPECT_EQ(s.stops[1].name, "Pad \"B\"");
   EXPECT_TRUE(s.stops[2].reset);
   EXPECT_EQ(s.stops[2].t_ms, 2200);
-  EXPECT_EQ(s.stops[2].by, StopBy::kSupervisor);
+  EXPECT_EQ(s.stops[2].by, run::StopBy::kSupervisor);
 }
 
 /// The lines of a session whose settings record is made from `settings` and
@@ -225,8 +226,8 @@ std::string session_text(const std::string& header, const SessionSettings& setti
                          const std::function<std::string(std::string)>& edit) {
   RecordChain chain;
   std::string text;
-  for (const auto& p : {header, record::program("0.1.0"), edit(record::settings(settings)),
-                        record::end(80, 1, 1, "x")}) {  // tick 1 at 12.5 Hz
+  for (const auto& p : {header, payload::program("0.1.0"), edit(payload::settings(settings)),
+                        payload::end(80, 1, 1, "x")}) {  // tick 1 at 12.5 Hz
     text += chain.line(p);
   }
   return text;
@@ -243,10 +244,10 @@ SessionSettings small_settings() {
 
 // The rate is written in millihertz under a name that says so.
 TEST(Session, TheRateIsWrittenInMillihertz) {
-  const auto line = record::settings(small_settings());
+  const auto line = payload::settings(small_settings());
   EXPECT_NE(line.find("\"rate_millihertz\":12500"), std::string::npos) << line;
   EXPECT_EQ(line.find("rate_mhz"), std::string::npos) << line;
-  EXPECT_EQ(record::header(), "andros-session 2");
+  EXPECT_EQ(payload::header(), "andros-session 2");
 }
 
 // Format 1 named the same value `rate_mhz`: such a session still reads back.
@@ -268,4 +269,4 @@ TEST(Session, AFormatFromTheFutureIsRefused) {
 }
 
 }  // namespace
-}  // namespace andros::run
+}  // namespace andros::record

@@ -14,13 +14,13 @@
 #include "andros/input/script_input.hpp"
 #include "andros/link/fault_link.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/record/recorded_loop.hpp"
+#include "andros/record/recorder.hpp"
+#include "andros/record/session_replay.hpp"
 #include "andros/run/engine_frames.hpp"
-#include "andros/run/recorded_loop.hpp"
-#include "andros/run/recorder.hpp"
-#include "andros/run/session_replay.hpp"
 #include "support/temp_dir.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 const std::string kMappings = ANDROS_MAPPINGS_DIR;
@@ -75,8 +75,8 @@ std::string busy_script(int seconds) {
 /// clock; with the recorder writing to writer when given.
 std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWriter* writer) {
   input::ScriptInput script(script_path);
-  ReloadableFrames frames(
-      make_engine_frames(mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
+  run::ReloadableFrames frames(run::make_engine_frames(
+      mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
   std::vector<protocol::Frame> got;
   link::SinkLink link([&got](std::int64_t, const protocol::Frame& f) { got.push_back(f); });
   VirtualClock clock;
@@ -84,9 +84,9 @@ std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWri
   std::optional<RecordingInput> recorded;
   if (writer != nullptr) recorded.emplace(script, recorder.emplace(*writer));
   input::InputSource& input = recorded ? static_cast<input::InputSource&>(*recorded) : script;
-  Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
+  run::Bridge bridge(clock, input, frames, link, run::BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
   bridge.run([] { return false; },
-             [&](const TickReport& r) {
+             [&](const run::TickReport& r) {
                if (recorder) recorder->observe(r);
              });
   if (recorder) recorder->end("end of the input");
@@ -188,7 +188,7 @@ struct RecordedRun {
   testing::TempDir dir;
   std::filesystem::path session = dir.path() / "live.andros-session";
   std::vector<std::pair<std::int64_t, protocol::DataBytes>> delivered;
-  std::vector<TickReport> reports;
+  std::vector<run::TickReport> reports;
 
   void run(const std::string& script_text) {
     const auto script_path = dir.write("drive.events", script_text);
@@ -207,33 +207,34 @@ struct RecordedRun {
                         .config = "",
                         .sources = read_mapping_sources(m->chain)};
       return std::make_pair(
-          make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})), s);
+          run::make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})), s);
     };
     auto [first, settings] = engine_for(kMappings + "/hd1.yaml", false);
-    ReloadableFrames frames(std::move(first));
+    run::ReloadableFrames frames(std::move(first));
     VirtualClock clock;
     link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
     SessionWriter writer(std::make_unique<FileRecordSink>(session.string()));
     Recorder recorder(writer);
     recorder.header("test", "2024-05-01T12:00:00+0200", 1, "bench", settings, link.status());
     RecordingInput input(script, recorder);
-    Bridge bridge(clock, input, frames, link, BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
+    run::Bridge bridge(clock, input, frames, link,
+                       run::BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
 
     int polls = 0;
     int reload_ticks = 0;
     SessionSettings reloaded;
-    RunControl control;
-    control.poll = [&] { return ++polls == 150 ? Request::kSuspend : Request::kNone; };  // Ctrl-Z at 6 s
-    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };                        // stopped 1.23 s
+    run::RunControl control;
+    control.poll = [&] { return ++polls == 150 ? run::Request::kSuspend : run::Request::kNone; };  // Ctrl-Z at 6 s
+    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };                                  // stopped 1.23 s
     control.begin_reload = [&](const std::string&) { reload_ticks = 0; };
-    control.finish_reload = [&]() -> std::optional<ReloadOutcome> {
+    control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
       if (++reload_ticks < 4) return std::nullopt;  // the worker still reads
       auto [next, s] = engine_for(kMappings + "/f6a.yaml", true);
       frames.replace(std::move(next));
       reloaded = s;
-      return ReloadOutcome{true, "reloaded", true};
+      return run::ReloadOutcome{true, "reloaded", true};
     };
-    bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const TickReport& r) {
+    bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const run::TickReport& r) {
       recorder.observe(r);
       reports.push_back(r);
       if (r.sent && r.result == link::SendResult::kSent) delivered.emplace_back(r.tick, r.data);
@@ -281,10 +282,10 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
   EXPECT_EQ(std::count_if(s.frames.begin(), s.frames.end(), [](const FrameRecord& f) { return f.gap == 2; }), 2);
   EXPECT_EQ(s.pauses.size(), 1u);
   EXPECT_EQ(s.reloads.size(), 1u);
-  EXPECT_TRUE(
-      std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kNoLink; }));
-  EXPECT_TRUE(
-      std::any_of(s.states.begin(), s.states.end(), [](const StateRecord& r) { return r.state == OpState::kEnabled; }));
+  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(),
+                          [](const StateRecord& r) { return r.state == run::OpState::kNoLink; }));
+  EXPECT_TRUE(std::any_of(s.states.begin(), s.states.end(),
+                          [](const StateRecord& r) { return r.state == run::OpState::kEnabled; }));
   ASSERT_TRUE(s.end);
   EXPECT_EQ(s.end->frames_sent, live.delivered.size());
 
@@ -295,8 +296,9 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
     EXPECT_EQ(f->data, data) << "tick " << tick;
   }
 
-  std::vector<TickReport> replayed;
-  const auto result = replay_session(s, load_recorded_mapping, [&](const TickReport& r) { replayed.push_back(r); });
+  std::vector<run::TickReport> replayed;
+  const auto result =
+      replay_session(s, load_recorded_mapping, [&](const run::TickReport& r) { replayed.push_back(r); });
   EXPECT_TRUE(result.identical) << result.difference;
   EXPECT_EQ(result.compared, live.delivered.size());
   // The same ticks and the same states, not only the same bytes.
@@ -315,12 +317,12 @@ TEST(Recorder, WhoStoppedAndWhoResetAreRecordedAndReplayed) {
   const Session s = read_session(live.session);
   ASSERT_EQ(s.stops.size(), 2u);
   EXPECT_FALSE(s.stops[0].reset);
-  EXPECT_EQ(s.stops[0].by, StopBy::kOperator);
+  EXPECT_EQ(s.stops[0].by, run::StopBy::kOperator);
   EXPECT_EQ(s.stops[0].name, "Pad A");
   EXPECT_TRUE(s.stops[1].reset);
-  EXPECT_EQ(s.stops[1].by, StopBy::kOperator);
+  EXPECT_EQ(s.stops[1].by, run::StopBy::kOperator);
   EXPECT_GE(s.stops[1].t_ms - s.stops[0].t_ms, 2000);
-  const auto result = replay_session(s, load_recorded_mapping, [](const TickReport&) {});
+  const auto result = replay_session(s, load_recorded_mapping, [](const run::TickReport&) {});
   EXPECT_TRUE(result.identical) << result.difference;
 }
 
@@ -346,4 +348,4 @@ TEST(Recorder, ASessionWithDroppedRecordsIsNotReplayed) {
 }
 
 }  // namespace
-}  // namespace andros::run
+}  // namespace andros::record

@@ -1,4 +1,4 @@
-#include "andros/run/record_sink.hpp"
+#include "andros/record/record_sink.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -10,7 +10,7 @@
 #include "andros/base/error.hpp"
 #include "andros/base/write_fully.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 FileRecordSink::FileRecordSink(const std::string& path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_APPEND, 0640);
@@ -50,4 +50,4 @@ bool FileRecordSink::sync(std::string& error) {
   return false;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -1,12 +1,12 @@
-// verify_session (andros/run/session.hpp): the chain, record by record.
+// verify_session (andros/record/session.hpp): the chain, record by record.
 #include <string>
 
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
-#include "andros/run/session.hpp"
+#include "andros/record/session.hpp"
 #include "session_lines.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 std::string chained_hash(const Sha256Digest& prev, std::string_view payload) {
@@ -115,4 +115,4 @@ std::string cut_short_text(const VerifyResult& result) {
          " records before it are intact";
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

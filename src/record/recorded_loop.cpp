@@ -1,8 +1,8 @@
-#include "andros/run/recorded_loop.hpp"
+#include "andros/record/recorded_loop.hpp"
 
 #include <utility>
 
-namespace andros::run {
+namespace andros::record {
 
 void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
   state.keep_applied(true);
@@ -16,9 +16,10 @@ bool RecordingInput::finished(std::int64_t now_ms) const {
   return done;
 }
 
-RunControl recorded_control(RunControl control, Recorder& recorder, std::function<SessionSettings()> settings) {
+run::RunControl recorded_control(run::RunControl control, Recorder& recorder,
+                                 std::function<SessionSettings()> settings) {
   control.poll = [poll = std::move(control.poll), &recorder] {
-    const Request r = poll();
+    const run::Request r = poll();
     recorder.request(r);
     return r;
   };
@@ -41,4 +42,4 @@ RunControl recorded_control(RunControl control, Recorder& recorder, std::functio
   return control;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

@@ -1,4 +1,4 @@
-#include "andros/run/session_replay.hpp"
+#include "andros/record/session_replay.hpp"
 
 #include <optional>
 
@@ -6,14 +6,14 @@
 #include "andros/mapping/loader.hpp"
 #include "andros/run/engine_frames.hpp"
 
-namespace andros::run {
+namespace andros::record {
 namespace {
 
 /// The session as the loop's world: its clock, input, link and controls,
 /// with where the replay is now.
 class Playback {
  public:
-  Playback(const Session& s, const SourcesLoader& load, ReloadableFrames& frames)
+  Playback(const Session& s, const SourcesLoader& load, run::ReloadableFrames& frames)
       : s_(s), load_(load), frames_(frames), schedule_(s.settings.rate_millihertz) {
     last_tick_ = s.end ? s.end->last_tick : (s.frames.empty() ? 0 : s.frames.back().tick);
   }
@@ -44,12 +44,12 @@ class Playback {
   void start() { link_ = status_at(-1); }
 
   // The controls.
-  Request poll() {
-    if (expected_tick_ > last_tick_) return Request::kShutdown;  // a session cut short (or astray): ends here
+  run::Request poll() {
+    if (expected_tick_ > last_tick_) return run::Request::kShutdown;  // a session cut short (or astray): ends here
     if (next_request_ < s_.requests.size() && s_.requests[next_request_].t_ms == now_ms_) {
       return *parse_request(s_.requests[next_request_++].text);
     }
-    return Request::kNone;
+    return run::Request::kNone;
   }
   void pause() {
     // The live process was stopped until the pause's pump: the clock goes
@@ -60,10 +60,10 @@ class Playback {
     move_clock_to(std::max(resumed_ms * kNsPerMs, ns_due(next - 1)));
     expected_tick_ = next;
   }
-  std::optional<ReloadOutcome> finish_reload() {
+  std::optional<run::ReloadOutcome> finish_reload() {
     if (next_reload_ >= s_.reloads.size() || s_.reloads[next_reload_].t_ms != now_ms_) return std::nullopt;
     const ReloadRecord& r = s_.reloads[next_reload_++];
-    ReloadOutcome outcome = r.outcome;
+    run::ReloadOutcome outcome = r.outcome;
     if (outcome.ok && r.settings) {
       frames_.replace(engine_frames(*r.settings));
       outcome.weapons = r.settings->weapons;  // the frame gate's rule, from the settings put in place
@@ -81,8 +81,8 @@ class Playback {
     if (!paused) move_clock_to(ns_due(*jump));  // pause() moves it for a pause
   }
 
-  std::unique_ptr<FrameSource> engine_frames(const SessionSettings& settings) {
-    return make_engine_frames(mapping::Engine(
+  std::unique_ptr<run::FrameSource> engine_frames(const SessionSettings& settings) {
+    return run::make_engine_frames(mapping::Engine(
         load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
   }
 
@@ -114,7 +114,7 @@ class Playback {
 
   const Session& s_;
   const SourcesLoader& load_;
-  ReloadableFrames& frames_;
+  run::ReloadableFrames& frames_;
   timing::TickSchedule schedule_;
   VirtualClock clock_;
   std::int64_t now_ms_ = -1;
@@ -180,25 +180,25 @@ mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& so
   return mapping::load_recorded_chain(files);
 }
 
-SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, const Bridge::Observer& observe) {
+SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, const run::Bridge::Observer& observe) {
   if (s.dropped != 0) {
     throw InputError(SourcePos{s.path}, std::to_string(s.dropped) +
                                             " records were dropped while it was recorded (the queue or the disk "
                                             "was full): it cannot be replayed exactly");
   }
   SessionReplayResult out;
-  ReloadableFrames frames(nullptr);
+  run::ReloadableFrames frames(nullptr);
   Playback playback(s, load, frames);
   frames.replace(playback.engine_frames(s.settings));
   playback.start();
   PlaybackInput input(playback, s.settings.supervised);
   PlaybackLink link(playback);
-  Bridge bridge(playback.clock(), input, frames, link,
-                BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
-                              .neutral_tail_at_end = true,
-                              .rules = {s.settings.weapons, s.settings.code}});
+  run::Bridge bridge(playback.clock(), input, frames, link,
+                     run::BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
+                                        .neutral_tail_at_end = true,
+                                        .rules = {s.settings.weapons, s.settings.code}});
 
-  RunControl control;
+  run::RunControl control;
   control.poll = [&] { return playback.poll(); };
   control.pause = [&] { playback.pause(); };
   control.begin_reload = [](const std::string&) {};  // its outcome is the session's
@@ -207,7 +207,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   const auto differ = [&out](std::string what) {
     if (out.difference.empty()) out.difference = std::move(what);
   };
-  bridge.run(control, [&](const TickReport& r) {
+  bridge.run(control, [&](const run::TickReport& r) {
     if (observe) observe(r);
     if (r.tick != playback.expected_tick()) {
       differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " + std::to_string(playback.expected_tick()) +
@@ -235,4 +235,4 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   return out;
 }
 
-}  // namespace andros::run
+}  // namespace andros::record

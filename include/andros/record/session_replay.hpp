@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "andros/mapping/engine.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/session.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 struct SessionReplayResult {
   std::uint64_t compared = 0;  ///< frames sent live that the replay reproduced byte for byte
@@ -36,6 +36,6 @@ mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& so
 /// Throws InputError for a session that cannot be replayed exactly (records
 /// dropped, an unknown mapping).
 SessionReplayResult replay_session(const Session& session, const SourcesLoader& load = load_recorded_mapping,
-                                   const Bridge::Observer& observe = {});
+                                   const run::Bridge::Observer& observe = {});
 
-}  // namespace andros::run
+}  // namespace andros::record

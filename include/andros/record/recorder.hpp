@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "andros/input/input_source.hpp"
+#include "andros/record/record_sink.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/record_sink.hpp"
-#include "andros/run/session.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 /// The writer thread and the queue in front of it. push() is called from one
 /// thread only (the loop's) and never waits: a single-producer ring.
@@ -75,12 +75,12 @@ class Recorder {
   void header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
               const SessionSettings& settings, const link::LinkStatus& link_before);
   void pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events);
-  void request(Request request);
+  void request(run::Request request);
   /// After a job-control stop: the loop's next pump is its end.
   void paused() { after_pause_ = true; }
-  void reloaded(const ReloadOutcome& outcome, const SessionSettings* settings);
+  void reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings);
   void input_end(std::int64_t t_ms);
-  void observe(const TickReport& report);
+  void observe(const run::TickReport& report);
   /// The run's last record.
   void end(std::string_view why);
 
@@ -98,9 +98,9 @@ class Recorder {
   bool stop_recorded_ = false;
   bool first_ = true;
   // What the last report said, for the records written only on a change.
-  OpState state_ = OpState::kNoLink;
-  std::optional<StopBy> stopped_by_;  ///< as the last report said
-  std::optional<StopBy> reset_by_;
+  run::OpState state_ = run::OpState::kNoLink;
+  std::optional<run::StopBy> stopped_by_;  ///< as the last report said
+  std::optional<run::StopBy> reset_by_;
   std::string layer_;
   link::LinkState link_state_ = link::LinkState::kConnecting;
   bool link_motion_ = true;
@@ -113,4 +113,4 @@ class Recorder {
   std::uint64_t frames_sent_ = 0;
 };
 
-}  // namespace andros::run
+}  // namespace andros::record

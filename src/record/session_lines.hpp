@@ -1,5 +1,5 @@
 #pragma once
-// Reading a session's lines (andros/run/session.hpp), for verify and read:
+// Reading a session's lines (andros/record/session.hpp), for verify and read:
 // within kMaxSessionLine, checked while reading (a longer line is refused
 // before more of it is held), and a last line cut short (a write cut off,
 // power lost, a full disk) told from an altered one.
@@ -11,7 +11,7 @@
 
 #include "andros/base/text_file.hpp"
 
-namespace andros::run {
+namespace andros::record {
 
 /// Splits `PAYLOAD HASH` (HASH: 64 hex digits); false when the line is not one.
 bool split_record(std::string_view line, std::string_view& payload, std::string_view& hash);
@@ -36,4 +36,4 @@ class SessionLines {
   TextReader text_;
 };
 
-}  // namespace andros::run
+}  // namespace andros::record
