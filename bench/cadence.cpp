@@ -13,7 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "andros/base/clock.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "bench_util.hpp"
@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
   const protocol::Frame frame = protocol::encode(neutral_frame());
 
   const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * kNsPerSecond;
-  StopRequest stop;
+  ShutdownRequest stop;
   std::vector<bench::Arrival> bridge_got;
   std::vector<bench::Arrival> plain_got;
   // When each loop's write() returned: the clock itself, before the pty's

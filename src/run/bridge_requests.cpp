@@ -42,7 +42,7 @@ void Bridge::on_fault(const input::InputEvent& fault) {
       reload_mapping_ = fault.name;
       apply(OpEvent::kReloadBegin);
       break;
-    case T::kStop: apply(OpEvent::kShutdown); break;
+    case T::kShutdown: apply(OpEvent::kShutdown); break;
     default: break;
   }
 }
