@@ -180,7 +180,8 @@ std::string_view request_name(run::Request r) {
 }
 
 std::optional<run::Request> parse_request(std::string_view name) {
-  for (const auto r : {run::Request::kShutdown, run::Request::kSuspend, run::Request::kResumed, run::Request::kReload}) {
+  for (const auto r :
+       {run::Request::kShutdown, run::Request::kSuspend, run::Request::kResumed, run::Request::kReload}) {
     if (request_name(r) == name) return r;
   }
   return std::nullopt;

@@ -55,6 +55,8 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
     const bool controllers_up = input_.connected() && (!source_.supervised() || input_.supervisor().connected());
     if (controllers_up != machine_.controller_up()) {
+      // Both needed and only the supervisor's missing: it is the one that comes back.
+      if (!controllers_up) supervisor_back_ = input_.connected();
       apply(controllers_up ? OpEvent::kControllerUp : OpEvent::kControllerDown);
     }
   }
@@ -103,6 +105,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
         if (machine_.neutral_due()) apply(OpEvent::kNeutralSent);
         if (const auto outcome = control.finish_reload()) {
           if (outcome->ok) gate_.set_weapons(outcome->weapons);
+          reload_refused_ = !outcome->ok;
           apply(OpEvent::kReloadDone);  // a suspend that waited for the outcome begins now
         }
       }
@@ -226,6 +229,9 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
   r.reset_by = machine_.reset_by();
+  r.entered_by = machine_.entered_by();
+  r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
+  r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;
   r.connected = input_.connected();
   r.controller = input_.name();
   r.supervised = source_.supervised();

@@ -212,6 +212,7 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
   }
   const OpState to = t->act == Act::kSettle ? settled() : t->to;
   const bool changed = to != state_;
+  if (changed) entered_by_ = event;
   state_ = to;
   effect.changed = effect.changed || changed;
   effect.rebase = effect.rebase || t->rebase;

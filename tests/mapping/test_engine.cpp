@@ -112,8 +112,9 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
 }
 
 TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
-  DrivenEngine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\nbindings:\n  - signal: tool_on\n    button: a\n"),
-                EngineOptions{});
+  DrivenEngine engine(
+      mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\nbindings:\n  - signal: tool_on\n    button: a\n"),
+      EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 axis lefttrigger 32767\n0 button a 1\n");
@@ -154,8 +155,8 @@ TEST(Engine, ADeadmanLetGoAndPressedWithinOneTickIsARelease) {
 
 TEST(Engine, APanicSqueezeWithinOneTickLatches) {
   DrivenEngine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\ndeadman_panic: 0.9\nbindings:\n"
-                                  "  - analog: drive\n    axis: lefty\n    invert: true\n"),
-                EngineOptions{});
+                                        "  - analog: drive\n    axis: lefty\n    invert: true\n"),
+                      EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n");
@@ -208,7 +209,7 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
 // and neutral(), carries 128.
 TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {
   DrivenEngine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"),
-                EngineOptions{});
+                      EngineOptions{});
   const auto drive = protocol::signal_id("drive");
   const auto pivot = protocol::signal_id("pivot");
   input::InputState in;

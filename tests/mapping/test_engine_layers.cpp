@@ -131,10 +131,10 @@ TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
 
 TEST(Engine, OneToggleStatePerSignal) {
   DrivenEngine engine(mapping_from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
-                                  "  - signal: tool_on\n    button: x\n    toggle: true\n"
-                                  "layers:\n  cam:\n    toggle: back\n    bindings:\n"
-                                  "      - signal: tool_on\n        button: y\n        toggle: true\n"),
-                EngineOptions{});
+                                        "  - signal: tool_on\n    button: x\n    toggle: true\n"
+                                        "layers:\n  cam:\n    toggle: back\n    bindings:\n"
+                                        "      - signal: tool_on\n        button: y\n        toggle: true\n"),
+                      EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button x 1\n55 button x 0\n60 button back 1\n65 button back 0\n");

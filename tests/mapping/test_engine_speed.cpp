@@ -188,7 +188,7 @@ TEST(EngineSpeed, AButtonHeldWhenEnabledWaitsForItsRelease) {
 
 TEST(EngineSpeed, KeptAcrossADeadmanReleaseBackToInitialOnANewPadAndARestart) {
   DrivenEngine engine(mapping_from_yaml(speed_yaml("scale: {button: y, levels: [0.25, 0.5, 1.0], initial: 0.5}\n")),
-                EngineOptions{});
+                      EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   EXPECT_EQ(engine.status().speed.index, 1U);

@@ -285,8 +285,8 @@ TEST(OperatingState, ASuspendDuringAReloadWaitsForItsOutcome) {
   EXPECT_TRUE(m.waiting(E::kSuspend));
   const Effect done = m.on(E::kReloadDone);
   EXPECT_EQ(m.state(), S::kSuspended);
-  EXPECT_TRUE(done.rebase);            // the reload's
-  EXPECT_TRUE(done.neutral_frames);    // the suspend's own frames
+  EXPECT_TRUE(done.rebase);          // the reload's
+  EXPECT_TRUE(done.neutral_frames);  // the suspend's own frames
   EXPECT_FALSE(m.waiting(E::kSuspend));
   EXPECT_TRUE(m.neutral_due());
 }

@@ -49,13 +49,13 @@ struct Node {
 /// one after its parent, which the walk checks anyway (the two are values,
 /// and each step a function of them and the event). Its sequences are
 /// counted as checked; `walked` counts the nodes actually stepped.
-std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::string& failure,
-                   std::uint64_t& walked) {
+std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::string& failure, std::uint64_t& walked) {
   std::vector<Node> path(kDepth + 1, start);
   std::array<std::size_t, kDepth + 1> next{};
   std::array<std::uint64_t, kDepth + 1> below{};  // sequences of kDepth under a node at each depth
   below[kDepth] = 1;
-  for (int d = kDepth - 1; d >= 0; --d) below[static_cast<std::size_t>(d)] = below[static_cast<std::size_t>(d) + 1] * events.size();
+  for (int d = kDepth - 1; d >= 0; --d)
+    below[static_cast<std::size_t>(d)] = below[static_cast<std::size_t>(d) + 1] * events.size();
   std::uint64_t full = 0;
   int depth = 0;
   while (depth >= 0) {

@@ -30,7 +30,9 @@ struct LinkCounters {
 
 /// The link carries motion: it is up, and not held to neutral frames (a TCP
 /// server that stalled): the one rule for the loop's state, the pad's light and the view.
-constexpr bool carries_motion(LinkState state, bool motion_allowed) { return state == LinkState::kUp && motion_allowed; }
+constexpr bool carries_motion(LinkState state, bool motion_allowed) {
+  return state == LinkState::kUp && motion_allowed;
+}
 
 /// A link at one moment (Link::status()).
 struct LinkStatus {

@@ -38,7 +38,7 @@ class SimVehicle {
   bool read_ready();
 
   UniqueFd master_;
-  UniqueFd slave_;    ///< held open so the master never sees a hang-up between bridge reopens
+  UniqueFd slave_;        ///< held open so the master never sees a hang-up between bridge reopens
   ShutdownRequest stop_;  ///< raised by stop(): the thread takes in the last frames and ends
   std::string path_;
   mutable std::mutex mutex_;

@@ -98,12 +98,12 @@ class Engine {
 
     bool started = false;
     std::uint32_t connection = 0;
-    std::uint32_t supervisor_connection = 0;               ///< the supervisor's controller session
+    std::uint32_t supervisor_connection = 0;                ///< the supervisor's controller session
     std::map<input::InputKey, std::uint32_t> seen_presses;  ///< presses already acted on (or ignored)
     bool was_enabled = false;                               ///< motion allowed at the last step
     int layer = -1;                                         ///< active layer, -1 = base
     int toggled_layer = -1;                                 ///< layer switched on by a toggle button
-    std::bitset<protocol::kSignalCount> toggled;  ///< one toggle state per signal, whichever input flips it
+    std::bitset<protocol::kSignalCount> toggled;            ///< one toggle state per signal, whichever input flips it
     RestRule rest;
     std::vector<int> selector;                                       ///< per binding slot: a selector's position
     std::array<std::int64_t, protocol::kSignalCount> level_milli{};  ///< arm_speed/light in 1/1000 units
@@ -150,7 +150,7 @@ class Engine {
   std::vector<input::InputKey> buttons_;            ///< every button the mapping reads
   std::vector<input::InputKey> axes_;               ///< every axis the mapping reads
   std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
-  Carried c_;  ///< carried from step to step
+  Carried c_;                                       ///< carried from step to step
   // The facts' own state (facts()), which a step neither reads nor changes.
   Deadman deadman_;
   StopButtons stops_;
@@ -162,7 +162,7 @@ class Engine {
   // The last step, for the next one (step()).
   input::PadState stepped_operator_;  ///< the controllers it read
   input::PadState stepped_supervisor_;
-  bool stepped_motion_ = false;  ///< and whether motion was allowed
+  bool stepped_motion_ = false;                         ///< and whether motion was allowed
   protocol::DataBytes stepped_frame_{};                 ///< its frame
   mutable std::optional<protocol::DataBytes> neutral_;  ///< neutral() since the last computed step
   bool stepped_ = false;

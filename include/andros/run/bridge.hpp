@@ -75,10 +75,15 @@ struct TickReport {
   std::int64_t skipped = 0;    ///< ticks skipped before this one after a stall
   protocol::DataBytes data{};  ///< the frame offered to the link (result: whether it took it)
   link::SendResult result = link::SendResult::kDown;
-  bool sent = true;                   ///< false: nothing was offered this tick (suspended, link closed)
-  OpState state = OpState::kNoLink;   ///< after this tick: what the screen, pad, log and service say
-  std::optional<StopBy> stopped_by;   ///< a stop latched: whose (OperatingState::stopped_by)
-  std::optional<StopBy> reset_by;     ///< who reset the last stop, until the next stop or enabled
+  bool sent = true;                  ///< false: nothing was offered this tick (suspended, link closed)
+  OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
+  std::optional<StopBy> stopped_by;  ///< a stop latched: whose (OperatingState::stopped_by)
+  std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
+  /// The event that brought the machine into `state` (OperatingState::entered_by): the first cause.
+  std::optional<OpEvent> entered_by;
+  bool supervisor_back =
+      false;  ///< entered by kControllerUp: the supervisor's controller came back (the operator's stayed)
+  bool reload_refused = false;        ///< entered by kReloadDone: the reload was refused (the old settings stay)
   bool connected = false;             ///< a controller is connected
   std::string controller;             ///< its name (may be empty)
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
@@ -119,9 +124,9 @@ struct BridgeOptions {
 enum class Request : std::uint8_t {
   kNone,
   kShutdown,  ///< end the run (SIGINT, SIGTERM)
-  kSuspend,  ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
-  kResumed,  ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
-  kReload,   ///< reread the settings (SIGHUP): neutral frames while they are read, then afresh
+  kSuspend,   ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
+  kResumed,   ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
+  kReload,    ///< reread the settings (SIGHUP): neutral frames while they are read, then afresh
 };
 
 /// How a reload ended.
@@ -228,6 +233,9 @@ class Bridge {
   bool suspend_pauses_ = false;  ///< the last suspend was job control's: the process stops after its frames
   std::string reload_mapping_;   ///< the last reload's mapping ("" for the configured one)
   bool input_failed_ = false;    ///< the input threw: the shutdown's frames go without it
+  // For the report's first cause (TickReport::entered_by).
+  bool supervisor_back_ = false;
+  bool reload_refused_ = false;
 };
 
 }  // namespace andros::run

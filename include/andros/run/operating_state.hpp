@@ -93,10 +93,10 @@ struct Transition {
   OpState from;
   OpEvent event;
   Act act;
-  OpState to;        ///< kGo only
-  bool rebase;       ///< the engine is rebased (Effect::rebase)
-  bool sending;      ///< the row holds only while `from`'s neutral frames go out (before kNeutralSent)
-  OpEvent withdraws; ///< kWithdraw only
+  OpState to;         ///< kGo only
+  bool rebase;        ///< the engine is rebased (Effect::rebase)
+  bool sending;       ///< the row holds only while `from`'s neutral frames go out (before kNeutralSent)
+  OpEvent withdraws;  ///< kWithdraw only
 };
 
 class OperatingState {
@@ -115,6 +115,9 @@ class OperatingState {
   [[nodiscard]] std::optional<StopBy> stopped_by() const { return stopped_by_; }
   /// Who reset the last stop, until the next stop or the bridge enabled again.
   [[nodiscard]] std::optional<StopBy> reset_by() const { return reset_by_; }
+  /// The event that brought the machine into its state (the first cause of
+  /// "not enabled": a link regained, a reload, a resume, a reset...); none at the start.
+  [[nodiscard]] std::optional<OpEvent> entered_by() const { return entered_by_; }
   /// The neutral frames of a suspend, reload or shutdown are still going out (no kNeutralSent yet).
   [[nodiscard]] bool neutral_due() const { return neutral_due_; }
   /// The event waits to be applied (Act::kWait).
@@ -155,11 +158,13 @@ class OperatingState {
   std::uint32_t waiting_ = 0;         ///< the events waiting (Act::kWait), one bit each
   std::optional<StopBy> stopped_by_;  ///< a stop is latched, and whose
   std::optional<StopBy> reset_by_;
+  std::optional<OpEvent> entered_by_;
 };
 
 std::string_view to_string(OpState state);
 std::string_view to_string(OpEvent event);
-/// A row's target as docs/safety-states.md's table writes it: the state, "settled", "waits", "withdraws EVENT", "again".
+/// A row's target as docs/safety-states.md's table writes it: the state, "settled", "waits", "withdraws EVENT",
+/// "again".
 std::string to_string(const Transition& row);
 /// "operator", "supervisor", "frame gate".
 std::string_view to_string(StopBy by);
