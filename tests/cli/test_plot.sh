@@ -41,7 +41,7 @@ svg_has "$supervised" "WEAPONS ENABLED" "no link" "no controller" "not enabled" 
   "weapons layer" "controller (operator)" "controller (supervisor)" "link up" "deadman held" \
   "stop button (operator)" "stop button (supervisor)" "consent (supervisor)" "arming input held"
 grep -q 'height="14.0" fill="#b71c1c"/>' "$supervised" || fail "the weapons layer is not in the weapons red"
-grep -q 'fill="#b71c1c"' <("$BIN" sheet --mapping "$root/demos/supervised.yaml" --format svg) ||
+grep -q 'fill="#b71c1c"' <("$BIN" sheet --mapping "$root/mappings/examples/supervisor.yaml" --format svg) ||
   fail "the sheet's weapons red is not the plot's"
 
 # Weapons fired: their rows in the weapons red.
