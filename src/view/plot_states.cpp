@@ -105,7 +105,10 @@ void draw_states(Page& page, const std::vector<const PlotSample*>& s, Legend& le
         if (by.empty()) return;
         const double x = page.x(first.t_ms);
         page.line(x, kBandTop - 3, x, kBandTop + kBandHeight, "#212121", 1.2);
-        page.text(x + 2, kBandTop - 2, "reset by the " + by, " font-size=\"8\" fill=\"#212121\"");
+        const bool near_the_end = x > kRight - 100;  // the label ends at the tick, not past the page
+        page.text(near_the_end ? x - 2 : x + 2, kBandTop - 2, "reset by the " + by,
+                  near_the_end ? " font-size=\"8\" fill=\"#212121\" text-anchor=\"end\""
+                               : " font-size=\"8\" fill=\"#212121\"");
       });
   for (const auto state : used) legend.add(kStates[state].name, kStates[state].colour);  // in the table's order
 }
