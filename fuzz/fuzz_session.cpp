@@ -2,8 +2,8 @@
 // plot, export and replay read it. Any bytes either read or are refused with
 // an InputError at the file (and a line in it); what reads keeps a session's
 // bounds (frame ticks in order at their times, within 24 h, the end at or
-// after the last frame), the plot's samples are as many as its records, not
-// its ticks, and a short session replays without a crash.
+// after the last frame), the plot's samples and lanes are as many as its
+// records, not its ticks, and a short session replays without a crash.
 #include <unistd.h>
 
 #include <cstdint>
@@ -45,6 +45,12 @@ void check_session(const andros::record::Session& s) {
   if (s.end && !s.frames.empty()) check(s.end->last_tick >= s.frames.back().tick);
   const auto samples = andros::view::plot_samples(s);
   check(samples.size() <= 2 * (s.frames.size() + s.states.size() + s.layers.size()) + 2);
+  // The plot's lanes: the events' work, a span at most per event, link record and reload.
+  andros::view::PlotInput lanes;
+  andros::view::add_lanes(lanes, s);
+  for (const auto& lane : lanes.lanes) {
+    check(lane.spans.size() <= s.events.size() + s.links.size() + s.reloads.size() + 1);
+  }
   const std::int64_t last = s.end ? s.end->last_tick : (s.frames.empty() ? 0 : s.frames.back().tick);
   if (last > kTicksTried) return;
   std::ostringstream table;

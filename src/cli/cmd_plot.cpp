@@ -87,7 +87,38 @@ view::PlotInput from_session(const PlotOptions& opt) {
   else if (check.cut_short_line != 0) in.source += "; " + record::cut_short_text(check);
   if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
   in.samples = view::plot_samples(s);
+  view::add_lanes(in, s);
   return in;
+}
+
+/// A script's lanes and weapon layers: its events read again (it was checked
+/// whole before the replay), with the mapping in effect (a `reload FILE`'s
+/// from its time, when it loads), the link up from the start and as its fault events move it.
+void add_script_lanes(view::PlotInput& in, const PlotOptions& opt, const mapping::Mapping& mapping, bool supervised) {
+  in.weapon_layers = view::weapon_layers(mapping);
+  view::LaneBuilder lanes(mapping, supervised);
+  auto text = TextReader::open_regular(opt.source, kEventScriptLimits);
+  input::EventReader reader(text);
+  using T = input::InputEvent::Type;
+  std::string current = mapping.file;
+  while (const auto e = reader.next()) {
+    if (e->type == T::kLinkDown || e->type == T::kLinkTaken || e->type == T::kLinkUp) {
+      lanes.link(e->t_ms, e->type == T::kLinkUp);
+    } else if (e->type == T::kReload) {
+      try {
+        const std::string wanted = e->name.empty() ? current : e->name;
+        const auto m = mapping::load_mapping(beside(opt.source, wanted));
+        current = wanted;
+        lanes.use_mapping(e->t_ms, *m);
+        for (auto& name : view::weapon_layers(*m)) in.weapon_layers.push_back(std::move(name));
+      } catch (const std::exception&) {
+        // A reload that fails keeps the mapping, as the replay's does.
+      }
+    } else {
+      lanes.event(*e);
+    }
+  }
+  in.lanes = lanes.lanes();
 }
 
 view::PlotInput from_script(const PlotOptions& opt) {
@@ -103,6 +134,7 @@ view::PlotInput from_script(const PlotOptions& opt) {
                             weapons_text(settings.weapons));
   in.source = "replay of " + file_name(opt.source);
   input::ScriptPlayer player(script);
+  add_script_lanes(in, opt, *mapping, player.supervised());
   run::ReplayOptions replay{.rate_millihertz = settings.rate.millihertz,
                             .engine = mapping::EngineOptions{settings.weapons, settings.code}};
   replay.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.source, file)); };
@@ -129,9 +161,12 @@ void add_plot_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<PlotOptions>();
   auto* cmd =
       app.add_subcommand("plot",
-                         "Draw a drive as SVG (docs/recording.md): drive and pivot over time, the operating state\n"
-                         "as coloured bands, the active layer, and every switch signal that was on (weapons in\n"
-                         "red), with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
+                         "Draw a drive as SVG (docs/recording.md): drive and pivot over time; the operating state\n"
+                         "as a band, a colour a state (a stop's by whose it was, who reset it; shutdown apart),\n"
+                         "with a legend of the colours used; the active layer (a weapons layer in the weapons\n"
+                         "red); lanes for the controllers, the link, the deadman, the stop buttons, the\n"
+                         "supervisor's consent and arming; and every switch signal that was on (weapons in red),\n"
+                         "with the robot, mapping and settings in the title. One 297 x 210 mm page: A4\n"
                          "landscape on paper, or a browser. From a session file (as recorded), or from an event\n"
                          "script through replay (with --robot/--mapping and the other replay settings).");
   cmd->add_option("SOURCE", opt->source,

@@ -1,19 +1,63 @@
 // `andros-bridge sessions`: the flight recorder's sessions, with what each
-// holds and whether it is intact (docs/recording.md).
+// holds, what an investigator looks for first (weapons fired, stops, the
+// controllers and the link lost: session_summary.hpp) and whether it is
+// intact (docs/recording.md). A session is data: one that is not intact is
+// listed with what its records say and marked, one that cannot be read is
+// listed as such; none is left out.
 #include <spdlog/fmt/fmt.h>
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "andros/base/error.hpp"
 #include "andros/record/session.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
+#include "session_summary.hpp"
 
 namespace andros::cli {
 namespace {
+
+struct SessionsOptions {
+  std::string dir;
+  std::string format = "table";
+};
+
+/// One session as listed: what was read of it, and how far it can be trusted.
+struct Row {
+  std::string name;
+  std::string verdict;  ///< intact, intact, cut short, intact, not closed, NOT INTACT, unreadable (the chain whole)
+  bool intact = false;
+  std::string problem;  ///< verify's, or why it could not be read
+  std::optional<record::Session> session;
+  SessionSummary summary;
+};
+
+Row read_row(const std::filesystem::path& path, std::string name) {
+  Row row;
+  row.name = std::move(name);
+  try {
+    const auto check = record::verify_session(path);
+    row.intact = check.intact;
+    row.problem = check.problem;
+    row.verdict = !check.intact               ? "NOT INTACT"
+                  : check.cut_short_line != 0 ? "intact, cut short"
+                  : check.closed              ? "intact"
+                                              : "intact, not closed";
+    row.session = record::read_session(path);
+    row.summary = summarize_session(*row.session);
+  } catch (const std::exception& e) {
+    // Its chain may be whole and its records still not a session's (crafted, or another format).
+    row.session.reset();
+    if (row.verdict.empty() || row.intact) row.verdict = "unreadable";
+    if (row.problem.empty()) row.problem = e.what();
+  }
+  return row;
+}
 
 std::string duration_text(std::int64_t ms) {
   const std::int64_t s = ms / 1000;
@@ -28,53 +72,118 @@ std::string start_text(const std::string& iso) {
   return out;
 }
 
-void run_sessions(const std::string& dir_given) {
-  const auto dir = session_dir(dir_given);
+/// "0", or "3 (op 2, gate 1)": a count and its parts by whom.
+std::string by_whom(const std::vector<std::pair<const char*, int>>& parts) {
+  int total = 0;
+  std::string list;
+  for (const auto& [who, n] : parts) {
+    total += n;
+    if (n != 0) list += fmt::format("{}{} {}", list.empty() ? "" : ", ", who, n);
+  }
+  return total == 0 ? "0" : fmt::format("{} ({})", total, list);
+}
+
+constexpr const char* kRowFormat = "{:<19}  {:>8}  {:<9}  {:>7}  {:<7}  {:<23}  {:<16}  {:>9}  {:<18}  {}\n";
+
+void print_table(const std::vector<Row>& rows) {
+  std::cout << fmt::format(kRowFormat, "START", "LENGTH", "ROBOT", "FRAMES", "WEAPONS", "STOPS", "CONTROLLERS LOST",
+                           "LINK LOST", "VERIFY", "FILE");
+  int untrusted = 0;
+  for (const auto& r : rows) {
+    if (!r.intact || !r.session) ++untrusted;
+    if (!r.session) {
+      std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", r.verdict, r.name);
+      continue;
+    }
+    const auto& s = *r.session;
+    const auto& m = r.summary;
+    std::cout << fmt::format(
+        kRowFormat, start_text(s.started), duration_text(s.length_ms()), s.settings.robot, s.frames_sent(),
+        m.weapons_fired ? "FIRED" : "no", by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
+        by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost, r.verdict, r.name);
+  }
+  if (untrusted != 0) {
+    std::cout << fmt::format(
+        "{} of {} sessions NOT INTACT or unreadable: what the table shows of them is what their records say, "
+        "not evidence ('verify SESSION' names the first record altered)\n",
+        untrusted, rows.size());
+  }
+}
+
+nlohmann::json json_row(const Row& r) {
+  nlohmann::json j = {{"file", r.name},
+                      {"verify", r.verdict},
+                      {"intact", r.intact},
+                      {"problem", r.problem},
+                      {"readable", r.session.has_value()}};
+  if (!r.session) return j;
+  const auto& s = *r.session;
+  const auto& m = r.summary;
+  j["start"] = s.started;
+  j["length_s"] = static_cast<double>(s.length_ms()) / 1000.0;
+  j["robot"] = s.settings.robot;
+  j["frames_sent"] = s.frames_sent();
+  j["supervised"] = s.settings.supervised;
+  j["weapons_fired"] = m.weapons_fired;
+  j["weapons"] = m.weapons;
+  j["first_fire_s"] = m.first_fire_ms ? nlohmann::json(static_cast<double>(*m.first_fire_ms) / 1000.0) : nullptr;
+  j["stops"] = {{"operator", m.stops[0]}, {"supervisor", m.stops[1]}, {"gate", m.stops[2]}};
+  j["resets"] = {{"operator", m.resets[0]}, {"supervisor", m.resets[1]}};
+  j["controllers_lost"] = {{"operator", m.controllers_lost[0]}, {"supervisor", m.controllers_lost[1]}};
+  j["links_lost"] = m.links_lost;
+  j["dropped"] = s.dropped;
+  return j;
+}
+
+void run_sessions(const SessionsOptions& opt) {
+  if (opt.format != "table" && opt.format != "jsonl") {
+    throw InputError(SourcePos{"--format"}, "expected table or jsonl, got " + quote(opt.format));
+  }
+  const auto dir = session_dir(opt.dir);
   const auto sessions = list_sessions(dir);
-  if (sessions.empty()) {
+  // Names the other commands accept from any folder: bare in the default
+  // folder (they look there), whole paths from another.
+  const bool bare = dir == session_dir("");
+  std::vector<Row> rows;
+  for (const auto& path : sessions) {
+    rows.push_back(read_row(path, bare ? path.filename().string() : std::filesystem::absolute(path).string()));
+  }
+  if (opt.format == "jsonl") {
+    for (const auto& r : rows) std::cout << json_row(r).dump() << "\n";
+    return;
+  }
+  if (rows.empty()) {
     std::cout << "no sessions in " << dir.string() << "\n";
     return;
   }
   std::cout << "sessions in " << dir.string() << ":\n";
-  std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "START", "LENGTH", "ROBOT", "FRAMES", "VERIFY",
-                           "FILE");
-  // Names the other commands accept from any folder: bare in the default
-  // folder (they look there), whole paths from another.
-  const bool bare = dir == session_dir("");
-  for (const auto& path : sessions) {
-    const auto name = bare ? path.filename().string() : std::filesystem::absolute(path).string();
-    std::string verdict;
-    try {
-      const auto check = record::verify_session(path);
-      verdict = !check.intact               ? "NOT INTACT"
-                : check.cut_short_line != 0 ? "intact, cut short"
-                : check.closed              ? "intact"
-                                            : "intact, not closed";
-      const auto s = record::read_session(path);
-      std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", start_text(s.started),
-                               duration_text(s.length_ms()), s.settings.robot, s.frames_sent(), verdict, name);
-    } catch (const std::exception& e) {
-      std::cout << fmt::format("{:<19}  {:>8}  {:<9}  {:>7}  {:<18}  {}\n", "?", "?", "?", "?",
-                               verdict.empty() ? "unreadable" : verdict, name);
-    }
-  }
+  print_table(rows);
 }
 
 }  // namespace
 
 void add_sessions_command(CLI::App& app, int& exit_code) {
-  auto dir = std::make_shared<std::string>();
+  auto opt = std::make_shared<SessionsOptions>();
   auto* cmd =
       app.add_subcommand("sessions",
                          "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
-                         "robot, frames sent and the verdict of 'verify'.");
-  cmd->add_option("--record-dir,--dir", *dir,
+                         "robot, frames sent, whether weapons fired (a weapon signal in a frame sent while\n"
+                         "enabled), the stops by whom (op: the operator's stop button, sup: the supervisor's,\n"
+                         "gate: the frame gate), the controllers lost (op, sup), the link lost, and the verdict\n"
+                         "of 'verify'. A session that is not intact is listed with what its records say, marked\n"
+                         "NOT INTACT; one that cannot be read, as unreadable.");
+  cmd->add_option("--record-dir,--dir", opt->dir,
                   "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
                   "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"
                   "~/.local/state/andros-bridge (as run)")
       ->type_name("DIR");
-  cmd->callback([dir, &exit_code] {
-    run_sessions(*dir);
+  cmd->add_option("--format", opt->format,
+                  "table (for people) or jsonl (an object a session, for tools: its fields in\n"
+                  "docs/recording.md)")
+      ->type_name("table|jsonl")
+      ->default_str("table");
+  cmd->callback([opt, &exit_code] {
+    run_sessions(*opt);
     exit_code = kExitOk;
   });
 }

@@ -5,7 +5,6 @@ namespace {
 
 const std::string kDownText = "held down by the event script";
 const std::string kTakenText = "taken by another program (event script)";
-const std::string kClosedText = "closed";
 
 }  // namespace
 
@@ -42,7 +41,7 @@ SendResult SinkLink::send(const protocol::Frame& frame, std::int64_t now_ns) {
 
 bool SinkLink::drain_and_close(int /*timeout_ms*/) {
   state_ = LinkState::kConnecting;
-  detail_ = kClosedText;
+  detail_ = kClosedDetail;
   return true;
 }
 

@@ -116,7 +116,7 @@ bool ReconnectingLink::drain_and_close(int timeout_ms) {
   }
   close_fd();
   state_ = LinkState::kConnecting;
-  detail_ = "closed";
+  detail_ = kClosedDetail;
   return drained;
 }
 

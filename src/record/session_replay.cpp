@@ -38,7 +38,7 @@ class Playback {
   }
   void close_link() {
     link_.state = link::LinkState::kConnecting;
-    link_.detail = "closed";
+    link_.detail = link::kClosedDetail;
   }
   [[nodiscard]] const LinkRecord& link() const { return link_; }
   void start() { link_ = status_at(-1); }

@@ -25,8 +25,13 @@ std::string stopper(std::optional<run::StopBy> by) { return by ? std::string(run
 }  // namespace
 
 PlotSample plot_sample(const run::TickReport& r) {
-  return PlotSample{r.t_ms,  r.data,         r.sent && r.result == link::SendResult::kSent,
-                    r.state, r.engine.layer, stopper(r.stopped_by)};
+  return PlotSample{r.t_ms,
+                    r.data,
+                    r.sent && r.result == link::SendResult::kSent,
+                    r.state,
+                    r.engine.layer,
+                    stopper(r.stopped_by),
+                    stopper(r.reset_by)};
 }
 
 std::vector<PlotSample> plot_samples(const record::Session& session) {
@@ -40,22 +45,26 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
   run::OpState state = run::OpState::kNoLink;
   std::string layer;
   std::optional<run::StopBy> stop;
+  std::optional<run::StopBy> reset;  // who reset the last stop: until the next stop or enabled (TickReport's)
   // The state, layer and stop in effect at tick's time.
   const auto catch_up = [&](std::int64_t t) {
-    while (state_at < session.states.size() && session.states[state_at].t_ms <= t)
-      state = session.states[state_at++].state;
+    for (; state_at < session.states.size() && session.states[state_at].t_ms <= t; ++state_at) {
+      state = session.states[state_at].state;
+      if (state == run::OpState::kEnabled) reset.reset();
+    }
     while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
       layer = session.layers[layer_at++].text;
     for (; stop_at < session.stops.size() && session.stops[stop_at].t_ms <= t; ++stop_at) {
       const auto& r = session.stops[stop_at];
       stop = r.reset ? std::nullopt : std::optional(r.by);
+      reset = r.reset ? std::optional(r.by) : std::nullopt;
     }
   };
   const auto sample = [&](const record::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
     const std::int64_t t = clock.time_of(tick);
     catch_up(t);
-    out.push_back(
-        PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, stopper(stop), ticks});
+    out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, stopper(stop),
+                             stopper(reset), ticks});
   };
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];

@@ -11,6 +11,9 @@
 
 namespace andros::view::sheet_detail {
 
+/// The weapons' red: a weapon on the sheet, the weapons layer and weapon signals on the plot.
+inline constexpr std::string_view kWeaponRed = "#b71c1c";
+
 /// An input the pad drawing shows: its label column, the point of the
 /// drawing its leader line ends at and the height of its label, in pad units
 /// (kPadWidth x kPadHeight; a label may sit a little above the pad).

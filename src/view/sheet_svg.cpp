@@ -37,7 +37,7 @@ std::string_view mark_colour(SheetMark mark) {
     case SheetMark::kStop: return "#d50000";
     case SheetMark::kLayerKey: return "#1565c0";
     case SheetMark::kArming: return "#e65100";
-    case SheetMark::kWeapon: return "#b71c1c";
+    case SheetMark::kWeapon: return sheet_detail::kWeaponRed;
     case SheetMark::kToggle: return "#6a1b9a";
     case SheetMark::kKnob: return "#00695c";
     case SheetMark::kSelector: return "#2e7d32";

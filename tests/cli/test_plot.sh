@@ -4,11 +4,13 @@ source "$(dirname "$0")/lib.sh"
 root="$DATA/../.."
 export XDG_CONFIG_HOME=$TMP/xdg
 
-# The shipped plot is what the demo drive gives today.
+# The shipped plots are what the demo drives give today.
 bash "$root/scripts/make_plots.sh" "$BIN" "$TMP/plots" || fail "scripts/make_plots.sh failed"
-cmp -s "$TMP/plots/drive.svg" "$root/docs/plots/drive.svg" ||
-  fail "docs/plots/drive.svg is stale (or missing): regenerate with scripts/make_plots.sh $BIN"
-extra=$(cd "$root/docs/plots" && ls | grep -vx 'drive\.svg')
+for plot in drive supervised; do
+  cmp -s "$TMP/plots/$plot.svg" "$root/docs/plots/$plot.svg" ||
+    fail "docs/plots/$plot.svg is stale (or missing): regenerate with scripts/make_plots.sh $BIN"
+done
+extra=$(cd "$root/docs/plots" && ls | grep -vxE '(drive|supervised)\.svg')
 [[ -z $extra ]] || fail "docs/plots/ holds files make_plots.sh does not make: $extra"
 
 # svg_has SVG TEXT...: parses as XML and each TEXT is in the page's text.
@@ -23,14 +25,29 @@ PY
 }
 shipped=$root/docs/plots/drive.svg
 svg_has "$shipped" "HD1 drive, mapping hd1.yaml" "25 Hz, code 01, weapons disabled" "replay of drive.events" \
-  "not enabled" "enabled" "stopped" "link down" "reloading" "drive" "pivot" "time (s)" "front_art_up" "pt_right"
+  "not enabled" "enabled" "drive" "pivot" "time (s)" "front_art_up" "pt_right" \
+  "controller (operator)" "link up" "deadman held" "stop button (operator)" "arming input held"
+# Its legend names the colours it uses, and only those: this drive was never stopped, lost or shut down.
+grep -Eq '>(stopped by the [a-z ]*|no link|no controller|shutting down|reloading)<' "$shipped" &&
+  fail "the demo drive's legend names a state it never was in"
 grep -q 'width="297mm" height="210mm"' "$shipped" || fail "not an A4 landscape page"
 grep -Eq '>(weapon_[0-9]|shotgun|laser|enable_key)<' "$shipped" && fail "the demo drive (weapons disabled) shows a weapon"
 
-# Weapons fired: their rows in red.
+# The supervised demo: each colour of its states named, who stopped and who
+# reset, the weapons layer in the weapons red (the sheet's), every lane.
+supervised=$root/docs/plots/supervised.svg
+svg_has "$supervised" "WEAPONS ENABLED" "no link" "no controller" "not enabled" "enabled" \
+  "stopped by the operator" "stopped by the supervisor" "reset by the supervisor" "reset by the operator" \
+  "weapons layer" "controller (operator)" "controller (supervisor)" "link up" "deadman held" \
+  "stop button (operator)" "stop button (supervisor)" "consent (supervisor)" "arming input held"
+grep -q 'height="14.0" fill="#b71c1c"/>' "$supervised" || fail "the weapons layer is not in the weapons red"
+grep -q 'fill="#b71c1c"' <("$BIN" sheet --mapping "$root/mappings/examples/supervisor.yaml" --format svg) ||
+  fail "the sheet's weapons red is not the plot's"
+
+# Weapons fired: their rows in the weapons red.
 expect_exit 0 "$BIN" plot "$DATA/replay/weapons_on_armed.events" --weapons --mapping "$DATA/mappings/core.yaml"
-grep -q 'fill="#c62828" font-weight="bold">weapon_1<' "$TMP/out" || fail "weapon_1 is not named in red"
-grep -q 'fill="#d32f2f"' "$TMP/out" || fail "weapon_1's bar is not red"
+grep -q 'fill="#b71c1c" font-weight="bold">weapon_1<' "$TMP/out" || fail "weapon_1 is not named in red"
+grep -q 'height="9.0" fill="#b71c1c"' "$TMP/out" || fail "weapon_1's bar is not red"
 # Layers: the layer strip names them.
 expect_exit 0 "$BIN" plot "$DATA/replay/layer_entered_stick_held.events" --mapping "$DATA/mappings/layers.yaml"
 cp "$TMP/out" "$TMP/layers.svg"
@@ -47,7 +64,8 @@ run_cmd "$BIN" run --robot hd1 --input "$root/demos/drive.events"
 session=$(ls "$XDG_STATE_HOME"/andros-bridge/*.andros-session | tail -1)
 # (to 12 s: the run ends on neutral frames past the script's end; replay does not)
 expect_exit 0 "$BIN" plot "$session" --to 12 --output "$TMP/session.svg"
-svg_has "$TMP/session.svg" "HD1 drive, mapping hd1.yaml" "input $root/demos/drive.events" "session $(basename "$session")"
+svg_has "$TMP/session.svg" "HD1 drive, mapping hd1.yaml" "input $root/demos/drive.events" "session $(basename "$session")" \
+  "deadman held" "link up" "controller (operator)"
 # The plot draws what the session recorded (a real-time run on a busy machine
 # may skip a tick or meet a busy link, which the replay of the script on its
 # virtual clock never does: compared with the shipped plot, the verdict would

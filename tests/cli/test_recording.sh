@@ -39,7 +39,8 @@ replays_exactly "$session" "$TMP/cap" "plain drive"
 
 expect_exit 0 "$BIN" sessions
 grep -q "^sessions in $STATE:" "$TMP/out" || fail "sessions: $(cat "$TMP/out")"
-grep -Eq "HD1 +$(frames_in "$TMP/cap") +intact +$(basename "$session")" "$TMP/out" || fail "sessions: $(cat "$TMP/out")"
+grep -Eq "HD1 +$(frames_in "$TMP/cap") +no +0 +0 +0 +intact +$(basename "$session")" "$TMP/out" ||
+  fail "sessions: $(cat "$TMP/out")"
 
 # Tampering: an altered byte, a removed record, a swapped pair; verify and replay refuse.
 tamper() { cp "$session" "$TMP/t.andros-session"; python3 -c "$1" "$TMP/t.andros-session"; }

@@ -21,6 +21,10 @@ enum class SendResult : std::uint8_t {
   kDown,  ///< no connection this tick
 };
 
+/// LinkStatus::detail of a link the bridge closed itself (drained and closed:
+/// a suspend, the run's end), not lost: what tells one from the other in a session.
+inline constexpr std::string_view kClosedDetail = "closed";
+
 struct LinkCounters {
   std::uint64_t sent = 0;
   std::uint64_t busy = 0;    ///< ticks skipped because the output queue (or the server) was not empty
