@@ -13,7 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "andros/base/clock.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "bench_util.hpp"
@@ -35,7 +35,8 @@ protocol::DataBytes neutral_frame() {
 
 class FixedFrames final : public run::FrameSource {
  public:
-  run::Step step(const input::InputState&, std::int64_t) override { return {neutral_frame(), {}}; }
+  mapping::InputFacts facts(const input::InputState&, std::int64_t, bool) override { return {}; }
+  run::Step step(const input::InputState&, std::int64_t, bool) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
   void restart(const input::InputState&) override {}
   // No stop buttons: nothing stops, nothing resets.
@@ -111,7 +112,7 @@ int main(int argc, char** argv) {
   const protocol::Frame frame = protocol::encode(neutral_frame());
 
   const std::int64_t stop_ns = monotonic_ns() + std::int64_t{seconds} * kNsPerSecond;
-  StopRequest stop;
+  ShutdownRequest stop;
   std::vector<bench::Arrival> bridge_got;
   std::vector<bench::Arrival> plain_got;
   // When each loop's write() returned: the clock itself, before the pty's

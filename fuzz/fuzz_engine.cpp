@@ -94,6 +94,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::array<protocol::SignalId, 2> centred{protocol::signal_id("drive"), protocol::signal_id("pivot")};
   std::array<test::CentreWatch, 2> centre{};
   bool was_enabled = false;
+  bool motion = false;  // what the engine was told
   int sessions = 0, seen_sessions = 0;
   std::int64_t t = 0, next_frame = 0;
   // The stop button (docs/mapping.md, "Stop"): a frame that sees it pressed
@@ -103,7 +104,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 2; i + 3 <= size; i += 3) {
     t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
     while (next_frame <= t) {
-      const auto frame = engine.step(input, next_frame);
+      // The loop's decision at its simplest (not enabled and enabled, no
+      // latch): motion while the deadman reports a fresh hold and no stop.
+      const auto facts = engine.facts(input, next_frame, motion);
+      motion = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
+      const auto frame = engine.step(input, next_frame, motion);
       const auto s = protocol::read_signals(frame);
       check(protocol::validation_errors(frame).empty());
       check(frame[protocol::kCodeByte] == code);

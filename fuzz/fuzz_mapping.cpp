@@ -69,6 +69,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   andros::input::InputEvent connect;
   connect.type = andros::input::InputEvent::Type::kConnect;
   input.apply(connect);
-  for (std::int64_t t = 0; t < 200; t += 40) check(andros::protocol::validation_errors(engine.step(input, t)).empty());
+  for (std::int64_t t = 0; t < 200; t += 40) {
+    const bool motion = engine.facts(input, t, true).deadman == andros::mapping::EnableState::kEnabled;
+    check(andros::protocol::validation_errors(engine.step(input, t, motion || t == 80)).empty());
+  }
   return 0;
 }

@@ -28,12 +28,12 @@ mutations=(
   "the opposing-pair interlock removed|src/mapping/safety.cpp|s/asked\[\*partner\] != 0\) state.values\[i\] = 0;/asked[*partner] != 0 \&\& false) state.values[i] = 0;/"
   "the rest rule skipped when a layer is left|src/mapping/safety.cpp|s/const bool changed = edge \|\| was == before.end\(\) \|\| !same_bindings\(was->second, readers\);/const bool changed = edge || (layer >= layer_ \&\& (was == before.end() || !same_bindings(was->second, readers)));/"
   "a resume (SIGCONT) while enabled without a rebase|src/run/operating_state.cpp|s/settle\(S::kEnabled, E::kResume, true\)/settle(S::kEnabled, E::kResume, false)/"
-  "the state machine reading last tick's engine status|src/run/bridge.cpp|s/(      engine_status_ = std::move\(step.status\);\n)((?:.*\n){2})(      answer_engine\(\);\n)/\$2\$3\$1/"
+  "the engine stepped before the machine read the tick's facts|src/run/bridge.cpp|s/(  act\(machine_.on\(facts\), false\);\n)((?:.*\n){3})/\$2\$1/"
   "the deadman touched during a reset hold ignored|src/mapping/stop_buttons.cpp|s/if \(pressed && now.down && !deadman_touched\)/if (pressed \&\& now.down)/"
   "a deadman held at connect taken for a fresh press|src/mapping/deadman.cpp|s/input.button\(\*key_\).presses > base_/input.button(*key_).presses >= base_/"
-  "a weapon armed without its arming input held|src/mapping/engine_bindings.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && rest_.consent\(\);/const bool arm = b.arm \&\& rest_.consent();/"
+  "a weapon armed without its arming input held|src/mapping/engine_bindings.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && c_.rest.consent\(\);/const bool arm = b.arm \&\& c_.rest.consent();/"
   "a link regained without a rebase|src/run/operating_state.cpp|s/settle\(S::kNoLink, E::kLinkUp, true\)/settle(S::kNoLink, E::kLinkUp, false)/"
-  "the enable timeout never falls due|src/mapping/engine.cpp|s/if \(mapping_->enable_timeout_ms && now_ms - last_activity_ms_/if (false \&\& mapping_->enable_timeout_ms \&\& now_ms - last_activity_ms_/"
+  "the enable timeout never falls due|src/mapping/engine.cpp|s/ && timed_out\(now_ms\)\)/ \&\& false \&\& timed_out(now_ms))/"
   "the supervisor's stop button ignored|src/mapping/stop_buttons.cpp|s/const bool by_supervisor = take\(input.supervisor\(\), supervisor_\);/const bool by_supervisor = take(input.supervisor(), supervisor_) \&\& false;/"
 )
 

@@ -8,7 +8,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
 #include "andros/input/sdl_input.hpp"
@@ -56,7 +56,7 @@ view::AxisUses load_uses(const InputsOptions& opt, std::string& source) {
 int run_inputs(const InputsOptions& opt) {
   std::string source;
   auto uses = load_uses(opt, source);
-  StopRequest stop(kStopSignals);  // before SDL starts a thread: every thread inherits the mask
+  ShutdownRequest stop(kShutdownSignals);  // before SDL starts a thread: every thread inherits the mask
   std::optional<input::SdlInput> sdl;
   try {
     sdl.emplace(opt.sdl, [&stop] { return stop.requested(); });

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "andros/base/error.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/cli/learn_session.hpp"
 #include "andros/mapping/loader.hpp"
 #include "commands.hpp"
@@ -29,7 +29,7 @@ int run_learn(const LearnCommandOptions& opt) {
     throw InputError(SourcePos{"--output"}, "learn writes a file (its dialogue is on standard output)");
   auto base = mapping::load_chosen_mapping(opt.mapping, opt.robot);
   const auto target = learn_target(*base, opt.output, opt.force);  // checked before the operator does any work
-  StopRequest signals(kStopSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
+  ShutdownRequest signals(kShutdownSignals);  // SIGTERM, SIGHUP (and SIGINT off a terminal): quit, terminal restored
   input::LiveGestures pad(opt.sdl);
   mapping::LearnPlan plan(*base);
   Keyboard keys(STDIN_FILENO);

@@ -15,7 +15,7 @@
 
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/base/text.hpp"
 #include "andros/base/unique_fd.hpp"
 #include "andros/cli/command_line.hpp"
@@ -79,7 +79,7 @@ int monitor_file(const std::string& path, link::VehicleView& view) {
 /// Decodes fd live until a signal or its end. is_port: fd is a serial port,
 /// whose end means it was unplugged (exit 1); a pipe's end is just the end.
 int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleView& view) {
-  StopRequest stop(kStopSignals);  // before the display's thread starts
+  ShutdownRequest stop(kShutdownSignals);  // before the display's thread starts
   std::mutex mutex;
   const bool interactive = view::is_interactive(STDOUT_FILENO);
   std::optional<view::TerminalDisplay> display;

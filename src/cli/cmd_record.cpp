@@ -9,7 +9,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/output_file.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/base/version.hpp"
 #include "andros/cli/command_line.hpp"
@@ -34,7 +34,7 @@ std::string utc_now() {
   return text;
 }
 
-int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) {
+int record(const Settings& settings, input::SdlInput& input, ShutdownRequest& stop) {
   const std::string& output = settings.script_output;
   OutputFile file(output, nullptr, OutputFile::NewFile::kAsWritten);  // a killed recording keeps what it saw
   std::ostream& out = file.stream();
@@ -83,7 +83,7 @@ int record(const Settings& settings, input::SdlInput& input, StopRequest& stop) 
 int run_record(const RecordCommandOptions& opt) {
   const Settings settings = resolve_settings(*opt.settings);
   // Blocked before SDL starts its threads, so that every thread inherits the mask.
-  StopRequest stop(kRecordStopSignals);
+  ShutdownRequest stop(kRecordShutdownSignals);
   try {
     // SDL first (bad selection or mapping file: exit 2 before any file is made).
     input::SdlInputOptions sdl = opt.sdl;

@@ -11,7 +11,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/job_control.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/base/text.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
@@ -47,11 +47,11 @@ std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVeh
   return std::make_unique<link::SerialLink>(config.port, config.baud);
 }
 
-run::Request poll_requests(StopRequest& stop, JobControlSignals& job) {
+run::Request poll_requests(ShutdownRequest& stop, JobControlSignals& job) {
   // One sigpending() a tick rather than a sigtimedwait() for each signal set:
   // the sets are asked only when a signal waits or the stop knows something.
   if (!stop.has_unread() && !signals_pending()) return run::Request::kNone;
-  if (stop.requested()) return run::Request::kStop;
+  if (stop.requested()) return run::Request::kShutdown;
   if (stop.reload_requested()) return run::Request::kReload;
   switch (job.poll()) {
     case JobControlSignals::Event::kStopAsked: return run::Request::kSuspend;
@@ -104,7 +104,7 @@ int run_bridge(const RunOptions& opt) {
   // data commands keep the default: `frame decode | head` just ends.)
   std::signal(SIGPIPE, SIG_IGN);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
-  StopRequest stop(kRunStopSignals);
+  ShutdownRequest stop(kRunShutdownSignals);
   JobControlSignals job;
   EngineSetup engine = load_engine(config);
   ReloadableFrames frames(std::move(engine.frames));

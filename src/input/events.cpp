@@ -179,7 +179,7 @@ std::optional<InputEvent> EventReader::next() {
       ev.type = T::kResume;
     } else if (kind.text == "stop") {
       want_args(0, "stop");
-      ev.type = T::kStop;
+      ev.type = T::kShutdown;
     } else if (kind.text == "reload") {
       if (tokens.size() > first + 2) throw fail(arg(2), "expected 'reload [MAPPING]'");
       ev.type = T::kReload;
@@ -253,7 +253,7 @@ std::string format_event(const InputEvent& event) {
     case T::kLinkTaken: out += "link taken"; break;
     case T::kSuspend: out += "suspend"; break;
     case T::kResume: out += "resume"; break;
-    case T::kStop: out += "stop"; break;
+    case T::kShutdown: out += "stop"; break;
     case T::kReload: out += event.name.empty() ? "reload" : pad("reload") + event.name; break;
     case T::kButton: out += pad("button") + input_name(event.key) + ' ' + std::to_string(event.value); break;
     case T::kAxis: out += pad("axis") + input_name(event.key) + ' ' + std::to_string(event.value); break;

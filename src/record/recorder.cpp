@@ -231,7 +231,7 @@ void Recorder::request(run::Request request) {
   if (request == run::Request::kNone) return;
   // A stop asked once is answered on every tick after it until the run ends:
   // one record says it (one Ctrl-C, one `request stop`).
-  if (request == run::Request::kStop && std::exchange(stop_recorded_, true)) return;
+  if (request == run::Request::kShutdown && std::exchange(stop_recorded_, true)) return;
   push(payload::request(t_ms_, request));
 }
 

@@ -171,7 +171,7 @@ std::int64_t Session::length_ms() const {
 std::string_view request_name(run::Request r) {
   switch (r) {
     case run::Request::kNone: return "none";
-    case run::Request::kStop: return "stop";
+    case run::Request::kShutdown: return "stop";
     case run::Request::kSuspend: return "suspend";
     case run::Request::kResumed: return "resumed";
     case run::Request::kReload: return "reload";
@@ -180,7 +180,8 @@ std::string_view request_name(run::Request r) {
 }
 
 std::optional<run::Request> parse_request(std::string_view name) {
-  for (const auto r : {run::Request::kStop, run::Request::kSuspend, run::Request::kResumed, run::Request::kReload}) {
+  for (const auto r :
+       {run::Request::kShutdown, run::Request::kSuspend, run::Request::kResumed, run::Request::kReload}) {
     if (request_name(r) == name) return r;
   }
   return std::nullopt;

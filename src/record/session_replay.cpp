@@ -45,7 +45,7 @@ class Playback {
 
   // The controls.
   run::Request poll() {
-    if (expected_tick_ > last_tick_) return run::Request::kStop;  // a session cut short (or astray): ends here
+    if (expected_tick_ > last_tick_) return run::Request::kShutdown;  // a session cut short (or astray): ends here
     if (next_request_ < s_.requests.size() && s_.requests[next_request_].t_ms == now_ms_) {
       return *parse_request(s_.requests[next_request_++].text);
     }

@@ -7,7 +7,7 @@ namespace andros::run {
 
 Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options)
     : clock_(clock),
-      input_(input),
+      source_(input),
       frames_(frames),
       link_(link),
       options_(options),
@@ -15,13 +15,14 @@ Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, lin
       machine_(link_up()),
       gate_(options.rules) {}
 
-void Bridge::run(const StopCheck& stop, const Observer& observe) {
+void Bridge::run(const ShutdownCheck& shutdown, const Observer& observe) {
   RunControl control;
-  control.poll = [&stop] { return stop() ? Request::kStop : Request::kNone; };
+  control.poll = [&shutdown] { return shutdown() ? Request::kShutdown : Request::kNone; };
   run(control, observe);
 }
 
 void Bridge::run(const RunControl& control, const Observer& observe) {
+  control_ = &control;
   start_ = clock_.now();
   tick_ = 0;
   skipped_ = 0;
@@ -35,8 +36,10 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
     apply(OpEvent::kShutdown);
     while (tick(control, observe)) {
     }
+    control_ = nullptr;
     throw;
   }
+  control_ = nullptr;
 }
 
 bool Bridge::tick(const RunControl& control, const Observer& observe) {
@@ -45,13 +48,15 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
   if (!input_failed_) {
     // The input is read right after the tick's time: never older than the
     // frame; every change since the last tick counts, not only where it ended.
-    state_.begin_tick();
-    input_.pump(state_, t_ms);
-    on_request(control.poll(), control);
-    for (const auto& fault : state_.take_faults()) on_fault(fault, control);
+    input_.begin_tick();
+    source_.pump(input_, t_ms);
+    on_request(control.poll());
+    for (const auto& fault : input_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
-    const bool controllers_up = state_.connected() && (!input_.supervised() || state_.supervisor().connected());
+    const bool controllers_up = input_.connected() && (!source_.supervised() || input_.supervisor().connected());
     if (controllers_up != machine_.controller_up()) {
+      // Both needed and only the supervisor's missing: it is the one that comes back.
+      if (!controllers_up) supervisor_back_ = input_.connected();
       apply(controllers_up ? OpEvent::kControllerUp : OpEvent::kControllerDown);
     }
   }
@@ -59,7 +64,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
   // A suspend's and a reload's ticks do not step the engine: a stop button
   // pressed in them latches for when they end (the latch only: no row there).
   if (machine_.state() == OpState::kSuspended || machine_.state() == OpState::kReloading) {
-    answer_stops(frames_.take_stop(state_));
+    answer_stops(frames_.take_stop(input_));
   }
   switch (machine_.state()) {
     case OpState::kStopping:
@@ -69,16 +74,13 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       }
       break;
     case OpState::kSuspended:
-      if (!suspend_frames_due_) {
-        // Suspended by a script: nothing is sent until its resume.
+      if (!machine_.neutral_due()) {
+        // Its frames are out: nothing is sent until the resume (a script's suspend; job control pauses below).
         observe(report(frames_.neutral(), link::SendResult::kDown, false));
       } else if (neutral_frame(observe)) {
         close();
-        suspend_frames_due_ = false;
-        if (std::exchange(resume_pending_, false)) {
-          // Continued (fg, SIGCONT, a script's resume) during the frames: no stop.
-          resumed(control);
-        } else if (pause_after_suspend_) {
+        apply(OpEvent::kNeutralSent);  // a resume that waited for the frames is answered now: no pause
+        if (machine_.state() == OpState::kSuspended && suspend_pauses_) {
           pause(control);
           return true;
         }
@@ -89,52 +91,45 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       // (a selector, a knob), and nothing held enables. Reset by a reset
       // hold on the pad that stopped (or the supervisor's); a press of the
       // supervisor's stop while stopped makes the stop the supervisor's.
-      const auto stops = frames_.stopped(state_, t_ms);
+      const auto stops = frames_.stopped(input_, t_ms);
       answer_stops(stops.pressed);
       if (stops.reset) {
         apply(*stops.reset == input::Pad::kSupervisor ? OpEvent::kSupervisorReset : OpEvent::kOperatorReset);
       }
-      frames_.held_stops(state_, engine_status_);  // what the screen says is held, now
+      frames_.held_stops(input_, engine_status_);  // what the screen says is held, now
       send(frames_.neutral(), observe);
       break;
     }
     case OpState::kReloading:
-      if (const auto outcome = neutral_frame(observe) ? control.finish_reload() : std::nullopt) {
-        if (outcome->ok) gate_.set_weapons(outcome->weapons);
-        apply(OpEvent::kReloadDone);
-        if (std::exchange(suspend_pending_, false)) begin_suspend();
+      if (neutral_frame(observe)) {
+        if (machine_.neutral_due()) apply(OpEvent::kNeutralSent);
+        if (const auto outcome = control.finish_reload()) {
+          if (outcome->ok) gate_.set_weapons(outcome->weapons);
+          reload_refused_ = !outcome->ok;
+          apply(OpEvent::kReloadDone);  // a suspend that waited for the outcome begins now
+        }
       }
       break;
-    default: {
-      Step step = frames_.step(state_, t_ms);
-      engine_status_ = std::move(step.status);
-      // A link known to be down (a fault, a stalled server) is so before the frame is chosen.
-      if (machine_.link_up() && !link_up()) apply(link_lost_event());
-      answer_engine();
-      send(machine_.motion_allowed() ? step.data : frames_.neutral(), observe);
-      break;
-    }
+    default: drive(t_ms, observe); break;
   }
   advance();
-  if (!input_failed_ && machine_.state() != OpState::kStopping && input_.finished(t_ms)) {
+  if (!input_failed_ && machine_.state() != OpState::kStopping && source_.finished(t_ms)) {
     if (!options_.neutral_tail_at_end) return false;
     apply(OpEvent::kShutdown);
   }
   return true;
 }
 
-void Bridge::answer_engine() {
-  using mapping::EnableState;
-  const auto& e = engine_status_;
-  // A stop button first: pressed this tick, this tick's frame is neutral.
-  answer_stops(e.stop_pressed);
-  const bool engine_enabled = e.enable == EnableState::kEnabled;
-  if (machine_.state() == OpState::kNotEnabled && engine_enabled) apply(OpEvent::kFreshPress);
-  if (machine_.state() == OpState::kEnabled && !engine_enabled) {
-    apply(e.enable == EnableState::kPanic      ? OpEvent::kPanic
-          : e.enable == EnableState::kTimedOut ? OpEvent::kEnableTimeout
-                                               : OpEvent::kRelease);
-  }
+void Bridge::drive(std::int64_t t_ms, const Observer& observe) {
+  // The facts first: a stop button, the deadman, the panic, the timeout.
+  const mapping::InputFacts facts = frames_.facts(input_, t_ms, machine_.motion_allowed());
+  // A link known to be down (a fault, a stalled server) is so before the frame is chosen.
+  if (machine_.link_up() && !link_up()) apply(link_lost_event());
+  act(machine_.on(facts), false);
+  // The machine decided; the engine maps what it allows.
+  Step step = frames_.step(input_, t_ms, machine_.motion_allowed());
+  engine_status_ = std::move(step.status);
+  send(step.data, observe);
 }
 
 void Bridge::answer_stops(mapping::StopPresses pressed) {
@@ -143,23 +138,22 @@ void Bridge::answer_stops(mapping::StopPresses pressed) {
 }
 
 Effect Bridge::apply(OpEvent event) {
-  Effect effect = machine_.on(event);
+  return act(machine_.on(event), event == OpEvent::kOperatorReset || event == OpEvent::kSupervisorReset);
+}
+
+Effect Bridge::act(Effect effect, bool reset) {
   if (effect.rebase) {
     // A stop button pressed and not yet answered is answered before the
     // rebase makes its press history (a reset takes the presses made while stopped).
-    const bool reset = event == OpEvent::kOperatorReset || event == OpEvent::kSupervisorReset;
-    const auto pressed = frames_.take_stop(state_);
+    const auto pressed = frames_.take_stop(input_);
     if (!reset && pressed.by_operator) effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
     if (!reset && pressed.by_supervisor) {
       effect.changed = machine_.on(OpEvent::kSupervisorStop).changed || effect.changed;
     }
-    frames_.restart(state_);
+    frames_.restart(input_);
   }
-  // Each of these begins with its own neutral frames.
-  const OpState now = machine_.state();
-  if (effect.changed && (now == OpState::kStopping || now == OpState::kSuspended || now == OpState::kReloading)) {
-    start_sequence();
-  }
+  if (effect.neutral_frames) start_sequence();
+  if (effect.begin_reload && control_ != nullptr) control_->begin_reload(reload_mapping_);
   return effect;
 }
 
@@ -175,10 +169,7 @@ link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer
   return result;
 }
 
-bool Bridge::link_up() const {
-  // A link that stalled (TCP) gets neutral frames only: for the state, it is not up.
-  return link_.state() == link::LinkState::kUp && link_.motion_allowed();
-}
+bool Bridge::link_up() const { return link::carries_motion(link_.state(), link_.motion_allowed()); }
 
 OpEvent Bridge::link_lost_event() const {
   return link_.fault() == link::FaultLink::Fault::kTaken ? OpEvent::kLinkTaken : OpEvent::kLinkDown;
@@ -216,10 +207,9 @@ void Bridge::pause(const RunControl& control) {
   tick_ = std::max(tick_ + 1, schedule_.next_tick(-1, elapsed) + 1);
   skipped_ = 0;
   // What happened while the process was stopped is history too.
-  state_.begin_tick();
-  input_.pump(state_, elapsed / kNsPerMs);
-  resume_pending_ = false;
-  resumed(control);
+  input_.begin_tick();
+  source_.pump(input_, elapsed / kNsPerMs);
+  apply(OpEvent::kResume);
 }
 
 void Bridge::advance() {
@@ -239,11 +229,14 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
   r.reset_by = machine_.reset_by();
-  r.connected = state_.connected();
-  r.controller = state_.name();
-  r.supervised = input_.supervised();
-  r.supervisor_connected = state_.supervisor().connected();
-  r.supervisor = state_.supervisor().name();
+  r.entered_by = machine_.entered_by();
+  r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
+  r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;
+  r.connected = input_.connected();
+  r.controller = input_.name();
+  r.supervised = source_.supervised();
+  r.supervisor_connected = input_.supervisor().connected();
+  r.supervisor = input_.supervisor().name();
   r.engine = engine_status_;
   r.link = link_.status();
   r.gate_trips = gate_.trips();

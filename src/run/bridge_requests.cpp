@@ -1,26 +1,29 @@
 // The run loop's answers to the world around it: requests (SIGINT, Ctrl-Z,
-// SIGCONT, SIGHUP) and an event script's fault events, and the orderings of
-// suspend, resume and reload (docs/safety-states.md).
-#include <utility>
-
+// SIGCONT, SIGHUP) and an event script's fault events, each an event of the
+// operating-state machine, which orders them (suspend, resume and reload:
+// docs/safety-states.md, "Orderings"). The loop keeps only what a request
+// carries: whether a suspend stops the process, which mapping a reload reads.
 #include "andros/run/bridge.hpp"
 
 namespace andros::run {
 
-void Bridge::on_request(Request request, const RunControl& control) {
+void Bridge::on_request(Request request) {
   switch (request) {
     case Request::kNone: break;
-    case Request::kStop: apply(OpEvent::kShutdown); break;
+    case Request::kShutdown: apply(OpEvent::kShutdown); break;
     case Request::kSuspend:
-      pause_after_suspend_ = true;
-      begin_suspend();
+      suspend_pauses_ = true;
+      apply(OpEvent::kSuspend);
       break;
-    case Request::kResumed: resume(control); break;
-    case Request::kReload: begin_reload(control, ""); break;
+    case Request::kResumed: apply(OpEvent::kResume); break;
+    case Request::kReload:
+      reload_mapping_.clear();
+      apply(OpEvent::kReloadBegin);
+      break;
   }
 }
 
-void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control) {
+void Bridge::on_fault(const input::InputEvent& fault) {
   using T = input::InputEvent::Type;
   switch (fault.type) {
     case T::kLinkDown:
@@ -31,60 +34,17 @@ void Bridge::on_fault(const input::InputEvent& fault, const RunControl& control)
       break;
     case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
     case T::kSuspend:
-      pause_after_suspend_ = false;
-      begin_suspend();
+      suspend_pauses_ = false;
+      apply(OpEvent::kSuspend);
       break;
-    case T::kResume: resume(control); break;
-    case T::kReload: begin_reload(control, fault.name); break;
-    case T::kStop: apply(OpEvent::kShutdown); break;
+    case T::kResume: apply(OpEvent::kResume); break;
+    case T::kReload:
+      reload_mapping_ = fault.name;
+      apply(OpEvent::kReloadBegin);
+      break;
+    case T::kShutdown: apply(OpEvent::kShutdown); break;
     default: break;
   }
-}
-
-void Bridge::begin_suspend() {
-  if (machine_.state() == OpState::kReloading) {
-    suspend_pending_ = true;  // after the reload's outcome
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended) {
-    resume_pending_ = false;  // suspend, resume, suspend: the last word counts
-    return;
-  }
-  if (apply(OpEvent::kSuspend).changed) suspend_frames_due_ = true;
-}
-
-void Bridge::resumed(const RunControl& control) {
-  apply(OpEvent::kResume);
-  if (auto mapping = std::exchange(reload_pending_, std::nullopt)) begin_reload(control, *mapping);
-}
-
-void Bridge::resume(const RunControl& control) {
-  if (suspend_pending_) {
-    suspend_pending_ = false;  // a suspend still waiting behind a reload: answered by this resume
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended && suspend_frames_due_) {
-    resume_pending_ = true;  // answered once the suspend's neutral frames are out
-    return;
-  }
-  resumed(control);
-}
-
-void Bridge::begin_reload(const RunControl& control, const std::string& mapping) {
-  // A second one while one runs is the control's to queue (the files read
-  // again); one while suspended waits for the resume; while stopping it is
-  // ignored (no row).
-  if (machine_.state() == OpState::kReloading) {
-    start_sequence();  // the files read again: neutral frames from now on, as for the first
-    control.begin_reload(mapping);
-    return;
-  }
-  if (machine_.state() == OpState::kSuspended) {
-    reload_pending_ = mapping;
-    return;
-  }
-  if (!apply(OpEvent::kReloadBegin).changed) return;
-  control.begin_reload(mapping);
 }
 
 }  // namespace andros::run

@@ -9,8 +9,11 @@ class EngineFrames final : public FrameSource {
  public:
   explicit EngineFrames(mapping::Engine engine) : engine_(std::move(engine)) {}
 
-  Step step(const input::InputState& input, std::int64_t now_ms) override {
-    auto data = engine_.step(input, now_ms);
+  mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) override {
+    return engine_.facts(input, now_ms, enabled);
+  }
+  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
+    auto data = engine_.step(input, now_ms, motion_allowed);
     return Step{data, engine_.status()};
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }

@@ -14,7 +14,7 @@ FeedbackStatus feedback_status(const TickReport& report) {
   return {report.connected,
           report.engine.enable,
           report.enabled(),
-          report.link.state == link::LinkState::kUp && report.link.motion_allowed,
+          report.link.carries_motion(),
           report.enabled() && report.engine.weapons_mode,
           report.state == OpState::kStopped,
           report.reset_by.has_value(),

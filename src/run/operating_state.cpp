@@ -1,6 +1,7 @@
 #include "andros/run/operating_state.hpp"
 
 #include <array>
+#include <bit>
 
 namespace andros::run {
 namespace {
@@ -8,8 +9,18 @@ namespace {
 using S = OpState;
 using E = OpEvent;
 
-constexpr Transition row(S from, E event, S to, bool rebase = false) { return {from, event, to, rebase, false}; }
-constexpr Transition settle(S from, E event, bool rebase) { return {from, event, S::kNotEnabled, rebase, true}; }
+constexpr Transition row(S from, E event, S to) { return {from, event, Act::kGo, to, false, false, event}; }
+constexpr Transition settle(S from, E event, bool rebase) {
+  return {from, event, Act::kSettle, S::kNotEnabled, rebase, false, event};
+}
+/// sending: only while `from`'s neutral frames go out.
+constexpr Transition wait(S from, E event, bool sending = false) {
+  return {from, event, Act::kWait, from, false, sending, event};
+}
+constexpr Transition withdraw(S from, E event, E waiting) {
+  return {from, event, Act::kWithdraw, from, false, false, waiting};
+}
+constexpr Transition again(S from, E event) { return {from, event, Act::kAgain, from, false, false, event}; }
 
 // Written out row by row, so that docs/safety-states.md and the tests read the same table.
 constexpr auto kTable = std::to_array<Transition>({
@@ -56,12 +67,23 @@ constexpr auto kTable = std::to_array<Transition>({
     row(S::kNotEnabled, E::kReloadBegin, S::kReloading),
     row(S::kEnabled, E::kReloadBegin, S::kReloading),
     row(S::kStopped, E::kReloadBegin, S::kReloading),
+    // A second reload while one is read: the files are read again, its neutral frames count afresh.
+    again(S::kReloading, E::kReloadBegin),
+    // One while suspended is answered after the resume.
+    wait(S::kSuspended, E::kReloadBegin),
     settle(S::kReloading, E::kReloadDone, true),
     row(S::kNoLink, E::kSuspend, S::kSuspended),
     row(S::kNoController, E::kSuspend, S::kSuspended),
     row(S::kNotEnabled, E::kSuspend, S::kSuspended),
     row(S::kEnabled, E::kSuspend, S::kSuspended),
     row(S::kStopped, E::kSuspend, S::kSuspended),
+    // A suspend during a reload waits for its outcome; a resume before then answers it.
+    wait(S::kReloading, E::kSuspend),
+    withdraw(S::kReloading, E::kResume, E::kSuspend),
+    // A resume while the suspend's neutral frames go out waits for them (no
+    // stop of the process in between); suspend, resume, suspend: the last word counts.
+    wait(S::kSuspended, E::kResume, true),
+    withdraw(S::kSuspended, E::kSuspend, E::kResume),
     settle(S::kSuspended, E::kResume, true),
     // Stopped behind the loop's back (SIGSTOP) and continued: afresh too.
     settle(S::kNoLink, E::kResume, true),
@@ -91,7 +113,57 @@ OpState OperatingState::settled() const {
   return S::kNotEnabled;
 }
 
+const Transition* OperatingState::row_for(OpEvent event) const {
+  for (const auto& t : kTable) {
+    if (t.from == state_ && t.event == event && (!t.sending || neutral_due_)) return &t;
+  }
+  return nullptr;
+}
+
 Effect OperatingState::on(OpEvent event) {
+  Effect effect;
+  apply(event, effect);
+  // The waiting events its row lets through now, in the enum's order, until none is.
+  for (bool again = waiting_ != 0; again;) {
+    again = false;
+    for (std::uint32_t rest = waiting_; rest != 0; rest &= rest - 1) {
+      const auto next = static_cast<OpEvent>(std::countr_zero(rest));
+      const Transition* t = row_for(next);
+      if (t != nullptr && t->act == Act::kWait) continue;
+      waiting_ &= ~bit(next);
+      apply(next, effect);  // no row now (the run ended): dropped
+      again = true;
+      break;
+    }
+  }
+  return effect;
+}
+
+Effect OperatingState::on(const mapping::InputFacts& facts) {
+  using mapping::EnableState;
+  Effect effect;
+  if (facts.stops.by_operator) effect |= on(E::kOperatorStop);
+  if (facts.stops.by_supervisor) effect |= on(E::kSupervisorStop);
+  const bool fresh = facts.deadman == EnableState::kEnabled;
+  if (state_ == S::kNotEnabled && fresh) {
+    effect |= on(E::kFreshPress);
+  } else if (state_ == S::kEnabled && !fresh) {
+    effect |= on(facts.deadman == EnableState::kPanic      ? E::kPanic
+                 : facts.deadman == EnableState::kTimedOut ? E::kEnableTimeout
+                                                           : E::kRelease);
+  }
+  return effect;
+}
+
+Effect& Effect::operator|=(const Effect& other) {
+  changed = changed || other.changed;
+  rebase = rebase || other.rebase;
+  neutral_frames = neutral_frames || other.neutral_frames;
+  begin_reload = begin_reload || other.begin_reload;
+  return *this;
+}
+
+bool OperatingState::apply(OpEvent event, Effect& effect) {
   // The conditions the settled states read are kept whatever the state.
   switch (event) {
     case E::kLinkUp: link_up_ = true; break;
@@ -116,22 +188,40 @@ Effect OperatingState::on(OpEvent event) {
       const StopBy by = event == E::kSupervisorReset ? StopBy::kSupervisor : StopBy::kOperator;
       // Stopped only; the supervisor resets any stop, the operator only the
       // operator's (and the gate's: an internal error the operator saw).
-      if (state_ != S::kStopped || (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor)) return {};
+      if (state_ != S::kStopped || (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor)) return false;
       stopped_by_.reset();
       reset_by_ = by;
       break;
     }
     case E::kFreshPress: reset_by_.reset(); break;
+    case E::kNeutralSent: neutral_due_ = false; break;
+    case E::kShutdown: waiting_ = 0; break;  // whatever waited, the run ends
     default: break;
   }
-  for (const auto& t : kTable) {
-    if (t.from != state_ || t.event != event) continue;
-    const OpState to = t.settle ? settled() : t.to;
-    const bool changed = to != state_;
-    state_ = to;
-    return Effect{changed, t.rebase};
+  const Transition* t = row_for(event);
+  if (t == nullptr) return false;
+  switch (t->act) {
+    case Act::kWait: waiting_ |= bit(event); return true;
+    case Act::kWithdraw: waiting_ &= ~bit(t->withdraws); return true;
+    case Act::kAgain:
+      neutral_due_ = effect.neutral_frames = true;
+      effect.begin_reload = effect.begin_reload || event == E::kReloadBegin;
+      return true;
+    case Act::kGo:
+    case Act::kSettle: break;
   }
-  return {};
+  const OpState to = t->act == Act::kSettle ? settled() : t->to;
+  const bool changed = to != state_;
+  if (changed) entered_by_ = event;
+  state_ = to;
+  effect.changed = effect.changed || changed;
+  effect.rebase = effect.rebase || t->rebase;
+  if (changed && (to == S::kSuspended || to == S::kReloading || to == S::kStopping)) {
+    // Each of these begins with its own neutral frames.
+    neutral_due_ = effect.neutral_frames = true;
+    effect.begin_reload = effect.begin_reload || to == S::kReloading;
+  }
+  return true;
 }
 
 std::string_view to_string(OpState state) {
@@ -169,6 +259,18 @@ std::string_view to_string(OpEvent event) {
     case E::kSuspend: return "suspend";
     case E::kResume: return "resume";
     case E::kShutdown: return "shutdown";
+    case E::kNeutralSent: return "neutral frames sent";
+  }
+  return "?";
+}
+
+std::string to_string(const Transition& row) {
+  switch (row.act) {
+    case Act::kGo: return std::string(to_string(row.to));
+    case Act::kSettle: return "settled";
+    case Act::kWait: return row.sending ? "waits for the neutral frames" : "waits";
+    case Act::kWithdraw: return "withdraws the waiting " + std::string(to_string(row.withdraws));
+    case Act::kAgain: return "again";
   }
   return "?";
 }

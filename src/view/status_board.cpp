@@ -16,7 +16,8 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
-                  r.reset_by, r.engine, r.link.state, r.link.motion_allowed, r.link.detail);
+                  r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
+                  r.link.motion_allowed, r.link.detail);
 }
 
 }  // namespace
@@ -160,14 +161,21 @@ std::string state_text(const run::TickReport& r) {
         return "connect the supervisor's controller, then press the deadman afresh";
       }
       return "connect a controller, then press the deadman";
-    case OpState::kNotEnabled:
+    case OpState::kNotEnabled: {
+      // The first cause, never its consequence (a deadman held through a
+      // link regained reads "held since connect or start-up" to the engine).
       if (r.reset_by) {
         return "stop reset by the " + std::string(run::to_string(*r.reset_by)) + ": press the deadman afresh";
       }
-      // The engine saw the deadman held, but driving was interrupted since (link, reload, resume).
-      if (r.engine.enable == mapping::EnableState::kEnabled)
-        return "driving was interrupted: release and press the deadman again";
+      const auto afresh = [](const std::string& cause) { return cause + ": press the deadman afresh"; };
+      if (r.entered_by == run::OpEvent::kLinkUp) return afresh("link regained");
+      if (r.entered_by == run::OpEvent::kReloadDone) {
+        return afresh(r.reload_refused ? "reload refused, the old settings kept" : "reloaded");
+      }
+      if (r.entered_by == run::OpEvent::kResume) return afresh("resumed");
+      if (r.supervisor_back) return afresh("supervisor's controller back");
       return std::string(describe(r.engine.enable));
+    }
     case OpState::kEnabled: return enable_text(r.engine);
     case OpState::kStopped: return stopped_by_text(r) + ": " + std::string(kStoppedText);
     case OpState::kSuspended: return "neutral frames sent, link closed until resumed";

@@ -1,7 +1,7 @@
-// StopRequest: the one stop every loop checks, raised by code or by a stop
+// ShutdownRequest: the one stop every loop checks, raised by code or by a stop
 // signal, waking a loop that sleeps or waits on it. Bounds are generous: a
 // woken wait ends in ms, a missed wake-up would take the full minute.
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 
 #include <gtest/gtest.h>
 #include <pthread.h>
@@ -18,8 +18,8 @@ namespace {
 constexpr std::int64_t kLong = 60 * kNsPerSecond;
 constexpr std::int64_t kWoken = 30 * kNsPerSecond;
 
-TEST(StopRequest, RaisedItStaysRequested) {
-  StopRequest stop;
+TEST(ShutdownRequest, RaisedItStaysRequested) {
+  ShutdownRequest stop;
   EXPECT_FALSE(stop.requested());
   stop.raise();
   EXPECT_TRUE(stop.requested());
@@ -27,16 +27,16 @@ TEST(StopRequest, RaisedItStaysRequested) {
   EXPECT_EQ(stop.signal_number(), 0);  // code, not a signal
 }
 
-TEST(StopRequest, SleepsToItsTimeWhenNothingAsks) {
-  StopRequest stop;
+TEST(ShutdownRequest, SleepsToItsTimeWhenNothingAsks) {
+  ShutdownRequest stop;
   const std::int64_t until = monotonic_ns() + 20 * kNsPerMs;
   EXPECT_TRUE(stop.sleep_until(until));
   EXPECT_GE(monotonic_ns(), until);
   EXPECT_TRUE(stop.sleep_until(0));  // a time already past: at once
 }
 
-TEST(StopRequest, ARaiseFromAnotherThreadWakesASleeper) {
-  StopRequest stop;
+TEST(ShutdownRequest, ARaiseFromAnotherThreadWakesASleeper) {
+  ShutdownRequest stop;
   const std::int64_t start = monotonic_ns();
   std::thread raiser([&] {
     sleep_until_ns_uninterrupted(monotonic_ns() + 20 * kNsPerMs);
@@ -48,12 +48,12 @@ TEST(StopRequest, ARaiseFromAnotherThreadWakesASleeper) {
   EXPECT_FALSE(stop.sleep_until(start + kLong));  // and every sleep after it ends at once
 }
 
-TEST(StopRequest, ARaiseEndsAWaitForInput) {
+TEST(ShutdownRequest, ARaiseEndsAWaitForInput) {
   int fds[2];
   ASSERT_EQ(pipe(fds), 0);
   const UniqueFd read_end(fds[0]);
   const UniqueFd write_end(fds[1]);
-  StopRequest stop;
+  ShutdownRequest stop;
   EXPECT_FALSE(stop.wait_readable(read_end.get(), monotonic_ns() + 10 * kNsPerMs));  // nothing yet: its time
   ASSERT_EQ(write(write_end.get(), "x", 1), 1);
   EXPECT_TRUE(stop.wait_readable(read_end.get(), kNoDeadline));
@@ -70,8 +70,8 @@ TEST(StopRequest, ARaiseEndsAWaitForInput) {
   EXPECT_LT(monotonic_ns() - start, kWoken);
 }
 
-TEST(StopRequest, ABlockedSignalBecomesARequest) {
-  StopRequest stop(kStopSignals);
+TEST(ShutdownRequest, ABlockedSignalBecomesARequest) {
+  ShutdownRequest stop(kShutdownSignals);
   EXPECT_FALSE(stop.requested());
   raise(SIGTERM);  // blocked: pending, not fatal
   EXPECT_TRUE(stop.requested());
@@ -79,8 +79,8 @@ TEST(StopRequest, ABlockedSignalBecomesARequest) {
   EXPECT_TRUE(stop.requested());  // stays requested
 }
 
-TEST(StopRequest, ASignalWakesASleeper) {
-  StopRequest stop(kStopSignals);
+TEST(ShutdownRequest, ASignalWakesASleeper) {
+  ShutdownRequest stop(kShutdownSignals);
   const pthread_t sleeper = pthread_self();
   const std::int64_t start = monotonic_ns();
   // Sent to the sleeping thread itself: no other thread of the test binary can take it.
@@ -94,22 +94,22 @@ TEST(StopRequest, ASignalWakesASleeper) {
   EXPECT_EQ(stop.signal_number(), SIGINT);
 }
 
-TEST(StopRequest, OnlyItsOwnSignalsAsk) {
-  StopRequest stop(kRecordStopSignals);
-  StopRequest code_only;
+TEST(ShutdownRequest, OnlyItsOwnSignalsAsk) {
+  ShutdownRequest stop(kRecordShutdownSignals);
+  ShutdownRequest code_only;
   raise(SIGINT);
   EXPECT_TRUE(stop.requested());
   EXPECT_FALSE(code_only.requested());
 }
 
-TEST(StopRequest, AHangUpStopsUntilItIsMadeAReload) {
+TEST(ShutdownRequest, AHangUpStopsUntilItIsMadeAReload) {
   {
-    StopRequest stop(kStopSignals);
+    ShutdownRequest stop(kShutdownSignals);
     raise(SIGHUP);  // blocked: pending, not fatal
     EXPECT_TRUE(stop.requested());
     EXPECT_EQ(stop.signal_number(), SIGHUP);
   }
-  StopRequest stop(kStopSignals);
+  ShutdownRequest stop(kShutdownSignals);
   stop.reload_on_hangup();
   raise(SIGHUP);
   EXPECT_FALSE(stop.requested());
@@ -122,8 +122,8 @@ TEST(StopRequest, AHangUpStopsUntilItIsMadeAReload) {
 
 // The run loop's one look per tick: with nothing pending and nothing unread,
 // stop, reload and job control have nothing to say, and are not asked.
-TEST(StopRequest, NothingPendingNothingUnreadMeansNothingNew) {
-  StopRequest stop(kStopSignals);
+TEST(ShutdownRequest, NothingPendingNothingUnreadMeansNothingNew) {
+  ShutdownRequest stop(kShutdownSignals);
   stop.reload_on_hangup();
   EXPECT_FALSE(signals_pending());
   EXPECT_FALSE(stop.has_unread());

@@ -124,7 +124,10 @@ run_cmd harness "$TMP/cap" --replug-after 5 --term-after 10 --timeout 30 -- \
 [[ $code -eq 0 ]] || fail "replug run exited $code: $(cat "$TMP/err")"
 check "$TMP/cap" --min 5
 check "$TMP/cap.2" --min 10 --all-neutral
-grep -q "not enabled: driving was interrupted" "$TMP/err" || fail "the regained link does not say why nothing moves: $(cat "$TMP/err")"
+grep -q "not enabled: link regained: press the deadman afresh" "$TMP/err" ||
+  fail "the regained link does not say why nothing moves: $(cat "$TMP/err")"
+# The first cause stays: the held deadman (its consequence) never replaces it.
+! grep -q "deadman held since connect" "$TMP/err" || fail "a consequence replaced the first cause: $(cat "$TMP/err")"
 [[ $(grep -c "lost" "$TMP/err") -eq 1 ]] || fail "the loss is not logged exactly once: $(cat "$TMP/err")"
 [[ $(grep -c "link .*: up" "$TMP/err") -eq 2 ]] || fail "link up not logged twice: $(cat "$TMP/err")"
 

@@ -14,7 +14,7 @@ namespace {
 using namespace testing;  // engine_steps.hpp
 
 TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   auto f = protocol::read_signals(engine.step(in, 0));
   EXPECT_EQ(engine.status().enable, EnableState::kNoController);
@@ -61,7 +61,7 @@ TEST(Engine, PivotGivesTheDocumentedValue) {
     if (auto* a = std::get_if<AxisBinding>(&b.rule); a && a->analog == protocol::signal_id("pivot"))
       a->shape = {false, 0.1, 0.5};
   }
-  Engine engine(validate(std::move(m)), EngineOptions{});
+  DrivenEngine engine(validate(std::move(m)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);                  // the start-up tick first: presses before it would not count
   apply_script(in, "50 axis leftx 16384\n");  // after the enabling frame: not held back
@@ -70,7 +70,7 @@ TEST(Engine, PivotGivesTheDocumentedValue) {
 }
 
 TEST(Engine, PressesBeforeStartUpAreNotFresh) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   apply_script(in, "0 connect\n5 button leftshoulder 1\n");  // pressed before the engine's first tick
   engine.step(in, 10);
@@ -85,7 +85,7 @@ TEST(Engine, PressesBeforeStartUpAreNotFresh) {
 }
 
 TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n10 button leftshoulder 1\n");
@@ -112,8 +112,9 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
 }
 
 TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
-  Engine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\nbindings:\n  - signal: tool_on\n    button: a\n"),
-                EngineOptions{});
+  DrivenEngine engine(
+      mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\nbindings:\n  - signal: tool_on\n    button: a\n"),
+      EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 axis lefttrigger 32767\n0 button a 1\n");
@@ -135,7 +136,7 @@ TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
 // again within one tick is a release at that tick, and the press after it is
 // fresh (the stick held through it waits for rest).
 TEST(Engine, ADeadmanLetGoAndPressedWithinOneTickIsARelease) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 axis lefty -32768\n");
@@ -153,9 +154,9 @@ TEST(Engine, ADeadmanLetGoAndPressedWithinOneTickIsARelease) {
 }
 
 TEST(Engine, APanicSqueezeWithinOneTickLatches) {
-  Engine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\ndeadman_panic: 0.9\nbindings:\n"
-                                  "  - analog: drive\n    axis: lefty\n    invert: true\n"),
-                EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml("robot: HD1\ndeadman: lefttrigger\ndeadman_panic: 0.9\nbindings:\n"
+                                        "  - analog: drive\n    axis: lefty\n    invert: true\n"),
+                      EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n");
@@ -192,7 +193,7 @@ TEST(Engine, APanicSqueezeWithinOneTickLatches) {
 }
 
 TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   // Lost, back with the stick pushed, and the deadman pressed afresh, all in one frame.
@@ -207,8 +208,8 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
 // where drive and pivot rest while enabled; every frame that is not enabled,
 // and neutral(), carries 128.
 TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {
-  Engine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"),
-                EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml("robot: HD1\nextends: " ANDROS_MAPPINGS_DIR "/hd1.yaml\ncenter: 124\n"),
+                      EngineOptions{});
   const auto drive = protocol::signal_id("drive");
   const auto pivot = protocol::signal_id("pivot");
   input::InputState in;
@@ -263,7 +264,7 @@ TEST(Engine, WithoutADeadmanOnlyNeutralFrames) {
   Mapping m;
   m.bindings.push_back(
       Binding{ButtonBinding{protocol::signal_id("tool_on"), *input::parse_button_name("a")}, {}, {}, {}, {}});
-  Engine engine(validate(m, false), EngineOptions{});
+  DrivenEngine engine(validate(m, false), EngineOptions{});
   input::InputState in;
   apply_script(in, "0 connect\n10 button a 1\n");
   EXPECT_EQ(engine.step(in, 40), engine.neutral());

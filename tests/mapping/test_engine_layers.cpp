@@ -20,7 +20,7 @@ const std::string kLayered =
     "  cam:\n    toggle: back\n    bindings:\n      - signal: focus_up\n        button: a\n";
 
 TEST(Engine, LayersHoldBeatsToggleAndLossClearsTheToggle) {
-  Engine engine(mapping_from_yaml(kLayered), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kLayered), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   // A layer toggle pressed in the enabling frame counts: layer buttons are not held back.
@@ -47,7 +47,7 @@ TEST(Engine, LayersHoldBeatsToggleAndLossClearsTheToggle) {
 }
 
 TEST(Engine, DeadmanReleaseClearsTogglesButSelectorsAndKnobsStay) {
-  Engine engine(mapping_from_yaml(kLayered), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kLayered), EngineOptions{});
   input::InputState in;
   EXPECT_EQ(protocol::read_signals(engine.neutral())[protocol::signal_id("light")], 40);  // the knob's initial value
   start_enabled(engine, in);
@@ -71,8 +71,8 @@ TEST(Engine, DeadmanReleaseClearsTogglesButSelectorsAndKnobsStay) {
 }
 
 TEST(Engine, MovedEngineKeepsWorking) {
-  Engine first(mapping_from_yaml(kLayered), EngineOptions{true, 0x3C});
-  Engine engine = std::move(first);
+  DrivenEngine first(mapping_from_yaml(kLayered), EngineOptions{true, 0x3C});
+  DrivenEngine engine = std::move(first);
   input::InputState in;
   start_enabled(engine, in, "20 button rightshoulder 1\n");
   apply_script(in, "50 button a 1\n");
@@ -86,7 +86,7 @@ TEST(Engine, MovedEngineKeepsWorking) {
 // click), push the left stick full and squeeze RT, the arm layer off. Drive and
 // fiber_unwind wait.
 TEST(Engine, LeavingALayerWithTheStickHeldDoesNotMove) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in, "20 button rightstick 1\n25 button rightstick 0\n");
   apply_script(in, "50 axis lefty -32768\n50 axis righttrigger 32767\n");
@@ -107,7 +107,7 @@ TEST(Engine, LeavingALayerWithTheStickHeldDoesNotMove) {
 }
 
 TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   // dpup pressed while the deadman is pressed (one frame): held back, then a tap counts.
@@ -130,11 +130,11 @@ TEST(Engine, PressesInTheFrameOfAChangeAreDroppedButLaterTapsAct) {
 }
 
 TEST(Engine, OneToggleStatePerSignal) {
-  Engine engine(mapping_from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
-                                  "  - signal: tool_on\n    button: x\n    toggle: true\n"
-                                  "layers:\n  cam:\n    toggle: back\n    bindings:\n"
-                                  "      - signal: tool_on\n        button: y\n        toggle: true\n"),
-                EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml("robot: HD1\ndeadman: leftshoulder\nbindings:\n"
+                                        "  - signal: tool_on\n    button: x\n    toggle: true\n"
+                                        "layers:\n  cam:\n    toggle: back\n    bindings:\n"
+                                        "      - signal: tool_on\n        button: y\n        toggle: true\n"),
+                      EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button x 1\n55 button x 0\n60 button back 1\n65 button back 0\n");

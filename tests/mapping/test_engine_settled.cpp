@@ -56,8 +56,8 @@ class Twin {
   protocol::ControlState last;
 
  private:
-  Engine reused_;
-  Engine fresh_;
+  DrivenEngine reused_;
+  DrivenEngine fresh_;
 };
 
 TEST(EngineSettled, AStepFromUnchangedControllersReusesTheFrameComputingWouldGive) {
@@ -127,7 +127,7 @@ TEST(EngineSettled, TheEnableTimeoutEndsASettledStretchOnItsTick) {
 }
 
 TEST(EngineSettled, TheNeutralFrameKeepsUpWithTheLevels) {
-  Engine engine(mapping_from_yaml(kKnobAndTimeout), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kKnobAndTimeout), EngineOptions{});
   input::InputState in;
   const auto light = [&engine] { return protocol::read_signals(engine.neutral())[protocol::signal_id("light")]; };
   EXPECT_EQ(light(), 40);

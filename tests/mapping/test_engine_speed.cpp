@@ -57,7 +57,7 @@ TEST(EngineSpeed, EachLevelScalesTheDistanceFromRestExactly) {
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const auto extra = "center: " + std::to_string(c.center) +
                          "\nscale: {button: y, levels: [0.25, 0.5, 1.0], initial: " + levels[i] + "}\n";
-      Engine engine(mapping_from_yaml(speed_yaml(extra)), EngineOptions{});
+      DrivenEngine engine(mapping_from_yaml(speed_yaml(extra)), EngineOptions{});
       input::InputState in;
       start_enabled(engine, in);
       EXPECT_EQ(engine.status().speed, (SpeedLevel{i, 3, std::stod(levels[i])}));
@@ -73,7 +73,7 @@ TEST(EngineSpeed, EachLevelScalesTheDistanceFromRestExactly) {
 }
 
 TEST(EngineSpeed, NoScaleIsOneLevelOfFullSpeed) {
-  Engine engine(mapping_from_yaml(speed_yaml()), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml()), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   EXPECT_EQ(engine.status().speed, (SpeedLevel{0, 1, 1.0}));
@@ -83,7 +83,7 @@ TEST(EngineSpeed, NoScaleIsOneLevelOfFullSpeed) {
 }
 
 TEST(EngineSpeed, UpWrapsToTheSlowestDownStopsThere) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   const auto press = [&](const char* button, std::int64_t t) {
@@ -106,7 +106,7 @@ TEST(EngineSpeed, UpWrapsToTheSlowestDownStopsThere) {
 }
 
 TEST(EngineSpeed, AStickHeldAtAChangeOfLevelWaitsUntilSeenAtRest) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 axis lefty -32768\n");
@@ -130,7 +130,7 @@ TEST(EngineSpeed, AStickHeldAtAChangeOfLevelWaitsUntilSeenAtRest) {
 }
 
 TEST(EngineSpeed, AChangeOfLevelHoldsBackOnlyDriveAndPivotSticks) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 axis rightx 32767\n50 axis leftx -32768\n");
@@ -144,7 +144,7 @@ TEST(EngineSpeed, AChangeOfLevelHoldsBackOnlyDriveAndPivotSticks) {
 }
 
 TEST(EngineSpeed, AChangeInALayerWithoutDriveHoldsNothingBack) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button rightshoulder 1\n");  // the arm layer: lefty moves the shoulder
@@ -159,7 +159,7 @@ TEST(EngineSpeed, AChangeInALayerWithoutDriveHoldsNothingBack) {
 }
 
 TEST(EngineSpeed, PressesWhileNotEnabledOrInTheEnablingFrameDoNothing) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n10 button y 1\n15 button y 0\n");
@@ -175,7 +175,7 @@ TEST(EngineSpeed, PressesWhileNotEnabledOrInTheEnablingFrameDoNothing) {
 }
 
 TEST(EngineSpeed, AButtonHeldWhenEnabledWaitsForItsRelease) {
-  Engine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml(kScale)), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in, "15 button y 1\n");
   EXPECT_EQ(engine.status().held_back, std::vector{*input::parse_button_name("y")});
@@ -187,8 +187,8 @@ TEST(EngineSpeed, AButtonHeldWhenEnabledWaitsForItsRelease) {
 }
 
 TEST(EngineSpeed, KeptAcrossADeadmanReleaseBackToInitialOnANewPadAndARestart) {
-  Engine engine(mapping_from_yaml(speed_yaml("scale: {button: y, levels: [0.25, 0.5, 1.0], initial: 0.5}\n")),
-                EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(speed_yaml("scale: {button: y, levels: [0.25, 0.5, 1.0], initial: 0.5}\n")),
+                      EngineOptions{});
   input::InputState in;
   start_enabled(engine, in);
   EXPECT_EQ(engine.status().speed.index, 1U);

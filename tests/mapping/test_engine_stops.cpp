@@ -19,8 +19,8 @@ const std::string kStops =
     "  - analog: drive\n    axis: lefty\n    invert: true\n";
 
 /// Both controllers, enabled at 40, then the operator's stop at 50 (seen at 80) and the deadman let go at 90.
-Engine stopped_at_80(input::InputState& in, const std::string& mapping = kStops) {
-  Engine engine(mapping_from_yaml(mapping), EngineOptions{});
+DrivenEngine stopped_at_80(input::InputState& in, const std::string& mapping = kStops) {
+  DrivenEngine engine(mapping_from_yaml(mapping), EngineOptions{});
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n");
   engine.step(in, 40);

@@ -30,7 +30,7 @@ std::uint8_t weapon_1(const protocol::DataBytes& data) {
 }
 
 /// Both controllers at 0, the deadman pressed at 10, `also` in that frame; enabled at 40.
-void start_both(Engine& engine, input::InputState& in, const std::string& also = "") {
+void start_both(DrivenEngine& engine, input::InputState& in, const std::string& also = "") {
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n" + also);
   engine.step(in, 40);
@@ -38,7 +38,7 @@ void start_both(Engine& engine, input::InputState& in, const std::string& also =
 }
 
 TEST(EngineSupervisor, TheSupervisorsStopIsReportedPressedAndWhileHeld) {
-  Engine engine(mapping_from_yaml(kBase), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kBase), EngineOptions{});
   input::InputState in;
   start_both(engine, in);
   EXPECT_FALSE(engine.status().stop_pressed);
@@ -77,7 +77,7 @@ TEST(EngineSupervisor, TheSupervisorsStopIsReportedPressedAndWhileHeld) {
 }
 
 TEST(EngineSupervisor, WithoutASupervisorSectionNothingIsReported) {
-  Engine engine(hd1_mapping(), EngineOptions{});
+  DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n10 supervisor button b 1\n");
@@ -88,7 +88,7 @@ TEST(EngineSupervisor, WithoutASupervisorSectionNothingIsReported) {
 
 // Two people: the operator's fire and arm, and the supervisor's consent.
 TEST(EngineSupervisor, AWeaponFiresOnlyWhileTheSupervisorConsents) {
-  Engine engine(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kBase), kWeapons);
   input::InputState in;
   start_both(engine, in, "20 button rightshoulder 1\n");
   EXPECT_EQ(engine.status().consent, ConsentState::kReleased);
@@ -113,7 +113,7 @@ TEST(EngineSupervisor, AWeaponFiresOnlyWhileTheSupervisorConsents) {
 // Like an arming input: pressed in the frame it takes on its meaning it counts;
 // held since before (taped down) it waits for a release.
 TEST(EngineSupervisor, AConsentHeldSinceBeforeCountsOnlyOnceReleasedAndPressedAgain) {
-  Engine engine(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kBase), kWeapons);
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n5 supervisor button a 1\n");
@@ -133,7 +133,7 @@ TEST(EngineSupervisor, AConsentHeldSinceBeforeCountsOnlyOnceReleasedAndPressedAg
   EXPECT_EQ(weapon_1(engine.step(in, 240)), 1);
 
   // A release and a press between two frames count as such.
-  Engine tap(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine tap(mapping_from_yaml(kBase), kWeapons);
   input::InputState pad;
   tap.step(pad, 0);
   apply_script(pad,
@@ -149,7 +149,7 @@ TEST(EngineSupervisor, AConsentHeldSinceBeforeCountsOnlyOnceReleasedAndPressedAg
 }
 
 TEST(EngineSupervisor, AConsentPressedInTheFrameOfTheDeadmanPressCounts) {
-  Engine engine(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kBase), kWeapons);
   input::InputState in;
   start_both(engine, in, "20 supervisor button a 1\n25 button rightshoulder 1\n");
   EXPECT_EQ(engine.status().consent, ConsentState::kGiven);
@@ -161,7 +161,7 @@ TEST(EngineSupervisor, AConsentPressedInTheFrameOfTheDeadmanPressCounts) {
 // layer, it is stale once the weapons layer is entered; pressed in the frame
 // the layer is entered, it counts.
 TEST(EngineSupervisor, EnteringAWeaponsLayerGivesTheConsentItsMeaning) {
-  Engine engine(mapping_from_yaml(kHeld), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kHeld), kWeapons);
   input::InputState in;
   start_both(engine, in, "20 supervisor button a 1\n");
   EXPECT_EQ(engine.status().consent, ConsentState::kGiven);  // no weapon here: nothing to hold back
@@ -187,7 +187,7 @@ TEST(EngineSupervisor, EnteringAWeaponsLayerGivesTheConsentItsMeaning) {
 
 // The supervisor's controller new or back: the deadman held through it is history.
 TEST(EngineSupervisor, TheSupervisorsControllerBackNeedsAFreshDeadmanPress) {
-  Engine engine(mapping_from_yaml(kBase), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kBase), EngineOptions{});
   input::InputState in;
   start_both(engine, in, "20 button dpup 1\n");
   apply_script(in, "50 supervisor disconnect\n60 supervisor connect\n");

@@ -44,7 +44,7 @@ std::vector<input::InputKey> buttons(std::initializer_list<const char*> names) {
 TEST(EngineWeapons, ABaseLayerWeaponFiresAsALayersDoes) {
   for (const auto& [yaml, layer_key] : {std::pair{kBase, ""}, std::pair{kHeld, "5 button y 1\n"}}) {
     SCOPED_TRACE(layer_key[0] != '\0' ? "in a layer" : "in the base layer");
-    Engine engine(mapping_from_yaml(yaml), kWeapons);
+    DrivenEngine engine(mapping_from_yaml(yaml), kWeapons);
     input::InputState in;
     engine.step(in, 0);
     apply_script(in, "0 connect\n" + std::string(layer_key) +
@@ -63,7 +63,7 @@ TEST(EngineWeapons, ABaseLayerWeaponFiresAsALayersDoes) {
 }
 
 TEST(EngineWeapons, WithoutWeaponsForTheRunNothingFires) {
-  Engine engine(mapping_from_yaml(kBase), EngineOptions{});
+  DrivenEngine engine(mapping_from_yaml(kBase), EngineOptions{});
   input::InputState in;
   start_enabled(engine, in, "20 button rightshoulder 1\n");
   apply_script(in, "50 button b 1\n");
@@ -74,7 +74,7 @@ TEST(EngineWeapons, WithoutWeaponsForTheRunNothingFires) {
 // Armed while b is held: b was pressed for nothing (or for something else) and
 // waits for a release; a tap in the frame that arms is dropped too.
 TEST(EngineWeapons, AFireInputHeldWhenItsWeaponIsArmedWaitsForARelease) {
-  Engine engine(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kBase), kWeapons);
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button b 1\n");
@@ -94,7 +94,7 @@ TEST(EngineWeapons, AFireInputHeldWhenItsWeaponIsArmedWaitsForARelease) {
 }
 
 TEST(EngineWeapons, AFireInputHeldWhenTheBridgeIsEnabledWaitsForARelease) {
-  Engine engine(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kBase), kWeapons);
   input::InputState in;
   engine.step(in, 0);
   apply_script(in, "0 connect\n5 button b 1\n");
@@ -110,7 +110,7 @@ TEST(EngineWeapons, AFireInputHeldWhenTheBridgeIsEnabledWaitsForARelease) {
 // An arming input held since before a change waits as well, and re-arming with
 // b held makes b wait again.
 TEST(EngineWeapons, AFireInputHeldWhenAWeaponsLayerIsEnteredWaitsForARelease) {
-  Engine engine(mapping_from_yaml(kHeld), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kHeld), kWeapons);
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button b 1\n");
@@ -138,7 +138,7 @@ TEST(EngineWeapons, AFireInputHeldWhenAWeaponsLayerIsEnteredWaitsForARelease) {
 }
 
 TEST(EngineWeapons, TheWeaponsModeIsEnabledWithWeaponsInTheActiveLayer) {
-  Engine engine(mapping_from_yaml(kHeld), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kHeld), kWeapons);
   input::InputState in;
   start_enabled(engine, in);
   EXPECT_FALSE(engine.status().weapons_mode);
@@ -156,14 +156,14 @@ TEST(EngineWeapons, TheWeaponsModeIsEnabledWithWeaponsInTheActiveLayer) {
   engine.step(in, 200);
   EXPECT_FALSE(engine.status().weapons_mode);
 
-  Engine without(mapping_from_yaml(kHeld), EngineOptions{});
+  DrivenEngine without(mapping_from_yaml(kHeld), EngineOptions{});
   input::InputState pad;
   start_enabled(without, pad, "20 button y 1\n");
   EXPECT_EQ(without.status().layer, "weapons");
   EXPECT_FALSE(without.status().weapons_mode);  // no --weapons
 
   // Weapons in the base layer: a weapons mode whenever enabled.
-  Engine base(mapping_from_yaml(kBase), kWeapons);
+  DrivenEngine base(mapping_from_yaml(kBase), kWeapons);
   input::InputState other;
   start_enabled(base, other);
   EXPECT_TRUE(base.status().weapons_mode);
@@ -173,7 +173,7 @@ TEST(EngineWeapons, TheWeaponsModeIsEnabledWithWeaponsInTheActiveLayer) {
 // weapons layer above all, ends with the deadman, with any stop (restart) and
 // with the controller.
 TEST(EngineWeapons, ToggledLayersEndWithTheDeadmanAndAnyStop) {
-  Engine engine(mapping_from_yaml(kToggled), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kToggled), kWeapons);
   input::InputState in;
   start_enabled(engine, in, "20 button y 1\n25 button y 0\n");
   EXPECT_EQ(engine.status().layer, "weapons");
@@ -216,7 +216,7 @@ TEST(EngineWeapons, ToggledLayersEndWithTheDeadmanAndAnyStop) {
 // The shipped layout: a stray left-stick click while driving is the camera
 // layer; weapons are live only while RB is held.
 TEST(EngineWeapons, OnTheShippedLayoutWeaponsAreLiveOnlyWhileRBIsHeld) {
-  Engine engine(hd1_mapping(), kWeapons);
+  DrivenEngine engine(hd1_mapping(), kWeapons);
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 axis lefty -32768\n60 button leftstick 1\n65 button leftstick 0\n");
@@ -243,7 +243,7 @@ TEST(EngineWeapons, OnTheShippedLayoutWeaponsAreLiveOnlyWhileRBIsHeld) {
 // Issue 19, finding 7: "armed" is what the screen says while the arming input
 // is held in a weapons mode, and only then.
 TEST(EngineWeapons, ArmedIsTheArmingInputHeldInAWeaponsMode) {
-  Engine engine(mapping_from_yaml(kHeld), kWeapons);
+  DrivenEngine engine(mapping_from_yaml(kHeld), kWeapons);
   input::InputState in;
   start_enabled(engine, in);
   apply_script(in, "50 button rightshoulder 1\n");
@@ -266,7 +266,7 @@ TEST(EngineWeapons, ArmedIsTheArmingInputHeldInAWeaponsMode) {
   engine.step(in, 280);
   EXPECT_FALSE(engine.status().armed);  // the deadman released: no weapons mode, nothing armed
 
-  Engine without(mapping_from_yaml(kHeld), EngineOptions{});
+  DrivenEngine without(mapping_from_yaml(kHeld), EngineOptions{});
   input::InputState pad;
   start_enabled(without, pad, "20 button y 1\n30 button rightshoulder 1\n");
   EXPECT_FALSE(without.status().armed);  // no --weapons

@@ -241,7 +241,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
             add(T::kReload, {}, 0, targets.bad[pick.below(static_cast<std::uint32_t>(targets.bad.size()))]);
           break;
         case 15:
-          add(T::kStop);
+          add(T::kShutdown);
           after_stop = static_cast<int>(pick.below(4)) + 1;  // what follows a stop is never answered
           break;
         case 16: fire(); break;

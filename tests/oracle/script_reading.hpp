@@ -166,7 +166,7 @@ class ScriptReading {
         loop_.reload(e.t_ms);
         break;
       }
-      case T::kStop:
+      case T::kShutdown:
         end_enabled(Ending::kStop);
         loop_.stop(e.t_ms);
         break;

@@ -93,6 +93,8 @@ class StateOracle {
     return "";
   }
 
+  bool operator==(const StateOracle&) const = default;
+
  private:
   /// The events after which the machine may not be enabled, whatever it was.
   static bool interrupts(run::OpEvent event) {

@@ -126,11 +126,11 @@ TEST(RecordLimits, OneStopRequestIsOneRecordHoweverManyTicksAnswerIt) {
     SessionWriter writer(std::make_unique<MemorySink>(text));
     Recorder recorder(writer);
     recorder.pumped(40, {});
-    recorder.request(run::Request::kStop);  // Ctrl-C: the stop is asked again on each tick of the shutdown
+    recorder.request(run::Request::kShutdown);  // Ctrl-C: the stop is asked again on each tick of the shutdown
     recorder.pumped(80, {});
-    recorder.request(run::Request::kStop);
+    recorder.request(run::Request::kShutdown);
     recorder.pumped(120, {});
-    recorder.request(run::Request::kStop);
+    recorder.request(run::Request::kShutdown);
     recorder.request(run::Request::kReload);
     writer.close(5000);
   }

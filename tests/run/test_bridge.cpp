@@ -24,15 +24,18 @@ const FrameRules kRules{false, 0x3C};
 /// pressed after the last restart.
 class PressToDrive final : public testing::WithoutStops {
  public:
-  Step step(const input::InputState& input, std::int64_t) override {
+  mapping::InputFacts facts(const input::InputState& input, std::int64_t, bool) override {
     const auto a = input.button(*input::parse_button_name("a"));
-    const bool enabled = input.connected() && a.down && a.presses > base_;
+    const bool fresh = input.connected() && a.down && a.presses > base_;
+    return {fresh ? mapping::EnableState::kEnabled : mapping::EnableState::kDeadmanReleased, {}};
+  }
+  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
     protocol::ControlState s;
-    s[protocol::signal_id("drive")] = enabled ? 200 : 128;
+    s[protocol::signal_id("drive")] = motion_allowed ? 200 : 128;
     s[protocol::signal_id("pivot")] = 128;
-    s[protocol::signal_id("safety")] = enabled ? 1 : 0;
+    s[protocol::signal_id("safety")] = motion_allowed ? 1 : 0;
     mapping::EngineStatus status;
-    status.enable = enabled ? mapping::EnableState::kEnabled : mapping::EnableState::kDeadmanReleased;
+    status.enable = facts(input, now_ms, motion_allowed).deadman;
     return Step{protocol::FrameBuilder(0x3C).build(s), status};
   }
   protocol::DataBytes neutral() const override {
@@ -187,7 +190,7 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
     ++polls;
     if (polls == 3) return Request::kSuspend;  // polled on every tick, the neutral ones too
     if (polls == 8) return Request::kResumed;
-    return polls >= 10 ? Request::kStop : Request::kNone;
+    return polls >= 10 ? Request::kShutdown : Request::kNone;
   };
   control.pause = [&] {
     ++paused;
@@ -222,7 +225,7 @@ TEST(Bridge, AContinueDuringASuspendsNeutralFramesMeansNoPause) {
     ++polls;
     if (polls == 3) return Request::kSuspend;
     if (polls == 4) return Request::kResumed;
-    return polls >= 8 ? Request::kStop : Request::kNone;
+    return polls >= 8 ? Request::kShutdown : Request::kNone;
   };
   control.pause = [] { FAIL() << "stopped although continued before the stop"; };
   on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
@@ -244,7 +247,7 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
     ++polls;
     if (polls == 3) return Request::kReload;
     if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: read again, frames afresh
-    return polls >= 10 ? Request::kStop : Request::kNone;
+    return polls >= 10 ? Request::kShutdown : Request::kNone;
   };
   control.pause = [] { FAIL() << "a reload is not a pause"; };
   control.begin_reload = [&](const std::string& mapping) { begun.push_back(mapping); };
@@ -336,9 +339,12 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDownAndSaysNoLink) {
 class StallOnce final : public testing::WithoutStops {
  public:
   explicit StallOnce(VirtualClock& clock) : clock_(clock) {}
-  Step step(const input::InputState& input, std::int64_t now_ms) override {
+  mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) override {
+    return inner_.facts(input, now_ms, enabled);
+  }
+  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
     if (now_ms == 80) clock_.advance(std::chrono::milliseconds(130));
-    return inner_.step(input, now_ms);
+    return inner_.step(input, now_ms, motion_allowed);
   }
   protocol::DataBytes neutral() const override { return inner_.neutral(); }
   void restart(const input::InputState&) override {}

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -23,16 +24,19 @@ constexpr std::array kEvents = {E::kLinkUp,         E::kLinkDown,        E::kLin
                                 E::kControllerDown, E::kFreshPress,      E::kRelease,        E::kPanic,
                                 E::kEnableTimeout,  E::kOperatorStop,    E::kSupervisorStop, E::kGateTrip,
                                 E::kOperatorReset,  E::kSupervisorReset, E::kReloadBegin,    E::kReloadDone,
-                                E::kSuspend,        E::kResume,          E::kShutdown};
+                                E::kSuspend,        E::kResume,          E::kShutdown,       E::kNeutralSent};
 
 bool is_reset(E e) { return e == E::kOperatorReset || e == E::kSupervisorReset; }
 bool is_stop(E e) { return e == E::kOperatorStop || e == E::kSupervisorStop || e == E::kGateTrip; }
 
-/// The conditions a machine can be in while in `state`: link up or not, controller up or not.
+/// The conditions a machine can be in while in `state`: link up or not,
+/// controller up or not, and its neutral frames (a suspend's, reload's or
+/// shutdown's) still going out or out.
 struct Start {
   S state;
   bool link;
   bool controller;
+  bool sent = false;
 };
 
 /// A machine brought to `start` by events, as the loop would.
@@ -50,6 +54,7 @@ OperatingState reach(const Start& start) {
     case S::kReloading: m.on(E::kReloadBegin); break;
     case S::kStopping: m.on(E::kShutdown); break;
   }
+  if (start.sent) m.on(E::kNeutralSent);
   return m;
 }
 
@@ -65,6 +70,7 @@ std::vector<Start> starts() {
       for (const bool pad : {false, true}) {
         // Enabled first where it can be, so that the stop, suspend or reload interrupts driving.
         out.push_back({s, link, pad});
+        if (s != S::kStopped) out.push_back({s, link, pad, true});
       }
     }
   }
@@ -86,13 +92,33 @@ TEST(OperatingState, ReachesEveryStartItClaims) {
   }
 }
 
+/// The row a machine at `start` takes for `event`: the first that holds (a
+/// row for while the neutral frames go out holds only then).
+const Transition* row_taken(const Start& start, E event) {
+  for (const auto& row : OperatingState::table()) {
+    if (row.from == start.state && row.event == event && (!row.sending || !start.sent)) return &row;
+  }
+  return nullptr;
+}
+
 TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
-  std::set<std::pair<S, E>> exercised;
+  std::set<std::tuple<S, E, bool>> exercised;
   for (const auto& row : OperatingState::table()) {
     int taken = 0;
     for (const auto& start : starts()) {
-      if (start.state != row.from) continue;
+      if (row_taken(start, row.event) != &row) continue;
       auto m = reach(start);
+      if (row.act == Act::kWait || row.act == Act::kWithdraw || row.act == Act::kAgain) {
+        const Effect effect = m.on(row.event);
+        EXPECT_EQ(m.state(), row.from) << to_string(row.from) << " + " << to_string(row.event);
+        EXPECT_FALSE(effect.changed);
+        EXPECT_FALSE(effect.rebase);
+        EXPECT_EQ(m.waiting(row.event), row.act == Act::kWait);
+        EXPECT_EQ(effect.neutral_frames, row.act == Act::kAgain);
+        EXPECT_EQ(effect.begin_reload, row.act == Act::kAgain);
+        ++taken;
+        continue;
+      }
       const Effect effect = m.on(row.event);
       const bool link = row.event == E::kLinkUp                                   ? true
                         : row.event == E::kLinkDown || row.event == E::kLinkTaken ? false
@@ -102,14 +128,14 @@ TEST(OperatingState, EveryRowOfTheTableIsTakenAsWritten) {
                                                          : start.controller;
       // A stop latched before the row (or by it) still holds after it, unless the row clears it.
       const bool latched = (start.state == S::kStopped || is_stop(row.event)) && !is_reset(row.event);
-      const S want = row.settle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
+      const S want = row.act == Act::kSettle ? (latched ? S::kStopped : settled(link, pad)) : row.to;
       EXPECT_EQ(m.state(), want) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.rebase, row.rebase) << to_string(row.from) << " + " << to_string(row.event);
       EXPECT_EQ(effect.changed, want != row.from);
       ++taken;
     }
-    EXPECT_GT(taken, 0) << "no test reaches " << to_string(row.from);
-    EXPECT_TRUE(exercised.insert({row.from, row.event}).second)
+    EXPECT_GT(taken, 0) << "no test reaches " << to_string(row.from) << " + " << to_string(row.event);
+    EXPECT_TRUE(exercised.insert({row.from, row.event, row.sending}).second)
         << "two rows for " << to_string(row.from) << " + " << to_string(row.event);
   }
 }
@@ -131,7 +157,7 @@ TEST(OperatingState, AnEventWithoutARowChangesNothingButItsCondition) {
 
 TEST(OperatingState, TheOnlyWayIntoEnabledIsAFreshPressInNotEnabled) {
   for (const auto& row : OperatingState::table()) {
-    if (row.to == S::kEnabled && !row.settle) {
+    if (row.to == S::kEnabled && row.act == Act::kGo) {
       EXPECT_EQ(row.from, S::kNotEnabled);
       EXPECT_EQ(row.event, E::kFreshPress);
     }
@@ -165,7 +191,7 @@ TEST(OperatingState, WhateverInterruptsDrivingEndsEnabledAndComesBackThroughAReb
   // engine (a press before it is history), but a controller coming back:
   // the engine counts presses per connection itself.
   for (const auto& row : OperatingState::table()) {
-    if (!row.settle) continue;
+    if (row.act != Act::kSettle) continue;
     EXPECT_EQ(row.rebase, row.event != E::kControllerUp) << to_string(row.from) << " + " << to_string(row.event);
   }
 }
@@ -197,6 +223,7 @@ TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
   for (const auto& [begin, end] : {std::pair{E::kSuspend, E::kResume}, std::pair{E::kReloadBegin, E::kReloadDone}}) {
     auto m = reach({S::kEnabled, true, true});
     m.on(begin);
+    m.on(E::kNeutralSent);  // the loop's frames are out
     m.on(E::kOperatorStop);
     m.on(end);
     EXPECT_EQ(m.state(), S::kStopped) << to_string(begin);
@@ -242,10 +269,77 @@ TEST(OperatingState, TheSupervisorResetsAnyStopTheOperatorOnlyTheOperators) {
     auto n = reach({S::kEnabled, true, true});
     n.on(E::kOperatorStop);
     n.on(begin);
+    n.on(E::kNeutralSent);
     n.on(E::kSupervisorReset);
     n.on(end);
     EXPECT_EQ(n.state(), S::kStopped) << to_string(begin);
   }
+}
+
+// The orderings (docs/safety-states.md, "Orderings"): the machine's, as waiting events.
+TEST(OperatingState, ASuspendDuringAReloadWaitsForItsOutcome) {
+  auto m = reach({S::kEnabled, true, true});
+  m.on(E::kReloadBegin);
+  EXPECT_EQ(m.on(E::kSuspend), Effect{});
+  EXPECT_EQ(m.state(), S::kReloading);
+  EXPECT_TRUE(m.waiting(E::kSuspend));
+  const Effect done = m.on(E::kReloadDone);
+  EXPECT_EQ(m.state(), S::kSuspended);
+  EXPECT_TRUE(done.rebase);          // the reload's
+  EXPECT_TRUE(done.neutral_frames);  // the suspend's own frames
+  EXPECT_FALSE(m.waiting(E::kSuspend));
+  EXPECT_TRUE(m.neutral_due());
+}
+
+TEST(OperatingState, AResumeBeforeTheReloadsOutcomeAnswersTheSuspendWaitingBehindIt) {
+  auto m = reach({S::kEnabled, true, true});
+  m.on(E::kReloadBegin);
+  m.on(E::kSuspend);
+  m.on(E::kResume);
+  EXPECT_FALSE(m.waiting(E::kSuspend));
+  m.on(E::kReloadDone);
+  EXPECT_EQ(m.state(), S::kNotEnabled);
+}
+
+TEST(OperatingState, AReloadWhileSuspendedIsAnsweredAfterTheResume) {
+  auto m = reach({S::kSuspended, true, true, true});
+  EXPECT_EQ(m.on(E::kReloadBegin), Effect{});
+  EXPECT_EQ(m.state(), S::kSuspended);
+  const Effect resumed = m.on(E::kResume);
+  EXPECT_EQ(m.state(), S::kReloading);
+  EXPECT_TRUE(resumed.rebase);
+  EXPECT_TRUE(resumed.begin_reload);
+  EXPECT_TRUE(resumed.neutral_frames);
+}
+
+TEST(OperatingState, AResumeWhileTheSuspendsFramesGoOutWaitsForThem) {
+  auto m = reach({S::kSuspended, true, true});
+  m.on(E::kResume);
+  EXPECT_EQ(m.state(), S::kSuspended);
+  EXPECT_TRUE(m.waiting(E::kResume));
+  const Effect sent = m.on(E::kNeutralSent);
+  EXPECT_EQ(m.state(), S::kNotEnabled);
+  EXPECT_TRUE(sent.rebase);
+  // Suspend, resume, suspend: the last word counts.
+  auto n = reach({S::kSuspended, true, true});
+  n.on(E::kResume);
+  n.on(E::kSuspend);
+  n.on(E::kNeutralSent);
+  EXPECT_EQ(n.state(), S::kSuspended);
+}
+
+TEST(OperatingState, ASecondReloadBeginsItAgainAndAShutdownEndsWhatWaits) {
+  auto m = reach({S::kReloading, true, true, true});
+  const Effect again = m.on(E::kReloadBegin);
+  EXPECT_EQ(m.state(), S::kReloading);
+  EXPECT_TRUE(again.neutral_frames && again.begin_reload && !again.changed);
+  EXPECT_TRUE(m.neutral_due());
+  m.on(E::kSuspend);
+  m.on(E::kShutdown);
+  EXPECT_EQ(m.state(), S::kStopping);
+  EXPECT_FALSE(m.waiting(E::kSuspend));
+  m.on(E::kReloadDone);
+  EXPECT_EQ(m.state(), S::kStopping);
 }
 
 TEST(OperatingState, StoppingIsTheEnd) {
@@ -269,8 +363,7 @@ TEST(OperatingState, TheDocsTableIsTheCodes) {
   std::vector<std::string> code;
   for (const auto& row : OperatingState::table()) {
     std::ostringstream out;
-    out << "| " << to_string(row.from) << " | " << to_string(row.event) << " | "
-        << (row.settle ? std::string("settled") : std::string(to_string(row.to))) << " | "
+    out << "| " << to_string(row.from) << " | " << to_string(row.event) << " | " << to_string(row) << " | "
         << (row.rebase ? "yes" : "no") << " |";
     code.push_back(out.str());
   }

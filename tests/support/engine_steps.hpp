@@ -10,6 +10,44 @@
 
 namespace andros::testing {
 
+/// The engine as the engine's own tests drive it: each step its facts, then
+/// the step with motion allowed while the deadman reports a fresh hold and no
+/// stop button is pressed in the tick. That is the operating-state machine's
+/// decision reduced to not enabled and enabled, with no latch, no link and no
+/// rebase: the machine itself, its latch and the loop are tested with the
+/// loop (tests/run), not here. Everything else is the engine's own.
+class DrivenEngine {
+ public:
+  DrivenEngine(mapping::ValidMapping mapping, mapping::EngineOptions options) : engine_(std::move(mapping), options) {}
+
+  /// One tick: the facts, the decision, the step.
+  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms) {
+    const auto facts = engine_.facts(input, now_ms, enabled_);
+    enabled_ = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
+    return engine_.step(input, now_ms, enabled_);
+  }
+  /// Whether the last step allowed motion.
+  [[nodiscard]] bool enabled() const { return enabled_; }
+
+  void restart(const input::InputState& now) {
+    enabled_ = false;
+    engine_.restart(now);
+  }
+  mapping::StopPresses take_stop(const input::InputState& input) { return engine_.take_stop(input); }
+  mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) {
+    return engine_.stopped(input, now_ms);
+  }
+  [[nodiscard]] protocol::DataBytes neutral() const { return engine_.neutral(); }
+  [[nodiscard]] const mapping::EngineStatus& status() const { return engine_.status(); }
+  [[nodiscard]] const mapping::Mapping& mapping() const { return engine_.mapping(); }
+  [[nodiscard]] bool settled() const { return engine_.settled(); }
+  mapping::Engine& engine() { return engine_; }
+
+ private:
+  mapping::Engine engine_;
+  bool enabled_ = false;
+};
+
 /// The shipped HD1 mapping (deadman leftshoulder, drive on lefty).
 inline mapping::ValidMapping hd1_mapping() {
   return mapping::load_mapping(std::string(ANDROS_MAPPINGS_DIR) + "/hd1.yaml");
@@ -32,7 +70,7 @@ inline void apply_script(input::InputState& state, const std::string& text) {
 /// The usual start: the start-up tick at 0, a pad connected and the deadman
 /// (leftshoulder) pressed afresh, with `also` in the same frame, and the
 /// enabling tick at 40.
-inline void start_enabled(mapping::Engine& engine, input::InputState& state, const std::string& also = "") {
+inline void start_enabled(DrivenEngine& engine, input::InputState& state, const std::string& also = "") {
   engine.step(state, 0);
   apply_script(state, "0 connect\n10 button leftshoulder 1\n" + also);
   engine.step(state, 40);

@@ -57,10 +57,16 @@ class FaultyFrames final : public run::ReloadableFrames {
   FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault)
       : run::ReloadableFrames(std::move(inner)), fault_(fault) {}
 
-  run::Step step(const input::InputState& input, std::int64_t now_ms) override {
-    run::Step s = run::ReloadableFrames::step(input, now_ms);
-    last_ = s.data;
-    if (!in_neutral()) inject(s.data);
+  run::Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
+    run::Step s = run::ReloadableFrames::step(input, now_ms, motion_allowed);
+    if (fault_ == EngineFault::kStaleNeutral) {
+      // The frames while not enabled are the last driving one's.
+      if (motion_allowed) last_ = s.data;
+      else if (last_) s.data = *last_;
+      return s;
+    }
+    // A frame with motion allowed gets the driving faults; one without (sent as the neutral frame), the neutral ones.
+    if (in_neutral() != motion_allowed) inject(s.data);
     return s;
   }
   [[nodiscard]] protocol::DataBytes neutral() const override {

@@ -149,17 +149,49 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   EXPECT_EQ(s.state, run::OpState::kNoLink);
   EXPECT_NE(s.enable_text.find("nothing reaches the vehicle (link No such file or directory)"), std::string::npos)
       << s.enable_text;
-  // The link came back: a new link, the deadman held through it is not a fresh press.
+  // The link came back: a new link, the deadman held through it is not a
+  // fresh press. The reason is the first cause, and stays when the engine
+  // then reads the held deadman as held since the rebase (a consequence).
   r.state = run::OpState::kNotEnabled;
+  r.entered_by = run::OpEvent::kLinkUp;
   board.observe(r);
   s = board.status();
   EXPECT_FALSE(s.enabled());
-  EXPECT_EQ(s.enable_text, "driving was interrupted: release and press the deadman again");
+  EXPECT_EQ(s.enable_text, "link regained: press the deadman afresh");
+  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text, "link regained: press the deadman afresh");
   for (const auto state : {run::OpState::kSuspended, run::OpState::kReloading, run::OpState::kNoController}) {
     r.state = state;
     board.observe(r);
     EXPECT_FALSE(board.status().enabled()) << run::to_string(state);
   }
+}
+
+TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
+  run::TickReport r;
+  r.connected = true;
+  r.state = run::OpState::kNotEnabled;
+  r.link.state = link::LinkState::kUp;
+  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;  // the held deadman, after the rebase
+  const auto said = [&r] { return view::state_text(r); };
+  r.entered_by = run::OpEvent::kReloadDone;
+  EXPECT_EQ(said(), "reloaded: press the deadman afresh");
+  r.reload_refused = true;
+  EXPECT_EQ(said(), "reload refused, the old settings kept: press the deadman afresh");
+  r.reload_refused = false;
+  r.entered_by = run::OpEvent::kResume;
+  EXPECT_EQ(said(), "resumed: press the deadman afresh");
+  r.entered_by = run::OpEvent::kControllerUp;
+  r.supervised = r.supervisor_connected = r.supervisor_back = true;
+  EXPECT_EQ(said(), "supervisor's controller back: press the deadman afresh");
+  // The operator's own controller connected: held since connect is the first cause.
+  r.supervisor_back = false;
+  EXPECT_EQ(said(), "deadman held since connect or start-up: release and press it again");
+  // Released from enabled: the deadman's own state.
+  r.entered_by = run::OpEvent::kRelease;
+  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  EXPECT_EQ(said(), "deadman released");
 }
 
 TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {

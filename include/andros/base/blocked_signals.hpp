@@ -1,7 +1,7 @@
 #pragma once
 /// A set of signals blocked in the calling thread (and so in every thread it
 /// starts later) and taken synchronously, never handled: the one mechanism
-/// behind StopRequest and JobControlSignals.
+/// behind ShutdownRequest and JobControlSignals.
 
 #include <signal.h>
 

@@ -2,7 +2,7 @@
 /// The one clock every loop reads: CLOCK_MONOTONIC in ns, absolute-time
 /// sleeps on it (so that a late wake-up never shifts the ticks after it), and
 /// the periodic schedule every periodic loop keeps. What stops a loop is
-/// StopRequest (stop.hpp).
+/// ShutdownRequest (stop.hpp).
 
 #include <algorithm>
 #include <chrono>
@@ -23,7 +23,7 @@ std::int64_t monotonic_ns();
 
 /// Sleeps until the monotonic clock reads abs_ns, whatever interrupts it: the
 /// frame clock's sleep, which nothing may shorten. A sleep that a stop request
-/// should end is StopRequest::sleep_until.
+/// should end is ShutdownRequest::sleep_until.
 void sleep_until_ns_uninterrupted(std::int64_t abs_ns);
 
 /// The time a loop reads and sleeps on, injected so that the same loop runs

@@ -1,6 +1,6 @@
 #pragma once
 /// Job control (Ctrl-Z, SIGTTIN, SIGTTOU, SIGCONT) as requests the run loop
-/// answers on its next tick, like a StopRequest. The stop signals are
+/// answers on its next tick, like a ShutdownRequest. The stop signals are
 /// blocked, so that none can freeze the process between two frames with a
 /// driving frame last: the loop sends its neutral frames first, then the
 /// process stops itself (SIGSTOP) until continued. Blocked, SIGTTOU is never

@@ -102,7 +102,7 @@ struct InputEvent {
     kSuspend,    ///< `suspend`: job control (Ctrl-Z)
     kResume,     ///< `resume`: fg after it
     kReload,     ///< `reload [FILE]`: SIGHUP; name = the mapping file to load (empty: the same one)
-    kStop,       ///< `stop`: SIGINT/SIGTERM, the run ends on neutral frames
+    kShutdown,   ///< `stop`: as SIGINT/SIGTERM, the run shuts down on neutral frames
   };
   /// A fault event: one no controller's state takes.
   [[nodiscard]] bool is_fault() const { return type >= Type::kLinkDown; }

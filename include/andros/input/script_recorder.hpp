@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/input/events.hpp"
 #include "andros/input/sdl_input.hpp"
 
@@ -40,7 +40,7 @@ struct RecordStatus {
 /// supervisor disconnect`, so that the script has one configured), until a stop request (which also ends the wait
 /// between two ticks) or keep_going returning false; then writes `T end`. keep_going runs after every tick. Throws
 /// RuntimeError when out fails. Ends by itself at options.max_ms. Returns where it ended.
-RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, StopRequest& stop,
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, ShutdownRequest& stop,
                            const std::function<bool(const RecordStatus&)>& keep_going);
 
 }  // namespace andros::input

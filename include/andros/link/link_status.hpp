@@ -32,12 +32,20 @@ struct LinkCounters {
   std::uint64_t losses = 0;  ///< times an open link was lost
 };
 
+/// The link carries motion: it is up, and not held to neutral frames (a TCP
+/// server that stalled): the one rule for the loop's state, the pad's light and the view.
+constexpr bool carries_motion(LinkState state, bool motion_allowed) {
+  return state == LinkState::kUp && motion_allowed;
+}
+
 /// A link at one moment (Link::status()).
 struct LinkStatus {
   LinkState state = LinkState::kConnecting;
   bool motion_allowed = true;  ///< false: the link gets neutral frames only (Link::motion_allowed)
   std::string detail;          ///< why it is not up, empty when up
   LinkCounters counters;
+
+  [[nodiscard]] bool carries_motion() const { return link::carries_motion(state, motion_allowed); }
 };
 
 std::string_view to_string(LinkState state);

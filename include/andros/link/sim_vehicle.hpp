@@ -8,7 +8,7 @@
 #include <string>
 #include <thread>
 
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/base/unique_fd.hpp"
 #include "andros/link/vehicle_view.hpp"
 
@@ -38,8 +38,8 @@ class SimVehicle {
   bool read_ready();
 
   UniqueFd master_;
-  UniqueFd slave_;    ///< held open so the master never sees a hang-up between bridge reopens
-  StopRequest stop_;  ///< raised by stop(): the thread takes in the last frames and ends
+  UniqueFd slave_;        ///< held open so the master never sees a hang-up between bridge reopens
+  ShutdownRequest stop_;  ///< raised by stop(): the thread takes in the last frames and ends
   std::string path_;
   mutable std::mutex mutex_;
   VehicleView view_;

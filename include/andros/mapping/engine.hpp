@@ -1,9 +1,13 @@
 #pragma once
 /// The mapping engine: a pure function of (input state, its own previous
-/// state, tick time) to the frame's data bytes. No SDL, no clock reads, no I/O.
-/// The safety rules (docs/mapping.md) are applied in one place, the rest rule
-/// before the bindings and apply_safety() after them, so that no mapping can
-/// bypass them.
+/// state, tick time, whether motion is allowed) to the frame's data bytes. No
+/// SDL, no clock reads, no I/O. It decides nothing about whether the vehicle
+/// may move: it reports the facts (facts(): the deadman and the stop
+/// buttons, mapping/deadman.hpp and stop_buttons.hpp), the run loop's
+/// operating-state machine decides, and the engine is told (step()'s
+/// motion_allowed). The safety rules (docs/mapping.md) are applied in one
+/// place, the rest rule before the bindings and apply_safety() after them,
+/// so that no mapping can bypass them.
 
 #include <bitset>
 #include <cstdint>
@@ -37,17 +41,25 @@ class Engine {
   static constexpr std::int64_t kMilli = 1000;
 
   /// Runs a validated mapping (validate(), load_mapping()); a hand-built one
-  /// without a deadman is never enabled, so it only ever sends neutral frames.
+  /// without a deadman never reports a fresh press, so it is never enabled.
   Engine(ValidMapping mapping, EngineOptions options);
 
-  /// One tick at time now_ms (ms since start, non-decreasing): the data bytes
-  /// of the frame to send. Always a frame that passes validation. The first
+  /// The tick's facts at now_ms, before its step: what the deadman did (a
+  /// fresh press, released, not fresh, the panic, the enable timeout) and
+  /// the stop buttons pressed or held (taking the presses). enabled: the
+  /// loop is enabled now (the enable timeout runs only then). The first
   /// call is start-up: deadman presses counted before it are not fresh.
-  /// While nothing changes (the controllers as at the last step, which found
-  /// them as at the one before and changed none of the engine's state), the
-  /// last frame is given again without computing it: the same frame and
-  /// status that computing would give (see step()).
-  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms);
+  InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled);
+
+  /// One tick at time now_ms (ms since start, non-decreasing), after its
+  /// facts: the data bytes of the frame to send, the bindings applied only
+  /// when motion_allowed (the operating state is enabled); otherwise the
+  /// neutral frame. Always a frame that passes validation. While nothing
+  /// changes (the controllers and motion_allowed as at the last step, which
+  /// found them as at the one before and changed none of the engine's
+  /// state), the last frame is given again without computing it: the same
+  /// frame and status that computing would give (see step()).
+  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed);
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
@@ -75,19 +87,35 @@ class Engine {
   [[nodiscard]] const EngineStatus& status() const;
   [[nodiscard]] const Mapping& mapping() const;
   /// The last step found the controllers as the one before did and changed
-  /// nothing: until they change (or the enable timeout falls due), a step
-  /// gives its frame again.
+  /// nothing: until they (or motion_allowed) change, a step gives its frame again.
   [[nodiscard]] bool settled() const { return settled_; }
 
  private:
+  /// What a step carries to the next (but the last step's time), as one
+  /// value: a step that leaves it as it found it is settled.
+  struct Carried {
+    explicit Carried(const Mapping& mapping) : rest(mapping) {}
+
+    bool started = false;
+    std::uint32_t connection = 0;
+    std::uint32_t supervisor_connection = 0;                ///< the supervisor's controller session
+    std::map<input::InputKey, std::uint32_t> seen_presses;  ///< presses already acted on (or ignored)
+    bool was_enabled = false;                               ///< motion allowed at the last step
+    int layer = -1;                                         ///< active layer, -1 = base
+    int toggled_layer = -1;                                 ///< layer switched on by a toggle button
+    std::bitset<protocol::kSignalCount> toggled;            ///< one toggle state per signal, whichever input flips it
+    RestRule rest;
+    std::vector<int> selector;                                       ///< per binding slot: a selector's position
+    std::array<std::int64_t, protocol::kSignalCount> level_milli{};  ///< arm_speed/light in 1/1000 units
+    EngineStatus status;
+
+    bool operator==(const Carried&) const = default;
+  };
+
   /// The step, computed.
-  protocol::DataBytes compute(const input::InputState& input, std::int64_t now_ms);
-  /// Every member a step carries to the next (references), but the last
-  /// step's time: a step that leaves all of them as it found them is settled.
-  [[nodiscard]] auto carried() const;
-  /// Enabled, and the enable timeout runs out by now_ms: the one change a
-  /// settled step would see on the clock.
-  [[nodiscard]] bool timeout_due(std::int64_t now_ms) const;
+  protocol::DataBytes compute(const input::InputState& input, std::int64_t now_ms, bool enabled);
+  /// Start-up, or a controller's new session (the operator's, the supervisor's): afresh.
+  void follow_sessions(const input::InputState& input, std::int64_t now_ms);
   void start_session(const input::InputState& input, bool at_start_up);
   /// The stop buttons this tick (the operator's `estop`, the supervisor's
   /// `stop`): EngineStatus::stop_pressed (taking the presses), stop_held, supervisor_stop.
@@ -98,6 +126,8 @@ class Engine {
   [[nodiscard]] std::uint32_t new_presses(const input::InputState& input, input::InputKey key) const;
   /// Notes whether any input the mapping reads changed since the last change (the enable timeout).
   void note_activity(const input::InputState& input, std::int64_t now_ms);
+  /// Enabled, and no input changed for the mapping's enable_timeout by now_ms.
+  [[nodiscard]] bool timed_out(std::int64_t now_ms) const;
   void update_layer(const input::InputState& input, bool enabled);
   /// The speed buttons' presses (enabled only); a new level holds drive and pivot's sticks back.
   void update_speed(const input::InputState& input);
@@ -120,34 +150,23 @@ class Engine {
   std::vector<input::InputKey> buttons_;            ///< every button the mapping reads
   std::vector<input::InputKey> axes_;               ///< every axis the mapping reads
   std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
-  // State carried from tick to tick.
-  bool started_ = false;
-  std::uint32_t connection_ = 0;
-  std::uint32_t supervisor_connection_ = 0;                ///< the supervisor's controller session
-  std::map<input::InputKey, std::uint32_t> seen_presses_;  ///< presses already acted on (or ignored)
+  Carried c_;                                       ///< carried from step to step
+  // The facts' own state (facts()), which a step neither reads nor changes.
   Deadman deadman_;
-  bool was_enabled_ = false;  ///< at the last step
   StopButtons stops_;
-  std::int64_t last_activity_ms_ = 0;                               ///< the last step that saw an input change
-  std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that step
+  std::int64_t last_activity_ms_ = 0;                               ///< the last tick that saw an input change
+  std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that tick
   std::map<input::InputKey, std::int16_t> activity_axes_;
-  int layer_ = -1;                               ///< active layer, -1 = base
-  int toggled_layer_ = -1;                       ///< layer switched on by a toggle button
-  std::bitset<protocol::kSignalCount> toggled_;  ///< one toggle state per signal, whichever input flips it
-  RestRule rest_;
-  std::vector<int> selector_;                                       ///< per binding slot: a selector's position
-  std::array<std::int64_t, protocol::kSignalCount> level_milli_{};  ///< arm_speed/light in 1/1000 units
   std::int64_t last_ms_ = 0;
-  // Every member above that a step changes is in carried(): one left out
-  // would let a step that changed it count as settled.
 
   // The last step, for the next one (step()).
   input::PadState stepped_operator_;  ///< the controllers it read
   input::PadState stepped_supervisor_;
+  bool stepped_motion_ = false;                         ///< and whether motion was allowed
   protocol::DataBytes stepped_frame_{};                 ///< its frame
   mutable std::optional<protocol::DataBytes> neutral_;  ///< neutral() since the last computed step
   bool stepped_ = false;
-  bool settled_ = false;  ///< it found the controllers as the one before did, and changed nothing carried()
+  bool settled_ = false;  ///< it found the controllers as the one before did, and changed nothing in c_
 };
 
 }  // namespace andros::mapping

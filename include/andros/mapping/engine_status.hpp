@@ -52,6 +52,18 @@ struct StopPresses {
   bool operator==(const StopPresses&) const = default;
 };
 
+/// One tick's facts, before its step: what the deadman and the stop buttons
+/// did. They decide nothing: the run loop's operating-state machine does.
+struct InputFacts {
+  /// kEnabled: held, and pressed afresh (a fresh press where not enabled);
+  /// otherwise why it is not: released (or let go and pressed again within
+  /// the tick), held since connect or a rebase, the panic, the enable timeout.
+  EnableState deadman = EnableState::kNoController;
+  StopPresses stops;  ///< a stop button pressed since the last tick, or held
+
+  bool operator==(const InputFacts&) const = default;
+};
+
 struct EngineStatus {
   EnableState enable = EnableState::kNoController;
   std::string layer;                       ///< the active layer's name ("" for the base layer)

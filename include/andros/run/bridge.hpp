@@ -34,13 +34,22 @@ struct Step {
 };
 
 /// What computes the frames: the mapping engine in `run` and replay, a fixed
-/// frame in the benchmarks and tests.
+/// frame in the benchmarks and tests. It reports facts (what the deadman and
+/// the stop buttons did) and maps; it never decides whether the vehicle may
+/// move: the loop's operating-state machine does, and tells step(). Every
+/// method is pure virtual: a source that forgot one must not compile (the
+/// tests' doubles with no stop buttons are in tests/support/frame_doubles.hpp).
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
-  /// The frame for the tick at now_ms (ms since start) from this input.
-  virtual Step step(const input::InputState& input, std::int64_t now_ms) = 0;
-  /// The neutral frame (stop, suspend, reload, no link, not enabled).
+  /// The tick's facts at now_ms, before its step (a driving state: no link,
+  /// no controller, not enabled, enabled). enabled: the state is enabled
+  /// now (the enable timeout runs only then).
+  virtual mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) = 0;
+  /// The frame for the tick at now_ms (ms since start) from this input,
+  /// the bindings applied only when motion_allowed (the neutral frame otherwise).
+  virtual Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) = 0;
+  /// The neutral frame (stop, suspend, reload).
   [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
   /// Starts afresh from the input as it is now: every press it has counted
   /// is history, and the deadman needs a fresh press after it.
@@ -66,10 +75,15 @@ struct TickReport {
   std::int64_t skipped = 0;    ///< ticks skipped before this one after a stall
   protocol::DataBytes data{};  ///< the frame offered to the link (result: whether it took it)
   link::SendResult result = link::SendResult::kDown;
-  bool sent = true;                   ///< false: nothing was offered this tick (suspended, link closed)
-  OpState state = OpState::kNoLink;   ///< after this tick: what the screen, pad, log and service say
-  std::optional<StopBy> stopped_by;   ///< a stop latched: whose (OperatingState::stopped_by)
-  std::optional<StopBy> reset_by;     ///< who reset the last stop, until the next stop or enabled
+  bool sent = true;                  ///< false: nothing was offered this tick (suspended, link closed)
+  OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
+  std::optional<StopBy> stopped_by;  ///< a stop latched: whose (OperatingState::stopped_by)
+  std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
+  /// The event that brought the machine into `state` (OperatingState::entered_by): the first cause.
+  std::optional<OpEvent> entered_by;
+  bool supervisor_back =
+      false;  ///< entered by kControllerUp: the supervisor's controller came back (the operator's stayed)
+  bool reload_refused = false;        ///< entered by kReloadDone: the reload was refused (the old settings stay)
   bool connected = false;             ///< a controller is connected
   std::string controller;             ///< its name (may be empty)
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
@@ -109,10 +123,10 @@ struct BridgeOptions {
 /// What the world around the loop asks of it, read at each tick.
 enum class Request : std::uint8_t {
   kNone,
-  kStop,     ///< end the run (SIGINT, SIGTERM)
-  kSuspend,  ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
-  kResumed,  ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
-  kReload,   ///< reread the settings (SIGHUP): neutral frames while they are read, then afresh
+  kShutdown,  ///< end the run (SIGINT, SIGTERM)
+  kSuspend,   ///< job control (Ctrl-Z): neutral frames, then pause until the process goes on
+  kResumed,   ///< the process was stopped behind the loop's back (SIGSTOP) and goes on
+  kReload,    ///< reread the settings (SIGHUP): neutral frames while they are read, then afresh
 };
 
 /// How a reload ended.
@@ -148,18 +162,18 @@ struct ShutdownReport {
 
 class Bridge {
  public:
-  using StopCheck = std::function<bool()>;
+  using ShutdownCheck = std::function<bool()>;
   using Observer = std::function<void(const TickReport&)>;
 
   Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options);
 
-  /// Runs until a stop request or the end of the input, then shuts down. A
+  /// Runs until a shutdown request or the end of the input, then shuts down. A
   /// request seen on tick k is answered on tick k: its frame is the first
   /// neutral one. Never throws for a link problem; an InputError from a
   /// script still escapes (after the neutral frames).
   void run(const RunControl& control, const Observer& observe);
-  /// The same, with stop() as the only request.
-  void run(const StopCheck& stop, const Observer& observe);
+  /// The same, with shutdown() as the only request.
+  void run(const ShutdownCheck& shutdown, const Observer& observe);
 
   /// After run() (or a suspend): whether the neutral frames reached the link.
   /// When not, the vehicle may still be acting on the last frame it got: the
@@ -170,17 +184,15 @@ class Bridge {
  private:
   /// One tick, whatever the state; false once the run has ended.
   bool tick(const RunControl& control, const Observer& observe);
-  void on_request(Request request, const RunControl& control);
-  void on_fault(const input::InputEvent& fault, const RunControl& control);
-  /// The event through the machine; a rebase restarts the frame source from the input as it is.
+  /// The tick in a driving state: the facts through the machine, then the frame it allows.
+  void drive(std::int64_t t_ms, const Observer& observe);
+  void on_request(Request request);
+  void on_fault(const input::InputEvent& fault);
+  /// The event through the machine, then what its effect asks of the loop.
   Effect apply(OpEvent event);
-  void begin_suspend();
-  void resume(const RunControl& control);
-  /// The resume through the machine, then a reload asked for while suspended.
-  void resumed(const RunControl& control);
-  void begin_reload(const RunControl& control, const std::string& mapping);
-  /// After the engine's step: a stop button, the panic, the timeout, the deadman through the machine.
-  void answer_engine();
+  /// What an effect asks of the loop: a rebase restarts the frame source
+  /// from the input as it is; neutral frames are counted afresh; a reload's reading begins.
+  Effect act(Effect effect, bool reset);
   /// Stop buttons pressed, through the machine (the operator's first: a stop by both is the supervisor's).
   void answer_stops(mapping::StopPresses pressed);
   /// The frame through the gate, then to the link; answers what the link did, reports.
@@ -195,32 +207,35 @@ class Bridge {
   /// Job control: the process stops in control.pause(); afresh after it.
   void pause(const RunControl& control);
   void advance();
+  /// The link carries motion (link::carries_motion): for the state, a stalled link is not up.
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
   [[nodiscard]] TickReport report(const protocol::DataBytes& data, link::SendResult result, bool sent) const;
 
   Clock& clock_;
-  input::InputSource& input_;
+  input::InputSource& source_;
   FrameSource& frames_;
   link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
-  OperatingState machine_;
-  FrameGate gate_;  ///< the second channel: every frame offered to the link passes it
-  input::InputState state_;
+  OperatingState machine_;  ///< every decision whether the vehicle may move, and every deferral
+  FrameGate gate_;          ///< the second channel: every frame offered to the link passes it
+  input::InputState input_;
   mapping::EngineStatus engine_status_;  ///< the last step's
   ShutdownReport shutdown_report_;
+  const RunControl* control_ = nullptr;  ///< run()'s, while it runs
   Nanos start_{0};
   std::int64_t tick_ = 0;  ///< the tick to run next
   std::int64_t skipped_ = 0;
-  int sequence_sent_ = 0;             ///< neutral frames of the current stop, suspend or reload the link took
-  int sequence_ticks_ = 0;            ///< and ticks it has had
-  bool pause_after_suspend_ = false;  ///< a suspend by job control: the process stops after its frames
-  bool suspend_frames_due_ = false;   ///< suspended, its neutral frames not sent yet
-  bool suspend_pending_ = false;      ///< asked for during a reload
-  bool resume_pending_ = false;
-  std::optional<std::string> reload_pending_;  ///< asked for while suspended (its mapping)
-  bool input_failed_ = false;                  ///< the input threw: the stop's frames go without it
+  int sequence_sent_ = 0;   ///< neutral frames of the current stop, suspend or reload the link took
+  int sequence_ticks_ = 0;  ///< and ticks it has had
+  // What the requests asked, for when the machine acts on them (their order is the machine's):
+  bool suspend_pauses_ = false;  ///< the last suspend was job control's: the process stops after its frames
+  std::string reload_mapping_;   ///< the last reload's mapping ("" for the configured one)
+  bool input_failed_ = false;    ///< the input threw: the shutdown's frames go without it
+  // For the report's first cause (TickReport::entered_by).
+  bool supervisor_back_ = false;
+  bool reload_refused_ = false;
 };
 
 }  // namespace andros::run

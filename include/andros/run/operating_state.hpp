@@ -17,7 +17,10 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+
+#include "andros/mapping/engine_status.hpp"
 
 namespace andros::run {
 
@@ -52,6 +55,7 @@ enum class OpEvent : std::uint8_t {
   kSuspend,          ///< Ctrl-Z, or a script's `suspend`
   kResume,           ///< fg / SIGCONT, or a script's `resume`
   kShutdown,         ///< SIGINT, SIGTERM, a script's `stop` or its end
+  kNeutralSent,      ///< a suspend's, reload's or shutdown's neutral frames are out (the loop counted them)
 };
 
 /// Who latched a stop (a stop button, or the frame gate), or reset one.
@@ -63,18 +67,36 @@ struct Effect {
   /// The engine starts afresh from the input as it is now: every press so
   /// far is history, the deadman needs a fresh press (FrameSource::restart).
   bool rebase = false;
+  /// Neutral frames begin (again): a suspend, a reload or the shutdown
+  /// began, or a second reload restarted the first; the loop counts them
+  /// and says kNeutralSent once they are out.
+  bool neutral_frames = false;
+  /// A reload's reading begins (again): the loop starts its worker.
+  bool begin_reload = false;
+
+  bool operator==(const Effect&) const = default;
+  /// Both effects: what either asks of the loop.
+  Effect& operator|=(const Effect& other);
 };
 
-/// One row of the transition table: in `from`, `event` leads to `to`.
-/// settle: the target is the first of kStopped, kNoLink, kNoController,
-/// kNotEnabled whose condition holds (a stop latched; link down; no
-/// controller; otherwise).
+/// What a row does with its event.
+enum class Act : std::uint8_t {
+  kGo,        ///< to `to`
+  kSettle,    ///< to the first of kStopped, kNoLink, kNoController, kNotEnabled whose condition holds
+  kWait,      ///< the event waits in the machine; it is applied once the machine leaves `from`
+  kWithdraw,  ///< the waiting `withdraws` is dropped (its answer came before it was applied)
+  kAgain,     ///< stays in `from` and begins it again (its neutral frames and its work)
+};
+
+/// One row of the transition table: in `from`, `event` does `act`.
 struct Transition {
   OpState from;
   OpEvent event;
-  OpState to;
-  bool rebase;
-  bool settle;  ///< `to` is decided by the link and controller (see above)
+  Act act;
+  OpState to;         ///< kGo only
+  bool rebase;        ///< the engine is rebased (Effect::rebase)
+  bool sending;       ///< the row holds only while `from`'s neutral frames go out (before kNeutralSent)
+  OpEvent withdraws;  ///< kWithdraw only
 };
 
 class OperatingState {
@@ -93,30 +115,57 @@ class OperatingState {
   [[nodiscard]] std::optional<StopBy> stopped_by() const { return stopped_by_; }
   /// Who reset the last stop, until the next stop or the bridge enabled again.
   [[nodiscard]] std::optional<StopBy> reset_by() const { return reset_by_; }
+  /// The event that brought the machine into its state (the first cause of
+  /// "not enabled": a link regained, a reload, a resume, a reset...); none at the start.
+  [[nodiscard]] std::optional<OpEvent> entered_by() const { return entered_by_; }
+  /// The neutral frames of a suspend, reload or shutdown are still going out (no kNeutralSent yet).
+  [[nodiscard]] bool neutral_due() const { return neutral_due_; }
+  /// The event waits to be applied (Act::kWait).
+  [[nodiscard]] bool waiting(OpEvent event) const { return (waiting_ & bit(event)) != 0; }
 
-  /// Applies one event. An event with no row for the current state changes
-  /// nothing but the conditions it reports: the link, the controller, and the
-  /// stop latch (a stop latches it in every state but kStopping, and makes
-  /// it the supervisor's if the supervisor's; a gate trip latches one that
-  /// is not latched yet). A reset that may not reset the stop (the
-  /// operator's of the supervisor's stop) changes nothing.
+  /// Applies one event, then every waiting event that its row now lets
+  /// through (their effects joined). An event with no row for the current
+  /// state changes nothing but the conditions it reports: the link, the
+  /// controller, and the stop latch (a stop latches it in every state but
+  /// kStopping, and makes it the supervisor's if the supervisor's; a gate
+  /// trip latches one that is not latched yet). A reset that may not reset
+  /// the stop (the operator's of the supervisor's stop) changes nothing.
   Effect on(OpEvent event);
+  /// A tick's facts (mapping::InputFacts) as events, in this order: the
+  /// stop buttons (the operator's first: a stop by both is the
+  /// supervisor's); then, not enabled, a fresh deadman press enables;
+  /// enabled, a deadman not held and fresh ends it (released, the panic,
+  /// the enable timeout).
+  Effect on(const mapping::InputFacts& facts);
 
   /// The whole table, for docs and tests.
   static std::span<const Transition> table();
 
+  bool operator==(const OperatingState&) const = default;
+
  private:
   [[nodiscard]] OpState settled() const;
+  /// The event through the conditions and its row; false: it had no row.
+  bool apply(OpEvent event, Effect& effect);
+  /// The row for the event in the current state, if any.
+  [[nodiscard]] const Transition* row_for(OpEvent event) const;
+  static constexpr std::uint32_t bit(OpEvent event) { return 1U << static_cast<unsigned>(event); }
 
   OpState state_;
   bool link_up_;
   bool controller_up_ = false;
+  bool neutral_due_ = false;
+  std::uint32_t waiting_ = 0;         ///< the events waiting (Act::kWait), one bit each
   std::optional<StopBy> stopped_by_;  ///< a stop is latched, and whose
   std::optional<StopBy> reset_by_;
+  std::optional<OpEvent> entered_by_;
 };
 
 std::string_view to_string(OpState state);
 std::string_view to_string(OpEvent event);
+/// A row's target as docs/safety-states.md's table writes it: the state, "settled", "waits", "withdraws EVENT",
+/// "again".
+std::string to_string(const Transition& row);
 /// "operator", "supervisor", "frame gate".
 std::string_view to_string(StopBy by);
 

@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/view/screen.hpp"
 
 namespace spdlog::sinks {
@@ -60,7 +60,7 @@ class TerminalDisplay {
   bool broken_ = false;  ///< a write failed (terminal gone): nothing more is drawn
   std::shared_ptr<spdlog::sinks::ringbuffer_sink<std::mutex>> log_;
   std::vector<std::shared_ptr<spdlog::sinks::sink>> saved_sinks_;  ///< the log's sinks before start()
-  std::optional<StopRequest> stop_;                                ///< a new one for each start()
+  std::optional<ShutdownRequest> stop_;                            ///< a new one for each start()
   std::thread thread_;
 };
 

@@ -16,7 +16,7 @@ void write_line(std::ostream& out, const std::string& line) {
 
 }  // namespace
 
-RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, StopRequest& stop,
+RecordStatus record_script(SdlInput& input, std::ostream& out, const RecordOptions& options, ShutdownRequest& stop,
                            const std::function<bool(const RecordStatus&)>& keep_going) {
   std::istringstream header(options.header);
   for (std::string line; std::getline(header, line);) write_line(out, "# " + line);

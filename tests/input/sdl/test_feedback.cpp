@@ -10,6 +10,7 @@
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/run/feedback.hpp"
+#include "support/engine_steps.hpp"
 #include "support/temp_dir.hpp"
 #include "support/virtual_device.hpp"
 
@@ -120,7 +121,7 @@ class FeedbackRun {
   }
 
  private:
-  mapping::Engine engine_;
+  testing::DrivenEngine engine_;
   SdlInput input_;
   run::FeedbackNotifier notifier_;
   InputState state_;

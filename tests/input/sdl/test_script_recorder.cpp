@@ -5,7 +5,7 @@
 #include <thread>
 
 #include "andros/base/clock.hpp"
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 #include "andros/input/events.hpp"
 #include "andros/input/script_recorder.hpp"
 #include "support/virtual_device.hpp"
@@ -39,7 +39,7 @@ TEST(ScriptRecorder, WritesAScriptThatParsesBackWithConnectPressesDisconnectAndE
     }
     return step < 7;
   };
-  StopRequest stop;
+  ShutdownRequest stop;
   const auto written = record_script(input, out, options, stop, script).events;
 
   const std::string text = out.str();
@@ -92,7 +92,7 @@ TEST(ScriptRecorder, TheSupervisorsEventsCarryThePrefix) {
     }
     return step < 8;
   };
-  StopRequest stop;
+  ShutdownRequest stop;
   record_script(input, out, options, stop, script);
   std::vector<std::string> lines;
   for (const auto& e : parse_event_script(out.str(), "recorded")) {
@@ -130,7 +130,7 @@ TEST(ScriptRecorder, AHostileControllerNameStaysOneConnectLine) {
   const char* hostile = "Gamepad\n500 button leftshoulder 0\n600 button leftshoulder 1\n700 axis lefty -32768\n#";
   PadRig rig(hostile);
   std::ostringstream out;
-  StopRequest stop;
+  ShutdownRequest stop;
   int calls = 0;
   record_script(rig.input, out, RecordOptions{}, stop, [&](const RecordStatus&) { return ++calls < 3; });
   const auto events = parse_event_script(out.str(), "recorded");
@@ -149,7 +149,7 @@ TEST(ScriptRecorder, EndsByItselfAtTheLongestScriptAllowed) {
   options.period_ms = 10;
   options.max_ms = 100;
   int calls = 0;
-  StopRequest stop;
+  ShutdownRequest stop;
   const auto ended =
       record_script(rig.input, out, options, stop, [&](const RecordStatus&) { return ++calls < 10'000; });
   EXPECT_TRUE(ended.at_limit);
@@ -168,7 +168,7 @@ TEST(ScriptRecorder, AStopRequestEndsTheWaitAndTheScript) {
   std::ostringstream out;
   RecordOptions options;
   options.period_ms = 60'000;  // a wake-up missed would wait a minute
-  StopRequest stop;
+  ShutdownRequest stop;
   const std::int64_t start = monotonic_ns();
   std::thread stopper([&] {
     sleep_until_ns_uninterrupted(start + 50 * kNsPerMs);

@@ -1,6 +1,7 @@
 #pragma once
-/// The one stop mechanism every loop uses: a request that code raises or a
-/// stop signal makes, that a loop checks once per turn, and that wakes a loop
+/// The one shutdown mechanism every loop uses (ending the run: never the
+/// latched stop, which is the operating state's): a request that code raises
+/// or a shutdown signal makes, that a loop checks once per turn, and that wakes a loop
 /// waiting on it (sleep_until, wait_readable). The signals stay blocked and
 /// are taken synchronously (BlockedSignals, a signalfd to wake on): no
 /// handler ever runs, on any thread.
@@ -16,31 +17,31 @@
 
 namespace andros {
 
-/// The signals that stop `run` and `monitor` (docs/running.md).
-inline constexpr std::initializer_list<int> kStopSignals = {SIGINT, SIGTERM, SIGHUP};
-/// The signals that stop `run` (docs/running.md, "Signals"): kStopSignals
+/// The signals that end `run` and `monitor` (docs/running.md).
+inline constexpr std::initializer_list<int> kShutdownSignals = {SIGINT, SIGTERM, SIGHUP};
+/// The signals that stop `run` (docs/running.md, "Signals"): kShutdownSignals
 /// (SIGHUP reloads), and every other signal whose default action would end
 /// the process between two frames, so that each ends it through the shutdown's
 /// neutral frames instead. SIGXFSZ is ignored (main): a write past a file-size
 /// limit fails with EFBIG.
-inline constexpr std::initializer_list<int> kRunStopSignals = {
+inline constexpr std::initializer_list<int> kRunShutdownSignals = {
     SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGIO, SIGPWR, SIGSTKFLT};
 /// The signals that end a `record` (docs/controllers.md); SIGHUP keeps its default there.
-inline constexpr std::initializer_list<int> kRecordStopSignals = {SIGINT, SIGTERM};
+inline constexpr std::initializer_list<int> kRecordShutdownSignals = {SIGINT, SIGTERM};
 
 /// For wait_readable: no time limit.
 inline constexpr std::int64_t kNoDeadline = INT64_MAX;
 
-class StopRequest {
+class ShutdownRequest {
  public:
   /// A request only code raises (a thread's owner stopping it).
-  StopRequest();
+  ShutdownRequest();
   /// Also made by any of `signals`, which it blocks in the calling thread and
   /// so in every thread started later: construct before any thread starts.
-  explicit StopRequest(std::initializer_list<int> signals);
-  ~StopRequest();
-  StopRequest(const StopRequest&) = delete;
-  StopRequest& operator=(const StopRequest&) = delete;
+  explicit ShutdownRequest(std::initializer_list<int> signals);
+  ~ShutdownRequest();
+  ShutdownRequest(const ShutdownRequest&) = delete;
+  ShutdownRequest& operator=(const ShutdownRequest&) = delete;
 
   /// Asks whoever checks this to stop, and wakes them. Any thread.
   void raise();

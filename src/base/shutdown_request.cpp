@@ -1,4 +1,4 @@
-#include "andros/base/stop.hpp"
+#include "andros/base/shutdown_request.hpp"
 
 #include <poll.h>
 #include <sys/eventfd.h>
@@ -13,11 +13,11 @@
 
 namespace andros {
 
-StopRequest::StopRequest() : wake_(eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
+ShutdownRequest::ShutdownRequest() : wake_(eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
   if (!wake_) throw RuntimeError(std::string("eventfd: ") + std::strerror(errno));
 }
 
-StopRequest::StopRequest(std::initializer_list<int> signals) : StopRequest() {
+ShutdownRequest::ShutdownRequest(std::initializer_list<int> signals) : ShutdownRequest() {
   signals_.emplace(signals);
   sigset_t set;
   sigemptyset(&set);
@@ -27,15 +27,15 @@ StopRequest::StopRequest(std::initializer_list<int> signals) : StopRequest() {
   if (!signal_fd_) throw RuntimeError(std::string("signalfd: ") + std::strerror(errno));
 }
 
-StopRequest::~StopRequest() = default;
+ShutdownRequest::~ShutdownRequest() = default;
 
-void StopRequest::raise() {
+void ShutdownRequest::raise() {
   raised_ = true;
   const std::uint64_t one = 1;
   [[maybe_unused]] const auto n = ::write(wake_.get(), &one, sizeof one);  // never read: stays readable
 }
 
-bool StopRequest::requested() {
+bool ShutdownRequest::requested() {
   if (raised_) return true;
   if (!signals_) return false;
   while (const int sig = signals_->take()) {
@@ -51,17 +51,17 @@ bool StopRequest::requested() {
   return raised_;
 }
 
-bool StopRequest::reload_requested() {
+bool ShutdownRequest::reload_requested() {
   requested();
   return reload_pending_.exchange(false);
 }
 
-bool StopRequest::sleep_until(std::int64_t abs_ns) { return !wait(-1, abs_ns) && !requested(); }
+bool ShutdownRequest::sleep_until(std::int64_t abs_ns) { return !wait(-1, abs_ns) && !requested(); }
 
-bool StopRequest::wait_readable(int fd, std::int64_t abs_ns) { return wait(fd, abs_ns) && !requested(); }
+bool ShutdownRequest::wait_readable(int fd, std::int64_t abs_ns) { return wait(fd, abs_ns) && !requested(); }
 
 /// True when fd is ready; false at abs_ns or on a stop request.
-bool StopRequest::wait(int fd, std::int64_t abs_ns) {
+bool ShutdownRequest::wait(int fd, std::int64_t abs_ns) {
   pollfd fds[3] = {{wake_.get(), POLLIN, 0}, {signal_fd_.get(), POLLIN, 0}, {fd, POLLIN, 0}};
   while (!requested()) {
     timespec left{};
