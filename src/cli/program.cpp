@@ -1,4 +1,7 @@
-// andros-bridge: a gamepad in, the Andros switchbox's serial frames out.
+// The program, run by main() (main.cpp): the commands, their parse, and what
+// escapes them turned into a line and an exit code.
+#include "program.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -111,7 +114,7 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view
 
 // What run() does not catch, such as no memory or no thread for the log
 // before any command runs, ends the program with a line, not an abort.
-int main(int argc, char** argv) try {
+int andros::cli::program_main(int argc, char** argv) try {
   // A write past a file-size limit (`ulimit -f`, RLIMIT_FSIZE) fails with
   // EFBIG, for every command: the flight recorder drops and warns, an output
   // file says so, and a run goes on driving (SIGXFSZ's default ends the process).
