@@ -42,7 +42,7 @@ if [[ $what == all || $what == --tidy ]]; then
   # the sources) takes seconds. The cli stage is checked as the build compiles
   # it, in its four unity groups (each file's findings still named by file):
   # CLI11 parsed and studied four times, not 24 (half clang-tidy's time).
-  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=ON -DANDROS_CCACHE=OFF \
+  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=ON -DANDROS_UNITY=OFF -DANDROS_CCACHE=OFF \
     -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
   log="$lint_build/clang-tidy.log"
   # In the background, waited for: a TERM (scripts/test.sh ending early)
