@@ -6,10 +6,12 @@
 # scripts/package.sh, then checked by tests/package/test_package.sh), the
 # package's service under systemd in a throwaway container
 # (tests/service/test_systemd.sh), clang-tidy over src/ (scripts/lint.sh)
-# and each fuzz target briefly (scripts/fuzz.sh). The package (its objects
-# from ccache: the plain build compiled them with its flags) and clang-tidy
-# run in the background from the end of the plain build, niced, in the time
-# the tests leave the cores idle; each is waited for at the end.
+# and each fuzz target briefly (scripts/fuzz.sh). The sanitizer build, the
+# package (its objects from ccache: the plain build compiled them with its
+# flags) and clang-tidy run in the background from the end of the plain
+# build, niced, in the time the plain tests leave the cores idle; the
+# sanitizer build is waited for before the sanitizer tests, the others at
+# the end.
 # With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
@@ -81,13 +83,17 @@ ctest_jobs=$((3 * jobs))
 # `times` when the child ends, which would count a job's CPU in whatever phase
 # was running then; the job's own shell times it instead. setsid: a session
 # and process group of its own, which the EXIT trap ends whole.
+# NICE (10 unless given) orders the background jobs among themselves: the
+# sanitizer build, which the sanitizer tests wait for, before clang-tidy,
+# which nothing waits for until the end.
 background() {
-  local name=$1 log="$build/$1.log"
+  local name=$1 log="$build/$1.log" nice=10
   shift
+  [[ $1 == [0-9]* ]] && { nice=$1; shift; }
   bg_log[$name]=$log
   rm -f "$log.done" "$log.times"
-  bg_pid[$name]=$(setsid bash -c 'start=$SECONDS; status=0; nice -n 10 "$@" || status=$?; times >"$0.times"
-                                  echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "$log" "$@" \
+  bg_pid[$name]=$(setsid bash -c 'start=$SECONDS; status=0; nice -n "$1" "${@:2}" || status=$?; times >"$0.times"
+                                  echo "$status $((SECONDS - start))" >"$0.done"; exit $status' "$log" "$nice" "$@" \
                     </dev/null >"$log" 2>&1 & echo $!)
 }
 await() {
@@ -118,6 +124,19 @@ package_and_check() {
   tests/package/test_package.sh dist/andros-bridge_*.deb
 }
 export -f package_and_check
+
+# One sanitizer tree for the suite and the fuzz targets: clang, ASan + UBSan,
+# libFuzzer's coverage (ANDROS_FUZZ) in every file, -O1 -g1 (OSS-Fuzz's
+# flags: what the sanitizers and the fuzzer find does not need -O2). src/ is
+# compiled once for both, not once by gcc for the suite and again by clang
+# for the fuzzers (CPU 324 s + 116 s before, 328 s then, on 2 cores). A tree
+# an older test command configured with gcc is made again.
+build_asan() {
+  grep -qs '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' "$build-asan/CMakeCache.txt" || rm -rf "$build-asan"
+  CXX=clang++ BUILD_DIR="$build-asan" BUILD_FLAGS=cmake scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_FUZZ=ON \
+    -DANDROS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+}
+export -f build_asan
 export build
 
 quick=${ANDROS_QUICK:-}
@@ -143,23 +162,20 @@ scripts/build.sh
 if [[ $quick != 1 ]]; then
   # clang-tidy's cache (scripts/lint_tidy.py, kept between runs on the same
   # machine as ccache's is) makes a run over unchanged files take seconds.
+  # The sanitizer build begins here too, beside the plain tests (which leave
+  # the cores idle while they wait on the frame clock), and is waited for
+  # before the sanitizer tests: niced less than the other two, which it goes
+  # before; clang-tidy, awaited last, takes what the others leave.
+  background build-asan 5 bash -c build_asan
   background package bash -c package_and_check
-  background clang-tidy scripts/lint.sh --tidy
+  background clang-tidy 19 scripts/lint.sh --tidy
 fi
 phase "test ($build)"
 ctest --test-dir "$build" --output-on-failure --parallel "$ctest_jobs" --timeout 300 | tee -a "$summary"
 if [[ $quick == 1 ]]; then closing; exit 0; fi
 
-# One sanitizer tree for the suite and the fuzz targets: clang, ASan + UBSan,
-# libFuzzer's coverage (ANDROS_FUZZ) in every file, -O1 -g1 (OSS-Fuzz's
-# flags: what the sanitizers and the fuzzer find does not need -O2). src/ is
-# compiled once for both, not once by gcc for the suite and again by clang
-# for the fuzzers (CPU 324 s + 116 s before, 328 s now, on 2 cores). A tree
-# an older test command configured with gcc is made again.
-phase "build under ASan + UBSan, and the fuzz targets ($build-asan, clang -O1)"
-grep -qs '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' "$build-asan/CMakeCache.txt" || rm -rf "$build-asan"
-CXX=clang++ BUILD_DIR="$build-asan" BUILD_FLAGS=cmake scripts/build.sh -DANDROS_SANITIZE=ON -DANDROS_FUZZ=ON \
-  -DANDROS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+phase "build under ASan + UBSan, and the fuzz targets ($build-asan, clang -O1; begun after the plain build)"
+await build-asan
 phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$ctest_jobs" --timeout 600 | tee -a "$summary"
