@@ -145,6 +145,7 @@ void run_sessions(const SessionsOptions& opt) {
   // folder (they look there), whole paths from another.
   const bool bare = dir == session_dir("");
   std::vector<Row> rows;
+  rows.reserve(sessions.size());
   for (const auto& path : sessions) {
     rows.push_back(read_row(path, bare ? path.filename().string() : std::filesystem::absolute(path).string()));
   }
