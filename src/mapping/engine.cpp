@@ -231,8 +231,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
 }
 
 protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t now_ms, bool enabled) {
-  neutral_.reset();  // levels and selectors may move
-  follow_sessions(input, now_ms);
+  neutral_.reset();                                            // levels and selectors may move
   if (enabled && !c_.was_enabled) last_activity_ms_ = now_ms;  // enabling is the first change
   c_.was_enabled = enabled;
   // Nothing is latched past the deadman: a toggled layer (a weapons layer above

@@ -52,7 +52,8 @@ class Engine {
   InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled);
 
   /// One tick at time now_ms (ms since start, non-decreasing), after its
-  /// facts: the data bytes of the frame to send, the bindings applied only
+  /// facts (facts() follows the controllers' sessions, a step does not):
+  /// the data bytes of the frame to send, the bindings applied only
   /// when motion_allowed (the operating state is enabled); otherwise the
   /// neutral frame. Always a frame that passes validation. While nothing
   /// changes (the controllers and motion_allowed as at the last step, which
