@@ -11,7 +11,8 @@
 # flags) and clang-tidy run in the background from the end of the plain
 # build, niced, in the time the plain tests leave the cores idle; the
 # sanitizer build is waited for before the sanitizer tests, the others at
-# the end.
+# the end. The fuzz targets run in the background from the end of their
+# build, beside the sanitizer tests.
 # With CI=true (.ci/run sets it) every build treats warnings as errors.
 # ANDROS_QUICK=1 runs the plain suite only (a developer's inner loop).
 set -euo pipefail
@@ -174,8 +175,14 @@ phase "test ($build)"
 ctest --test-dir "$build" --output-on-failure --parallel "$ctest_jobs" --timeout 300 | tee -a "$summary"
 if [[ $quick == 1 ]]; then closing; exit 0; fi
 
-phase "build under ASan + UBSan, and the fuzz targets ($build-asan, clang -O1; begun after the plain build)"
+phase "build under ASan + UBSan, and the fuzz targets ($build-asan, clang -O1, the tests' own code -O0; begun after the plain build)"
 await build-asan
+# Each fuzz target for ANDROS_FUZZ_SECONDS (10) of its own, two at a time,
+# beside the sanitizer tests and the service's container, niced below them: a
+# fuzz run is bounded by its time, not its work, and takes what the tests
+# leave idle while they wait on the frame clock (its executions, printed at
+# the end, say how much that was).
+background fuzz 19 env FUZZ_BUILD_DIR="$build-asan" scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 phase "test under ASan + UBSan ($build-asan)"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$ctest_jobs" --timeout 600 | tee -a "$summary"
@@ -189,6 +196,6 @@ phase "the service under systemd (tests/service/test_systemd.sh: a systemd-nspaw
 tests/service/test_systemd.sh dist/andros-bridge_*.deb
 phase "clang-tidy (scripts/lint.sh --tidy, begun after the plain build)"
 await clang-tidy
-phase "fuzz: each target briefly (scripts/fuzz.sh, the targets of $build-asan)"
-FUZZ_BUILD_DIR="$build-asan" scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
+phase "fuzz: each target briefly (scripts/fuzz.sh, the targets of $build-asan; begun after their build)"
+await fuzz
 closing

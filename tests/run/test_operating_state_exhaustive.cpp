@@ -12,17 +12,19 @@
 
 #include "andros/run/operating_state.hpp"
 #include "oracle/state_oracle.hpp"
+#include "support/sweep.hpp"
 
 namespace andros::run {
 namespace {
 
 /// The depth: every sequence of this many events, and so each shorter one
-/// as its prefix. Fixed, never chosen by speed: 20 events to depth 8 is
-/// 25,600,000,000 sequences per start, of which the walk steps 92 million
-/// nodes (a no-op is not walked further: walk()): 4.1 s of CPU (-O2) on the
-/// 2-core machine, about as much under ASan and UBSan as depth 6 walked in
-/// full before (17 s); depth 9 is some 20 times that.
-constexpr int kDepth = 8;
+/// as its prefix. Fixed by the build, never chosen by speed: 20 events to
+/// depth 8 is 25,600,000,000 sequences per start, of which the walk steps 92
+/// million nodes (a no-op is not walked further: walk()): 4.1 s of CPU (-O2)
+/// on the 2-core machine; depth 9 is some 20 times that. Under the sanitizers
+/// (support/sweep.hpp) depth 7: every sequence one event shorter, at about a
+/// tenth of the steps.
+constexpr int kDepth = test::kSanitizedSweep ? 7 : 8;
 
 /// Every event of the enum, read off it, so that an event added is searched too.
 std::vector<OpEvent> all_events() {
