@@ -5,7 +5,6 @@
 // The input may hold several files, each after a line `#file` (a YAML
 // comment): they are written as 0.yaml, 1.yaml, ... and 0.yaml is loaded, so
 // that `extends: 1.yaml` chains, cycles and too-deep chains are reachable.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -20,6 +19,7 @@
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "fuzz_check.hpp"
+#include "scratch_dir.hpp"
 
 namespace {
 
@@ -28,12 +28,8 @@ constexpr int kMaxFiles = 24;  // more than an extends chain may hold
 
 std::filesystem::path scratch_dir() {
   // A private folder, so `extends: x.yaml` finds only what the input makes.
-  static const auto dir = [] {
-    auto d = std::filesystem::temp_directory_path() / ("andros-fuzz-mapping-" + std::to_string(getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const andros::fuzz::ScratchDir dir("mapping");
+  return dir.path();
 }
 
 /// Writes the input's files (none left from the last input) and returns the first.

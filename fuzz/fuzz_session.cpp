@@ -4,7 +4,6 @@
 // bounds (frame ticks in order at their times, within 24 h, the end at or
 // after the last frame), the plot's samples and lanes are as many as its
 // records, not its ticks, and a short session replays without a crash.
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include "andros/view/plot.hpp"
 #include "andros/view/session_export.hpp"
 #include "fuzz_check.hpp"
+#include "scratch_dir.hpp"
 
 using andros::fuzz::check;
 
@@ -25,10 +25,8 @@ namespace {
 
 /// The fuzzer's bytes as a file: the readers take a path.
 const std::string& input_path() {
-  static const std::string path = [] {
-    const auto dir = std::filesystem::temp_directory_path();
-    return (dir / ("fuzz-session-" + std::to_string(::getpid()) + ".andros-session")).string();
-  }();
+  static const andros::fuzz::ScratchDir dir("session");
+  static const std::string path = (dir.path() / "input.andros-session").string();
   return path;
 }
 
