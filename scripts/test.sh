@@ -185,10 +185,10 @@ await build-asan
 background fuzz 19 env FUZZ_BUILD_DIR="$build-asan" scripts/fuzz.sh "${ANDROS_FUZZ_SECONDS:-10}"
 phase "test under ASan + UBSan ($build-asan)"
 # Four jobs a core here: nothing builds beside these tests (the fuzzers, niced,
-# take only what they leave), whose GoogleTest binaries run as two shards
-# each and hold four of six slots for most of the phase, the command-line
+# take only what they leave), whose GoogleTest cases take two slots each and,
+# with six, held four of them for most of the phase while the command-line
 # tests, which mostly wait, queued behind them in the other two (a quiet run:
-# 97 s with 6, the longest test 64 s).
+# 97 s with 6, 80 s with 8; the longest test 64 s).
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$build-asan" --output-on-failure --parallel "$((4 * jobs))" --timeout 600 | tee -a "$summary"
 

@@ -14,7 +14,8 @@
 // supervisor's stop, and on every other seed a three-position trigger deadman
 // with a panic point; the oracle's own tests are in test_oracle.cpp.
 //
-// Seeds 1..ANDROS_SIM_SCRIPTS (10,000 unless the build says otherwise); the
+// Seeds 1..10,000 (1,000 under the sanitizers: support/sweep.hpp; a build
+// configured with -DANDROS_SIM_SCRIPTS=N runs N); the
 // environment picks other ranges: ANDROS_SIM_SEED_BASE=N (the first seed),
 // ANDROS_SIM_SCRIPTS=M (how many). ANDROS_SIM_MAX_REPORTED=K prints up to K
 // failing seeds (5), ANDROS_SIM_TRACE=1 every tick of the loop,
@@ -46,13 +47,16 @@
 #include "oracle/random.hpp"
 #include "oracle/safety_oracle.hpp"
 #include "oracle/simulation.hpp"
-
-#ifndef ANDROS_SIM_SCRIPTS
-#define ANDROS_SIM_SCRIPTS 10000
-#endif
+#include "support/sweep.hpp"
 
 namespace andros::run {
 namespace {
+
+#ifdef ANDROS_SIM_SCRIPTS
+constexpr std::uint64_t kScripts = ANDROS_SIM_SCRIPTS;
+#else
+constexpr std::uint64_t kScripts = test::sweep_size(10'000, 1'000);
+#endif
 
 constexpr std::uint8_t kCode = 0x5A;
 
@@ -130,7 +134,7 @@ std::string describe_failure(std::uint64_t seed, const std::string& mapping_file
 
 TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   const std::uint64_t first = from_environment("ANDROS_SIM_SEED_BASE", 1);
-  const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", ANDROS_SIM_SCRIPTS);
+  const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", kScripts);
   const auto max_reported = from_environment("ANDROS_SIM_MAX_REPORTED", 5);  // failures printed before it gives up
   const bool tracing = from_environment("ANDROS_SIM_TRACE", 0) != 0;
   const bool count_all = from_environment("ANDROS_SIM_COUNT_ALL", 0) != 0;

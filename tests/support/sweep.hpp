@@ -3,10 +3,11 @@
 // each whole, on every run. Under AddressSanitizer (the sanitizer build:
 // clang, ASan + UBSan, the tests' own code at -O0) the same sweeps check what
 // the sanitizers check, memory and undefined behaviour along the paths the
-// code takes, and a part of each does that
-// where it still reaches what the sweep's own coverage checks ask for (each
-// sweep checks that its scripts reached motion, weapons, a stop...): a whole
-// sweep there costs five to fifteen times its plain time.
+// code takes, and a part of each does that where it still reaches what the
+// sweep's own coverage checks ask for (each sweep checks that its scripts
+// reached motion, weapons, a stop...): a whole sweep there costs five to
+// fifteen times its plain time. This header decides it for all three: the
+// simulation's scripts, the properties' and the exhaustive walk's depth.
 #pragma once
 
 namespace andros::test {
