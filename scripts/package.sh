@@ -21,7 +21,9 @@ fi
 
 work=build-deb
 rm -rf "$work" && mkdir -p "$work/src" dist
-tar -c --exclude='./build*' --exclude='./obj-*' --exclude=./dist --exclude=./.git . | tar -x -C "$work/src"
+# A copy of the tree's files (scripts/copy_source.sh: a list of them, so
+# that the jobs writing into the tree beside this one cannot fail the copy).
+scripts/copy_source.sh . "$work/src"
 # parallel: every core; noautodbgsym: no -dbgsym package (nothing ships it),
 # so the debug information is stripped and thrown away: -g1 instead of -g
 # (DEB_CXXFLAGS_APPEND, after dpkg-buildflags' -g) compiles in less time;
