@@ -20,6 +20,7 @@ printf '%s\n' '/build*/' '/dist/' 'crash-*' '__pycache__/' >.gitignore
 echo one >src/a.cpp
 echo two >src/b.cpp
 echo readme >README.md
+printf 'odd\n' >'src/a name with spaces'
 printf '#!/bin/sh\n' >run.sh
 chmod +x run.sh
 ln -s ../README.md src/readme-link
@@ -36,8 +37,8 @@ echo cache >tests/__pycache__/lib.pyc
 mkdir dist
 echo deb >dist/x.deb
 
-files() { (cd "$1" && find . \( -type f -o -type l \) -printf '%P\n' | sort | tr '\n' ' '); }
-in_git='.gitignore README.md run.sh src/a.cpp src/c.cpp src/readme-link '
+files() { (cd "$1" && find . \( -type f -o -type l \) -printf '%P\n' | LC_ALL=C sort | tr '\n' ' '); }
+in_git='.gitignore README.md run.sh src/a name with spaces src/a.cpp src/c.cpp src/readme-link '
 expect_copy() {  # WHAT EXPECTED-FILES
   rm -rf "$work/out"
   "$copy" "$tree" "$work/out" || fail "$1: the copy failed"
@@ -71,7 +72,7 @@ churning "a git work tree" "$in_git"
 
 # No git (an unpacked source tarball): every file but the build's outputs.
 rm -rf .git
-no_git='.gitignore README.md crash-1 run.sh src/a.cpp src/c.cpp src/readme-link '
+no_git='.gitignore README.md crash-1 run.sh src/a name with spaces src/a.cpp src/c.cpp src/readme-link '
 expect_copy "a tree outside git" "$no_git"
 churning "a tree outside git" "$no_git"
 
