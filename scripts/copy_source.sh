@@ -29,9 +29,11 @@ if git -c safe.directory="$PWD" ls-files -z --cached --others --exclude-standard
     if [[ -e $file || -L $file ]]; then printf '%s\0' "$file"; fi
   done <"$list.git" >"$list"
 elif ! find . \( -path './build*' -o -path './obj-*' -o -path ./dist -o -path ./.git -o -name __pycache__ \) -prune \
-  -o \( -type f -o -type l \) -printf '%P\0' >"$list" 2>"$list.err" &&
-  grep -v ': No such file or directory$' "$list.err" >&2; then
-  echo "copy_source: could not list the files of $PWD" >&2
-  exit 1
+  -o \( -type f -o -type l \) -printf '%P\0' >"$list" 2>"$list.err"; then
+  # Passed over: an entry made and removed while find read the tree; any other error fails the copy.
+  if grep -v ': No such file or directory$' "$list.err" >&2; then
+    echo "copy_source: could not list the files of $PWD" >&2
+    exit 1
+  fi
 fi
 tar -c --null --no-recursion --ignore-failed-read -T "$list" | tar -x -C "$dest"

@@ -20,7 +20,7 @@ if ! dpkg-checkbuilddeps >/dev/null 2>&1; then
 fi
 
 work=build-deb
-rm -rf "$work" && mkdir -p "$work/src" dist
+rm -rf "$work" && mkdir -p dist
 # A copy of the tree's files (scripts/copy_source.sh: a list of them, so
 # that the jobs writing into the tree beside this one cannot fail the copy).
 scripts/copy_source.sh . "$work/src"
