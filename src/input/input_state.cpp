@@ -80,6 +80,9 @@ void PadState::apply(const InputEvent& event) {
     ++connection_;
     connect_t_ = event.t_ms;
     name_ = event.name;
+    identity_ = PadIdentity{event.name, {}, {}, {}};
+    // A script's or a recorder's identity fields that do not read leave the name alone.
+    if (!parse_pad_fields(event.device, identity_)) identity_ = PadIdentity{event.name, {}, {}, {}};
     buttons_.clear();
     axes_.clear();
     spans_.clear();
@@ -88,6 +91,7 @@ void PadState::apply(const InputEvent& event) {
   if (event.type == T::kDisconnect) {
     connected_ = false;
     name_.clear();
+    identity_ = {};
     buttons_.clear();
     axes_.clear();
     spans_.clear();

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "andros/input/pad_identity.hpp"
+
 namespace andros::input {
 
 /// SDL game-controller button names, in SDL_GameControllerButton order.
@@ -112,6 +114,8 @@ struct InputEvent {
   InputKey key{};    ///< button or axis; for kHat, {kHat, hat * 4}
   int value = 0;     ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
   std::string name;  ///< controller name, for kConnect; the mapping file, for kReload
+  /// kConnect: which physical pad (PadIdentity::fields(): "path=P serial=S guid=G"); "" when unknown.
+  std::string device;
   int line = 0;      ///< source line in an event script, 0 when live
   /// Whose controller a connect, disconnect, button, axis or hat event is
   /// for; always the operator's for the others (they are the run's, not a pad's).
@@ -153,6 +157,8 @@ class PadState {
   /// Counts connects; a new value means a new controller session.
   [[nodiscard]] std::uint32_t connection() const { return connection_; }
   [[nodiscard]] const std::string& name() const { return name_; }
+  /// Which physical controller this session is (empty when none is connected).
+  [[nodiscard]] const PadIdentity& identity() const { return identity_; }
 
   [[nodiscard]] ButtonState button(InputKey key) const;
   [[nodiscard]] std::int16_t axis(InputKey key) const;
@@ -173,6 +179,7 @@ class PadState {
   std::uint32_t connection_ = 0;
   std::int64_t connect_t_ = -1;
   std::string name_;
+  PadIdentity identity_;
   std::map<InputKey, ButtonState> buttons_;
   std::map<InputKey, std::int16_t> axes_;
   std::map<InputKey, AxisSpan> spans_;  ///< the axes moved since the tick began

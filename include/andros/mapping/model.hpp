@@ -36,7 +36,7 @@ inline constexpr int kMaxKnobRate = 25500;  ///< units per second: 0 to 255 in 1
 inline constexpr double kDeadmanPanicMin = kDefaultThreshold;
 /// After a panic the trigger counts as fully released below this travel.
 inline constexpr double kDeadmanFullyReleased = 0.1;
-/// `stop_reset_hold:` in seconds: how long a stop button is held to reset a stop.
+/// `stop_reset_hold:` in seconds: how long the reset gesture is held to reset a stop.
 inline constexpr double kStopResetHoldMinS = 1.0;
 inline constexpr double kStopResetHoldMaxS = 10.0;
 inline constexpr std::int64_t kStopResetHoldDefaultMs = 2000;
@@ -159,6 +159,8 @@ enum class BrakeMode : std::uint8_t {
 struct SupervisorButtons {
   SourcePos pos;                            ///< the section
   InputUse stop;                            ///< latches the stop, as the operator's `estop` does
+  /// `reset:`, one button or a chord held together: resets any stop (none: the supervisor resets nothing)
+  std::vector<InputUse> reset;
   std::optional<InputUse> weapons_consent;  ///< with it, a weapon fires only while it is held too
 };
 
@@ -175,8 +177,12 @@ struct Mapping {
   /// vehicle until it and the deadman are released and the deadman is pressed
   /// afresh. Bound to nothing else in any layer.
   std::optional<InputUse> estop;
-  /// A latched stop is reset by its controller's stop button released after
-  /// the stop, then held this long with the deadman released (`stop_reset_hold:`, in ms here).
+  /// The operator's reset (`stop_reset:`): one button, or a chord held
+  /// together, never a stop button. Held stop_reset_hold_ms with the deadman
+  /// and every stop button released, on the pad that stopped, it resets the
+  /// operator's stop (none: only the supervisor resets).
+  std::vector<InputUse> stop_reset;
+  /// How long a reset gesture is held (`stop_reset_hold:`, in ms here).
   std::int64_t stop_reset_hold_ms = kStopResetHoldDefaultMs;
   /// A trigger deadman squeezed to this fraction or past it is off, and stays
   /// off until fully released (`deadman_panic:`); none: no panic position.

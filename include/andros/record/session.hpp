@@ -15,6 +15,7 @@
 
 #include "andros/base/sha256.hpp"
 #include "andros/input/input_state.hpp"
+#include "andros/input/pad_identity.hpp"
 #include "andros/link/link_status.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
@@ -171,14 +172,17 @@ struct StateRecord {
   run::OpState state = run::OpState::kNoLink;
 };
 
-/// `stop T operator|supervisor|gate "NAME"` (whose stop latched, or became
-/// whose; the gate's: the frame gate tripped), `reset T operator|supervisor`
-/// (who reset it).
+/// `stop T operator|supervisor|gate "NAME" {PAD}` (whose stop latched, or
+/// became whose, or was pressed again while latched; the gate's: the frame
+/// gate tripped), `reset T operator|supervisor "NAME" {PAD}` (who reset it),
+/// PAD the physical pad's identity as JSON (path, serial, guid). Sessions
+/// of earlier versions have no PAD, and a reset no NAME.
 struct StopRecord {
   std::int64_t t_ms = 0;
   bool reset = false;  ///< a reset; false: a stop
   run::StopBy by = run::StopBy::kOperator;
-  std::string name;  ///< the controller's name (a stop's)
+  std::string name;       ///< the controller's name
+  input::PadIdentity pad;  ///< the physical pad that pressed it (empty: not recorded, or the gate's)
 };
 
 struct EndRecord {
