@@ -8,7 +8,7 @@
 # how many seeds of how many caught it. The simulation alone should catch
 # every one, each by many seeds.
 #
-# Not part of scripts/test.sh: 13 rebuilds and 14 runs of 10,000 seeds.
+# Not part of scripts/test.sh: 18 rebuilds and 19 runs of 10,000 seeds.
 # ANDROS_SIM_SCRIPTS=N runs N seeds instead; MUTATIONS="1 5" only those.
 # Exit 1 when a mutation is caught by no seed, when the unmutated code fails
 # a seed, or when a mutation's text is no longer in its file (the code moved:
@@ -22,18 +22,23 @@ seeds=${ANDROS_SIM_SCRIPTS:-10000}
 
 # name | file | perl substitution (applied to the whole file: -0)
 mutations=(
-  "a stop reset 400 ms before the full hold|src/mapping/stop_buttons.cpp|s/now_ms - \*b.hold_since < hold_ms_\)/now_ms - *b.hold_since < hold_ms_ - 400)/"
+  "a stop reset 400 ms before the full hold|src/mapping/stop_buttons.cpp|s/now_ms - \*r.hold_since < hold_ms_\)/now_ms - *r.hold_since < hold_ms_ - 400)/"
   "a panic latch cleared without the full release|src/mapping/deadman.cpp|s/!past\(lowest, kDeadmanFullyReleased\)/!past(lowest, *panic_)/"
   "neutral drive and pivot taken from the trim|src/mapping/safety.cpp|s/if \(!ctx.enabled\) v = protocol::kNeutralCentre;/if (!ctx.enabled) v = static_cast<std::uint8_t>(ctx.center);/"
   "the opposing-pair interlock removed|src/mapping/safety.cpp|s/asked\[\*partner\] != 0\) state.values\[i\] = 0;/asked[*partner] != 0 \&\& false) state.values[i] = 0;/"
   "the rest rule skipped when a layer is left|src/mapping/safety.cpp|s/const bool changed = edge \|\| was == before.end\(\) \|\| !same_bindings\(was->second, readers\);/const bool changed = edge || (layer >= layer_ \&\& (was == before.end() || !same_bindings(was->second, readers)));/"
   "a resume (SIGCONT) while enabled without a rebase|src/run/operating_state.cpp|s/settle\(S::kEnabled, E::kResume, true\)/settle(S::kEnabled, E::kResume, false)/"
   "the engine stepped before the machine read the tick's facts|src/run/bridge.cpp|s/(  act\(machine_.on\(facts\), false\);\n)((?:.*\n){3})/\$2\$1/"
-  "the deadman touched during a reset hold ignored|src/mapping/stop_buttons.cpp|s/if \(pressed && now.down && !deadman_touched\)/if (pressed \&\& now.down)/"
+  "the deadman touched during a reset hold ignored|src/mapping/stop_buttons.cpp|s/ \|\| deadman_touched;/;/"
   "a deadman held at connect taken for a fresh press|src/mapping/deadman.cpp|s/input.button\(\*key_\).presses > base_/input.button(*key_).presses >= base_/"
   "a weapon armed without its arming input held|src/mapping/engine_bindings.cpp|s/const bool arm = b.arm && held\(input, \*b.arm\) && c_.rest.consent\(\);/const bool arm = b.arm \&\& c_.rest.consent();/"
   "a link regained without a rebase|src/run/operating_state.cpp|s/settle\(S::kNoLink, E::kLinkUp, true\)/settle(S::kNoLink, E::kLinkUp, false)/"
   "the enable timeout never falls due|src/mapping/engine.cpp|s/ && timed_out\(now_ms\)\)/ \&\& false \&\& timed_out(now_ms))/"
+  "a stop button held does not hold off a reset|src/mapping/stop_buttons.cpp|s/out.pressed.any\(\) \|\| down\(op, operator_\) \|\| down\(sup, supervisor_\)/out.pressed.any()/"
+  "issue 33: a stop button let go and held 2 s resets|src/mapping/stop_buttons.cpp|s/supervisor_reset_.keys = keys_of\(mapping.supervisor->reset\);/supervisor_reset_.keys = {mapping.supervisor->stop.key};/; s/operator_reset_.keys = keys_of\(mapping.stop_reset\);/if (mapping.estop) operator_reset_.keys = {mapping.estop->key};/; s/const bool blocked = out.pressed.any\(\) \|\| down\(op, operator_\) \|\| down\(sup, supervisor_\) \|\| deadman_touched;/const bool blocked = deadman_touched;/; s/return fresh \|\| down\(pad, b\);/return fresh;/"
+  "a stop button held stops only when pressed|src/mapping/stop_buttons.cpp|s/return fresh \|\| down\(pad, b\);/return fresh;/"
+  "another pad of the role resets the stop|src/run/operating_state.cpp|s/return pad.same_pad\(stopper_pad_\);/return true;/"
+  "the operator resets the supervisor's stop|src/run/operating_state.cpp|s/if \(by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor\) return false;//"
   "the supervisor's stop button ignored|src/mapping/stop_buttons.cpp|s/const bool by_supervisor = take\(input.supervisor\(\), supervisor_\);/const bool by_supervisor = take(input.supervisor(), supervisor_) \&\& false;/"
 )
 

@@ -54,6 +54,7 @@ std::string script_name(std::string_view name) {
   std::string out;
   for (const char c : printable_text(name)) out += c == '#' ? std::string("\\x23") : std::string(1, c);
   if (out.starts_with(' ')) out.replace(0, 1, "\\x20");
+  if (out.starts_with('{')) out.replace(0, 1, "\\x7b");  // a brace first begins the pad's identity
   if (out.ends_with(' ')) out.replace(out.size() - 1, 1, "\\x20");
   return out;
 }
@@ -112,6 +113,17 @@ std::optional<InputEvent> EventReader::next() {
         auto written = std::string(line.substr(static_cast<std::size_t>(arg(1).column - 1)));
         while (!written.empty() && (written.back() == ' ' || written.back() == '\t' || written.back() == '\r')) {
           written.pop_back();
+        }
+        // `{path=P serial=S guid=G}` first: which physical pad (PadIdentity::fields()).
+        if (written.starts_with('{')) {
+          const auto close = written.find('}');
+          PadIdentity id;
+          if (close == std::string::npos || !parse_pad_fields(written.substr(1, close - 1), id)) {
+            throw fail(arg(1), "a pad's identity is {path=P serial=S guid=G} (each optional, escaped as names are)");
+          }
+          ev.device = id.fields();
+          written.erase(0, close + 1);
+          while (written.starts_with(' ')) written.erase(0, 1);
         }
         if (!is_printable_line(written)) {
           throw fail(arg(1),
@@ -243,8 +255,10 @@ std::string format_event(const InputEvent& event) {
   };
   switch (event.type) {
     case T::kConnect:
-      out +=
-          event.name.empty() ? "connect" : pad("connect") + script_name(event.name.substr(0, kMaxControllerNameBytes));
+      out += (event.name.empty() && event.device.empty())
+                 ? "connect"
+                 : pad("connect") + (event.device.empty() ? "" : "{" + event.device + "} ") +
+                       script_name(event.name.substr(0, kMaxControllerNameBytes));
       break;
     case T::kDisconnect: out += "disconnect"; break;
     case T::kEnd: out += "end"; break;

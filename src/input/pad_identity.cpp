@@ -61,7 +61,10 @@ bool parse_pad_fields(std::string_view text, PadIdentity& id) {
     const auto eq = field.find('=');
     if (eq == std::string_view::npos) return false;
     const auto label = field.substr(0, eq);
-    std::string* value = label == "path" ? &out.path : label == "serial" ? &out.serial : label == "guid" ? &out.guid : nullptr;
+    std::string* value = label == "path"     ? &out.path
+                         : label == "serial" ? &out.serial
+                         : label == "guid"   ? &out.guid
+                                             : nullptr;
     if (value == nullptr || !value->empty()) return false;
     try {
       *value = unescape_text(field.substr(eq + 1), SourcePos{});

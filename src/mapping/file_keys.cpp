@@ -64,13 +64,35 @@ SpeedScale read_scale(const Reader& r, const YAML::Node& n) {
   return s;
 }
 
+/// A reset gesture: `BUTTON`, or `[BUTTON, BUTTON]` held together (a chord).
+std::vector<InputUse> read_reset(const Reader& r, const YAML::Node& n, const std::string& what) {
+  std::vector<InputUse> keys;
+  if (!n.IsSequence()) {
+    keys.push_back(input_use(r, n, r.button(n)));
+    return keys;
+  }
+  if (n.size() == 0 || n.size() > kMaxResetChord) {
+    r.fail(n, what + " is one button, or a chord of " + std::to_string(kMaxResetChord) +
+                  " buttons held together ([back, start])");
+  }
+  for (const auto& b : n) {
+    auto use = input_use(r, b, r.button(b));
+    for (const auto& k : keys) {
+      if (k.key == use.key) r.fail(b, "'" + input::input_name(use.key) + "' is twice in " + what);
+    }
+    keys.push_back(use);
+  }
+  return keys;
+}
+
 SupervisorButtons read_supervisor(const Reader& r, const YAML::Node& n) {
   r.expect_map(n, "the supervisor section");
-  r.expect_keys(n, {"stop", "weapons_consent"}, "the supervisor section");
+  r.expect_keys(n, {"stop", "reset", "weapons_consent"}, "the supervisor section");
   if (!n["stop"]) r.fail(n, "the supervisor section needs 'stop: BUTTON': the supervisor's stop button");
   SupervisorButtons s;
   s.pos = r.pos(n);
   s.stop = input_use(r, n["stop"], r.button(n["stop"]));
+  if (n["reset"]) s.reset = read_reset(r, n["reset"], "the supervisor's reset");
   if (n["weapons_consent"]) s.weapons_consent = input_use(r, n["weapons_consent"], r.button(n["weapons_consent"]));
   return s;
 }
@@ -110,6 +132,7 @@ void read_file_keys(const Reader& r, const YAML::Node& root, Mapping& m, ErrorLi
     });
   }
   if (const auto e = root["estop"]) errors.attempt([&] { m.estop = input_use(r, e, r.button(e)); });
+  if (const auto s = root["stop_reset"]) errors.attempt([&] { m.stop_reset = read_reset(r, s, "stop_reset"); });
   if (const auto h = root["stop_reset_hold"]) {
     errors.attempt([&] {
       m.stop_reset_hold_ms =

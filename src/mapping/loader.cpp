@@ -119,8 +119,8 @@ Mapping read_file(const fs::path& file, Chain& chain, const SourcePos& from, con
   const Reader r(file.string(), text);
   const YAML::Node root = r.load_document(chain.node_budget);
   r.expect_keys(root,
-                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "stop_reset_hold",
-                 "enable_timeout", "supervisor", "brake", "scale", "feedback", "bindings", "layers"},
+                {"robot", "extends", "center", "constants", "deadman", "deadman_panic", "estop", "stop_reset",
+                 "stop_reset_hold", "enable_timeout", "supervisor", "brake", "scale", "feedback", "bindings", "layers"},
                 "a mapping file");
   Mapping m;
   if (root["extends"]) apply_extends(r, root["extends"], file, chain, m);

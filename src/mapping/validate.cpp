@@ -1,8 +1,11 @@
 // validate() (andros/mapping/model.hpp): the one check of a mapping, every
 // error collected.
 
+#include <initializer_list>
 #include <map>
 #include <set>
+#include <string_view>
+#include <utility>
 
 #include "andros/base/error_list.hpp"
 #include "andros/mapping/model.hpp"
@@ -81,6 +84,40 @@ void check_estop(const Mapping& m) {
       if (u.key == key) refuse(u.pos, "bound");
     }
     if (b.arm && b.arm->key == key) refuse(b.arm->pos, "an arming input");
+  }
+}
+
+/// A reset gesture is buttons that no stop shares (a stop button only ever
+/// stops), nor the deadman (released throughout): `what` is whose. The
+/// other buttons of the pad may be bound too (inert while stopped).
+/// An input a reset may not share: what it is, and why not.
+struct Reserved {
+  const std::optional<InputUse>* use;
+  std::string_view what;
+  std::string_view why;
+};
+constexpr std::string_view kStopOnlyStops = "a stop button only ever stops, it cannot also reset";
+void check_reset(const std::vector<InputUse>& reset, std::initializer_list<Reserved> others,
+                 const std::optional<InputUse>& deadman, std::string_view what) {
+  for (const auto& use : reset) {
+    const auto name = "'" + input::input_name(use.key) + "'";
+    if (!use.key.is_button()) {
+      throw InputError(use.pos, std::string(what) + " is a button or a chord of buttons; " + name + " is an axis");
+    }
+    for (const auto& [other, other_what, why] : others) {
+      if (*other && (*other)->key == use.key) {
+        throw InputError(use.pos, name + " is " + std::string(other_what) + " (" + line_of((*other)->pos, use.pos) +
+                                      "): " + std::string(why));
+      }
+    }
+    if (deadman && deadman->key == use.key) {
+      throw InputError(use.pos, name + " is the deadman (" + line_of(deadman->pos, use.pos) +
+                                    "): a reset is held with the deadman released");
+    }
+    if (use.key.kind == input::InputKind::kHat && use.key.index >= 4) {
+      throw InputError(use.pos, std::string(what) + " " + name +
+                                    " is on a hat a controller may not have: put it on buttons (or hat0)");
+    }
   }
 }
 
@@ -182,6 +219,19 @@ ValidMapping validate(Mapping m, bool require_robot) {
     check_stop_reachable(m.supervisor ? std::optional(m.supervisor->stop) : std::nullopt, "the supervisor's stop");
   });
   errors.attempt([&] { check_scale(m, reserved); });
+  errors.attempt([&] {
+    check_reset(m.stop_reset, {{&m.estop, "the stop button", kStopOnlyStops}}, m.deadman, "stop_reset");
+  });
+  if (m.supervisor) {
+    const std::optional<InputUse> stop = m.supervisor->stop;
+    const std::optional<InputUse> none;
+    errors.attempt([&] {
+      check_reset(m.supervisor->reset,
+                  {{&stop, "the supervisor's stop button", kStopOnlyStops},
+                   {&m.supervisor->weapons_consent, "the supervisor's weapons consent", "a consent never resets"}},
+                  none, "the supervisor's reset");
+    });
+  }
   errors.throw_if_any();
   return ValidMapping(std::move(m));
 }

@@ -252,15 +252,15 @@ void Recorder::observe(const run::TickReport& r) {
     state_ = r.state;
     push(payload::state(r.t_ms, r.state));
   }
-  if (r.stopped_by != stopped_by_) {
-    stopped_by_ = r.stopped_by;
-    if (r.stopped_by) {
-      push(payload::stop(r.t_ms, *r.stopped_by, r.stopper_name()));
-    }
+  // Every stop press (one that latched, made the stop another's, or came
+  // again while stopped) and every reset, once, with the pad that made it.
+  if (r.stop_count != stop_count_) {
+    stop_count_ = r.stop_count;
+    if (r.last_stop) push(payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad));
   }
-  if (r.reset_by != reset_by_) {
-    reset_by_ = r.reset_by;
-    if (r.reset_by) push(payload::reset(r.t_ms, *r.reset_by));
+  if (r.reset_count != reset_count_) {
+    reset_count_ = r.reset_count;
+    if (r.reset_by) push(payload::reset(r.t_ms, *r.reset_by, r.reset_pad));
   }
   if (first_ || r.engine.layer != layer_) {
     layer_ = r.engine.layer;

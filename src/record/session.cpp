@@ -113,12 +113,20 @@ std::string state(std::int64_t t_ms, run::OpState s) {
 std::string gate(std::int64_t t_ms, std::string_view fault) {
   return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
 }
-std::string stop(std::int64_t t_ms, run::StopBy by, std::string_view name) {
-  return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " +
-         nlohmann::json(std::string(name)).dump();
+namespace {
+std::string pad_json(const input::PadIdentity& pad) {
+  return nlohmann::json{{"name", printable_text(pad.name)},
+                        {"path", printable_text(pad.path)},
+                        {"serial", printable_text(pad.serial)},
+                        {"guid", printable_text(pad.guid)}}
+      .dump();
 }
-std::string reset(std::int64_t t_ms, run::StopBy by) {
-  return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by));
+}  // namespace
+std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad) {
+  return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad);
+}
+std::string reset(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad) {
+  return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad);
 }
 std::string layer(std::int64_t t_ms, std::string_view layer) {
   return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();

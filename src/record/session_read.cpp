@@ -56,6 +56,28 @@ class Fields {
   SourcePos pos_;
 };
 
+/// A stop's or reset's pad: `{"name":..,"path":..,"serial":..,"guid":..}`,
+/// each escaped as printable_text() writes it; earlier versions wrote a
+/// stop's name alone as a JSON string, and nothing after a reset.
+void read_stop_pad(Fields& f, StopRecord& r) {
+  if (f.rest().empty() && r.reset) return;
+  const auto j = f.json();
+  if (j.is_string() && !r.reset) {
+    r.name = j.get<std::string>();
+    r.pad.name = r.name;
+    return;
+  }
+  if (!j.is_object()) throw InputError(f.pos(), "a stop's pad is an object {\"name\": ..., \"path\": ...}");
+  for (const auto& [key, field] :
+       {std::pair{"name", &r.pad.name}, {"path", &r.pad.path}, {"serial", &r.pad.serial}, {"guid", &r.pad.guid}}) {
+    const auto it = j.find(key);
+    if (it == j.end() || !it->is_string())
+      throw InputError(f.pos(), std::string("a stop's pad has no text '") + key + "'");
+    *field = unescape_text(it->get<std::string>(), f.pos());
+  }
+  r.name = r.pad.name;
+}
+
 /// A record's time: -1 (before the first tick) up to kMaxSessionMs.
 std::int64_t time(Fields& f) {
   const auto t = f.integer();
@@ -198,7 +220,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto by = parse_stopper(who);
     if (!by || (r.reset && *by == run::StopBy::kGate)) throw InputError(pos, "unknown stopper " + quote(who));
     r.by = *by;
-    if (!r.reset) r.name = f.json().get<std::string>();
+    read_stop_pad(f, r);
     s.stops.push_back(std::move(r));
   } else if (kind == "layer") {
     const auto t = time(f);

@@ -50,6 +50,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     // frame; every change since the last tick counts, not only where it ended.
     input_.begin_tick();
     source_.pump(input_, t_ms);
+    machine_.set_pads(input_.operator_pad().identity(), input_.supervisor().identity());
     on_request(control.poll());
     for (const auto& fault : input_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
@@ -88,15 +89,17 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       break;
     case OpState::kStopped: {
       // The engine is not stepped: nothing the hands do while stopped acts
-      // (a selector, a knob), and nothing held enables. Reset by a reset
-      // hold on the pad that stopped (or the supervisor's); a press of the
-      // supervisor's stop while stopped makes the stop the supervisor's.
+      // (a selector, a knob), and nothing held enables. A stop pressed again
+      // is recorded and keeps the latch (the supervisor's makes it the
+      // supervisor's); reset by a reset gesture on the pad that stopped (or
+      // the supervisor's), never while a stop button is held.
       const auto stops = frames_.stopped(input_, t_ms);
       answer_stops(stops.pressed);
       if (stops.reset) {
         apply(*stops.reset == input::Pad::kSupervisor ? OpEvent::kSupervisorReset : OpEvent::kOperatorReset);
       }
       frames_.held_stops(input_, engine_status_);  // what the screen says is held, now
+      if (machine_.state() == OpState::kStopped) engine_status_.reset_hold = stops.hold;
       send(frames_.neutral(), observe);
       break;
     }
@@ -145,9 +148,13 @@ Effect Bridge::act(Effect effect, bool reset) {
   if (effect.rebase) {
     // A stop button pressed and not yet answered is answered before the
     // rebase makes its press history (a reset takes the presses made while stopped).
+    // Stopped already, a button held through it changes nothing but whose the stop is.
     const auto pressed = frames_.take_stop(input_);
-    if (!reset && pressed.by_operator) effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
-    if (!reset && pressed.by_supervisor) {
+    const bool stopped = machine_.state() == OpState::kStopped;
+    if (!reset && !stopped && pressed.by_operator) {
+      effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
+    }
+    if (!reset && pressed.by_supervisor && (!stopped || machine_.stopped_by() != StopBy::kSupervisor)) {
       effect.changed = machine_.on(OpEvent::kSupervisorStop).changed || effect.changed;
     }
     frames_.restart(input_);
@@ -229,6 +236,15 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
   r.reset_by = machine_.reset_by();
+  r.stopper_pad = machine_.stopper_pad();
+  r.reset_pad = machine_.reset_pad();
+  r.stop_count = machine_.stop_count();
+  r.last_stop = machine_.last_stop();
+  r.last_stop_pad = machine_.last_stop_pad();
+  r.reset_count = machine_.reset_count();
+  r.operator_may_reset = machine_.may_reset(StopBy::kOperator, input_.operator_pad().identity());
+  r.supervisor_may_reset =
+      source_.supervised() && machine_.may_reset(StopBy::kSupervisor, input_.supervisor().identity());
   r.entered_by = machine_.entered_by();
   r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
   r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;

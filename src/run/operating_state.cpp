@@ -171,26 +171,19 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
     case E::kLinkTaken: link_up_ = false; break;
     case E::kControllerUp: controller_up_ = true; break;
     case E::kControllerDown: controller_up_ = false; break;
-    case E::kOperatorStop:
-      if (state_ != S::kStopping && !stopped_by_) stopped_by_ = StopBy::kOperator;
-      reset_by_.reset();
-      break;
-    case E::kSupervisorStop:
-      if (state_ != S::kStopping) stopped_by_ = StopBy::kSupervisor;
-      reset_by_.reset();
-      break;
-    case E::kGateTrip:
-      if (state_ != S::kStopping && !stopped_by_) stopped_by_ = StopBy::kGate;
-      reset_by_.reset();
-      break;
+    case E::kOperatorStop: note_stop(StopBy::kOperator, operator_pad_); break;
+    case E::kSupervisorStop: note_stop(StopBy::kSupervisor, supervisor_pad_); break;
+    case E::kGateTrip: note_stop(StopBy::kGate, operator_pad_); break;
     case E::kOperatorReset:
     case E::kSupervisorReset: {
       const StopBy by = event == E::kSupervisorReset ? StopBy::kSupervisor : StopBy::kOperator;
-      // Stopped only; the supervisor resets any stop, the operator only the
-      // operator's (and the gate's: an internal error the operator saw).
-      if (state_ != S::kStopped || (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor)) return false;
+      const auto& pad = by == StopBy::kSupervisor ? supervisor_pad_ : operator_pad_;
+      if (!may_reset(by, pad)) return false;
       stopped_by_.reset();
+      stopper_pad_ = {};
       reset_by_ = by;
+      reset_pad_ = pad;
+      ++reset_count_;
       break;
     }
     case E::kFreshPress: reset_by_.reset(); break;
@@ -222,6 +215,38 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
     effect.begin_reload = effect.begin_reload || to == S::kReloading;
   }
   return true;
+}
+
+void OperatingState::note_stop(StopBy by, const input::PadIdentity& pad) {
+  reset_by_.reset();
+  if (state_ == S::kStopping) return;  // the run ends on neutral frames anyway
+  const bool latches = !stopped_by_;
+  // A stop by both is the supervisor's: only the supervisor resets it.
+  const bool taken = by == StopBy::kSupervisor && stopped_by_ != StopBy::kSupervisor;
+  if (latches || taken) {
+    stopped_by_ = by;
+    stopper_pad_ = pad;
+  }
+  // Pressed again while stopped: no latch changes, but the press is a fact.
+  if (latches || taken || state_ == S::kStopped) {
+    ++stop_count_;
+    last_stop_ = by;
+    last_stop_pad_ = pad;
+  }
+}
+
+bool OperatingState::may_reset(StopBy by, const input::PadIdentity& pad) const {
+  if (state_ != S::kStopped || !stopped_by_) return false;
+  // The supervisor resets any stop; the operator its own or the gate's (an internal error the operator saw).
+  if (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor) return false;
+  // A role's own stop only from the physical pad that stopped: another pad that took the role did not.
+  if (by == StopBy::kSupervisor && stopped_by_ != StopBy::kSupervisor) return true;
+  return pad.same_pad(stopper_pad_);
+}
+
+void OperatingState::set_pads(const input::PadIdentity& operator_pad, const input::PadIdentity& supervisor_pad) {
+  operator_pad_ = operator_pad;
+  supervisor_pad_ = supervisor_pad;
 }
 
 std::string_view to_string(OpState state) {

@@ -61,7 +61,8 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
         Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
   } else {
     const auto text = s.shutting_down() ? "SHUTTING DOWN: sending neutral frames"
-                                        : to_upper(run::to_string(s.state)) + ": " + s.enable_text;
+                                        : to_upper(run::to_string(s.state)) + ": " +
+                                              (s.reset_progress.empty() ? s.enable_text : s.reset_progress);
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);
     const std::string indent(kLabel.size(), ' ');
     for (const auto& part : wrap(text, room)) {

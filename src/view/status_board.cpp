@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
 #include <tuple>
 
 #include "andros/base/clock.hpp"
@@ -17,7 +18,7 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
                   r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
-                  r.link.motion_allowed, r.link.detail);
+                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed, r.link.detail);
 }
 
 }  // namespace
@@ -50,6 +51,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
       s.state = r.state;
       s.stopped_by = stopped_by_text(r);
       s.enable_text = state_text(r);
+      s.reset_progress = reset_progress_text(r);
       // "deadman released" forever would send the operator looking at the deadman.
       if (const auto note = joystick_note(s.pad_names, s.game_controller);
           !note.empty() && r.connected && r.state == run::OpState::kNotEnabled) {
@@ -106,7 +108,11 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
   }
   if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
-    else if (after.state == run::OpState::kStopped) spdlog::warn("STOP: {}", after.enable_text);
+    // One STOP line a stop: what changes while it stays latched (a stop button let go, a pad lost) is no new stop.
+    else if (after.state == run::OpState::kStopped &&
+             (before.state != after.state || before.stopped_by != after.stopped_by))
+      spdlog::warn("STOP: {}", after.enable_text);
+    else if (after.state == run::OpState::kStopped) spdlog::info("stopped: {}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
@@ -177,7 +183,7 @@ std::string state_text(const run::TickReport& r) {
       return std::string(describe(r.engine.enable));
     }
     case OpState::kEnabled: return enable_text(r.engine);
-    case OpState::kStopped: return stopped_by_text(r) + ": " + std::string(kStoppedText);
+    case OpState::kStopped: return stopped_by_text(r) + ": " + stopped_text(r);
     case OpState::kSuspended: return "neutral frames sent, link closed until resumed";
     case OpState::kReloading: return "neutral frames while the settings are read";
     case OpState::kStopping: return "sending neutral frames";
@@ -185,12 +191,62 @@ std::string state_text(const run::TickReport& r) {
   return "?";
 }
 
+namespace {
+
+/// "hold back+start 2 s": a reset gesture as the operator makes it.
+std::string hold_text(const std::string& gesture, std::int64_t hold_ms) {
+  char seconds[16];
+  std::snprintf(seconds, sizeof seconds, "%g", static_cast<double>(hold_ms) / 1000.0);
+  return "hold " + gesture + " " + seconds + " s";
+}
+
+}  // namespace
+
+std::string stopped_text(const run::TickReport& r) {
+  const auto& e = r.engine;
+  const std::int64_t hold_ms = e.reset_hold_ms;
+  if (e.stop_held) return "a stop button is held: nothing resets until every stop button is released";
+  const bool sup_may = r.supervisor_may_reset && !e.supervisor_reset.empty();
+  const std::string sup_way = "the supervisor resets (" + hold_text(e.supervisor_reset, hold_ms) + " on its pad)";
+  const std::string then = "; then press the deadman afresh";
+  if (r.operator_may_reset && !e.operator_reset.empty()) {
+    return "to reset, release the deadman and " + hold_text(e.operator_reset, hold_ms) +
+           (sup_may ? " (or " + sup_way + ")" : "") + then;
+  }
+  if (r.stopped_by == run::StopBy::kSupervisor) {
+    return "only the supervisor resets it" +
+           (sup_may ? ": " + hold_text(e.supervisor_reset, hold_ms) + " on its pad" + then
+                    : std::string(": its pad or the mapping has no reset; restart the bridge"));
+  }
+  std::string why;
+  if (e.operator_reset.empty()) {
+    why = "the mapping has no stop_reset";
+  } else if (r.connected) {
+    why = "this controller (" + printable_text(r.controller) + ") did not stop, " + r.stopper_pad.describe() + " did";
+  } else {
+    why = "the controller that stopped is gone";
+  }
+  return why + ": " + (sup_may ? sup_way + then : std::string("restart the bridge to go on"));
+}
+
+std::string reset_progress_text(const run::TickReport& r) {
+  const auto& e = r.engine;
+  if (r.state != run::OpState::kStopped || !e.reset_hold) return {};
+  char progress[48];
+  std::snprintf(progress, sizeof progress, "%.1f of %.1f s", static_cast<double>(e.reset_hold->held_ms) / 1000.0,
+                static_cast<double>(e.reset_hold->hold_ms) / 1000.0);
+  const bool sup = e.reset_hold->pad == input::Pad::kSupervisor;
+  return std::string("resetting: ") + progress + " (" + (sup ? "the supervisor's " : "") +
+         (sup ? e.supervisor_reset : e.operator_reset) + " held; a stop button or the deadman ends it)";
+}
+
 std::string stopped_by_text(const run::TickReport& r) {
   if (!r.stopped_by) return {};
   if (*r.stopped_by == run::StopBy::kGate) {
     return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
   }
-  const auto name = r.stopper_name();
+  // The pad that stopped, by the name it had then: an unplug does not make it "(controller)".
+  const auto name = r.stopper_pad.name.empty() ? r.stopper_name() : r.stopper_pad.name;
   return "stopped by the " + std::string(run::to_string(*r.stopped_by)) + " (" +
          (name.empty() ? std::string("controller") : printable_text(name)) + ")";
 }

@@ -22,7 +22,7 @@ head='robot: HD1\ndeadman: leftshoulder\nbindings:\n'
 w syntax.yaml "$head"'  - signal: tool_on\n    button: [a\n'
 expect_error "syntax.yaml:6:1: error: YAML syntax: end of sequence flow not found" "$BIN" check syntax.yaml
 w unknown_key.yaml 'robot: HD1\ndeadman: leftshoulder\ncentre: 128\n'
-expect_error "unknown_key.yaml:3:1: error: unknown key 'centre' in a mapping file (expected robot, extends, center, constants, deadman, deadman_panic, estop, stop_reset_hold, enable_timeout, supervisor, brake, scale, feedback, bindings, layers)" "$BIN" check unknown_key.yaml
+expect_error "unknown_key.yaml:3:1: error: unknown key 'centre' in a mapping file (expected robot, extends, center, constants, deadman, deadman_panic, estop, stop_reset, stop_reset_hold, enable_timeout, supervisor, brake, scale, feedback, bindings, layers)" "$BIN" check unknown_key.yaml
 w unknown_signal.yaml "$head"'  - signal: front_art_upp\n    button: a\n'
 expect_error "unknown_signal.yaml:4:13: error: unknown signal 'front_art_upp' (expected one of: $("$BIN" frame signals --json | sed 's/^{"name":"\([^"]*\)".*/\1/' | tr '\n' ' ' | sed 's/ $//'))" "$BIN" check unknown_signal.yaml
 w unknown_input.yaml "$head"'  - signal: tool_on\n    button: trigger\n'

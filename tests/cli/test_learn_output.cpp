@@ -154,7 +154,8 @@ TEST_F(FreshAccount, AFileThatDoesNotLoadIsNamedAsTheOutputNeverATemporary) {
   EXPECT_EQ(input_error_text([&] { mapping::load_mapping_text("robot: HD1\ndeadman: a\nbad: 1\n", output); }),
             output.string() +
                 ":3:1: error: unknown key 'bad' in a mapping file (expected robot, extends, center, constants, "
-                "deadman, deadman_panic, estop, stop_reset_hold, enable_timeout, supervisor, brake, scale, feedback, "
+                "deadman, deadman_panic, estop, stop_reset, stop_reset_hold, enable_timeout, supervisor, brake, scale, "
+                "feedback, "
                 "bindings, layers)");
   EXPECT_FALSE(fs::exists(output));
 }

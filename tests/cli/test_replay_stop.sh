@@ -8,11 +8,11 @@ core="$DATA/mappings/core.yaml"
 at() { awk -v t="$1" '$1 == t' "$2"; }
 
 # 1. The stop latches through a held deadman and a held stick; releasing the
-# stop, the deadman, or both, never resets it, nor does a hold of the stop
-# button with the deadman pressed during it; the stop button released after
-# the stop, then held 2 s with the deadman released, does; then a fresh press
-# (stick at rest first) drives again.
-printf 'robot: HD1\nextends: %s\nestop: guide\n' "$core" >"$TMP/stop.yaml"
+# stop, the deadman, or both, never resets it, nor does the stop button
+# pressed again and held 2 s (a stop button only ever stops, issue 33); the
+# reset chord (back and start) held 2 s with the deadman and the stop
+# released does; then a fresh press (stick at rest first) drives again.
+printf 'robot: HD1\nextends: %s\nestop: guide\nstop_reset: [back, start]\n' "$core" >"$TMP/stop.yaml"
 cat >"$TMP/stop.events" <<'E'
 0    connect     pad
 40   button      leftshoulder 1
@@ -26,24 +26,28 @@ cat >"$TMP/stop.events" <<'E'
 420  button      guide 0
 500  button      leftshoulder 1
 560  button      leftshoulder 0
-600  button      guide 1
+580  button      guide 1
 2700 button      guide 0
-2750 button      leftshoulder 1
-2850 axis        lefty 0
-2890 axis        lefty -32768
-3000 end
+2710 button      back 1
+2710 button      start 1
+4850 button      back 0
+4850 button      start 0
+4900 button      leftshoulder 1
+5000 axis        lefty 0
+5040 axis        lefty -32768
+5200 end
 E
 expect_exit 0 "$BIN" replay "$TMP/stop.events" --mapping "$TMP/stop.yaml" --format jsonl
 frames "$TMP/out" >"$TMP/f1"
 [[ $(at 120 "$TMP/f1") == "120 255 128 1" ]] || fail "no drive before the stop: $(tr '\n' ';' <"$TMP/f1")"
 # From the frame after the press on, neutral whatever is held or let go,
-# until the reset (the hold from 600, done at 2600) and a fresh press (2750) ...
-awk '$1 >= 160 && $1 <= 2720 && ($2 != 128 || $3 != 128 || $4 != 0) { exit 1 }' "$TMP/f1" ||
+# until the reset (the chord from 2720, done at 4720) and a fresh press (4900) ...
+awk '$1 >= 160 && $1 <= 4880 && ($2 != 128 || $3 != 128 || $4 != 0) { exit 1 }' "$TMP/f1" ||
   fail "motion while stopped: $(tr '\n' ';' <"$TMP/f1")"
-# ... which enables, the stick held through it waits for rest (2880), drives at 2920.
-[[ $(at 2760 "$TMP/f1") == "2760 128 128 1" ]] || fail "the fresh press after the reset does not enable: $(tr '\n' ';' <"$TMP/f1")"
-[[ $(at 2880 "$TMP/f1") == "2880 128 128 1" ]] || fail "a stick held through the stop acts before rest: $(tr '\n' ';' <"$TMP/f1")"
-[[ $(at 2920 "$TMP/f1") == "2920 255 128 1" ]] || fail "no drive after the stop was reset: $(tr '\n' ';' <"$TMP/f1")"
+# ... which enables, the stick held through it waits for rest (5000), drives at 5040.
+[[ $(at 4920 "$TMP/f1") == "4920 128 128 1" ]] || fail "the fresh press after the reset does not enable: $(tr '\n' ';' <"$TMP/f1")"
+[[ $(at 5000 "$TMP/f1") == "5000 128 128 1" ]] || fail "a stick held through the stop acts before rest: $(tr '\n' ';' <"$TMP/f1")"
+[[ $(at 5040 "$TMP/f1") == "5040 255 128 1" ]] || fail "no drive after the stop was reset: $(tr '\n' ';' <"$TMP/f1")"
 
 # 2. A tap between two frames stops too; a deadman held through it and never
 # released keeps the stop.
@@ -61,7 +65,7 @@ frames "$TMP/out" >"$TMP/f2"
 awk '$1 >= 160 && ($4 != 0 || $2 != 128) { exit 1 }' "$TMP/f2" || fail "a tapped stop did not latch: $(tr '\n' ';' <"$TMP/f2")"
 
 # 3. The stop outlives a link lost and regained, a reload and a suspend, and
-# the deadman released and pressed again; the reset hold ends it.
+# the deadman released and pressed again; the reset chord ends it.
 cat >"$TMP/outlives.events" <<'E'
 0    connect     pad
 40   button      leftshoulder 1
@@ -75,8 +79,10 @@ cat >"$TMP/outlives.events" <<'E'
 600  button      leftshoulder 0
 640  button      leftshoulder 1
 700  button      leftshoulder 0
-720  button      guide 1
-2800 button      guide 0
+720  button      back 1
+720  button      start 1
+2800 button      back 0
+2800 button      start 0
 2840 button      leftshoulder 1
 2900 axis        lefty -32768
 3000 end
@@ -158,4 +164,8 @@ grep -q "bad4.yaml:3:8: error: estop 'hat9left' is on a hat a controller may not
 printf 'robot: HD1\nextends: %s\nstop_reset_hold: 12\n' "$core" >"$TMP/bad5.yaml"
 expect_exit 2 "$BIN" check "$TMP/bad5.yaml"
 grep -q "bad5.yaml:3:18: error: stop_reset_hold 12 is out of range 1..10" "$TMP/err" || fail "reset hold out of range: $(cat "$TMP/err")"
+printf 'robot: HD1\nextends: %s\nestop: guide\nstop_reset: [guide, start]\n' "$core" >"$TMP/bad6.yaml"
+expect_exit 2 "$BIN" check "$TMP/bad6.yaml"
+grep -q "bad6.yaml:4:14: error: 'guide' is the stop button (line 3): a stop button only ever stops" "$TMP/err" ||
+  fail "a reset on the stop button: $(cat "$TMP/err")"
 finish

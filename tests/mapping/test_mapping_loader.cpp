@@ -52,6 +52,24 @@ INSTANTIATE_TEST_SUITE_P(
                    "stop_reset_hold 0.5 is out of range 1..10"},
         BadMapping{"stop_reset_hold above 10 s", "robot: HD1\ndeadman: leftshoulder\nstop_reset_hold: 11\n", 3, 18,
                    "stop_reset_hold 11 is out of range 1..10"},
+        // The reset gesture: never a stop button (a stop only ever stops), nor the deadman, nor an axis.
+        BadMapping{"stop_reset on the stop button",
+                   "robot: HD1\ndeadman: leftshoulder\nestop: guide\nstop_reset: [back, guide]\n", 4, 20,
+                   "'guide' is the stop button (line 3): a stop button only ever stops, it cannot also reset"},
+        BadMapping{"stop_reset on the deadman", "robot: HD1\ndeadman: leftshoulder\nstop_reset: leftshoulder\n", 3, 13,
+                   "'leftshoulder' is the deadman"},
+        BadMapping{"stop_reset an axis", "robot: HD1\ndeadman: leftshoulder\nstop_reset: [back, lefty]\n", 3, 20,
+                   "unknown button 'lefty'"},
+        BadMapping{"stop_reset a chord of three", "robot: HD1\ndeadman: leftshoulder\nstop_reset: [a, b, x]\n", 3, 13,
+                   "a chord of 2 buttons held together"},
+        BadMapping{"stop_reset the same button twice", "robot: HD1\ndeadman: leftshoulder\nstop_reset: [back, back]\n",
+                   3, 20, "'back' is twice in stop_reset"},
+        BadMapping{"the supervisor's reset on its stop",
+                   "robot: HD1\ndeadman: leftshoulder\nsupervisor: {stop: b, reset: [b, start]}\n", 3, 31,
+                   "'b' is the supervisor's stop button (line 3): a stop button only ever stops"},
+        BadMapping{"the supervisor's reset on its consent",
+                   "robot: HD1\ndeadman: leftshoulder\nsupervisor: {stop: b, weapons_consent: a, reset: a}\n", 3, 50,
+                   "'a' is the supervisor's weapons consent"},
         BadMapping{"a stop on a hat a pad cannot have", "robot: HD1\ndeadman: leftshoulder\nestop: hat9left\n", 3, 8,
                    "estop 'hat9left' is on a hat a controller may not have"},
         BadMapping{"the supervisor's stop on such a hat",
@@ -217,7 +235,7 @@ INSTANTIATE_TEST_SUITE_P(
                    3, "the supervisor section needs 'stop: BUTTON'"},
         BadMapping{"supervisor section with an unknown key",
                    "robot: HD1\ndeadman: a\nsupervisor:\n  stop: b\n  consent: a\n", 5, 3,
-                   "unknown key 'consent' in the supervisor section (expected stop, weapons_consent)"},
+                   "unknown key 'consent' in the supervisor section (expected stop, reset, weapons_consent)"},
         BadMapping{"supervisor stop an axis", "robot: HD1\ndeadman: a\nsupervisor: {stop: leftx}\n", 3, 20,
                    "unknown button 'leftx'"},
         BadMapping{"supervisor section not a map", "robot: HD1\ndeadman: a\nsupervisor: b\n", 3, 13,
@@ -397,6 +415,17 @@ TEST(MappingLoader, DefaultsAndEveryBindingKind) {
 TEST(MappingLoader, StopResetHoldIsOneToTenSecondsTwoByDefault) {
   MappingDir dir;
   EXPECT_EQ(load_mapping(dir.write("d.yaml", "robot: HD1\ndeadman: a\n"))->stop_reset_hold_ms, 2000);
+  // The reset gesture: one button or a chord, the operator's and the supervisor's; the reset buttons may be bound too.
+  const auto chord = load_mapping(
+      dir.write("r.yaml",
+                "robot: HD1\ndeadman: a\nestop: guide\nstop_reset: [back, start]\nsupervisor: {stop: guide, reset: x}\n"
+                "bindings:\n  - signal: front_art_up\n    button: back\n"));
+  ASSERT_EQ(chord->stop_reset.size(), 2u);
+  EXPECT_EQ(input::input_name(chord->stop_reset[0].key), "back");
+  EXPECT_EQ(input::input_name(chord->stop_reset[1].key), "start");
+  ASSERT_EQ(chord->supervisor->reset.size(), 1u);
+  EXPECT_EQ(input::input_name(chord->supervisor->reset[0].key), "x");
+  EXPECT_TRUE(load_mapping(dir.write("n.yaml", "robot: HD1\ndeadman: a\nestop: guide\n"))->stop_reset.empty());
   EXPECT_EQ(load_mapping(dir.write("lo.yaml", "robot: HD1\ndeadman: a\nstop_reset_hold: 1\n"))->stop_reset_hold_ms,
             1000);
   EXPECT_EQ(load_mapping(dir.write("hi.yaml", "robot: HD1\ndeadman: a\nstop_reset_hold: 10\n"))->stop_reset_hold_ms,

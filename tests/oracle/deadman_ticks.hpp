@@ -23,7 +23,8 @@ class DeadmanTicks {
  public:
   /// A new session of the operator's pad: what the old one did is gone.
   void new_session() {
-    pressed_ = let_go_since_ = released_since_ = false;
+    // Nor is a trigger held at the last tick still held: the loop reads the new session's travel from its connect.
+    pressed_ = let_go_since_ = released_since_ = was_down_ = false;
     down_at_tick_.clear();
   }
 

@@ -17,9 +17,12 @@
 // the next; the stop held through a release and press of the deadman; a
 // trigger squeezed past its panic point and back to the middle; a layer left
 // with its stick pushed; both buttons of an opposing pair; resets of a stop
-// (a stop button let go, then held about 2 s, by either pad, the deadman now
-// and then pressed during it); and a deadman let go and pressed again, or the
-// trigger squeezed past its panic point and back, within one frame.
+// (the pad's reset chord, back and start, held about 2 s, by either pad, the
+// deadman or a stop button now and then pressed during it); stops from both
+// pads at once, pressed again and held (through a reset chord and a deadman
+// press); a pad swapped for another (another name) while stopped; and a
+// deadman let go and pressed again, or the trigger squeezed past its panic
+// point and back, within one frame.
 
 #include <array>
 #include <cstdint>
@@ -61,7 +64,9 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   const auto add = [&w](T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
     w.add(type, key, value, std::move(name));
   };
-  const auto supervisor = [&w](T type, input::InputKey key = {}, int value = 0) { w.supervisor(type, key, value); };
+  const auto supervisor = [&w](T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
+    w.supervisor(type, key, value, std::move(name));
+  };
   const auto wait = [&w] { w.wait(); };
   const auto pair_gap = [&w] { w.pair_gap(); };
   const auto next_tick = [&w](int within) { w.next_tick(within); };
@@ -146,27 +151,113 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 40 + pick.below(160);
     if (pick.below(2) == 0) add(T::kAxis, drive, 0);
   };
-  // A reset: the stop button let go, then held about 2 s (the supervisor's, when there is one, now and then).
-  const auto reset_hold = [&] {
-    const bool by_supervisor = supervised && pick.below(2) == 0;
-    const auto press = [&](int value) {
-      if (by_supervisor) supervisor(T::kButton, button("guide"), value);
-      else add(T::kButton, button("guide"), value);
-    };
-    if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
-    press(0);
-    t += pick.below(100);
-    press(1);
-    const auto hold = pick.below(4) == 0 ? pick.below(2000) : 1950 + pick.below(300);
-    if (pick.below(8) == 0) {  // the deadman pressed during the hold: no reset
-      t += pick.below(static_cast<std::uint32_t>(hold) + 1);
-      add(T::kButton, deadman, 1);
-      t += 10;
-      add(T::kButton, deadman, 0);
+  // A button on the operator's pad or the supervisor's.
+  const auto on_pad = [&](bool sup, std::string_view name, int value) {
+    if (sup) {
+      supervisor(T::kButton, button(name), value);
     } else {
-      t += hold;
+      add(T::kButton, button(name), value);
     }
-    press(0);
+  };
+  // A reset: the pad's chord (back and start, now and then a moment apart)
+  // held about 2 s (the supervisor's, when there is one, now and then); now
+  // and then the deadman or a stop button (either pad's) pressed during it: no reset.
+  // The oracle cannot tell at which tick a suspend asked for during a reload
+  // begins (LoopSchedule::suspending), so not which ticks the loop spends
+  // stopped, where a reset gesture is read: a gesture is made neither while
+  // suspended (it is resumed first) nor within a second of a reload, a suspend or a resume.
+  const auto settled_for_a_reset = [&] {
+    for (auto it = events.rbegin(); it != events.rend(); ++it) {
+      if (it->type == T::kSuspend) add(T::kResume);
+      if (it->type == T::kSuspend || it->type == T::kResume) break;
+    }
+    for (auto it = events.rbegin(); it != events.rend() && it->t_ms > t - 1000; ++it) {
+      if (it->type == T::kReload || it->type == T::kSuspend || it->type == T::kResume) {
+        t = it->t_ms + 1000 + pick.below(100);
+        break;
+      }
+    }
+  };
+  const auto reset_hold = [&] {
+    settled_for_a_reset();
+    const bool by_supervisor = supervised && pick.below(2) == 0;
+    if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
+    on_pad(by_supervisor, "back", 1);
+    t += pick.below(2) == 0 ? 0 : pick.below(100);
+    on_pad(by_supervisor, "start", 1);
+    const auto hold = pick.below(4) == 0 ? pick.below(2000) : 1950 + pick.below(300);
+    switch (pick.below(10)) {
+      case 0:  // the deadman pressed during the hold
+        t += pick.below(static_cast<std::uint32_t>(hold) + 1);
+        add(T::kButton, deadman, 1);
+        t += 10;
+        add(T::kButton, deadman, 0);
+        t += 2100;
+        break;
+      case 1:    // a stop button pressed during the hold (tapped, or held on past it)
+      case 2: {  // a stop never resets, and ends the hold
+        const bool stop_sup = supervised && pick.below(2) == 0;
+        t += pick.below(static_cast<std::uint32_t>(hold) + 1);
+        on_pad(stop_sup, "guide", 1);
+        t += pick.below(2) == 0 ? 1 + pick.below(30) : 2100 + pick.below(800);
+        on_pad(stop_sup, "guide", 0);
+        break;
+      }
+      default: t += hold; break;
+    }
+    on_pad(by_supervisor, pick.below(2) == 0 ? "back" : "start", 0);
+    t += pick.below(2) == 0 ? 0 : pick.below(60);
+    on_pad(by_supervisor, "back", 0);
+    on_pad(by_supervisor, "start", 0);
+  };
+  // Stops from both pads overlapping, each pressed again and held, released in
+  // either order, the deadman pressed while one is held (issue 33's defect:
+  // the supervisor's stop held on for seconds).
+  const auto overlapping_stops = [&] {
+    const bool first_sup = supervised && pick.below(2) == 0;
+    on_pad(first_sup, "guide", 1);
+    t += pick.below(80);
+    if (supervised) on_pad(!first_sup, "guide", 1);
+    t += 40 + pick.below(2600);
+    if (pick.below(2) == 0) {  // the other let go and pressed again
+      on_pad(first_sup, "guide", 0);
+      t += 1 + pick.below(40);
+      on_pad(first_sup, "guide", 1);
+    }
+    if (held) add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    stick();
+    t += 100 + pick.below(2500);
+    const bool sup_last = supervised && pick.below(2) == 0;
+    if (supervised) on_pad(!sup_last, "guide", 0);
+    t += pick.below(2) == 0 ? 0 : pick.below(400);
+    on_pad(sup_last, "guide", 0);
+  };
+  // While stopped, the operator's pad swapped for another (or the same back),
+  // or the supervisor's, then a reset chord and a deadman press on it.
+  const auto swap_while_stopped = [&] {
+    const bool sup = supervised && pick.below(3) == 0;
+    if (pick.below(2) == 0) {  // its stop pressed again first
+      on_pad(sup, "guide", 1);
+      t += pick.below(100);
+      on_pad(sup, "guide", 0);
+    }
+    pair_gap();
+    const std::string other = pick.below(2) == 0 ? "B" : "A";
+    if (sup) {
+      supervisor(T::kDisconnect);
+      pair_gap();
+      supervisor(T::kConnect, {}, 0, "Sup " + other);
+    } else {
+      add(T::kDisconnect);
+      pair_gap();
+      add(T::kConnect, {}, 0, "Pad " + other);
+    }
+    reset_hold();
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    stick();
   };
   // Within one frame: the deadman let go and pressed again, or the trigger (a
   // deadman on some mappings) squeezed past the panic point and back.
@@ -177,10 +268,11 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(key.is_button() ? T::kButton : T::kAxis, key, back);
   };
 
-  add(T::kConnect);
+  // Pads are told apart by name (a script's identity): another name is another physical pad.
+  add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
   supervised = pick.below(2) == 0;                      // a supervisor's controller in every other script
-  if (supervised) supervisor(T::kConnect);
+  if (supervised) supervisor(T::kConnect, {}, 0, "Sup A");
   const int n = 30 + static_cast<int>(pick.below(70));
   int after_stop = -1;  // events still to come once a stop is in
   for (int i = 0; i < n && after_stop != 0 && !pick.exhausted(); ++i) {
@@ -191,7 +283,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       if (connected && pick.below(2) == 0) {
         add(T::kDisconnect);
       } else {
-        add(T::kConnect);
+        add(T::kConnect, {}, 0, pick.below(4) == 0 ? "Pad B" : "Pad A");
         if (pick.below(3) == 0) add(T::kButton, deadman, 1);  // held at connect
       }
     } else if (roll < 22) {  // the deadman: held more often than not
@@ -210,7 +302,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(33)) {
+      switch (pick.below(36)) {
         case 0:
         case 1:
         case 2:
@@ -262,7 +354,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           } else {
             supervisor(T::kDisconnect);
             pair_gap();
-            supervisor(T::kConnect);
+            supervisor(T::kConnect, {}, 0, pick.below(4) == 0 ? "Sup B" : "Sup A");
           }
           break;
         case 22: stop_and_press(); break;
@@ -282,6 +374,8 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 30: reset_hold(); break;
         case 31: blip_within_a_frame(deadman, 0, 1); break;
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
+        case 33: overlapping_stops(); break;
+        case 34: swap_while_stopped(); break;
         default: rearm(); break;
       }
     }

@@ -81,6 +81,8 @@ class SafetyOracle {
     const auto armed = [this, &pads](protocol::SignalId id) { return reading_.mappings().armed(id, pads); };
     if (auto fired = weapon_errors(s, options_.weapons, why, armed, coverage_.weapons); !fired.empty()) return fired;
     if (const auto moving = motion(s)) {
+      // ISO 13850: a stop device stops whenever it is actuated, whatever came before.
+      if (reading_.stop_actuated()) return *moving + " while a stop button is pressed or held";
       if (!why.empty()) return *moving + " while " + why;
       ++coverage_.motion;
       ++coverage_.motion_after[static_cast<std::size_t>(reading_.pressed_after())];

@@ -116,7 +116,10 @@ class ScriptReading {
       case T::kDisconnect:
         end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
         pads_.connect(e.type == T::kConnect, e.t_ms);
-        stop_.op = StopHold{};  // a stop tapped on the old session since the last tick went with it
+        stop_.op = StopInput{};  // a stop tapped on the old session since the last tick went with it
+        stop_.op_name = e.type == T::kConnect ? e.name : std::string();
+        set_gesture(stop_.op_reset, mappings_.current->stop_reset, {});
+        stop_.op_reset.new_session = true;
         if (e.type == T::kConnect) deadman_.new_session();
         squeezed_since_tick_ = false;  // what the old session did is gone
         last_change_ = e.t_ms;
@@ -132,6 +135,7 @@ class ScriptReading {
         if (now && !was && !initial) rest_.pressed(e.key);
         const auto& estop = mappings_.current->estop;
         if (estop && e.key == estop->key) stop_.op.moved(now, was, initial);
+        stop_.op_reset.moved(e.key, now);
         if (mappings_.deadmen.contains(e.key)) deadman_moved(e.key, was, now, e.t_ms);
         break;
       }
@@ -201,6 +205,8 @@ class ScriptReading {
   /// The rest rule, read frame by frame on the mapping in force.
   [[nodiscard]] LayerRest& rest() { return rest_; }
   [[nodiscard]] bool stop_latched() const { return stop_.latched(); }
+  /// A stop button of the mapping in force pressed since the last tick, or held, on a connected pad.
+  [[nodiscard]] bool stop_actuated() const { return stop_.actuated(); }
   /// The last interruption before the press that enabled.
   [[nodiscard]] Ending pressed_after() const { return pressed_after_; }
   /// What the script reached: stop latches, resets, panics, timeouts, the supervisor's stop presses.
@@ -215,7 +221,23 @@ class ScriptReading {
     const auto& m = *mappings_.current;
     stop_.op.down = m.estop && pads_.held(m.estop->key);
     stop_.sup.down = pads_.sup_held(m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt);
-    stop_.op.from_reset = stop_.sup.from_reset = false;
+    set_gesture(stop_.op_reset, m.stop_reset, [this](input::InputKey k) { return pads_.held(k); });
+    set_gesture(stop_.sup_reset, m.supervisor ? m.supervisor->reset : std::vector<mapping::InputUse>{},
+                [this](input::InputKey k) { return pads_.sup_held(k); });
+  }
+
+  // A reset gesture's buttons as the mapping in force has them, each held as
+  // `held` says (none: released); the gesture made before is not made afresh.
+  static void set_gesture(ResetGesture& g, const std::vector<mapping::InputUse>& uses,
+                          const std::function<bool(input::InputKey)>& held) {
+    g.keys.clear();
+    g.down.clear();
+    for (const auto& u : uses) {
+      g.keys.push_back(u.key);
+      g.down.push_back(held && held(u.key));
+    }
+    g.close();
+    g.let_go = false;
   }
 
   // Every event that ends "enabled": the press that enables must come after it.
@@ -234,7 +256,11 @@ class ScriptReading {
     if (e.type == T::kConnect || e.type == T::kDisconnect) {
       end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
       pads_.connect_supervisor(e.type == T::kConnect, e.t_ms);
-      stop_.sup = StopHold{};
+      stop_.sup = StopInput{};
+      stop_.sup_name = e.type == T::kConnect ? e.name : std::string();
+      const auto& sup = mappings_.current->supervisor;
+      set_gesture(stop_.sup_reset, sup ? sup->reset : std::vector<mapping::InputUse>{}, {});
+      stop_.sup_reset.new_session = true;
     } else if (e.type == T::kButton && pads_.sup_connected) {
       const bool was = pads_.sup_buttons[e.key];
       const bool now = e.value != 0;
@@ -243,6 +269,7 @@ class ScriptReading {
       counts_.supervisor_stops += e.key == mappings_.sup_stop && now && !was && !initial ? 1 : 0;
       const auto& sup = mappings_.current->supervisor;
       if (sup && e.key == sup->stop.key) stop_.sup.moved(now, was, initial);
+      stop_.sup_reset.moved(e.key, now);
     }
   }
 

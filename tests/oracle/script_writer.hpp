@@ -42,8 +42,8 @@ struct ScriptWriter {
     }
   }
   /// An event on the supervisor's controller.
-  void supervisor(T type, input::InputKey key = {}, int value = 0) {
-    add(type, key, value);
+  void supervisor(T type, input::InputKey key = {}, int value = 0, std::string name = {}) {
+    add(type, key, value, std::move(name));
     events.back().pad = input::Pad::kSupervisor;
   }
   // Time moves on: often not at all (events at one instant), to a frame's

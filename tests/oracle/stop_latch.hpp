@@ -1,54 +1,98 @@
 #pragma once
 // The latched stop as the fault simulation's oracle (safety_oracle.hpp)
-// reads it off the script (docs/safety-states.md), on the stop buttons of the
-// mapping in force. A stop button pressed since the last tick, or held (not
-// held on from a reset), latches at the tick (but one made just before a new
-// controller session: the loop cannot see it); the stop is the supervisor's
-// when the supervisor's button latched it or is pressed while stopped. The
-// latch outlives its own tick and is never cleared by the deadman alone, nor
-// by releasing the stop buttons: only a reset hold ends it, read tick by tick
-// as the loop reads it (StopHold::tick), exactly (a reset the loop did not
-// make would make a later press of the stop button a new stop here, a press
-// of the reset there): that pad's stop button released after the stop, then
-// pressed and held for `stop_reset_hold` with the deadman released. The
-// supervisor's resets any stop, the operator's only the operator's (and the
-// frame gate's, which never trips in the simulation: that is checked apart).
+// reads it off the script, written from the stop standards' words
+// (ISO 13850: a stop device stops whenever it is actuated, and its reset is a
+// separate, deliberate act that cannot complete while the device is still
+// actuated; docs/safety-states.md, "Stops"), not from the loop's code:
+// - a stop press always stops: a stop button (the operator's `estop`, the
+//   supervisor's `stop`) pressed since the last tick, or held, latches at
+//   the tick, whatever the state (but one made just before a new controller
+//   session: the loop cannot see it);
+// - no reset while any stop input is actuated: a stop button pressed or held
+//   on any pad, or the deadman touched, ends a reset gesture under way, and
+//   the gesture must be let go and made again;
+// - a reset is the pad's reset gesture (`stop_reset`, the supervisor's
+//   `reset`: every button of it held) made afresh while stopped and held
+//   `stop_reset_hold`, read at the ticks the loop spends in "stopped";
+// - no reset by a pad that is not the stopper's or the supervisor's: the
+//   supervisor's resets the operator's stop from any pad in its role, a
+//   role's own stop only from the pad that stopped (a pad is its connect's
+//   name here: a script gives no more); the operator's never resets the supervisor's.
+// The stop is the supervisor's once its button latched it or is pressed
+// while stopped. The latch is never cleared by the deadman, nor by releasing
+// the stop buttons. The frame gate never trips in the simulation: that is checked apart.
 
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "andros/input/events.hpp"
 
 namespace andros::test {
 
-/// One pad's stop button, as a reset hold reads it (the mapping in force's).
-struct StopHold {
+/// One pad's stop button.
+struct StopInput {
   bool down = false;
-  bool pressed = false;               ///< since the last tick
-  bool let_go = false;                ///< since the last tick
-  bool from_reset = false;            ///< held on since a reset hold completed: no stop until let go
-  std::optional<std::int64_t> since;  ///< a hold under way since this tick
+  bool pressed = false;  ///< since the last tick
 
   /// The button moved (initial: stamped with the connect's time, the state the pad had, not a press).
   void moved(bool now, bool was, bool initial) {
     down = now;
-    if (!now) from_reset = false;
-    if (initial) return;
-    if (now && !was) pressed = true;
-    if (!now && was) let_go = true;
+    if (now && !was && !initial) pressed = true;
   }
-  /// A stop: pressed since the last tick, or held (not held on from a reset).
-  [[nodiscard]] bool stops() const { return pressed || (down && !from_reset); }
+  /// Actuated at this tick: pressed since the last, or held.
+  [[nodiscard]] bool actuated() const { return pressed || down; }
+};
 
-  // One tick of a reset hold: the stop button pressed since the last tick and
-  // held, the deadman neither held nor pressed, begins it; let go or the
-  // deadman touched ends it; true once it has lasted hold_ms.
-  bool tick(bool reading, bool touched, std::int64_t t, std::int64_t hold_ms) {
-    if (!reading || let_go || !down || touched) since.reset();
-    if (reading && pressed && down && !touched) since = t;
-    if (!since || t - *since < hold_ms) return false;
+/// One pad's reset gesture: its buttons, each as the pad holds it.
+struct ResetGesture {
+  std::vector<input::InputKey> keys;
+  std::vector<bool> down;
+  bool let_go = false;                ///< a button of it let go since the last tick
+  bool open = false;                  ///< seen not made since the last ending of a hold
+  std::optional<std::int64_t> since;  ///< made at this tick, held since
+  bool new_session = false;           ///< its pad connected since the last tick: what it holds then is not made afresh
+
+  void moved(input::InputKey key, bool now) {
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (keys[i] != key) continue;
+      if (down[i] && !now) let_go = true;
+      down[i] = now;
+    }
+  }
+  [[nodiscard]] bool made() const {
+    if (keys.empty()) return false;
+    for (const bool d : down) {
+      if (!d) return false;
+    }
+    return true;
+  }
+  /// A new session, or a hold that must be made again: made now, it must be let go first.
+  void close() {
+    open = !made();
     since.reset();
-    from_reset = true;  // held on after it, it stops nothing until let go
+  }
+  // One tick; true once the gesture, made afresh, has lasted hold_ms with nothing actuated.
+  bool tick(bool reading, bool blocked, std::int64_t t, std::int64_t hold_ms) {
+    const bool was_let_go = std::exchange(let_go, false);
+    if (!reading || std::exchange(new_session, false)) {
+      close();
+      return false;
+    }
+    if (blocked) {
+      close();  // let go meanwhile: the next making is afresh
+      return false;
+    }
+    if (!made() || was_let_go) {  // let go (and made again, perhaps, since the last tick)
+      since.reset();
+      open = true;
+    }
+    if (!made() || !open) return false;
+    if (!since) since = t;
+    if (t - *since < hold_ms) return false;
+    close();
     return true;
   }
 };
@@ -70,48 +114,79 @@ class StopLatch {
 
   /// At tick t, once its events are in.
   Outcome at_tick(std::int64_t t, const Tick& in) {
-    const bool sup_stop = in.sup_connected && sup.stops();
-    const bool op_stop = in.connected && op.stops();
+    const bool sup_stop = in.sup_connected && sup.actuated();
+    const bool op_stop = in.connected && op.actuated();
+    actuated_ = op_stop || sup_stop;
     Outcome out = Outcome::kNone;
     if (latched_) {
-      // The loop reads the holds only at ticks it spends in "stopped"; a
+      // The loop reads the gestures only at ticks it spends in "stopped"; a
       // suspend's or a reload's ticks, or a lost pad, end a hold (and read
       // the stop buttons as a stop: the supervisor's makes it the supervisor's).
       const bool in_stopped = t > tick_ && in.in_stopped;
-      if (in_stopped ? in.sup_connected && sup.pressed : in.reads_stops && sup_stop) by_ = input::Pad::kSupervisor;
-      const bool sup_done = sup.tick(in_stopped && in.sup_connected, in.touched, t, in.hold_ms);
-      const bool op_done = op.tick(in_stopped && in.connected, in.touched, t, in.hold_ms);
-      if (sup_done || (op_done && by_ == input::Pad::kOperator)) {
+      if (in_stopped ? in.sup_connected && sup.pressed : in.reads_stops && sup_stop) take(input::Pad::kSupervisor);
+      if (in_stopped && (op.pressed || sup.pressed)) ++presses_while_stopped_;
+      const bool blocked = actuated_ || in.touched;
+      const bool sup_done = sup_reset.tick(in_stopped && in.sup_connected, blocked, t, in.hold_ms);
+      const bool op_done = op_reset.tick(in_stopped && in.connected, blocked, t, in.hold_ms);
+      const bool sup_may = by_ != input::Pad::kSupervisor || sup_name == stopper_name_;
+      const bool op_may = by_ == input::Pad::kOperator && op_name == stopper_name_;
+      if ((sup_done && sup_may) || (op_done && op_may)) {
         latched_ = false;
-        op.since.reset();
-        sup.since.reset();
+        op_reset.close();
+        sup_reset.close();
         reset_tick_ = t;
-        out = sup_done ? Outcome::kSupervisorReset : Outcome::kOperatorReset;
-      } else if (op_done) {
+        out = sup_done && sup_may ? Outcome::kSupervisorReset : Outcome::kOperatorReset;
+      } else if (op_done || sup_done) {
         out = Outcome::kRefused;
       }
     } else if (in.reads_stops && (op_stop || sup_stop)) {
       latched_ = true;
       by_ = sup_stop ? input::Pad::kSupervisor : input::Pad::kOperator;
+      stopper_name_ = sup_stop ? sup_name : op_name;
       tick_ = t;
+      op_reset.close();
+      sup_reset.close();
+      op_reset.let_go = sup_reset.let_go = false;
       out = Outcome::kLatched;
+    } else {
+      // Not stopped: a gesture made now is not made afresh while stopped.
+      op_reset.close();
+      sup_reset.close();
+      op_reset.let_go = sup_reset.let_go = false;
     }
-    op.pressed = op.let_go = sup.pressed = sup.let_go = false;
+    op.pressed = sup.pressed = false;
+    op_reset.new_session = sup_reset.new_session = false;  // closed above, whichever way
     return out;
   }
 
   [[nodiscard]] bool latched() const { return latched_; }
+  /// A stop button pressed since the last tick or held, on a connected pad, at the last tick.
+  [[nodiscard]] bool actuated() const { return actuated_; }
   /// A deadman press at t comes after the last reset (the presses up to it are history).
   [[nodiscard]] bool after_reset(std::int64_t t) const { return t > reset_tick_; }
+  [[nodiscard]] std::int64_t presses_while_stopped() const { return presses_while_stopped_; }
 
-  StopHold op;   ///< the operator's stop button
-  StopHold sup;  ///< the supervisor's
+  StopInput op;   ///< the operator's stop button
+  StopInput sup;  ///< the supervisor's
+  ResetGesture op_reset;
+  ResetGesture sup_reset;
+  std::string op_name;  ///< the pad in each role now: its connect's name
+  std::string sup_name;
 
  private:
+  void take(input::Pad by) {
+    if (by_ == by) return;
+    by_ = by;
+    stopper_name_ = by == input::Pad::kSupervisor ? sup_name : op_name;
+  }
+
   bool latched_ = false;
+  bool actuated_ = false;
   input::Pad by_ = input::Pad::kOperator;  ///< whose the latched stop is
+  std::string stopper_name_;               ///< the pad that stopped
   std::int64_t tick_ = 0;                  ///< the latch's tick
   std::int64_t reset_tick_ = -1;           ///< the last reset's tick
+  std::int64_t presses_while_stopped_ = 0;
 };
 
 }  // namespace andros::test

@@ -322,17 +322,25 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
 
 TEST(Recorder, WhoStoppedAndWhoResetAreRecordedAndReplayed) {
   RecordedRun live;
+  // The stop, pressed again while stopped, and the reset chord (the shipped mapping's back and start) held 2 s.
   live.run(
-      "0 connect Pad A\n40 button leftshoulder 1\n200 button guide 1\n300 button guide 0\n"
-      "320 button leftshoulder 0\n400 button guide 1\n2600 button guide 0\n2800 button leftshoulder 1\n3000 end\n");
+      "0 connect {path=/dev/input/event5 guid=030000005e040000} Pad A\n40 button leftshoulder 1\n"
+      "200 button guide 1\n300 button guide 0\n320 button leftshoulder 0\n400 button guide 1\n420 button guide 0\n"
+      "500 button back 1\n500 button start 1\n2700 button back 0\n2700 button start 0\n2800 button leftshoulder 1\n"
+      "3000 end\n");
   const Session s = read_session(live.session);
-  ASSERT_EQ(s.stops.size(), 2u);
+  ASSERT_EQ(s.stops.size(), 3u);
+  const input::PadIdentity pad{"Pad A", "/dev/input/event5", "", "030000005e040000"};
   EXPECT_FALSE(s.stops[0].reset);
   EXPECT_EQ(s.stops[0].by, run::StopBy::kOperator);
-  EXPECT_EQ(s.stops[0].name, "Pad A");
-  EXPECT_TRUE(s.stops[1].reset);
-  EXPECT_EQ(s.stops[1].by, run::StopBy::kOperator);
-  EXPECT_GE(s.stops[1].t_ms - s.stops[0].t_ms, 2000);
+  EXPECT_EQ(s.stops[0].t_ms, 200);
+  EXPECT_EQ(s.stops[0].pad, pad);
+  EXPECT_FALSE(s.stops[1].reset);  // pressed again while stopped: recorded, the latch kept
+  EXPECT_EQ(s.stops[1].t_ms, 400);
+  EXPECT_TRUE(s.stops[2].reset);
+  EXPECT_EQ(s.stops[2].by, run::StopBy::kOperator);
+  EXPECT_EQ(s.stops[2].t_ms, 2520);  // the chord from 520
+  EXPECT_EQ(s.stops[2].pad, pad);
   const auto result = replay_session(s, load_recorded_mapping, [](const run::TickReport&) {});
   EXPECT_TRUE(result.identical) << result.difference;
 }

@@ -200,24 +200,37 @@ TEST(Session, StopAndResetRecordsReadBack) {
   settings.mapping_file = "/m/hd1.yaml";
   settings.rate_millihertz = 25'000;
   settings.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
-  for (const auto& p :
-       {payload::header(), payload::program("1.0"), payload::settings(settings),
-        payload::stop(120, run::StopBy::kOperator, "Pad A"), payload::stop(160, run::StopBy::kSupervisor, "Pad \"B\""),
-        payload::reset(2200, run::StopBy::kSupervisor), payload::end(2400, 60, 60, "x")}) {
+  for (const auto& p : {payload::header(), payload::program("1.0"), payload::settings(settings),
+                        payload::stop(120, run::StopBy::kOperator, {"Pad A", "/dev/input/event5", "", "0300abcd"}),
+                        payload::stop(160, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
+                        payload::reset(2200, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
+                        std::string("stop 2300 operator \"Old pad\""), std::string("reset 2350 operator"),
+                        payload::end(2400, 60, 60, "x")}) {
     text += chain.line(p);
   }
-  EXPECT_EQ(payload::stop(120, run::StopBy::kOperator, "Pad A"), "stop 120 operator \"Pad A\"");
-  EXPECT_EQ(payload::reset(2200, run::StopBy::kSupervisor), "reset 2200 supervisor");
+  EXPECT_EQ(
+      payload::stop(120, run::StopBy::kOperator, {"Pad A", "/dev/input/event5", "", "0300abcd"}),
+      "stop 120 operator {\"guid\":\"0300abcd\",\"name\":\"Pad A\",\"path\":\"/dev/input/event5\",\"serial\":\"\"}");
+  // A name that is not UTF-8 is written escaped (never an exception that ends the run).
+  EXPECT_EQ(payload::reset(2200, run::StopBy::kSupervisor, {"B\xff", "", "", ""}),
+            "reset 2200 supervisor {\"guid\":\"\",\"name\":\"B\\\\xFF\",\"path\":\"\",\"serial\":\"\"}");
   const auto s = read_session(dir.write("r.andros-session", text));
-  ASSERT_EQ(s.stops.size(), 3u);
+  ASSERT_EQ(s.stops.size(), 5u);
   EXPECT_FALSE(s.stops[0].reset);
   EXPECT_EQ(s.stops[0].by, run::StopBy::kOperator);
   EXPECT_EQ(s.stops[0].name, "Pad A");
+  EXPECT_EQ(s.stops[0].pad, (input::PadIdentity{"Pad A", "/dev/input/event5", "", "0300abcd"}));
   EXPECT_EQ(s.stops[1].by, run::StopBy::kSupervisor);
-  EXPECT_EQ(s.stops[1].name, "Pad \"B\"");
+  EXPECT_EQ(s.stops[1].name, "Pad \"B\"\xff");  // the bytes the pad gave, back from their escapes
+  EXPECT_EQ(s.stops[1].pad.serial, "S/N 7");
   EXPECT_TRUE(s.stops[2].reset);
   EXPECT_EQ(s.stops[2].t_ms, 2200);
   EXPECT_EQ(s.stops[2].by, run::StopBy::kSupervisor);
+  EXPECT_TRUE(s.stops[1].pad.same_pad(s.stops[2].pad));
+  // An earlier version's records: a stop's name alone, a reset with nothing.
+  EXPECT_EQ(s.stops[3].name, "Old pad");
+  EXPECT_TRUE(s.stops[4].reset);
+  EXPECT_TRUE(s.stops[4].pad.empty());
 }
 
 /// The lines of a session whose settings record is made from `settings` and

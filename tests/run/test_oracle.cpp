@@ -164,6 +164,11 @@ TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
             "drive = 255, not the centre 128, before its stick was seen at rest (layer \"\", or just enabled)");
 }
 
+// Neutral frames from `from` up to `to` (not included): none of them breaks a rule.
+void neutral_until(test::SafetyOracle& o, std::int64_t from, std::int64_t to, const protocol::DataBytes& neutral) {
+  for (std::int64_t t = from; t < to; t += 40) ASSERT_EQ(o.frame(t, neutral), "") << t;
+}
+
 TEST_F(OracleTest, AStopOutlivesItsOwnTickAndTheDeadmanAlone) {
   // Tapped within one tick, the deadman up: still stopped at that tick, and
   // the deadman pressed before the next one does not enable.
@@ -177,51 +182,77 @@ TEST_F(OracleTest, AStopOutlivesItsOwnTickAndTheDeadmanAlone) {
       "0 connect\n20 button leftshoulder 1\n50 button guide 1\n100 button leftshoulder 0\n"
       "150 button leftshoulder 1\n400 end\n");
   for (const std::int64_t t : {0, 40, 80, 120, 160}) ASSERT_EQ(held.frame(t, t == 40 ? moving() : frame()), "") << t;
-  EXPECT_EQ(held.frame(200, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  // ISO 13850: a stop device stops whenever it is actuated, whatever came before.
+  EXPECT_EQ(held.frame(200, moving()), "safety = 1 while a stop button is pressed or held");
 }
 
-// Neutral frames from `from` up to `to` (not included): none of them breaks a rule.
-void neutral_until(test::SafetyOracle& o, std::int64_t from, std::int64_t to, const protocol::DataBytes& neutral) {
-  for (std::int64_t t = from; t < to; t += 40) ASSERT_EQ(o.frame(t, neutral), "") << t;
+TEST_F(OracleTest, NoMotionWhileAnyStopButtonIsHeldWhateverTheLatchSays) {
+  // stops.yaml: the supervisor presses its stop and holds it (issue 33); the
+  // operator's chord and a fresh deadman press after it change nothing.
+  const std::string stops = ANDROS_TEST_DATA_DIR "/mappings/stops.yaml";
+  auto o = oracle(
+      "0 connect\n0 supervisor connect\n20 button leftshoulder 1\n50 supervisor button guide 1\n"
+      "100 button leftshoulder 0\n130 button back 1\n130 button start 1\n2400 button back 0\n2400 button start 0\n"
+      "2500 button leftshoulder 1\n5000 end\n",
+      false, stops);
+  neutral_until(o, 0, 3000, frame());
+  EXPECT_EQ(o.frame(3000, moving()), "safety = 1 while a stop button is pressed or held");
+  EXPECT_EQ(o.coverage().refused_resets, 0);  // the chord never completed: the held stop holds it off
 }
 
-// Stopped at 80; the stop button released, then pressed at 110 with the deadman released: a hold from 120.
+// Stopped at 80 (the shipped HD1: its stop on guide, its reset back and
+// start); the reset chord made at 110 with the deadman released: a hold from 120.
 constexpr const char* kStopThenHold =
     "0 connect\n20 button leftshoulder 1\n50 button guide 1\n60 button guide 0\n100 button leftshoulder 0\n"
-    "110 button guide 1\n";
+    "110 button back 1\n110 button start 1\n";
 
-TEST_F(OracleTest, AResetHoldOfTheStopButtonEndsTheStopAndAFreshPressDrives) {
+TEST_F(OracleTest, AResetChordEndsTheStopAndAFreshPressDrives) {
   // Held 2 s (stop_reset_hold's default) from the tick at 120: reset at 2120, then a fresh press.
-  auto o = oracle(std::string(kStopThenHold) + "2130 button guide 0\n2135 button leftshoulder 1\n3000 end\n");
+  const std::string let_go = "button back 0\n2130 button start 0\n";
+  auto o = oracle(std::string(kStopThenHold) + "2130 " + let_go + "2135 button leftshoulder 1\n3000 end\n");
   neutral_until(o, 0, 2160, frame());
   EXPECT_EQ(o.frame(2160, moving()), "");
   // One tick short of the hold: still stopped.
-  auto short_hold = oracle(std::string(kStopThenHold) + "2090 button guide 0\n2095 button leftshoulder 1\n3000 end\n");
+  auto short_hold = oracle(std::string(kStopThenHold) +
+                           "2090 button back 0\n2090 button start 0\n2095 button leftshoulder 1\n3000 end\n");
   neutral_until(short_hold, 0, 2160, frame());
   EXPECT_EQ(short_hold.frame(2160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
   // The deadman pressed during the hold: no reset.
-  auto touched = oracle(std::string(kStopThenHold) +
-                        "1000 button leftshoulder 1\n1010 button leftshoulder 0\n2130 button guide 0\n"
-                        "2135 button leftshoulder 1\n3000 end\n");
+  auto touched = oracle(std::string(kStopThenHold) + "1000 button leftshoulder 1\n1010 button leftshoulder 0\n2130 " +
+                        let_go + "2135 button leftshoulder 1\n3000 end\n");
   neutral_until(touched, 0, 2160, frame());
   EXPECT_EQ(touched.frame(2160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  // The stop button tapped during the hold: a stop, and the hold is over.
+  auto tapped = oracle(std::string(kStopThenHold) + "1000 button guide 1\n1010 button guide 0\n2130 " + let_go +
+                       "2135 button leftshoulder 1\n3000 end\n");
+  neutral_until(tapped, 0, 2160, frame());
+  EXPECT_EQ(tapped.frame(2160, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  // Another pad in the operator's role (another name) may not reset the first pad's stop.
+  auto other = oracle(
+      "0 connect Pad A\n20 button leftshoulder 1\n50 button guide 1\n60 button guide 0\n100 disconnect\n"
+      "105 connect Pad B\n130 button back 1\n130 button start 1\n2170 button back 0\n2170 button start 0\n"
+      "2175 button leftshoulder 1\n3000 end\n");
+  neutral_until(other, 0, 2200, frame());
+  EXPECT_EQ(other.frame(2200, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
+  EXPECT_EQ(other.coverage().refused_resets, 1);
 }
 
 TEST_F(OracleTest, RefusesTheOperatorsResetOfTheSupervisorsStop) {
   const std::string stops = ANDROS_TEST_DATA_DIR "/mappings/stops.yaml";
-  // The supervisor's stop at 80; the operator's hold from 160 (2 s: 2160) is refused.
+  // The supervisor's stop at 80; the operator's chord from 160 (2 s: 2160) is refused.
   const std::string script =
       "0 connect\n0 supervisor connect\n20 button leftshoulder 1\n50 supervisor button guide 1\n"
-      "60 supervisor button guide 0\n100 button leftshoulder 0\n130 button guide 1\n2200 button guide 0\n"
-      "2205 button leftshoulder 1\n";
+      "60 supervisor button guide 0\n100 button leftshoulder 0\n130 button back 1\n130 button start 1\n"
+      "2200 button back 0\n2200 button start 0\n2205 button leftshoulder 1\n";
   auto refused = oracle(script + "5000 end\n", false, stops);
   neutral_until(refused, 0, 2240, frame());
   EXPECT_EQ(refused.frame(2240, moving()), "safety = 1 while not enabled (stopped by the stop button, not reset)");
   EXPECT_EQ(refused.coverage().refused_resets, 1);
-  // The supervisor's hold, from the tick at 2280 (the deadman pressed since the one at 2200 touches the
+  // The supervisor's chord, from the tick at 2280 (the deadman pressed since the one at 2200 touches the
   // one at 2240), resets at 4280.
   auto reset = oracle(script +
-                          "2210 button leftshoulder 0\n2250 supervisor button guide 1\n"
+                          "2210 button leftshoulder 0\n2250 supervisor button back 1\n2250 supervisor button start 1\n"
+                          "4285 supervisor button back 0\n4285 supervisor button start 0\n"
                           "4290 button leftshoulder 1\n5000 end\n",
                       false, stops);
   neutral_until(reset, 0, 4280, frame());

@@ -6,10 +6,12 @@
 // independent readings of docs/mapping.md's safety rules.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -54,13 +56,19 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
       const auto key = *input::parse_button_name(busy[rng.below(busy.size())]);
       // The deadman is held more often than not, so that sessions last long enough to do something.
       add(T::kButton, key, key == deadman ? static_cast<int>(rng.below(4) != 0) : static_cast<int>(rng.below(2)));
-    } else if (roll == 30) {  // a stop's reset: the stop button let go, then held about 2 s
-      const auto guide = *input::parse_button_name("guide");
-      add(T::kButton, guide, 0);
+    } else if (roll == 30) {
+      // A stop's reset: the shipped chord (back and start) held about 2 s; or the
+      // stop button let go, then held about 2 s, which is a stop, never a reset.
+      const bool chord = rng.below(3) != 0;
+      const auto first = *input::parse_button_name(chord ? "back" : "guide");
+      const auto second = *input::parse_button_name(chord ? "start" : "guide");
+      add(T::kButton, first, 0);
       t += rng.below(60);
-      add(T::kButton, guide, 1);
+      add(T::kButton, first, 1);
+      add(T::kButton, second, 1);
       t += 1900 + rng.below(300);
-      add(T::kButton, guide, 0);
+      add(T::kButton, first, 0);
+      add(T::kButton, second, 0);
     } else if (roll == 31) {  // the deadman let go and pressed again between two frames
       add(T::kButton, deadman, 0);
       t += rng.below(30);
@@ -85,28 +93,31 @@ std::vector<input::InputEvent> random_script(test::Random& rng) {
 // The safety rules' `enabled` (docs/mapping.md), read straight off the events: connected,
 // deadman down, and pressed (0 -> 1) after the connect, not at its instant,
 // and not let go since the last frame (every change between two frames
-// counts); and not stopped: the stop button (docs/mapping.md, "Stop") pressed
-// or held latches at a frame; it is reset at a frame once the stop button,
-// pressed after the stop with the deadman neither held nor pressed since the
-// last frame, has been held for the hold (2 s) with the deadman neither held
-// nor pressed at any frame of it; after the reset a press from then on is
-// fresh, and the stop button held on stops nothing until let go.
+// counts); and not stopped: the stop button (docs/mapping.md, "Stop
+// buttons") pressed or held latches at a frame, whatever came before (ISO
+// 13850: a stop device stops whenever it is actuated); it is reset at a
+// frame once the reset chord (`stop_reset`), made afresh while stopped (not
+// held at the latch, nor at the first frame of a controller session), has
+// been held for the hold (2 s) with the deadman and the stop button neither
+// held nor pressed at any frame of it (either ends it: the chord is let go
+// and made again); after the reset a press from then on is fresh.
 class EnabledOracle {
  public:
-  EnabledOracle(input::InputKey deadman, std::optional<input::InputKey> estop, std::int64_t hold_ms)
-      : deadman_(deadman), estop_(estop), hold_ms_(hold_ms) {}
+  EnabledOracle(input::InputKey deadman, std::optional<input::InputKey> estop, std::vector<input::InputKey> reset,
+                std::int64_t hold_ms)
+      : deadman_(deadman), estop_(estop), reset_(std::move(reset)), hold_ms_(hold_ms) {}
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     if (e.type == T::kConnect) {
       connected_ = true;
       connect_t_ = e.t_ms;
       // A new session: a stop tapped in the old one since the last frame went with it (docs/mapping.md, "Stop").
-      down_ = fresh_ = stop_down_ = stop_pressed_ = stop_let_go_ = deadman_pressed_ = let_go_ = false;
-      held_from_reset_ = false;
-      hold_since_.reset();
+      down_ = fresh_ = stop_down_ = stop_pressed_ = deadman_pressed_ = let_go_ = false;
+      chord_.clear();
+      new_session_ = true;
     } else if (e.type == T::kDisconnect) {
       connected_ = down_ = fresh_ = stop_down_ = false;
-      hold_since_.reset();
+      chord_.clear();
     } else if (connected_ && e.type == T::kButton && e.key == deadman_ && e.t_ms != connect_t_) {
       if (e.value == 1 && !down_) fresh_ = deadman_pressed_ = true;
       if (e.value == 0 && down_) let_go_ = true;
@@ -116,30 +127,40 @@ class EnabledOracle {
     } else if (connected_ && e.type == T::kButton && e.key == estop_) {
       const bool initial = e.t_ms == connect_t_;
       if (e.value == 1 && !stop_down_ && !initial) stop_pressed_ = true;
-      if (e.value == 0 && stop_down_ && !initial) stop_let_go_ = true;
-      if (e.value == 0) held_from_reset_ = false;
       stop_down_ = e.value == 1;
+    } else if (connected_ && e.type == T::kButton && std::find(reset_.begin(), reset_.end(), e.key) != reset_.end()) {
+      if (e.value == 0 && chord_.contains(e.key)) chord_let_go_ = true;
+      if (e.value == 1) chord_.insert(e.key);
+      if (e.value == 0) chord_.erase(e.key);
     }
   }
   /// At each frame t, after its events.
   void frame(std::int64_t t) {
     let_go_this_frame_ = let_go_;
-    if (!stopped_ && connected_ && (stop_pressed_ || (stop_down_ && !held_from_reset_))) {
+    const bool made = !reset_.empty() && chord_.size() == reset_.size();
+    const bool blocked = stop_pressed_ || stop_down_ || down_ || deadman_pressed_;
+    if (!stopped_ && connected_ && (stop_pressed_ || stop_down_)) {
       stopped_ = true;
+      open_ = !made;
       hold_since_.reset();
-    } else if (stopped_ && connected_) {
-      const bool touched = down_ || deadman_pressed_;
-      if (stop_let_go_ || !stop_down_ || touched) hold_since_.reset();
-      if (stop_pressed_ && stop_down_ && !touched) hold_since_ = t;
+    } else if (!stopped_ || !connected_ || new_session_ || blocked) {
+      open_ = !made;  // not read now: a chord held on is made again before it counts
+      hold_since_.reset();
+    } else {
+      if (!made || chord_let_go_) {
+        open_ = true;
+        hold_since_.reset();
+      }
+      if (made && open_ && !hold_since_) hold_since_ = t;
       if (hold_since_ && t - *hold_since_ >= hold_ms_) {
         stopped_ = false;
         fresh_ = false;  // afresh: a press from now on
-        held_from_reset_ = stop_down_;
+        open_ = false;
         hold_since_.reset();
         ++resets;
       }
     }
-    stop_pressed_ = stop_let_go_ = deadman_pressed_ = let_go_ = false;
+    stop_pressed_ = deadman_pressed_ = let_go_ = chord_let_go_ = new_session_ = false;
   }
   [[nodiscard]] bool enabled() const { return connected_ && down_ && fresh_ && !stopped_ && !let_go_this_frame_; }
   [[nodiscard]] bool stopped() const { return stopped_; }
@@ -148,10 +169,13 @@ class EnabledOracle {
  private:
   input::InputKey deadman_;
   std::optional<input::InputKey> estop_;
+  std::vector<input::InputKey> reset_;  ///< the reset chord
   std::int64_t hold_ms_;
   bool connected_ = false, down_ = false, fresh_ = false, deadman_pressed_ = false, let_go_ = false;
   bool let_go_this_frame_ = false;
-  bool stop_down_ = false, stop_pressed_ = false, stop_let_go_ = false, stopped_ = false, held_from_reset_ = false;
+  bool stop_down_ = false, stop_pressed_ = false, stopped_ = false;
+  std::set<input::InputKey> chord_;  ///< its buttons held
+  bool chord_let_go_ = false, open_ = false, new_session_ = false;
   std::optional<std::int64_t> hold_since_;
   std::int64_t connect_t_ = -1;
 };
@@ -212,8 +236,10 @@ void check_script(const mapping::ValidMapping& valid, const std::vector<input::I
   TextReader in(text, "random.events", kEventScriptLimits);
   input::ScriptPlayer player(in);
   mapping::Engine engine(valid, mapping::EngineOptions{weapons, 0x5A});
+  std::vector<input::InputKey> reset;
+  for (const auto& u : mapping.stop_reset) reset.push_back(u.key);
   EnabledOracle oracle(mapping.deadman->key,
-                       mapping.estop ? std::optional<input::InputKey>(mapping.estop->key) : std::nullopt,
+                       mapping.estop ? std::optional<input::InputKey>(mapping.estop->key) : std::nullopt, reset,
                        mapping.stop_reset_hold_ms);
   CentreOracle centre(mapping);
   std::size_t next_event = 0;

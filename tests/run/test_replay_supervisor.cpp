@@ -3,6 +3,8 @@
 // both, and the supervisor's stop reaches the loop on the tick that sees it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <vector>
 
 #include "andros/input/script_player.hpp"
@@ -49,8 +51,9 @@ TEST(ReplaySupervisor, EachReportNamesBothControllersAndTheStateWaitsForBoth) {
 
 // The supervisor's stop latches as the operator's own does, and is the
 // supervisor's: a tap is enough, the deadman released and pressed never
-// resets it; the supervisor's stop released after it, then held 2 s with
-// the deadman released, does; the deadman must then be pressed afresh.
+// resets it, nor its stop held; the supervisor's reset chord (back and start
+// on its pad) held 2 s with the deadman released does; the deadman must
+// then be pressed afresh.
 TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
   const auto states = [](const std::string& script) {
     std::vector<OpState> out;
@@ -64,11 +67,18 @@ TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
                    "170 button leftshoulder 0\n210 button leftshoulder 1\n280 end\n"),
             (std::vector<S>{S::kNotEnabled, S::kEnabled, S::kEnabled, S::kStopped, S::kStopped, S::kStopped,
                             S::kStopped, S::kStopped}));
-  // Reset by the supervisor's hold (from 160, done at 2160); who stopped and who reset in the reports.
+  // Its stop held 2 s and more: a stop, never a reset (issue 33).
+  const auto held = states(
+      "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n90 supervisor button x 1\n"
+      "95 supervisor button x 0\n130 button leftshoulder 0\n150 supervisor button x 1\n2300 supervisor button x 0\n"
+      "2330 button leftshoulder 1\n2400 end\n");
+  EXPECT_EQ(std::count(held.begin(), held.end(), S::kStopped), 58);  // 120 .. 2400
+  // Reset by the supervisor's chord (from 160, done at 2160); who stopped and who reset in the reports.
   const auto r = replay_reports(
       "0 connect Pad A\n0 supervisor connect Pad B\n10 button leftshoulder 1\n"
       "90 supervisor button x 1\n95 supervisor button x 0\n130 button leftshoulder 0\n"
-      "150 supervisor button x 1\n2300 supervisor button x 0\n2330 button leftshoulder 1\n2400 end\n",
+      "150 supervisor button back 1\n150 supervisor button start 1\n2300 supervisor button back 0\n"
+      "2300 supervisor button start 0\n2330 button leftshoulder 1\n2400 end\n",
       kSupervisorMapping);
   ASSERT_EQ(r.size(), 61U);  // 0 .. 2400
   EXPECT_EQ(r[3].state, S::kStopped);
@@ -77,6 +87,7 @@ TEST(ReplaySupervisor, TheSupervisorsStopLatchesLikeTheOperators) {
   EXPECT_EQ(r[54].state, S::kNotEnabled);  // 2160: reset, and not enabled
   EXPECT_FALSE(r[54].stopped_by);
   EXPECT_EQ(r[54].reset_by, StopBy::kSupervisor);
+  EXPECT_EQ(r[54].reset_pad.name, "Pad B");
   EXPECT_EQ(r[59].state, S::kEnabled);  // 2360: the fresh press
   EXPECT_FALSE(r[59].reset_by);
 }

@@ -47,7 +47,7 @@ TEST(ServiceStatus, SaysWhoStoppedAndWhoReset) {
   RunStatus s;
   s.robot = "HD1";
   s.state = run::OpState::kStopped;
-  s.enable_text = "stopped by the supervisor (Pad B): " + std::string(kStoppedText);
+  s.enable_text = "stopped by the supervisor (Pad B): to reset, release the deadman and hold back+start 2 s";
   EXPECT_NE(cli::service_status_line(s).find("HD1; stopped: stopped by the supervisor (Pad B): to reset"),
             std::string::npos)
       << cli::service_status_line(s);

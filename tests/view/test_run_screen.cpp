@@ -201,7 +201,8 @@ TEST(RunScreen, StoppedIsARedLineAboveAllSayingWhoStopped) {
   RunStatus s = driving(false);
   s.state = run::OpState::kStopped;
   s.stopped_by = "stopped by the supervisor (Pad 2)";
-  s.enable_text = s.stopped_by + ": " + std::string(kStoppedText);
+  s.enable_text =
+      s.stopped_by + ": to reset, release the deadman and hold back+start 2 s; then press the deadman afresh";
   s.layer.clear();
   const auto lines = shown(s, {80, 24});
   EXPECT_EQ(lines[0], "                    STOP: stopped by the supervisor (Pad 2)                     ");

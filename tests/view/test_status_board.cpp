@@ -277,6 +277,49 @@ run::TickReport supervised_tick(std::int64_t t_ms) {
 }
 
 // Who stopped and who reset: on the state line, the STOP banner's words and the log.
+TEST(RunStatusBoard, StoppedSaysWhoMayResetAndHowOrHowToGoOn) {
+  RunStatusBoard board(RunStatus{});
+  auto r = supervised_tick(40);
+  r.state = run::OpState::kStopped;
+  r.stopped_by = run::StopBy::kOperator;
+  r.controller = "Pad A";
+  r.connected = true;
+  r.engine.operator_reset = "back+start";
+  r.engine.supervisor_reset = "back+start";
+  r.engine.reset_hold_ms = 2000;
+  r.operator_may_reset = true;
+  r.supervisor_may_reset = true;
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text,
+            "stopped by the operator (Pad A): to reset, release the deadman and hold back+start 2 s (or the "
+            "supervisor resets (hold back+start 2 s on its pad)); then press the deadman afresh");
+  // A stop button held: nothing resets until it is let go.
+  r.t_ms = 80;
+  r.engine.stop_held = true;
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text,
+            "stopped by the operator (Pad A): a stop button is held: nothing resets until every stop button is "
+            "released");
+  // Another pad took the operator's role: it may not reset; the screen says how to go on.
+  r.t_ms = 120;
+  r.engine.stop_held = false;
+  r.operator_may_reset = false;
+  r.controller = "Pad C";
+  r.stopper_pad = input::PadIdentity{"Pad A", "/dev/input/event5", "", ""};
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text,
+            "stopped by the operator (Pad A): this controller (Pad C) did not stop, Pad A (path /dev/input/event5) "
+            "did: the supervisor resets (hold back+start 2 s on its pad); then press the deadman afresh");
+  // With no supervisor to reset it: restart.
+  r.t_ms = 160;
+  r.supervised = false;
+  r.supervisor_may_reset = false;
+  board.observe(r);
+  EXPECT_EQ(board.status().enable_text,
+            "stopped by the operator (Pad A): this controller (Pad C) did not stop, Pad A (path /dev/input/event5) "
+            "did: restart the bridge to go on");
+}
+
 TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   const LogCapture log;
   RunStatusBoard board(RunStatus{});
@@ -285,10 +328,25 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 80;
   r.state = run::OpState::kStopped;
   r.stopped_by = run::StopBy::kSupervisor;
+  r.supervisor_may_reset = true;
+  r.engine.operator_reset = "back+start";
+  r.engine.supervisor_reset = "back+start";
+  r.engine.reset_hold_ms = 2000;
   board.observe(r);
   auto s = board.status();
   EXPECT_EQ(s.stopped_by, "stopped by the supervisor (Pad B)");
-  EXPECT_EQ(s.enable_text, "stopped by the supervisor (Pad B): " + std::string(kStoppedText));
+  // The supervisor's own instructions, never the operator's (issue 33).
+  EXPECT_EQ(s.enable_text,
+            "stopped by the supervisor (Pad B): only the supervisor resets it: hold back+start 2 s on its pad; then "
+            "press the deadman afresh");
+  // The hold's progress, in place of the instructions, and never in the log (it moves every tick).
+  r.t_ms = 100;
+  r.engine.reset_hold = mapping::ResetHold{input::Pad::kSupervisor, 1200, 2000};
+  board.observe(r);
+  EXPECT_EQ(board.status().reset_progress,
+            "resetting: 1.2 of 2.0 s (the supervisor's back+start held; a stop button or the deadman ends it)");
+  EXPECT_EQ(log.text().find("resetting"), std::string::npos) << log.text();
+  r.engine.reset_hold.reset();
   r.t_ms = 120;
   r.state = run::OpState::kNotEnabled;
   r.stopped_by.reset();
@@ -302,12 +360,24 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.state = run::OpState::kStopped;
   r.reset_by.reset();
   r.stopped_by = run::StopBy::kOperator;
+  r.operator_may_reset = true;
+  board.observe(r);
+  EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
+  // The pad that stopped unplugged: its name is kept for the stop, and it is no second STOP line.
+  r.t_ms = 200;
+  r.connected = false;
+  r.controller.clear();
+  r.stopper_pad = input::PadIdentity{"pad", "", "", ""};
+  r.operator_may_reset = false;
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
   const auto text = log.text();
-  EXPECT_EQ(count(text, "warning: STOP: stopped by the supervisor (Pad B): to reset"), 1U) << text;
+  EXPECT_EQ(count(text, "warning: STOP: stopped by the supervisor (Pad B): only the supervisor resets it"), 1U) << text;
   EXPECT_EQ(count(text, "info: not enabled: stop reset by the supervisor: press the deadman afresh\n"), 1U) << text;
   EXPECT_EQ(count(text, "warning: STOP: stopped by the operator (pad): to reset"), 1U) << text;
+  EXPECT_EQ(count(text, "warning: STOP:"), 2U) << text;
+  EXPECT_EQ(count(text, "info: stopped: stopped by the operator (pad): the controller that stopped is gone"), 1U)
+      << text;
 }
 
 // The supervisor's controller: on the board, in the log once per change, and

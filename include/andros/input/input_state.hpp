@@ -114,12 +114,12 @@ struct InputEvent {
   InputKey key{};    ///< button or axis; for kHat, {kHat, hat * 4}
   int value = 0;     ///< button 0/1, axis -32768..32767, hat SDL_HAT_* bit mask
   std::string name;  ///< controller name, for kConnect; the mapping file, for kReload
-  /// kConnect: which physical pad (PadIdentity::fields(): "path=P serial=S guid=G"); "" when unknown.
-  std::string device;
   int line = 0;      ///< source line in an event script, 0 when live
   /// Whose controller a connect, disconnect, button, axis or hat event is
   /// for; always the operator's for the others (they are the run's, not a pad's).
   Pad pad = Pad::kOperator;
+  /// kConnect: which physical pad (PadIdentity::fields(): "path=P serial=S guid=G"); "" when unknown.
+  std::string device{};
 };
 
 struct ButtonState {

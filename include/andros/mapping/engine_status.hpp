@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,15 @@ struct StopPresses {
   bool operator==(const StopPresses&) const = default;
 };
 
+/// A reset gesture held, not yet complete: whose, and how far.
+struct ResetHold {
+  input::Pad pad = input::Pad::kOperator;
+  std::int64_t held_ms = 0;  ///< held so far
+  std::int64_t hold_ms = 0;  ///< needed (`stop_reset_hold`)
+
+  bool operator==(const ResetHold&) const = default;
+};
+
 /// One tick's facts, before its step: what the deadman and the stop buttons
 /// did. They decide nothing: the run loop's operating-state machine does.
 struct InputFacts {
@@ -78,6 +88,12 @@ struct EngineStatus {
   bool stop_held = false;
   /// The supervisor's `stop` is held (for the view: whose stop it is).
   bool supervisor_stop = false;
+  /// Stopped: a reset gesture under way (the view shows its progress).
+  std::optional<ResetHold> reset_hold;
+  /// The reset gestures, as the operator reads them ("back+start"; "" when the mapping has none).
+  std::string operator_reset;
+  std::string supervisor_reset;
+  std::int64_t reset_hold_ms = 0;  ///< how long one is held (`stop_reset_hold`)
   ConsentState consent = ConsentState::kNotAsked;
   SpeedLevel speed;
   /// In a weapons mode with an arming input held: a fire button pressed now fires.

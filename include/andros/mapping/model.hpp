@@ -5,6 +5,7 @@
 /// Engine runs.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -40,6 +41,8 @@ inline constexpr double kDeadmanFullyReleased = 0.1;
 inline constexpr double kStopResetHoldMinS = 1.0;
 inline constexpr double kStopResetHoldMaxS = 10.0;
 inline constexpr std::int64_t kStopResetHoldDefaultMs = 2000;
+/// A reset gesture is one button, or a chord of at most this many held together.
+inline constexpr std::size_t kMaxResetChord = 2;
 /// `enable_timeout:` in seconds: at least one frame period, at most an hour.
 inline constexpr double kEnableTimeoutMinS = 1.0;
 inline constexpr double kEnableTimeoutMaxS = 3600.0;
@@ -157,8 +160,8 @@ enum class BrakeMode : std::uint8_t {
 /// The supervisor's controller (`supervisor:`, docs/mapping.md): buttons
 /// read on the second pad (`run --supervisor`), never on the operator's.
 struct SupervisorButtons {
-  SourcePos pos;                            ///< the section
-  InputUse stop;                            ///< latches the stop, as the operator's `estop` does
+  SourcePos pos;  ///< the section
+  InputUse stop;  ///< latches the stop, as the operator's `estop` does
   /// `reset:`, one button or a chord held together: resets any stop (none: the supervisor resets nothing)
   std::vector<InputUse> reset;
   std::optional<InputUse> weapons_consent;  ///< with it, a weapon fires only while it is held too

@@ -99,8 +99,8 @@ class Recorder {
   bool first_ = true;
   // What the last report said, for the records written only on a change.
   run::OpState state_ = run::OpState::kNoLink;
-  std::optional<run::StopBy> stopped_by_;  ///< as the last report said
-  std::optional<run::StopBy> reset_by_;
+  std::uint32_t stop_count_ = 0;  ///< as the last report said (TickReport::stop_count)
+  std::uint32_t reset_count_ = 0;
   std::string layer_;
   link::LinkState link_state_ = link::LinkState::kConnecting;
   bool link_motion_ = true;

@@ -108,8 +108,10 @@ std::string state(std::int64_t t_ms, run::OpState state);
 /// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
 std::string gate(std::int64_t t_ms, std::string_view fault);
 /// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
-std::string stop(std::int64_t t_ms, run::StopBy by, std::string_view name);
-std::string reset(std::int64_t t_ms, run::StopBy by);
+/// PAD as JSON: name, path, serial, guid, each as printable_text() writes
+/// it (text from a controller's descriptors may be any bytes).
+std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad);
+std::string reset(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
@@ -181,8 +183,8 @@ struct StopRecord {
   std::int64_t t_ms = 0;
   bool reset = false;  ///< a reset; false: a stop
   run::StopBy by = run::StopBy::kOperator;
-  std::string name;       ///< the controller's name
-  input::PadIdentity pad;  ///< the physical pad that pressed it (empty: not recorded, or the gate's)
+  std::string name;          ///< the controller's name
+  input::PadIdentity pad{};  ///< the physical pad that pressed it (empty: not recorded, or the gate's)
 };
 
 struct EndRecord {

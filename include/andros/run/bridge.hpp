@@ -79,6 +79,17 @@ struct TickReport {
   OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
   std::optional<StopBy> stopped_by;  ///< a stop latched: whose (OperatingState::stopped_by)
   std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
+  input::PadIdentity stopper_pad;    ///< the physical pad whose stop is latched (OperatingState::stopper_pad)
+  input::PadIdentity reset_pad;      ///< the pad that reset the last stop
+  std::uint32_t stop_count = 0;      ///< stop presses so far (OperatingState::stop_count): a new one is recorded
+  std::optional<StopBy> last_stop;   ///< the last of them: whose
+  input::PadIdentity last_stop_pad;  ///< and the pad
+  std::uint32_t reset_count = 0;     ///< resets so far
+  /// Stopped: a reset gesture completed now on the operator's pad (the
+  /// supervisor's) would reset the stop; false on the operator's when the
+  /// stop is the supervisor's, or another pad's (the one that stopped is gone).
+  bool operator_may_reset = false;
+  bool supervisor_may_reset = false;
   /// The event that brought the machine into `state` (OperatingState::entered_by): the first cause.
   std::optional<OpEvent> entered_by;
   bool supervisor_back =

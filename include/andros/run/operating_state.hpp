@@ -8,9 +8,11 @@
 /// each passes through kNotEnabled with the engine rebased, so that a press
 /// made before it is history. A stop by a stop button (the operator's
 /// `estop`, the supervisor's `stop`) latches: it outlives every other event
-/// and ends only by a reset (kOperatorReset, kSupervisorReset: a stop button
-/// held on purpose, StopButtons), and then through kNotEnabled too. The
-/// supervisor may reset any stop, the operator only the operator's. What the
+/// and ends only by a reset (kOperatorReset, kSupervisorReset: a reset
+/// gesture of its own, never a stop button, StopButtons), and then through
+/// kNotEnabled too. The supervisor may reset any stop, the operator only the
+/// operator's, and each only from the physical pad that stopped (a
+/// supervisor's reset of the operator's stop from any). What the
 /// screen, the log, the pad's light and the service status say is read from
 /// this state.
 
@@ -48,8 +50,8 @@ enum class OpEvent : std::uint8_t {
   kOperatorStop,     ///< the operator's stop button (`estop`) pressed: latches
   kSupervisorStop,   ///< the supervisor's stop button pressed: latches, and the stop is the supervisor's
   kGateTrip,         ///< the frame gate replaced a frame that broke a safety rule (frame_gate.hpp): latches
-  kOperatorReset,    ///< the operator's reset hold: resets the operator's stop or the gate's (not the supervisor's)
-  kSupervisorReset,  ///< the supervisor's reset hold: resets any stop
+  kOperatorReset,    ///< the operator's reset gesture: the operator's stop or the gate's, from the pad that stopped
+  kSupervisorReset,  ///< the supervisor's reset gesture: any stop (its own from the pad that stopped)
   kReloadBegin,      ///< SIGHUP, or a script's `reload`
   kReloadDone,       ///< the reload's outcome is in (applied or refused)
   kSuspend,          ///< Ctrl-Z, or a script's `suspend`
@@ -115,6 +117,25 @@ class OperatingState {
   [[nodiscard]] std::optional<StopBy> stopped_by() const { return stopped_by_; }
   /// Who reset the last stop, until the next stop or the bridge enabled again.
   [[nodiscard]] std::optional<StopBy> reset_by() const { return reset_by_; }
+  /// The physical pad whose stop is latched (the operator's pad at a gate's trip).
+  [[nodiscard]] const input::PadIdentity& stopper_pad() const { return stopper_pad_; }
+  /// The pad that reset the last stop (with reset_by).
+  [[nodiscard]] const input::PadIdentity& reset_pad() const { return reset_pad_; }
+  /// Stop presses so far: each stop that latched, made the stop another's,
+  /// or was pressed again while stopped (what the session records, each once).
+  [[nodiscard]] std::uint32_t stop_count() const { return stop_count_; }
+  /// The last of them: whose, and the pad.
+  [[nodiscard]] std::optional<StopBy> last_stop() const { return last_stop_; }
+  [[nodiscard]] const input::PadIdentity& last_stop_pad() const { return last_stop_pad_; }
+  /// Resets so far.
+  [[nodiscard]] std::uint32_t reset_count() const { return reset_count_; }
+  /// Whether a reset gesture completed now by `by` on `pad` would reset the
+  /// latched stop: stopped; the supervisor's any stop, the operator's only
+  /// the operator's or the gate's; and a stop by a role only from the pad that stopped.
+  [[nodiscard]] bool may_reset(StopBy by, const input::PadIdentity& pad) const;
+  /// The pads in each role now (the loop tells the machine each tick, before
+  /// its events): a stop is the pad's that pressed it, a reset the pad's that made it.
+  void set_pads(const input::PadIdentity& operator_pad, const input::PadIdentity& supervisor_pad);
   /// The event that brought the machine into its state (the first cause of
   /// "not enabled": a link regained, a reload, a resume, a reset...); none at the start.
   [[nodiscard]] std::optional<OpEvent> entered_by() const { return entered_by_; }
@@ -159,6 +180,17 @@ class OperatingState {
   std::optional<StopBy> stopped_by_;  ///< a stop is latched, and whose
   std::optional<StopBy> reset_by_;
   std::optional<OpEvent> entered_by_;
+  input::PadIdentity operator_pad_;  ///< the pads in each role now (set_pads)
+  input::PadIdentity supervisor_pad_;
+  input::PadIdentity stopper_pad_;
+  input::PadIdentity reset_pad_;
+  std::uint32_t stop_count_ = 0;
+  std::optional<StopBy> last_stop_;
+  input::PadIdentity last_stop_pad_;
+  std::uint32_t reset_count_ = 0;
+
+  /// A stop by `by` from `pad`: latches, or makes the stop the supervisor's, or is pressed again.
+  void note_stop(StopBy by, const input::PadIdentity& pad);
 };
 
 std::string_view to_string(OpState state);

@@ -74,7 +74,10 @@ struct RunStatus {
   bool pad_names = true;                       ///< the mapping reads game-controller names (leftshoulder, leftx...)
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
   std::string stopped_by;                      ///< a stop latched: "stopped by the supervisor (NAME)" (stopped_by_text)
-  std::string enable_text;    ///< the state in words: why not enabled, or what enabled still holds back
+  std::string enable_text;  ///< the state in words: why not enabled, or what enabled still holds back
+  /// Stopped, a reset gesture under way: its progress ("resetting: 1.2 of 2.0 s ..."), shown in place of
+  /// enable_text (never logged: it moves every tick).
+  std::string reset_progress;
   std::string layer;          ///< the mapping layer in use, "" for the base
   bool weapons_mode = false;  ///< enabled in a layer with weapons: the WEAPONS LAYER banner
   mapping::SpeedLevel speed;  ///< the speed level (the mapping's `scale:`)

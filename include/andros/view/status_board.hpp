@@ -58,9 +58,16 @@ class RunStatusBoard {
 /// stick pushed through the deadman press explains itself.
 std::string enable_text(const mapping::EngineStatus& status);
 
-/// What "stopped" asks of the operator (the state line, after who stopped).
-inline constexpr std::string_view kStoppedText =
-    "to reset, release the stop button, then hold it with the deadman released; then press the deadman afresh";
+/// What "stopped" asks, and of whom (the state line, after who stopped): a
+/// stop button held first ("release the stop button"), a reset gesture under
+/// way (its progress), or who may reset and with which gesture, and what to do
+/// when nobody here may (the pad that stopped is gone, a mapping without a
+/// reset): the supervisor resets, or the bridge is restarted.
+std::string stopped_text(const run::TickReport& report);
+
+/// Stopped, a reset gesture under way: "resetting: 1.2 of 2.0 s (back+start
+/// held; a stop or the deadman ends it)"; "" when none is.
+std::string reset_progress_text(const run::TickReport& report);
 
 /// Who stopped, for the STOP banner, the log and the state line: "stopped by
 /// the supervisor (NAME)"; "" when no stop is latched.

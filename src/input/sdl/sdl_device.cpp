@@ -72,6 +72,9 @@ std::unique_ptr<SdlDevice> SdlDevice::open(int device_index) {
   dev->id_ = SDL_JoystickInstanceID(dev->joystick_);
   dev->name_ = device_name(device_index);
   dev->guid_ = device_guid(device_index);
+  const char* path = SDL_JoystickPathForIndex(device_index);
+  const char* serial = SDL_JoystickGetSerial(dev->joystick_);
+  dev->identity_ = PadIdentity{dev->name_, path != nullptr ? path : "", serial != nullptr ? serial : "", dev->guid_};
   return dev;
 }
 

@@ -26,6 +26,8 @@ class SdlDevice {
   [[nodiscard]] bool is_game_controller() const { return pad_ != nullptr; }
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::string& guid() const { return guid_; }
+  /// Which physical controller it is: its name, device path, serial (where SDL gives one) and GUID.
+  [[nodiscard]] const PadIdentity& identity() const { return identity_; }
   [[nodiscard]] bool attached() const;
   /// The joystick under it (a game controller's too): rumble and light.
   [[nodiscard]] SDL_Joystick* joystick() const { return joystick_; }
@@ -54,6 +56,7 @@ class SdlDevice {
   SDL_JoystickID id_ = -1;
   std::string name_;
   std::string guid_;
+  PadIdentity identity_;
   std::vector<int> free_hats_;  // a game controller's hats its SDL mapping leaves out
 };
 

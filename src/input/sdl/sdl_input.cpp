@@ -123,6 +123,7 @@ void SdlInput::Impl::connect_chosen(Slot& slot, std::int64_t now_ms) {
     slot.connect_t = now_ms;
     InputEvent connect = event(slot, InputEvent::Type::kConnect, now_ms);
     connect.name = slot.device->name();
+    connect.device = slot.device->identity().fields();
     events.push_back(std::move(connect));
     // Some drivers (SDL's virtual one among them) deliver a freshly opened
     // device's state on the next update: take it now, inside this pump, so
