@@ -86,6 +86,7 @@ view::PlotInput from_session(const PlotOptions& opt) {
   if (!check.intact) in.source += "; NOT INTACT: " + check.problem;
   else if (check.cut_short_line != 0) in.source += "; " + record::cut_short_text(check);
   if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
+  in.rate_millihertz = s.settings.rate_millihertz;
   in.samples = view::plot_samples(s);
   view::add_lanes(in, s);
   return in;
@@ -133,6 +134,7 @@ view::PlotInput from_script(const PlotOptions& opt) {
   in.settings = fmt::format("{} Hz, code {:02X}, {}", timing::rate_text(settings.rate.millihertz), settings.code,
                             weapons_text(settings.weapons));
   in.source = "replay of " + file_name(opt.source);
+  in.rate_millihertz = settings.rate.millihertz;
   input::ScriptPlayer player(script);
   add_script_lanes(in, opt, *mapping, player.supervised());
   run::ReplayOptions replay{.rate_millihertz = settings.rate.millihertz,
@@ -175,7 +177,8 @@ void add_plot_command(CLI::App& app, int& exit_code) {
       ->required();
   opt->settings = std::make_unique<CommandLine>(*cmd, kPlot);
   cmd->add_option("--output", opt->output, "write to FILE instead of standard output")->type_name("FILE");
-  cmd->add_option("--from", opt->from, "start the time axis at T seconds")->type_name("T");
+  cmd->add_option("--from", opt->from, "start the time axis at T seconds (what held then is drawn from there)")
+      ->type_name("T");
   cmd->add_option("--to", opt->to, "end the time axis at T seconds (default: the end)")->type_name("T");
   cmd->callback([opt, &exit_code] {
     opt->source = find_session(opt->source);  // a bare session name, as `sessions` prints it

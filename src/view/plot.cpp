@@ -3,8 +3,6 @@
 #include <spdlog/fmt/fmt.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 #include "andros/protocol/signals.hpp"
 #include "plot_page.hpp"
@@ -58,48 +56,7 @@ void draw_time_grid(Page& page, double bottom) {
   page.text(kRight, kDriveTop + kDriveHeight + 28, "time (s)", " font-size=\"10\" text-anchor=\"end\"");
 }
 
-double value_y(int v) { return kDriveTop + kDriveHeight - kDriveHeight * v / protocol::kWholeByteMax; }
-
-/// One byte's line: at most a min and a max point a pixel column, broken
-/// where no frame was sent.
-std::string trace(const Page& page, const std::vector<const PlotSample*>& s, std::size_t byte) {
-  std::string paths;
-  std::string current;
-  int column = std::numeric_limits<int>::min();
-  int lo = 0;
-  int hi = 0;
-  const auto flush = [&] {
-    if (column == std::numeric_limits<int>::min()) return;
-    current += fmt::format("{}{} {:.1f}", current.empty() ? "M" : " L", column, value_y(lo));
-    if (hi != lo) current += fmt::format(" L{} {:.1f}", column, value_y(hi));
-    column = std::numeric_limits<int>::min();
-  };
-  const auto end_path = [&] {
-    flush();
-    if (!current.empty()) paths += current + " ";
-    current.clear();
-  };
-  for (const auto* p : s) {
-    if (!p->sent) {
-      end_path();
-      continue;
-    }
-    const int c = static_cast<int>(std::lround(page.x(p->t_ms)));
-    const int v = p->data[byte];
-    if (c != column) {
-      flush();
-      column = c;
-      lo = hi = v;
-    } else {
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
-    }
-  }
-  end_path();
-  return paths;
-}
-
-void draw_drive(Page& page, const std::vector<const PlotSample*>& s) {
+void draw_drive(Page& page, const std::vector<const PlotSample*>& s, std::int64_t end) {
   page.rect(kLeft, kDriveTop, kRight, kDriveHeight, "none", " stroke=\"#999\" stroke-width=\"0.8\"");
   constexpr int kCentre = protocol::kNeutralCentre;
   for (const int v : {0, 64, kCentre, 192, protocol::kWholeByteMax}) {
@@ -112,17 +69,19 @@ void draw_drive(Page& page, const std::vector<const PlotSample*>& s) {
   const auto drive = protocol::find_signal("drive");
   const auto pivot = protocol::find_signal("pivot");
   page.add(fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#1f77b4\" stroke-width=\"1.4\"/>\n",
-                       trace(page, s, protocol::kSignals[*drive].byte)));
+                       trace(page, s, end, protocol::kSignals[*drive].byte)));
   page.add(fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#ff7f0e\" stroke-width=\"1.4\"/>\n",
-                       trace(page, s, protocol::kSignals[*pivot].byte)));
+                       trace(page, s, end, protocol::kSignals[*pivot].byte)));
   page.line(kRight - 170, kDriveTop - 8, kRight - 150, kDriveTop - 8, "#1f77b4", 2);
   page.text(kRight - 146, kDriveTop - 4, "drive", " font-size=\"10\"");
   page.line(kRight - 90, kDriveTop - 8, kRight - 70, kDriveTop - 8, "#ff7f0e", 2);
   page.text(kRight - 66, kDriveTop - 4, "pivot", " font-size=\"10\"");
-  page.text(kLeft, kDriveTop - 4, "frames sent (gaps: none sent); 128 is centre", " font-size=\"10\" fill=\"#555\"");
+  page.text(kLeft, kDriveTop - 4, "frames sent, each held until the next (gaps: none sent); 128 is centre",
+            " font-size=\"10\" fill=\"#555\"");
 }
 
-void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std::vector<std::size_t>& on) {
+void draw_signals(Page& page, const std::vector<const PlotSample*>& s, std::int64_t end,
+                  const std::vector<std::size_t>& on) {
   page.text(kLeft, kSignalsTop - 8,
             on.empty() ? "switch signals: none was on" : "switch signals that were on (weapons in red)",
             " font-size=\"11\"");
@@ -141,9 +100,9 @@ void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std
                                     : sig.kind == protocol::SignalKind::kSelector ? "#90a4ae"
                                                                                   : "#37474f";
     runs(
-        s, page.to(), [&sig](const PlotSample& p) { return p.sent && (p.data[sig.byte] >> sig.bit & 1) != 0; },
-        [&](const PlotSample& first, std::int64_t end, bool bit) {
-          if (bit) page.rect(page.x(first.t_ms), y + 2, page.x(end), kRowHeight - 4, colour);
+        s, end, [&sig](const PlotSample& p) { return p.sent && (p.data[sig.byte] >> sig.bit & 1) != 0; },
+        [&](const PlotSample& first, std::int64_t to, bool bit) {
+          if (bit) page.rect(page.x(first.t_ms), y + 2, page.x(to), kRowHeight - 4, colour);
         });
   }
   if (shown < on.size()) {
@@ -153,19 +112,44 @@ void draw_signals(Page& page, const std::vector<const PlotSample*>& s, const std
     page.text(kLeft, kSignalsTop + kRowHeight * static_cast<double>(shown) + 10, "and " + rest, " font-size=\"10\"");
   }
 }
+
+/// The ticks from the page's start to its end: of each sample's, those in it.
+std::int64_t ticks_in(const std::vector<const PlotSample*>& shown, const Page& page, std::int64_t rate_millihertz) {
+  const timing::FrameClock clock(rate_millihertz);
+  const std::int64_t first = tick_at_or_after(clock, page.from());
+  const std::int64_t after = tick_at_or_after(clock, page.to() + 1);
+  std::int64_t n = 0;
+  for (const auto* s : shown) {
+    const std::int64_t k = tick_at_or_after(clock, s->t_ms);
+    n += std::max<std::int64_t>(0, std::min(k + s->ticks, after) - std::max(k, first));
+  }
+  return n;
+}
 }  // namespace
+
+std::vector<const PlotSample*> plot_detail::window(const std::vector<PlotSample>& samples, const Page& page) {
+  const auto first = std::lower_bound(samples.begin(), samples.end(), page.from(),
+                                      [](const PlotSample& s, std::int64_t t) { return s.t_ms < t; });
+  std::vector<const PlotSample*> out;
+  if (first != samples.begin() && first != samples.end() && first->t_ms > page.from()) out.push_back(&*(first - 1));
+  for (auto s = first; s != samples.end() && s->t_ms <= page.to(); ++s) out.push_back(&*s);
+  return out;
+}
+
+std::string plot_detail::exact_seconds(std::int64_t t_ms) {
+  std::string text = fmt::format("{}.{:03}", t_ms / kMsPerSecond, t_ms % kMsPerSecond);
+  text.erase(text.find_last_not_of('0') + 1);
+  if (text.back() == '.') text.pop_back();
+  return text;
+}
 
 std::string render_plot_svg(const PlotInput& in) {
   const std::int64_t last = in.samples.empty() ? 0 : in.samples.back().t_ms;
   const std::int64_t to = in.to_ms < 0 ? last : in.to_ms;
   Page page(in.from_ms, to);
-  std::vector<const PlotSample*> shown;
-  std::int64_t ticks = 0;
-  for (const auto& s : in.samples) {
-    if (s.t_ms < in.from_ms || s.t_ms > to) continue;
-    shown.push_back(&s);
-    ticks += s.ticks;
-  }
+  const auto shown = window(in.samples, page);
+  const std::int64_t end = std::min(page.to(), last);  // nothing is drawn past the last tick
+  const std::int64_t ticks = ticks_in(shown, page, in.rate_millihertz);
   page.add(
       fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"297mm\" height=\"210mm\" viewBox=\"0 0 {} {}\" "
                   "font-family=\"DejaVu Sans, Arial, sans-serif\">\n",
@@ -182,12 +166,12 @@ std::string render_plot_svg(const PlotInput& in) {
       kSignalsTop + kRowHeight * static_cast<double>(std::max<std::size_t>(signal_rows(on.size()), 1));
   draw_time_grid(page, bottom);
   Legend legend;
-  draw_states(page, shown, legend);
-  draw_layers(page, shown, in, legend);
+  draw_states(page, shown, end, legend);
+  draw_layers(page, shown, end, in, legend);
   legend.draw(page);
-  draw_lanes(page, in);
-  draw_drive(page, shown);
-  draw_signals(page, shown, on);
+  draw_lanes(page, in, end);
+  draw_drive(page, shown, end);
+  draw_signals(page, shown, end, on);
   page.add("</svg>\n");
   return page.svg();
 }

@@ -68,7 +68,16 @@ void LaneBuilder::event(const input::InputEvent& e) {
   read_inputs(e.t_ms);
 }
 
-void LaneBuilder::link(std::int64_t t_ms, bool up) { set(LaneKind::kLink, std::max<std::int64_t>(t_ms, 0), up); }
+void LaneBuilder::link(std::int64_t t_ms, bool up) {
+  const std::int64_t t = std::max<std::int64_t>(t_ms, 0);
+  if (t == 0) {
+    // What the link was at the start: it replaces the assumption (up), and
+    // whatever an earlier report at the start said.
+    lanes_[static_cast<std::size_t>(LaneKind::kLink)].spans.clear();
+    on_[static_cast<std::size_t>(LaneKind::kLink)] = false;
+  }
+  set(LaneKind::kLink, t, up);
+}
 
 void LaneBuilder::read_inputs(std::int64_t t) {
   const auto& op = input_.operator_pad();
@@ -90,8 +99,9 @@ void LaneBuilder::set(LaneKind kind, std::int64_t t_ms, bool on) {
   if (on_[i] == on) return;
   on_[i] = on;
   auto& spans = lanes_[i].spans;
+  // A press and its release at the same time stay a span: a stop tapped
+  // within a millisecond stopped the vehicle all the same.
   if (on) spans.push_back(PlotSpan{t_ms, -1});
-  else if (spans.back().from_ms == t_ms) spans.pop_back();  // on for no time: never drawn
   else spans.back().to_ms = t_ms;
 }
 

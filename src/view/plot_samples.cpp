@@ -1,23 +1,26 @@
 // The plot's samples (andros/view/plot.hpp): a replay's report a tick, or a
 // session's records: one at each change point (a frame record, a state or
-// layer change or a stop record inside one) and one at the last tick each holds to, never one
-// a tick, so that the work is the records', whatever the session's length.
+// layer change or a stop record inside one), one at the last tick each holds
+// to, and one, sending nothing, where the loop skipped ticks (a stall); never
+// one a tick, so that the work is the records', whatever the session's length.
 #include <algorithm>
 #include <vector>
 
 #include "andros/timing/rate.hpp"
 #include "andros/view/plot.hpp"
+#include "plot_page.hpp"
 
 namespace andros::view {
-namespace {
 
-/// The first tick at or after t_ms.
-std::int64_t tick_at_or_after(const timing::FrameClock& clock, std::int64_t t_ms) {
+std::int64_t plot_detail::tick_at_or_after(const timing::FrameClock& clock, std::int64_t t_ms) {
   std::int64_t k = t_ms * clock.rate_millihertz() / (kMsPerSecond * timing::kMillihertzPerHz);
   while (k > 0 && clock.time_of(k - 1) >= t_ms) --k;
   while (clock.time_of(k) < t_ms) ++k;
   return k;
 }
+
+namespace {
+using plot_detail::tick_at_or_after;
 
 /// Who stopped, as the plot labels it.
 std::string stopper(std::optional<run::StopBy> by) { return by ? std::string(run::to_string(*by)) : std::string(); }
@@ -84,6 +87,12 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
       sample(f, from, next - from == 1 ? 1 : next - from - 1);
       if (next - from > 1) sample(f, next - 1, 1);  // where it holds to: a step, not a slope
       from = next;
+    }
+    if (i + 1 < frames.size() && frames[i + 1].gap > 0) {
+      // The ticks the loop did not run: nothing went out, the line breaks.
+      const std::int64_t t = clock.time_of(through + 1);
+      catch_up(t);
+      out.push_back(PlotSample{t, {}, false, state, layer, stopper(stop), stopper(reset), 0});
     }
   }
   return out;

@@ -40,7 +40,7 @@ svg_has "$supervised" "WEAPONS ENABLED" "no link" "no controller" "not enabled" 
   "stopped by the operator" "stopped by the supervisor" "reset by the supervisor" "reset by the operator" \
   "weapons layer" "controller (operator)" "controller (supervisor)" "link up" "deadman held" \
   "stop button (operator)" "stop button (supervisor)" "consent (supervisor)" "arming input held"
-grep -q 'height="14.0" fill="#b71c1c"/>' "$supervised" || fail "the weapons layer is not in the weapons red"
+grep -q 'height="14.0" fill="#b71c1c"' "$supervised" || fail "the weapons layer is not in the weapons red"
 grep -q 'fill="#b71c1c"' <("$BIN" sheet --mapping "$root/mappings/examples/supervisor.yaml" --format svg) ||
   fail "the sheet's weapons red is not the plot's"
 
@@ -72,7 +72,7 @@ svg_has "$TMP/session.svg" "HD1 drive, mapping hd1.yaml" "input $root/demos/driv
 # depend on the machine's load), and those frames are the loop's own: replay
 # runs the session again on the virtual clock, its inputs and the link's
 # answers at the ticks the run met them.
-python3 "$(dirname "$0")/check_plot.py" "$BIN" "$session" "$TMP/session.svg" 0 12 >"$TMP/check" 2>&1 ||
+python3 "$(dirname "$0")/check_plot.py" "$BIN" "$session" "$TMP/session.svg" 0 12 guide >"$TMP/check" 2>&1 ||
   fail "the session's plot: $(cat "$TMP/check")"
 sent=$(sed -n 's/^[0-9]* end [0-9]* tick [0-9]* frames \([0-9]*\) .*/\1/p' "$session")
 expect_exit 0 "$BIN" replay "$session"

@@ -134,8 +134,8 @@ TEST(PlotColours, TheWeaponsLayerIsInTheWeaponsRed) {
   }
   in.weapon_layers = {"weapons"};
   const auto svg = render_plot_svg(in);
-  EXPECT_TRUE(has(svg, "<rect x=\"465.0\" y=\"128.0\" width=\"315.00\" height=\"14.0\" fill=\"#b71c1c\"/>")) << svg;
-  EXPECT_TRUE(has(svg, "<rect x=\"780.0\" y=\"128.0\" width=\"315.00\" height=\"14.0\" fill=\"#9575cd\"/>"));
+  EXPECT_TRUE(has(svg, "<rect x=\"465.0\" y=\"128.0\" width=\"315.00\" height=\"14.0\" fill=\"#b71c1c\">")) << svg;
+  EXPECT_TRUE(has(svg, "<rect x=\"780.0\" y=\"128.0\" width=\"315.00\" height=\"14.0\" fill=\"#9575cd\">"));
   EXPECT_TRUE(legend_names(svg, "weapons layer", "#b71c1c"));
   EXPECT_TRUE(legend_names(svg, "other layer", "#9575cd"));
 }
@@ -229,8 +229,8 @@ TEST(PlotLanes, EachLaneIsDrawnNamedInItsColour) {
     const auto& [name, colour] = want[i];
     const double y = 148 + 11 * static_cast<double>(i);
     EXPECT_TRUE(has(svg, ">" + name + "</text>")) << name;
-    EXPECT_TRUE(has(svg, fmt::format("<rect x=\"150.0\" y=\"{:.1f}\" width=\"945.00\" height=\"9.0\" fill=\"{}\"/>",
-                                     y + 1, colour)))
+    EXPECT_TRUE(has(
+        svg, fmt::format("<rect x=\"150.0\" y=\"{:.1f}\" width=\"945.00\" height=\"9.0\" fill=\"{}\">", y + 1, colour)))
         << name << "\n"
         << svg;
   }

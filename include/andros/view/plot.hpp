@@ -15,11 +15,13 @@
 #include "andros/protocol/frame.hpp"
 #include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/timing/rate.hpp"
 
 namespace andros::view {
 
 /// One tick of the loop, or, from a session, the first of a run of ticks
-/// that repeat it.
+/// that repeat it, or the start of ticks the loop did not run (nothing sent).
+/// Its frame holds until the next sample's time.
 struct PlotSample {
   std::int64_t t_ms = 0;
   protocol::DataBytes data{};
@@ -28,7 +30,7 @@ struct PlotSample {
   std::string layer;       ///< "" for the base layer
   std::string stop;        ///< a stop latched: whose ("operator", "supervisor", "frame gate"); "" when none
   std::string reset;       ///< who reset the last stop, until the next stop or enabled; "" when none
-  std::int64_t ticks = 1;  ///< the ticks it stands for: itself and those after it that repeat it
+  std::int64_t ticks = 1;  ///< the ticks it stands for: itself and those after it that repeat it (0: ticks not run)
 };
 
 /// The lanes under the state band: each a fact, on or off over time.
@@ -62,6 +64,7 @@ struct PlotInput {
   std::vector<PlotLane> lanes;             ///< those that apply to the run (a supervisor's only when supervised...)
   std::vector<std::string> weapon_layers;  ///< the layers with weapon bindings: drawn in the weapons red
   std::string lanes_missing;               ///< why there are no lanes, when there are none
+  std::int64_t rate_millihertz = timing::kDefaultRateMillihertz;  ///< the ticks': a range's are counted
   std::int64_t from_ms = 0;
   std::int64_t to_ms = -1;  ///< -1: to the last sample
 };
