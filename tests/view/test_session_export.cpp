@@ -80,7 +80,7 @@ constexpr const char* kIncident = R"(0 connect Op pad
 
 record::Session incident() {
   auto s = session(kIncident);
-  s.states = {{0, run::OpState::kNotEnabled}, {120, run::OpState::kEnabled}, {160, run::OpState::kStopped},
+  s.states = {{0, run::OpState::kNotEnabled},   {120, run::OpState::kEnabled}, {160, run::OpState::kStopped},
               {400, run::OpState::kNotEnabled}, {520, run::OpState::kEnabled}, {720, run::OpState::kStopped}};
   const input::PadIdentity sup{.name = "Sup pad", .path = "/dev/input/event7", .serial = "S2", .guid = ""};
   s.stops = {{.t_ms = 160, .reset = false, .by = run::StopBy::kSupervisor, .name = "Sup pad", .pad = sup},
@@ -104,12 +104,9 @@ TEST(SessionExport, EachRowSaysWhoStoppedAndWhoResetWithWhichPad) {
   const auto rows = jsonl(incident());
   ASSERT_EQ(rows.size(), 21U);
   const std::string sup = "Sup pad (path /dev/input/event7, serial S2)";
-  EXPECT_EQ(column(rows, "state"), runs({{3, "not enabled"},
-                                         {1, "enabled"},
-                                         {6, "stopped"},
-                                         {3, "not enabled"},
-                                         {5, "enabled"},
-                                         {3, "stopped"}}));
+  EXPECT_EQ(
+      column(rows, "state"),
+      runs({{3, "not enabled"}, {1, "enabled"}, {6, "stopped"}, {3, "not enabled"}, {5, "enabled"}, {3, "stopped"}}));
   // The supervisor's stop latched from tick 4 (160) to its reset at tick 10
   // (400); the operator's from tick 18 (720), recorded with a name and no pad.
   EXPECT_EQ(column(rows, "stopped_by"), runs({{4, ""}, {6, "supervisor"}, {8, ""}, {3, "operator"}}));
@@ -158,8 +155,7 @@ TEST(SessionExport, AColumnOfAnInputTheMappingHasNoneOfIsThereAndEmpty) {
   s = incident();
   s.settings.sources = {{"/recorded/bad.yaml", "robot: HD1\n"}};
   std::ostringstream out;
-  EXPECT_NE(export_session(s, ExportFormat::kCsv, out).find("the recorded mapping cannot be read"),
-            std::string::npos);
+  EXPECT_NE(export_session(s, ExportFormat::kCsv, out).find("the recorded mapping cannot be read"), std::string::npos);
   std::istringstream in(out.str());
   std::string header;
   std::string row;
@@ -211,8 +207,13 @@ std::vector<std::string> fields(const std::string& line) {
 
 TEST(SessionExport, TextFromOutsideIsNeverAFormulaNorABrokenRow) {
   auto s = incident();
-  s.layers = {{0, "=HYPERLINK(\"http://evil\",\"x\")"}, {200, "+1"}, {240, "-2"}, {280, "@SUM(A1)"},
-              {320, "a\nb,\xff\x1b[31m"}, {360, "\tlead"}, {400, "arm"}};
+  s.layers = {{0, "=HYPERLINK(\"http://evil\",\"x\")"},
+              {200, "+1"},
+              {240, "-2"},
+              {280, "@SUM(A1)"},
+              {320, "a\nb,\xff\x1b[31m"},
+              {360, "\tlead"},
+              {400, "arm"}};
   s.stops[0].pad.name = "=cmd|' /C calc'!A0";
   std::ostringstream out;
   export_session(s, ExportFormat::kCsv, out);
