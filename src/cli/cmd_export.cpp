@@ -1,5 +1,7 @@
 // `andros-bridge export SESSION --format csv|jsonl`: a session as a table, a
 // row per tick (docs/recording.md, "Export").
+#include <spdlog/spdlog.h>
+
 #include <memory>
 #include <string>
 
@@ -24,8 +26,9 @@ void run_export(const ExportOptions& opt) {
   const auto session = record::read_session(opt.session);
   // Written as the rows come: a failed write leaves FILE as it was.
   OutputFile out(opt.output.empty() ? "-" : opt.output);
-  view::export_session(session, format, out.stream());
+  const auto why_no_inputs = view::export_session(session, format, out.stream());
   out.commit();
+  if (!why_no_inputs.empty()) spdlog::warn("the input columns are empty: {}", why_no_inputs);
 }
 
 }  // namespace
@@ -35,9 +38,16 @@ void add_export_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("export",
                                  "Write a flight recorder session (docs/recording.md) as a table, one row per tick\n"
                                  "the live loop ran: the time (one strictly increasing column, in seconds), the\n"
-                                 "operating state, a stop requested, the layer, what the link did with the frame,\n"
-                                 "and every signal of the frame by name (drive, pivot...). For a spreadsheet or\n"
-                                 "PlotJuggler, as it is.");
+                                 "operating state; who stopped (stopped_by: operator, supervisor or gate) and\n"
+                                 "with which pad (stop_pad), who reset the last stop and with which pad\n"
+                                 "(reset_by, reset_pad); shutdown_requested (a SIGINT, SIGTERM...: not a stop\n"
+                                 "button); the layer; what the link did with the frame; what the hands held,\n"
+                                 "read from the recorded input with the recorded mapping (operator_deadman,\n"
+                                 "operator_estop, operator_reset, supervisor_stop, supervisor_reset,\n"
+                                 "supervisor_consent: 1 when held at any moment since the row before, so that a\n"
+                                 "press shorter than a tick shows; empty when the mapping has no such input);\n"
+                                 "then every signal of the frame by name (drive, pivot...). For a spreadsheet,\n"
+                                 "PlotJuggler or Python's csv module, as it is.");
   cmd->add_option("SESSION", opt->session,
                   "a session file, or its bare name as 'sessions' prints it (looked up in the\n"
                   "sessions' folder)")

@@ -180,6 +180,15 @@ mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& so
   return mapping::load_recorded_chain(files);
 }
 
+std::vector<mapping::ValidMapping> recorded_mappings(const Session& session, const SourcesLoader& load) {
+  std::vector<mapping::ValidMapping> out;
+  out.push_back(load(session.settings.sources));
+  for (const auto& r : session.reloads) {
+    if (r.settings) out.push_back(load(r.settings->sources));
+  }
+  return out;
+}
+
 SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, const run::Bridge::Observer& observe) {
   if (s.dropped != 0) {
     throw InputError(SourcePos{s.path}, std::to_string(s.dropped) +

@@ -3,28 +3,22 @@
 // what the lanes show is read from it with the mapping in effect, the one
 // the loop read it with: the deadman held (the deadman's own rule), a stop
 // button, the consent or an arming input held (a button down, an axis past
-// the mapping's default threshold), a controller connected, the link up.
-// The work is the events', never a tick's.
+// the mapping's default threshold: view/held_inputs.hpp, the export's
+// reading too), a controller connected, the link up. The work is the
+// events', never a tick's.
 #include <algorithm>
 #include <exception>
 #include <variant>
 
 #include "andros/base/error.hpp"
-#include "andros/mapping/axis.hpp"
-#include "andros/mapping/deadman.hpp"
 #include "andros/record/session_replay.hpp"
+#include "andros/view/held_inputs.hpp"
 #include "andros/view/plot.hpp"
 
 namespace andros::view {
 namespace {
 
 constexpr std::size_t kLaneCount = 8;
-
-bool pressed(const input::PadState& pad, const std::optional<mapping::InputUse>& use) {
-  if (!use || !pad.connected()) return false;
-  if (use->key.is_button()) return pad.button(use->key).down;
-  return mapping::normalise_axis(pad.axis(use->key)) >= mapping::kDefaultThreshold;
-}
 
 /// The arming inputs of every weapon binding, in any layer.
 std::vector<mapping::InputUse> arming_inputs(const mapping::Mapping& m) {
@@ -80,18 +74,17 @@ void LaneBuilder::link(std::int64_t t_ms, bool up) {
 }
 
 void LaneBuilder::read_inputs(std::int64_t t) {
-  const auto& op = input_.operator_pad();
-  const auto& sup = input_.supervisor();
-  set(LaneKind::kOperatorPad, t, op.connected());
-  set(LaneKind::kSupervisorPad, t, sup.connected());
-  set(LaneKind::kDeadman, t, mapping::Deadman(mapping_).held(input_));
-  set(LaneKind::kOperatorStop, t, pressed(op, mapping_.estop));
-  const auto& s = mapping_.supervisor;
-  set(LaneKind::kSupervisorStop, t, s && pressed(sup, s->stop));
-  set(LaneKind::kConsent, t, s && pressed(sup, s->weapons_consent));
+  const auto h = held_inputs(input_, mapping_);
+  set(LaneKind::kOperatorPad, t, h.operator_pad);
+  set(LaneKind::kSupervisorPad, t, h.supervisor_pad);
+  set(LaneKind::kDeadman, t, h.deadman);
+  set(LaneKind::kOperatorStop, t, h.operator_stop);
+  set(LaneKind::kSupervisorStop, t, h.supervisor_stop);
+  set(LaneKind::kConsent, t, h.consent);
   const auto arms = arming_inputs(mapping_);
+  const auto& op = input_.operator_pad();
   set(LaneKind::kArming, t,
-      std::any_of(arms.begin(), arms.end(), [&op](const mapping::InputUse& u) { return pressed(op, u); }));
+      std::any_of(arms.begin(), arms.end(), [&op](const mapping::InputUse& u) { return held(op, u); }));
 }
 
 void LaneBuilder::set(LaneKind kind, std::int64_t t_ms, bool on) {
@@ -116,10 +109,7 @@ std::vector<PlotLane> LaneBuilder::lanes() const {
 void add_lanes(PlotInput& in, const record::Session& session) {
   std::vector<mapping::ValidMapping> mappings;
   try {
-    mappings.push_back(record::load_recorded_mapping(session.settings.sources));
-    for (const auto& r : session.reloads) {
-      if (r.settings) mappings.push_back(record::load_recorded_mapping(r.settings->sources));
-    }
+    mappings = record::recorded_mappings(session);
   } catch (const InputError& e) {
     in.lanes_missing = std::string("the recorded mapping cannot be read: ") + e.what();
     return;

@@ -2,47 +2,168 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
+#include "andros/base/text.hpp"
 #include "andros/protocol/signals.hpp"
 #include "andros/timing/rate.hpp"
+#include "andros/view/held_inputs.hpp"
 
 namespace andros::view {
 namespace {
 
-/// A CSV field, quoted when it must be (RFC 4180).
-std::string csv(std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+/// An input column: its name, the fact it gives, and whether the mapping has such an input.
+struct InputColumn {
+  std::string_view name;
+  bool HeldInputs::*held;
+  bool (*in_mapping)(const mapping::Mapping&);
+};
+
+constexpr std::array<InputColumn, 6> kInputColumns = {{
+    {"operator_deadman", &HeldInputs::deadman, [](const mapping::Mapping& m) { return m.deadman.has_value(); }},
+    {"operator_estop", &HeldInputs::operator_stop, [](const mapping::Mapping& m) { return m.estop.has_value(); }},
+    {"operator_reset", &HeldInputs::operator_reset, [](const mapping::Mapping& m) { return !m.stop_reset.empty(); }},
+    {"supervisor_stop", &HeldInputs::supervisor_stop,
+     [](const mapping::Mapping& m) { return m.supervisor.has_value(); }},
+    {"supervisor_reset", &HeldInputs::supervisor_reset,
+     [](const mapping::Mapping& m) { return m.supervisor && !m.supervisor->reset.empty(); }},
+    {"supervisor_consent", &HeldInputs::consent,
+     [](const mapping::Mapping& m) { return m.supervisor && m.supervisor->weapons_consent; }},
+}};
+
+/// The columns before the input columns (after `t`).
+constexpr std::array<std::string_view, 9> kRecordColumns = {
+    "tick", "state", "stopped_by", "stop_pad", "reset_by", "reset_pad", "shutdown_requested", "layer", "link"};
+
+/// A cell after `t`: empty (JSON null), a number, or text.
+using Cell = std::variant<std::monostate, std::int64_t, std::string>;
+
+/// A text cell in CSV: never a formula to a spreadsheet (OWASP's CSV
+/// injection: a cell that starts with = + - @, a tab or a return gets a
+/// leading apostrophe), quoted when it must be (RFC 4180).
+std::string csv_text(std::string_view text) {
+  std::string cell;
+  if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) cell = "'";
+  cell += text;
+  if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
   std::string out = "\"";
-  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  for (const char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
 }
 
-/// What is in effect at each tick: the records with a time, taken in order.
-class Cursor {
+/// The pad of a stop or a reset record (PadIdentity::describe()); a session
+/// of an earlier version recorded only a stop's controller name, and no pad.
+std::string pad_text(const record::StopRecord* r) {
+  if (r == nullptr) return "";
+  auto pad = r->pad;
+  if (pad.name.empty()) pad.name = r->name;
+  return pad.empty() ? "" : pad.describe();
+}
+
+/// What the records say at each tick: taken in time order.
+class RecordCursor {
  public:
-  explicit Cursor(const record::Session& s) : s_(s) {}
-  void at(std::int64_t t) {
-    while (state_at_ < s_.states.size() && s_.states[state_at_].t_ms <= t) state = s_.states[state_at_++].state;
-    while (layer_at_ < s_.layers.size() && s_.layers[layer_at_].t_ms <= t) layer = s_.layers[layer_at_++].text;
-    while (request_at_ < s_.requests.size() && s_.requests[request_at_].t_ms <= t) {
-      if (s_.requests[request_at_++].text == "stop") stop_requested_ = true;
+  explicit RecordCursor(const record::Session& s) : s_(s) {
+    // A shutdown request: SIGINT's or SIGTERM's request record, or an event script's `stop`, which stands for one.
+    for (const auto& r : s.requests) {
+      if (r.text == "stop") shutdown_from_ = std::min(shutdown_from_, r.t_ms);
+    }
+    for (const auto& e : s.events) {
+      if (e.type == input::InputEvent::Type::kShutdown) shutdown_from_ = std::min(shutdown_from_, e.t_ms);
     }
   }
-  [[nodiscard]] std::string_view stop() const {
-    return stop_requested_ && state == run::OpState::kStopping ? "requested" : "";
+  void at(std::int64_t t) {
+    // The states and the stops in time order: an enable ends who reset.
+    for (;;) {
+      const bool state_due = state_at_ < s_.states.size() && s_.states[state_at_].t_ms <= t;
+      const bool stop_due = stop_at_ < s_.stops.size() && s_.stops[stop_at_].t_ms <= t;
+      if (state_due && (!stop_due || s_.states[state_at_].t_ms <= s_.stops[stop_at_].t_ms)) {
+        state = s_.states[state_at_++].state;
+        if (state == run::OpState::kEnabled) reset = nullptr;
+      } else if (stop_due) {
+        const auto& r = s_.stops[stop_at_++];
+        stop = r.reset ? nullptr : &r;
+        reset = r.reset ? &r : nullptr;
+      } else {
+        break;
+      }
+    }
+    while (layer_at_ < s_.layers.size() && s_.layers[layer_at_].t_ms <= t) layer = s_.layers[layer_at_++].text;
+    t_ = t;
   }
+  /// Shutting down on a shutdown request.
+  [[nodiscard]] bool shutdown_requested() const { return t_ >= shutdown_from_ && state == run::OpState::kStopping; }
+
   run::OpState state = run::OpState::kNoLink;
   std::string layer;
+  const record::StopRecord* stop = nullptr;   ///< the stop latched: until its reset
+  const record::StopRecord* reset = nullptr;  ///< the last stop's reset: until the next stop or an enable
 
  private:
   const record::Session& s_;
   std::size_t state_at_ = 0;
+  std::size_t stop_at_ = 0;
   std::size_t layer_at_ = 0;
-  std::size_t request_at_ = 0;
-  bool stop_requested_ = false;
+  std::int64_t t_ = 0;
+  std::int64_t shutdown_from_ = std::numeric_limits<std::int64_t>::max();
 };
+
+/// The session's controller events read with the mapping in effect (the
+/// recorded one, each ok reload's from its time), row by row: an input
+/// held at any moment since the row before counts on this row, so that a
+/// press shorter than a tick still shows.
+class InputCursor {
+ public:
+  InputCursor(const record::Session& s, std::vector<mapping::ValidMapping> mappings)
+      : s_(s), mappings_(std::move(mappings)) {}
+
+  /// Reads on to t (the events and reloads at or before it): what was held since the last call.
+  HeldInputs since_last(std::int64_t t) {
+    since_ = now_;  // what was held at the row before is held into this row's time
+    for (; event_at_ < s_.events.size() && s_.events[event_at_].t_ms <= t; ++event_at_) {
+      const auto& e = s_.events[event_at_];
+      use_reloads_to(e.t_ms);
+      if (e.is_fault() || e.type == input::InputEvent::Type::kEnd) continue;
+      input_.apply(e);
+      read();
+    }
+    use_reloads_to(t);
+    return since_;
+  }
+  /// The mapping in effect at the last call's time.
+  [[nodiscard]] const mapping::Mapping& mapping() const { return *mappings_[in_effect_]; }
+
+ private:
+  void use_reloads_to(std::int64_t t) {
+    for (; reload_at_ < s_.reloads.size() && s_.reloads[reload_at_].t_ms <= t; ++reload_at_) {
+      if (!s_.reloads[reload_at_].settings) continue;
+      ++in_effect_;
+      read();
+    }
+  }
+  void read() {
+    now_ = held_inputs(input_, mapping());
+    since_ |= now_;
+  }
+
+  const record::Session& s_;
+  std::vector<mapping::ValidMapping> mappings_;
+  std::size_t in_effect_ = 0;
+  std::size_t event_at_ = 0;
+  std::size_t reload_at_ = 0;
+  input::InputState input_;
+  HeldInputs now_;
+  HeldInputs since_;
+};
+
+std::string_view stopper_text(const record::StopRecord* r) { return r ? record::stopper_word(r->by) : ""; }
 
 }  // namespace
 
@@ -52,14 +173,26 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos) {
   throw InputError(pos, "expected csv or jsonl, got " + quote(text));
 }
 
-void export_session(const record::Session& s, ExportFormat format, std::ostream& out) {
-  const timing::FrameClock clock(s.settings.rate_millihertz);
+std::string export_session(const record::Session& s, ExportFormat format, std::ostream& out,
+                           const record::SourcesLoader& load) {
+  std::vector<std::string_view> names(kRecordColumns.begin(), kRecordColumns.end());
+  for (const auto& c : kInputColumns) names.push_back(c.name);
+  for (const auto& sig : protocol::kSignals) names.push_back(sig.name);
   if (format == ExportFormat::kCsv) {
-    out << "t,tick,state,stop,layer,link";
-    for (const auto& sig : protocol::kSignals) out << ',' << sig.name;
+    out << 't';
+    for (const auto name : names) out << ',' << name;
     out << '\n';
   }
-  Cursor cursor(s);
+  std::optional<InputCursor> inputs;
+  std::string why_no_inputs;
+  try {
+    inputs.emplace(s, record::recorded_mappings(s, load));
+  } catch (const InputError& e) {
+    why_no_inputs = std::string("the recorded mapping cannot be read: ") + e.what();
+  }
+  const timing::FrameClock clock(s.settings.rate_millihertz);
+  RecordCursor records(s);
+  std::vector<Cell> cells;
   const std::int64_t last = s.end ? s.end->last_tick : (s.frames.empty() ? -1 : s.frames.back().tick);
   for (std::size_t i = 0; i < s.frames.size(); ++i) {
     const auto& f = s.frames[i];
@@ -68,27 +201,43 @@ void export_session(const record::Session& s, ExportFormat format, std::ostream&
     const std::int64_t through = i + 1 < s.frames.size() ? s.frames[i + 1].tick - s.frames[i + 1].gap - 1 : last;
     for (std::int64_t tick = f.tick; tick <= through; ++tick) {
       const std::int64_t t = clock.time_of(tick);
-      cursor.at(t);
+      records.at(t);
+      cells = {tick,
+               std::string(run::to_string(records.state)),
+               std::string(stopper_text(records.stop)),
+               pad_text(records.stop),
+               std::string(stopper_text(records.reset)),
+               pad_text(records.reset),
+               std::int64_t{records.shutdown_requested()},
+               printable_text(records.layer),
+               std::string(record::result_name(f))};
+      const auto since = inputs ? std::optional(inputs->since_last(t)) : std::nullopt;
+      for (const auto& c : kInputColumns) {
+        if (since && c.in_mapping(inputs->mapping())) cells.emplace_back(std::int64_t{(*since).*c.held});
+        else cells.emplace_back();
+      }
+      for (std::size_t k = 0; k < protocol::kSignalCount; ++k) cells.emplace_back(std::int64_t{values.values[k]});
       const auto seconds = fmt::format("{}.{:03}", t / 1000, t % 1000);
-      const auto state = run::to_string(cursor.state);
       if (format == ExportFormat::kCsv) {
-        out << seconds << ',' << tick << ',' << state << ',' << cursor.stop() << ',' << csv(cursor.layer) << ','
-            << record::result_name(f);
-        for (std::size_t k = 0; k < protocol::kSignalCount; ++k) out << ',' << int{values.values[k]};
+        out << seconds;
+        for (const auto& cell : cells) {
+          out << ',';
+          if (const auto* n = std::get_if<std::int64_t>(&cell)) out << *n;
+          else if (const auto* text = std::get_if<std::string>(&cell)) out << csv_text(*text);
+        }
         out << '\n';
         continue;
       }
-      nlohmann::ordered_json row{{"t", nlohmann::json::parse(seconds)},
-                                 {"tick", tick},
-                                 {"state", state},
-                                 {"stop", cursor.stop()},
-                                 {"layer", cursor.layer},
-                                 {"link", record::result_name(f)}};
-      for (std::size_t k = 0; k < protocol::kSignalCount; ++k)
-        row[std::string(protocol::kSignals[k].name)] = values.values[k];
+      nlohmann::ordered_json row{{"t", nlohmann::json::parse(seconds)}};
+      for (std::size_t k = 0; k < cells.size(); ++k) {
+        auto& value = row[std::string(names[k])];
+        if (const auto* n = std::get_if<std::int64_t>(&cells[k])) value = *n;
+        else if (const auto* text = std::get_if<std::string>(&cells[k])) value = *text;
+      }
       out << row.dump() << '\n';
     }
   }
+  return why_no_inputs;
 }
 
 }  // namespace andros::view

@@ -165,7 +165,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 assert len(rows) > 15, len(rows)
 t = [float(r["t"]) for r in rows]
 assert all(a < b for a, b in zip(t, t[1:])), "time not strictly increasing"
-assert {"drive", "pivot", "safety", "state", "layer", "stop", "link"} <= set(rows[0]), rows[0].keys()
+assert {"drive", "pivot", "safety", "state", "layer", "stopped_by", "shutdown_requested", "link"} <= set(rows[0]), rows[0].keys()
 assert any(r["drive"] != "128" for r in rows), "never drove"
 PY
 expect_exit 0 "$BIN" export "$session" --format jsonl

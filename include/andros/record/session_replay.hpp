@@ -32,6 +32,11 @@ using SourcesLoader = std::function<mapping::ValidMapping(const std::vector<Mapp
 /// is written, and nothing of this machine's mappings is read.
 mapping::ValidMapping load_recorded_mapping(const std::vector<MappingSource>& sources);
 
+/// The mappings the session ran with, in order: the recorded one, then
+/// each ok reload's (ReloadRecord::settings). Throws InputError.
+std::vector<mapping::ValidMapping> recorded_mappings(const Session& session,
+                                                     const SourcesLoader& load = load_recorded_mapping);
+
 /// Replays session; observe sees every tick's report (the plot's source).
 /// Throws InputError for a session that cannot be replayed exactly (records
 /// dropped, an unknown mapping).
