@@ -174,6 +174,11 @@ std::string state_text(const run::TickReport& r) {
       }
       if (r.entered_by == run::OpEvent::kResume) return afresh("resumed");
       if (r.supervisor_back) return afresh("supervisor's controller back");
+      // At start-up, or a controller just connected, released is no cause: what enables is.
+      if (r.engine.enable == mapping::EnableState::kDeadmanReleased) {
+        if (!r.entered_by) return "press the deadman to enable";
+        if (r.entered_by == run::OpEvent::kControllerUp) return "controller connected: press the deadman to enable";
+      }
       return std::string(describe(r.engine.enable));
     }
     case OpState::kEnabled: return enable_text(r.engine);

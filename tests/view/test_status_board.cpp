@@ -111,6 +111,7 @@ TEST(RunStatusBoard, ARepeatedReportMovesTheCountersAndANewKindOfControllerTheWo
   RunStatusBoard board(RunStatus{});
   auto r = tick(40);
   r.state = run::OpState::kNotEnabled;
+  r.entered_by = run::OpEvent::kRelease;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   board.observe(r);
   EXPECT_EQ(board.status().enable_text, "deadman released");
@@ -192,6 +193,21 @@ TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
   r.entered_by = run::OpEvent::kRelease;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   EXPECT_EQ(said(), "deadman released");
+}
+
+// Issue 33, item 7: at start-up, and when a controller connects, the state
+// says what enables, not the deadman's "released" as if driving had ended.
+TEST(RunStatusBoard, AtStartUpNotEnabledSaysWhatEnables) {
+  run::TickReport r;
+  r.connected = true;
+  r.state = run::OpState::kNotEnabled;
+  r.link.state = link::LinkState::kUp;
+  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  EXPECT_EQ(view::state_text(r), "press the deadman to enable");
+  r.entered_by = run::OpEvent::kControllerUp;
+  EXPECT_EQ(view::state_text(r), "controller connected: press the deadman to enable");
+  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;  // held at connect: that is what to undo
+  EXPECT_EQ(view::state_text(r), "deadman held since connect or start-up: release and press it again");
 }
 
 TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {

@@ -79,7 +79,11 @@ struct TickReport {
   OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
   std::optional<StopBy> stopped_by;  ///< a stop latched: whose (OperatingState::stopped_by)
   std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
-  /// The event that brought the machine into `state` (OperatingState::entered_by): the first cause.
+  /// The first cause of `state`: the event that brought the machine into it
+  /// (OperatingState::entered_by), kLinkUp only for a link lost and regained.
+  /// A link that opened (the first time, or again after the bridge's own
+  /// close for a suspend) is no cause: then what brought the machine into
+  /// kNoLink before it (none at start-up, kResume after a suspend).
   std::optional<OpEvent> entered_by;
   bool supervisor_back =
       false;  ///< entered by kControllerUp: the supervisor's controller came back (the operator's stayed)
@@ -207,6 +211,8 @@ class Bridge {
   /// Job control: the process stops in control.pause(); afresh after it.
   void pause(const RunControl& control);
   void advance();
+  /// The link came up or was lost: the event through the machine, and whether an up is a regain (for the report).
+  void link_changed(bool up);
   /// The link carries motion (link::carries_motion): for the state, a stalled link is not up.
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
@@ -236,6 +242,9 @@ class Bridge {
   // For the report's first cause (TickReport::entered_by).
   bool supervisor_back_ = false;
   bool reload_refused_ = false;
+  bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
+  /// The first cause for the state the last kLinkUp brought: kLinkUp for a link regained (TickReport::entered_by).
+  std::optional<OpEvent> link_up_cause_;
 };
 
 }  // namespace andros::run
