@@ -255,7 +255,7 @@ void Recorder::observe(const run::TickReport& r) {
   if (r.stopped_by != stopped_by_) {
     stopped_by_ = r.stopped_by;
     if (r.stopped_by) {
-      push(payload::stop(r.t_ms, *r.stopped_by, r.stopper_name()));
+      push(payload::stop(r.t_ms, *r.stopped_by, r.stopper));
     }
   }
   if (r.reset_by != reset_by_) {

@@ -154,7 +154,16 @@ Effect Bridge::act(Effect effect, bool reset) {
   }
   if (effect.neutral_frames) start_sequence();
   if (effect.begin_reload && control_ != nullptr) control_->begin_reload(reload_mapping_);
+  name_stopper();
   return effect;
+}
+
+void Bridge::name_stopper() {
+  if (machine_.stopped_by() == named_stop_) return;
+  named_stop_ = machine_.stopped_by();
+  stopper_ = named_stop_ == StopBy::kSupervisor ? input_.supervisor().name()
+             : named_stop_ == StopBy::kOperator ? input_.name()
+                                                : std::string();
 }
 
 void Bridge::link_changed(bool up) {
@@ -241,6 +250,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.sent = sent;
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
+  r.stopper = stopper_;
   r.reset_by = machine_.reset_by();
   r.entered_by = machine_.entered_by() == OpEvent::kLinkUp ? link_up_cause_ : machine_.entered_by();
   r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;

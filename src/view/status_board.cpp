@@ -16,7 +16,7 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
-                  r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
+                  r.stopper, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
                   r.link.motion_allowed, r.link.detail);
 }
 
@@ -104,9 +104,14 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     if (after.supervisor_connected) spdlog::info("supervisor's controller: {}", after.supervisor);
     else spdlog::warn("supervisor's controller: none connected: nothing moves without it");
   }
-  if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
+  if (after.state == run::OpState::kStopped) {
+    // A stop is logged when it latches and when it becomes another's: not
+    // when its pad is unplugged, which the controller's line says.
+    if (first_tick_ || before.state != after.state || before.stopped_by != after.stopped_by) {
+      spdlog::warn("STOP: {}", after.enable_text);
+    }
+  } else if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
-    else if (after.state == run::OpState::kStopped) spdlog::warn("STOP: {}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
@@ -195,9 +200,8 @@ std::string stopped_by_text(const run::TickReport& r) {
   if (*r.stopped_by == run::StopBy::kGate) {
     return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
   }
-  const auto name = r.stopper_name();
   return "stopped by the " + std::string(run::to_string(*r.stopped_by)) + " (" +
-         (name.empty() ? std::string("controller") : printable_text(name)) + ")";
+         (r.stopper.empty() ? std::string("controller") : printable_text(r.stopper)) + ")";
 }
 
 std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {

@@ -3,6 +3,9 @@
 
 #include <sstream>
 
+#include "andros/input/script_player.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/replay.hpp"
 #include "andros/view/status_board.hpp"
 #include "support/log_capture.hpp"
 
@@ -210,6 +213,46 @@ TEST(RunStatusBoard, AtStartUpNotEnabledSaysWhatEnables) {
   EXPECT_EQ(view::state_text(r), "deadman held since connect or start-up: release and press it again");
 }
 
+/// Every report of an event script replayed through the loop with the shipped mapping_file.
+std::vector<run::TickReport> replayed(const std::string& script, const std::string& mapping_file) {
+  TextReader in(script, "s.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  std::vector<run::TickReport> reports;
+  run::ReplayOptions options;
+  options.observe = [&reports](const run::TickReport& r) { reports.push_back(r); };
+  run::replay(player, mapping::Engine(mapping::load_mapping(mapping_file), options.engine), options,
+              [](std::int64_t, const protocol::DataBytes&) {});
+  return reports;
+}
+
+// Issue 33, item 7: the pad that stopped is named as it was at the stop: its
+// unplug, or another pad plugged in, changes neither the name on the screen
+// nor the log, where the stop is said once (the unplug is the controller's line).
+TEST(RunStatusBoard, TheStopKeepsTheNameOfThePadThatStoppedAndAnUnplugIsNoSecondStop) {
+  const auto stopped = [](const std::string& script, const std::string& mapping_file, const std::string& said) {
+    const LogCapture log;
+    RunStatusBoard board(RunStatus{});
+    for (const auto& r : replayed(script, mapping_file)) board.observe(r);
+    const auto s = board.status();
+    EXPECT_EQ(s.state, run::OpState::kStopped);
+    EXPECT_EQ(s.stopped_by, said);
+    EXPECT_EQ(s.enable_text.rfind(said + ": ", 0), 0U) << s.enable_text;
+    const auto screen = render_run_screen(s, {80, 24}).text();
+    EXPECT_NE(screen.find("STOP: " + said), std::string::npos) << screen;
+    EXPECT_EQ(count(log.text(), "STOP:"), 1U) << log.text();
+    return log.text();
+  };
+  const auto operators = stopped(
+      "0 connect Pad A\n40 button leftshoulder 1\n120 button guide 1\n160 button guide 0\n240 disconnect\n"
+      "320 connect Pad C\n400 end\n",
+      ANDROS_MAPPINGS_DIR "/hd1.yaml", "stopped by the operator (Pad A)");
+  EXPECT_NE(operators.find("info: controller: none connected"), std::string::npos) << operators;
+  stopped(
+      "0 connect Pad A\n0 supervisor connect Pad B\n10 button leftshoulder 1\n90 supervisor button x 1\n"
+      "95 supervisor button x 0\n200 supervisor disconnect\n300 end\n",
+      ANDROS_TEST_DATA_DIR "/mappings/supervisor.yaml", "stopped by the supervisor (Pad B)");
+}
+
 TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
   const LogCapture log;
   RunStatus initial;
@@ -301,6 +344,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 80;
   r.state = run::OpState::kStopped;
   r.stopped_by = run::StopBy::kSupervisor;
+  r.stopper = "Pad B";
   board.observe(r);
   auto s = board.status();
   EXPECT_EQ(s.stopped_by, "stopped by the supervisor (Pad B)");
@@ -308,6 +352,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 120;
   r.state = run::OpState::kNotEnabled;
   r.stopped_by.reset();
+  r.stopper.clear();
   r.reset_by = run::StopBy::kSupervisor;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   board.observe(r);
@@ -318,6 +363,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.state = run::OpState::kStopped;
   r.reset_by.reset();
   r.stopped_by = run::StopBy::kOperator;
+  r.stopper = "pad";
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
   const auto text = log.text();

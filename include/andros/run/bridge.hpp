@@ -78,7 +78,11 @@ struct TickReport {
   bool sent = true;                  ///< false: nothing was offered this tick (suspended, link closed)
   OpState state = OpState::kNoLink;  ///< after this tick: what the screen, pad, log and service say
   std::optional<StopBy> stopped_by;  ///< a stop latched: whose (OperatingState::stopped_by)
-  std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
+  /// The name of the controller whose stop is latched, as it was when that
+  /// pad stopped (an unplug after the stop does not change whose stop it
+  /// is); "" when none is latched, or for the frame gate's.
+  std::string stopper;
+  std::optional<StopBy> reset_by;  ///< who reset the last stop, until the next stop or enabled
   /// The first cause of `state`: the event that brought the machine into it
   /// (OperatingState::entered_by), kLinkUp only for a link lost and regained.
   /// A link that opened (the first time, or again after the bridge's own
@@ -103,12 +107,6 @@ struct TickReport {
   [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
-  /// The name of the controller whose stop is latched ("" when none is, or the frame gate's).
-  [[nodiscard]] std::string stopper_name() const {
-    if (stopped_by == StopBy::kSupervisor) return supervisor;
-    if (stopped_by == StopBy::kOperator) return controller;
-    return {};
-  }
 };
 
 struct BridgeOptions {
@@ -213,6 +211,8 @@ class Bridge {
   void advance();
   /// The link came up or was lost: the event through the machine, and whether an up is a regain (for the report).
   void link_changed(bool up);
+  /// Who stopped, named once a stop latches or becomes another's (after every event through the machine).
+  void name_stopper();
   /// The link carries motion (link::carries_motion): for the state, a stalled link is not up.
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
@@ -245,6 +245,9 @@ class Bridge {
   bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
   /// The first cause for the state the last kLinkUp brought: kLinkUp for a link regained (TickReport::entered_by).
   std::optional<OpEvent> link_up_cause_;
+  // TickReport::stopper: whose stop it named, and the name.
+  std::optional<StopBy> named_stop_;
+  std::string stopper_;
 };
 
 }  // namespace andros::run
