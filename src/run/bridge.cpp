@@ -260,6 +260,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.supervised = source_.supervised();
   r.supervisor_connected = input_.supervisor().connected();
   r.supervisor = input_.supervisor().name();
+  r.refusal = source_.refusal();
   r.engine = engine_status_;
   r.link = link_.status();
   r.gate_trips = gate_.trips();

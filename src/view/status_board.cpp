@@ -15,9 +15,9 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// What a report says that the status's words and the log's lines come
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
-  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
-                  r.stopper, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
-                  r.link.motion_allowed, r.link.detail);
+  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.refusal, r.state,
+                  r.stopped_by, r.stopper, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine,
+                  r.link.state, r.link.motion_allowed, r.link.detail);
 }
 
 }  // namespace
@@ -162,6 +162,7 @@ std::string state_text(const run::TickReport& r) {
              (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
              "); once it is up, press the deadman afresh";
     case OpState::kNoController:
+      if (!r.refusal.empty()) return printable_line(r.refusal);
       if (r.connected && r.supervised && !r.supervisor_connected) {
         return "connect the supervisor's controller, then press the deadman afresh";
       }

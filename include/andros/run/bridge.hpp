@@ -97,8 +97,10 @@ struct TickReport {
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
   bool supervisor_connected = false;  ///< and it is connected
   std::string supervisor;             ///< its name (may be empty)
-  mapping::EngineStatus engine;       ///< after this tick's step (the last step's when none ran)
-  link::LinkStatus link;              ///< after this tick's send
+  /// A controller attached but refused (InputSource::refusal): why, and what to do; "" when none is.
+  std::string refusal;
+  mapping::EngineStatus engine;  ///< after this tick's step (the last step's when none ran)
+  link::LinkStatus link;         ///< after this tick's send
   /// The frame the loop chose broke a safety rule: which (data is then the
   /// frame gate's neutral one, and the state stopped). Empty: it passed.
   std::string gate_fault;
