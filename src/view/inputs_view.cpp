@@ -164,6 +164,7 @@ std::string shorten_words(const std::string& line, std::size_t cap) {
 /// The lines too wide for width with their words shortened to cap.
 std::vector<std::string> shortened(const std::vector<std::string>& lines, std::size_t width, std::size_t cap) {
   std::vector<std::string> out;
+  out.reserve(lines.size());
   for (const auto& line : lines) out.push_back(too_wide(line, width) ? shorten_words(line, cap) : line);
   return out;
 }
