@@ -1,6 +1,6 @@
 // `andros-bridge sessions`: the flight recorder's sessions, with what each
-// holds, what an investigator looks for first (weapons fired, stops, the
-// controllers and the link lost: session_summary.hpp) and whether it is
+// holds, what an investigator looks for first (weapons fired, stops and
+// resets, the controllers and the link lost: session_summary.hpp) and whether it is
 // intact (docs/recording.md). A session is data: one that is not intact is
 // listed with what its records say and marked, one that cannot be read is
 // listed as such; none is left out.
@@ -83,16 +83,16 @@ std::string by_whom(const std::vector<std::pair<const char*, int>>& parts) {
   return total == 0 ? "0" : fmt::format("{} ({})", total, list);
 }
 
-constexpr const char* kRowFormat = "{:<19}  {:>8}  {:<9}  {:>7}  {:<7}  {:<23}  {:<16}  {:>9}  {:<18}  {}\n";
+constexpr const char* kRowFormat = "{:<19}  {:>8}  {:<9}  {:>7}  {:<7}  {:<23}  {:<16}  {:<16}  {:>9}  {:<18}  {}\n";
 
 void print_table(const std::vector<Row>& rows) {
-  std::cout << fmt::format(kRowFormat, "START", "LENGTH", "ROBOT", "FRAMES", "WEAPONS", "STOPS", "CONTROLLERS LOST",
-                           "LINK LOST", "VERIFY", "FILE");
+  std::cout << fmt::format(kRowFormat, "START", "LENGTH", "ROBOT", "FRAMES", "WEAPONS", "STOPS", "RESETS",
+                           "CONTROLLERS LOST", "LINK LOST", "VERIFY", "FILE");
   int untrusted = 0;
   for (const auto& r : rows) {
     if (!r.intact || !r.session) ++untrusted;
     if (!r.session) {
-      std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", r.verdict, r.name);
+      std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict, r.name);
       continue;
     }
     const auto& s = *r.session;
@@ -100,6 +100,7 @@ void print_table(const std::vector<Row>& rows) {
     std::cout << fmt::format(
         kRowFormat, start_text(s.started), duration_text(s.length_ms()), s.settings.robot, s.frames_sent(),
         m.weapons_fired ? "FIRED" : "no", by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
+        by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
         by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost, r.verdict, r.name);
   }
   if (untrusted != 0) {
@@ -170,9 +171,10 @@ void add_sessions_command(CLI::App& app, int& exit_code) {
                          "List the flight recorder's sessions (docs/recording.md), oldest first: start, length,\n"
                          "robot, frames sent, whether weapons fired (a weapon signal in a frame sent while\n"
                          "enabled), the stops by whom (op: the operator's stop button, sup: the supervisor's,\n"
-                         "gate: the frame gate), the controllers lost (op, sup), the link lost, and the verdict\n"
-                         "of 'verify'. A session that is not intact is listed with what its records say, marked\n"
-                         "NOT INTACT; one that cannot be read, as unreadable.");
+                         "gate: the frame gate), the stops reset by whom (op, sup), the controllers lost (op,\n"
+                         "sup), the link lost, and the verdict of 'verify'. A session that is not intact is\n"
+                         "listed with what its records say, marked NOT INTACT; one that cannot be read, as\n"
+                         "unreadable.");
   cmd->add_option("--record-dir,--dir", opt->dir,
                   "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
                   "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"

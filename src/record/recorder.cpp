@@ -256,7 +256,7 @@ void Recorder::observe(const run::TickReport& r) {
   // again while stopped) and every reset, once, with the pad that made it.
   if (r.stop_count != stop_count_) {
     stop_count_ = r.stop_count;
-    if (r.last_stop) push(payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad));
+    if (r.last_stop) push(payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad, r.last_stop_again));
   }
   if (r.reset_count != reset_count_) {
     reset_count_ = r.reset_count;

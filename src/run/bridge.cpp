@@ -127,7 +127,7 @@ void Bridge::drive(std::int64_t t_ms, const Observer& observe) {
   // The facts first: a stop button, the deadman, the panic, the timeout.
   const mapping::InputFacts facts = frames_.facts(input_, t_ms, machine_.motion_allowed());
   // A link known to be down (a fault, a stalled server) is so before the frame is chosen.
-  if (machine_.link_up() && !link_up()) apply(link_lost_event());
+  if (machine_.link_up() && !link_up()) link_changed(false);
   act(machine_.on(facts), false);
   // The machine decided; the engine maps what it allows.
   Step step = frames_.step(input_, t_ms, machine_.motion_allowed());
@@ -164,12 +164,25 @@ Effect Bridge::act(Effect effect, bool reset) {
   return effect;
 }
 
+void Bridge::link_changed(bool up) {
+  if (!up) {
+    link_lost_ = true;
+    apply(link_lost_event());
+    return;
+  }
+  // Only a link that was lost is regained; one that opened leaves the cause
+  // what it was (none at start-up, the resume after a suspend's close).
+  link_up_cause_ = link_lost_ ? std::optional(OpEvent::kLinkUp) : machine_.entered_by();
+  link_lost_ = false;
+  apply(OpEvent::kLinkUp);
+}
+
 link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer& observe) {
   // The last gate (docs/safety-states.md): a frame breaking a rule never reaches the link, and the loop stops.
   GateVerdict gate = gate_.pass(offered, machine_.motion_allowed());
   if (gate.tripped()) apply(OpEvent::kGateTrip);
   const link::SendResult result = link_.send(protocol::encode(gate.data), clock_.now().count());
-  if (link_up() != machine_.link_up()) apply(link_up() ? OpEvent::kLinkUp : link_lost_event());
+  if (link_up() != machine_.link_up()) link_changed(link_up());
   TickReport r = report(gate.data, result, true);
   r.gate_fault = std::move(gate.fault);
   observe(r);
@@ -235,6 +248,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.sent = sent;
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
+  r.stopper = machine_.stopper_pad().name;
   r.reset_by = machine_.reset_by();
   r.stopper_pad = machine_.stopper_pad();
   r.reset_pad = machine_.reset_pad();
@@ -245,7 +259,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.operator_may_reset = machine_.may_reset(StopBy::kOperator, input_.operator_pad().identity());
   r.supervisor_may_reset =
       source_.supervised() && machine_.may_reset(StopBy::kSupervisor, input_.supervisor().identity());
-  r.entered_by = machine_.entered_by();
+  r.entered_by = machine_.entered_by() == OpEvent::kLinkUp ? link_up_cause_ : machine_.entered_by();
   r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
   r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;
   r.connected = input_.connected();
@@ -253,6 +267,7 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.supervised = source_.supervised();
   r.supervisor_connected = input_.supervisor().connected();
   r.supervisor = input_.supervisor().name();
+  r.refusal = source_.refusal();
   r.engine = engine_status_;
   r.link = link_.status();
   r.gate_trips = gate_.trips();

@@ -30,7 +30,7 @@ void Bridge::on_fault(const input::InputEvent& fault) {
     case T::kLinkTaken:
       link_.set_fault(fault.type == T::kLinkTaken ? link::FaultLink::Fault::kTaken : link::FaultLink::Fault::kDown);
       // Answered now: a link back before the next frame is still a new link.
-      apply(link_lost_event());
+      link_changed(false);
       break;
     case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
     case T::kSuspend:

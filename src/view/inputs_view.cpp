@@ -1,6 +1,7 @@
 #include "andros/view/inputs_view.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -119,35 +120,105 @@ void append_hat(std::string& out, const input::InputState& state, int hat) {
   out += fmt("  %3d %-12s %s\n", hat, ("hat" + std::to_string(hat)).c_str(), hat_text(state.hat(hat)).c_str());
 }
 
+constexpr std::size_t kHang = 6;  ///< a wrapped line's continuations: under an axis line's name, past its number
+/// The shortest fit() cuts a word to: a binding's name such as
+/// pt_left/pt_right stays whole, a path keeps its file name.
+constexpr std::size_t kShortestWord = 16;
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  for (std::size_t from = 0; from < text.size();) {
+    const auto end = std::min(text.find('\n', from), text.size());
+    lines.push_back(text.substr(from, end - from));
+    from = end + 1;
+  }
+  return lines;
+}
+
+std::vector<std::string> wrapped(const std::vector<std::string>& lines, std::size_t width) {
+  std::vector<std::string> out;
+  for (const auto& line : lines) {
+    for (auto& part : wrap_text(line, width, kHang)) out.push_back(std::move(part));
+  }
+  return out;
+}
+
+bool too_wide(const std::string& line, std::size_t width) { return wrap_text(line, width, kHang).size() > 1; }
+
+/// line with each word longer than cap cut in its middle to cap (cut_middle),
+/// but for a word with no letter in it (a bar, a number): the columns stay.
+std::string shorten_words(const std::string& line, std::size_t cap) {
+  std::string out;
+  for (std::size_t at = 0; at < line.size();) {
+    const auto end = std::min(line.find(' ', at), line.size());
+    const auto word = std::string_view(line).substr(at, end - at);
+    const bool named =
+        std::any_of(word.begin(), word.end(), [](unsigned char c) { return std::isalpha(c) != 0 || c >= 0x80; });
+    out += named ? cut_middle(word, cap) : std::string(word);
+    if (end < line.size()) out += ' ';
+    at = end + 1;
+  }
+  return out;
+}
+
+/// The lines too wide for width with their words shortened to cap.
+std::vector<std::string> shortened(const std::vector<std::string>& lines, std::size_t width, std::size_t cap) {
+  std::vector<std::string> out;
+  out.reserve(lines.size());
+  for (const auto& line : lines) out.push_back(too_wide(line, width) ? shorten_words(line, cap) : line);
+  return out;
+}
+
+/// The longest word of the lines too wide for width, in bytes.
+std::size_t longest_word(const std::vector<std::string>& lines, std::size_t width) {
+  std::size_t longest = 0;
+  for (const auto& line : lines) {
+    if (!too_wide(line, width)) continue;
+    for (std::size_t at = 0, end = 0; at < line.size(); at = end + 1) {
+      end = std::min(line.find(' ', at), line.size());
+      longest = std::max(longest, end - at);
+    }
+  }
+  return longest;
+}
+
 /// The lines of text, each wrapped to width under its text (a long path, a
 /// binding's or a layer's name: shown whole) while that leaves them within
-/// the rows, else cut to width (every input still shown: the triggers, the
-/// last column of buttons); when there are more than rows, the blank lines go
-/// first.
+/// the rows; else, first, without the blank lines; then with the long words
+/// of the lines too wide (a path, a name) cut in their middle, no more than
+/// the rows need; and only when that is not enough, each line cut to width
+/// (every input still shown: the triggers, the last column of buttons).
 std::string fit(const std::string& text, TermSize size) {
-  constexpr std::size_t kHang = 6;  // under an axis line's name, past its number
   const auto width = static_cast<std::size_t>(std::max(size.cols, 1));
   const auto rows = static_cast<std::size_t>(std::max(size.rows, 1));
-  const auto split = [&](bool wrap) {
-    std::vector<std::string> lines;
-    for (std::size_t from = 0; from < text.size();) {
-      const auto end = std::min(text.find('\n', from), text.size());
-      const auto line = std::string_view(text).substr(from, end - from);
-      if (wrap) {
-        for (auto& part : wrap_text(line, width, kHang)) lines.push_back(std::move(part));
+  auto lines = split_lines(text);
+  auto out = wrapped(lines, width);
+  if (out.size() > rows) {
+    std::erase_if(lines, [](const std::string& line) { return line.empty(); });
+    out = wrapped(lines, width);
+  }
+  if (const auto longest = longest_word(lines, width); out.size() > rows && longest > kShortestWord) {
+    // The longest cap that fits: each word cut as little as the rows need.
+    std::size_t cap = kShortestWord;
+    for (std::size_t low = kShortestWord + 1, high = longest - 1; low <= high;) {
+      const auto mid = low + (high - low) / 2;
+      if (wrapped(shortened(lines, width, mid), width).size() <= rows) {
+        cap = mid;
+        low = mid + 1;
       } else {
-        lines.emplace_back(line.substr(0, std::min(line.size(), width)));
+        high = mid - 1;
       }
-      from = end + 1;
     }
-    if (lines.size() > rows) std::erase_if(lines, [](const std::string& line) { return line.empty(); });
-    return lines;
-  };
-  auto lines = split(true);
-  if (lines.size() > rows) lines = split(false);
-  std::string out;
-  for (const auto& line : lines) out += line + "\n";
-  return out;
+    lines = shortened(lines, width, cap);
+    out = wrapped(lines, width);
+  }
+  if (out.size() > rows) {
+    out.clear();
+    for (const auto& line : lines) out.push_back(line.substr(0, std::min(line.size(), width)));
+  }
+  std::string screen;
+  for (const auto& line : out) screen += line + "\n";
+  return screen;
 }
 
 }  // namespace

@@ -86,17 +86,8 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
   return out;
 }
 
-/// text cut in its middle to at most room characters: a by-id path keeps its
-/// start and its end (the adapter's serial number), and what follows it shows.
-std::string cut_middle(const std::string& text, std::size_t room) {
-  constexpr std::string_view kCut = "...";
-  if (text.size() <= room || room <= kCut.size() + 2) return text;
-  // A third from the start, two from the end: a by-id path's start is the same for every adapter.
-  const auto keep = room - kCut.size();
-  return text.substr(0, keep / 3) + std::string(kCut) + text.substr(text.size() - (keep - keep / 3));
-}
-
-/// The link's state is what the line is for: the name gives way to it.
+/// The link's state is what the line is for: the name gives way to it (cut
+/// in its middle: a by-id path keeps its start and its serial number).
 Line link_line(const RunStatus& s, std::size_t width) {
   constexpr std::string_view kLabel = "link        ";
   const auto state = std::string(to_string(s.link_state));

@@ -203,6 +203,16 @@ std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std
   return out;
 }
 
+std::string cut_middle(std::string_view text, std::size_t room) {
+  constexpr std::string_view kCut = "...";
+  const auto size = code_points(text);
+  if (size <= room || room <= kCut.size() + 2) return std::string(text);
+  const auto keep = room - kCut.size();
+  const auto head = first(text, keep / 3);
+  const auto tail = text.substr(first(text, size - (keep - keep / 3)).size());
+  return std::string(head) + std::string(kCut) + std::string(tail);
+}
+
 std::vector<Line> wrap_line(const Line& line, std::size_t width) {
   if (line.width() <= width || line.is_one_row()) return {line};
   std::string text;

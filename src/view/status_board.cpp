@@ -16,9 +16,10 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// What a report says that the status's words and the log's lines come
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
-  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.state, r.stopped_by,
-                  r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
-                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed, r.link.detail);
+  return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.refusal, r.state,
+                  r.stopped_by, r.stopper, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine,
+                  r.link.state, r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed,
+                  r.link.detail);
 }
 
 }  // namespace
@@ -106,13 +107,17 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     if (after.supervisor_connected) spdlog::info("supervisor's controller: {}", after.supervisor);
     else spdlog::warn("supervisor's controller: none connected: nothing moves without it");
   }
-  if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
-    if (after.enabled()) spdlog::info("{}", after.enable_text);
-    // One STOP line a stop: what changes while it stays latched (a stop button let go, a pad lost) is no new stop.
-    else if (after.state == run::OpState::kStopped &&
-             (before.state != after.state || before.stopped_by != after.stopped_by))
+  if (after.state == run::OpState::kStopped) {
+    // A stop is logged when it latches and when it becomes another's: not
+    // when its pad is unplugged, which the controller's line says. What else
+    // its words say meanwhile (a stop button held, let go) is information.
+    if (first_tick_ || before.state != after.state || before.stopped_by != after.stopped_by) {
       spdlog::warn("STOP: {}", after.enable_text);
-    else if (after.state == run::OpState::kStopped) spdlog::info("stopped: {}", after.enable_text);
+    } else if (before.enable_text != after.enable_text) {
+      spdlog::info("stopped: {}", after.enable_text);
+    }
+  } else if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
+    if (after.enabled()) spdlog::info("{}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
   if (!first_tick_ && before.layer != after.layer) {
@@ -163,6 +168,7 @@ std::string state_text(const run::TickReport& r) {
              (r.link.detail.empty() ? std::string("connecting") : r.link.detail) +
              "); once it is up, press the deadman afresh";
     case OpState::kNoController:
+      if (!r.refusal.empty()) return printable_line(r.refusal);
       if (r.connected && r.supervised && !r.supervisor_connected) {
         return "connect the supervisor's controller, then press the deadman afresh";
       }
@@ -180,6 +186,11 @@ std::string state_text(const run::TickReport& r) {
       }
       if (r.entered_by == run::OpEvent::kResume) return afresh("resumed");
       if (r.supervisor_back) return afresh("supervisor's controller back");
+      // At start-up, or a controller just connected, released is no cause: what enables is.
+      if (r.engine.enable == mapping::EnableState::kDeadmanReleased) {
+        if (!r.entered_by) return "press the deadman to enable";
+        if (r.entered_by == run::OpEvent::kControllerUp) return "controller connected: press the deadman to enable";
+      }
       return std::string(describe(r.engine.enable));
     }
     case OpState::kEnabled: return enable_text(r.engine);
@@ -245,10 +256,8 @@ std::string stopped_by_text(const run::TickReport& r) {
   if (*r.stopped_by == run::StopBy::kGate) {
     return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
   }
-  // The pad that stopped, by the name it had then: an unplug does not make it "(controller)".
-  const auto name = r.stopper_pad.name.empty() ? r.stopper_name() : r.stopper_pad.name;
   return "stopped by the " + std::string(run::to_string(*r.stopped_by)) + " (" +
-         (name.empty() ? std::string("controller") : printable_text(name)) + ")";
+         (r.stopper.empty() ? std::string("controller") : printable_text(r.stopper)) + ")";
 }
 
 std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {

@@ -39,7 +39,7 @@ replays_exactly "$session" "$TMP/cap" "plain drive"
 
 expect_exit 0 "$BIN" sessions
 grep -q "^sessions in $STATE:" "$TMP/out" || fail "sessions: $(cat "$TMP/out")"
-grep -Eq "HD1 +$(frames_in "$TMP/cap") +no +0 +0 +0 +intact +$(basename "$session")" "$TMP/out" ||
+grep -Eq "HD1 +$(frames_in "$TMP/cap") +no +0 +0 +0 +0 +intact +$(basename "$session")" "$TMP/out" ||
   fail "sessions: $(cat "$TMP/out")"
 
 # Tampering: an altered byte, a removed record, a swapped pair; verify and replay refuse.

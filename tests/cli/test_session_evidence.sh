@@ -94,7 +94,7 @@ grep -q "^not closed" "$TMP/out" || fail "verify: a session cut short is closed:
 mkdir -p "$TMP/cutdir"
 cp "$TMP/cut.andros-session" "$TMP/cutdir/20240101-000000-1.andros-session"
 expect_exit 0 "$BIN" sessions --record-dir "$TMP/cutdir"
-grep -Eq "HD1 +[0-9]+ +no +0 +0 +0 +intact, cut short +$TMP/cutdir/20240101-000000-1.andros-session" "$TMP/out" ||
+grep -Eq "HD1 +[0-9]+ +no +0 +0 +0 +0 +intact, cut short +$TMP/cutdir/20240101-000000-1.andros-session" "$TMP/out" ||
   fail "sessions of a session cut short: $(cat "$TMP/out")"
 expect_exit 0 "$BIN" plot "$TMP/cut.andros-session" --output "$TMP/cut.svg"
 grep -q "cut short at line $((records + 1))" "$TMP/cut.svg" || fail "the plot does not say the session was cut short"

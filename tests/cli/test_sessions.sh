@@ -1,7 +1,7 @@
 # `sessions`: per session its start, length, robot, frames, whether weapons
-# fired (a weapon signal in a frame the link took while enabled), the stops by
-# whom, the controllers and the link lost, and the verdict; the same as JSON
-# lines. Crafted sessions (tests/data/sessions/drive.andros-session's first
+# fired (a weapon signal in a frame the link took while enabled), the stops
+# and the resets by whom, the controllers and the link lost, and the verdict;
+# the same as JSON lines. Crafted sessions (tests/data/sessions/drive.andros-session's first
 # records, then records written here, the chain rehashed) check each field;
 # one altered and one unreadable are listed, marked, never left out.
 source "$(dirname "$0")/lib.sh"
@@ -60,16 +60,16 @@ craft 20240104-000000-4 'link -1 connecting motion ""' "frame 3 100 sent $rest g
 expect_exit 0 "$BIN" sessions --record-dir "$dir"
 cp "$TMP/out" "$TMP/table"
 row() { grep -F "$dir/$1.andros-session" "$TMP/table"; }
-header='^START +LENGTH +ROBOT +FRAMES +WEAPONS +STOPS +CONTROLLERS LOST +LINK LOST +VERIFY +FILE$'
+header='^START +LENGTH +ROBOT +FRAMES +WEAPONS +STOPS +RESETS +CONTROLLERS LOST +LINK LOST +VERIFY +FILE$'
 sed -n 2p "$TMP/table" | grep -Eq "$header" || fail "the table's header: $(sed -n 2p "$TMP/table")"
 row 20240101-000000-1 | grep -Eq \
-  "^2026-11-26 08:33:39 +0:00:01 +HD1 +31 +FIRED +3 \(op 1, sup 1, gate 1\) +2 \(op 1, sup 1\) +2 +intact +$dir/" ||
+  "^2026-11-26 08:33:39 +0:00:01 +HD1 +31 +FIRED +3 \(op 1, sup 1, gate 1\) +1 \(sup 1\) +2 \(op 1, sup 1\) +2 +intact +$dir/" ||
   fail "the incident's row: $(row 20240101-000000-1)"
-row 20240102-000000-2 | grep -Eq "^2026-11-26 08:33:39 +0:00:00 +HD1 +2 +no +0 +0 +0 +intact " ||
+row 20240102-000000-2 | grep -Eq "^2026-11-26 08:33:39 +0:00:00 +HD1 +2 +no +0 +0 +0 +0 +intact " ||
   fail "the quiet session's row: $(row 20240102-000000-2)"
-row 20240103-000000-3 | grep -Eq " HD1 +3 +no +0 +0 +0 +NOT INTACT +$dir/" ||
+row 20240103-000000-3 | grep -Eq " HD1 +3 +no +0 +0 +0 +0 +NOT INTACT +$dir/" ||
   fail "the altered session's row: $(row 20240103-000000-3)"
-row 20240104-000000-4 | grep -Eq '^\? +\? +\? +\? +\? +\? +\? +\? +unreadable ' ||
+row 20240104-000000-4 | grep -Eq '^\? +\? +\? +\? +\? +\? +\? +\? +\? +unreadable ' ||
   fail "the unreadable session's row: $(row 20240104-000000-4)"
 grep -q "^2 of 4 sessions NOT INTACT or unreadable: what the table shows of them is what their records say, not evidence" \
   "$TMP/table" || fail "no footnote for the sessions not to be trusted: $(cat "$TMP/table")"

@@ -11,6 +11,7 @@
 #include "andros/link/pty_pair.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/view/status_board.hpp"
 #include "support/frame_doubles.hpp"
 #include "support/frame_reader.hpp"
 
@@ -286,6 +287,31 @@ TEST(Bridge, ALinkThatComesBackLandsInNotEnabledUntilAFreshPress) {
   EXPECT_EQ(ticks[3].state, OpState::kNoLink);
   EXPECT_EQ(ticks[3].link.detail, "held down by the event script");
   EXPECT_EQ(ticks[5].state, OpState::kNotEnabled);
+}
+
+// Issue 33, item 7: "link regained" is said of a link that was lost and came
+// back, never of the first link at start-up (a port opened at the first
+// frame), nor of the link the loop reopens after a suspend closed it: the
+// first cause is then the start-up, or the resume.
+TEST(Bridge, OnlyALinkLostAndBackIsALinkRegained) {
+  ScriptOnPty on("0 connect pad\n80 end\n");
+  std::vector<TickReport> started;
+  on.bridge.run([] { return false; }, [&](const TickReport& r) { started.push_back(r); });
+  ASSERT_FALSE(started.empty());
+  EXPECT_EQ(started[0].state, OpState::kNotEnabled);
+  EXPECT_EQ(view::state_text(started[0]), "press the deadman to enable");
+
+  const auto first_not_enabled_from = [](const std::vector<TickReport>& ticks, std::int64_t t_ms) {
+    const auto it = std::find_if(ticks.begin(), ticks.end(), [t_ms](const TickReport& r) {
+      return r.t_ms >= t_ms && r.state == OpState::kNotEnabled;
+    });
+    return it == ticks.end() ? std::string("(never not enabled)") : view::state_text(*it);
+  };
+  PressToDrive frames;
+  const auto lost = run_script("0 connect pad\n40 link down\n120 link up\n200 end\n", frames);
+  EXPECT_EQ(first_not_enabled_from(lost, 120), "link regained: press the deadman afresh");
+  const auto resumed = run_script("0 connect pad\n40 suspend\n200 resume\n320 end\n", frames);
+  EXPECT_EQ(first_not_enabled_from(resumed, 200), "resumed: press the deadman afresh");
 }
 
 TEST(Bridge, APortTakenAndRegainedIsANewLink) {

@@ -234,5 +234,62 @@ TEST(InputsView, At80x24NamesAndTheFileNameAreWhole) {
   }
 }
 
+// Issue 33, item 7: a controller named by its port makes the heading a line
+// longer, and the screen no longer fitted 80x24 wrapped: every line was cut,
+// binding names and the mapping's path with them. Now the middle of a path
+// gives way first (its start and its file name shown), then a long name's,
+// each as little as the rows need, and the binding names stay whole.
+TEST(InputsView, At80x24AControllerByPortCutsThePathsMiddleNotTheNames) {
+  const std::string port = "/dev/input/by-path/pci-0000:00:14.0-usb-0:1:1.0-event-joystick";
+  const std::string file = "/home/operator/.config/andros-bridge/mappings/field-teams/north/hd1.yaml";
+  InputsBoard board(axis_uses(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml")),
+                    "andros-bridge inputs: the controller at " + port + " (Ctrl-C ends)\ndeadzones and thresholds of " +
+                        file + " (run's default: no --robot or --mapping given)");
+  board.update({event(0, T::kConnect, {}, 0, "Test Pad")}, pad_layout());
+  const auto screen = board.compose();  // an 80x24 terminal
+  std::vector<std::string> lines;
+  for (std::size_t from = 0, to = 0; (to = screen.find('\n', from)) != std::string::npos; from = to + 1) {
+    lines.push_back(screen.substr(from, to - from));
+    EXPECT_LE(lines.back().size(), static_cast<std::size_t>(kInputsSize.cols)) << lines.back();
+  }
+  EXPECT_LE(lines.size(), static_cast<std::size_t>(kInputsSize.rows)) << screen;
+  const auto has = [&lines](const std::string& what) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(what) != std::string::npos; });
+  };
+  for (const auto* whole :
+       {" pt_left/pt_right", " pt_up/pt_down", " fiber_takeup", " fiber_unwind", "    5 righttrigger", " 14 dpright"}) {
+    EXPECT_TRUE(has(whole)) << whole << "\n" << screen;
+  }
+  // Each path: its start, "...", its end, on one line.
+  for (const auto& path : {port, file}) {
+    const auto line = std::find_if(lines.begin(), lines.end(), [&](const std::string& l) {
+      return l.find(path.substr(0, 6)) != std::string::npos;
+    });
+    ASSERT_NE(line, lines.end()) << path << "\n" << screen;
+    const auto start = line->find(path.substr(0, 6));
+    const auto shown = line->substr(start, line->find(' ', start) - start);
+    const auto cut = shown.find("...");
+    ASSERT_NE(cut, std::string::npos) << *line;
+    const auto end = shown.substr(shown.rfind("...") + 3);
+    EXPECT_GE(end.size(), 16U) << *line;
+    EXPECT_TRUE(path.starts_with(shown.substr(0, cut))) << *line;
+    EXPECT_TRUE(path.ends_with(end)) << *line;
+  }
+  // A layer's name too long for the line loses its middle, not its end.
+  AxisUses uses = axis_uses(*mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"));
+  uses[kRightX].layer = "camera-and-manipulator-arm-positioning-for-the-north-field-team-at-night";
+  InputsBoard named(uses, "andros-bridge inputs: the controller at " + port + " (Ctrl-C ends)\nno mapping");
+  named.update({event(0, T::kConnect, {}, 0, "Test Pad")}, pad_layout());
+  const auto layered = named.compose();
+  EXPECT_LE(std::count(layered.begin(), layered.end(), '\n'), kInputsSize.rows) << layered;
+  const auto layer = layered.find("camera-");
+  ASSERT_NE(layer, std::string::npos) << layered;
+  const auto shown = layered.substr(layer, layered.find_first_of(" \n", layer) - layer);
+  EXPECT_NE(shown.find("..."), std::string::npos) << shown;
+  EXPECT_TRUE(shown.ends_with("-at-night")) << shown;
+  EXPECT_NE(layered.find("    5 righttrigger"), std::string::npos) << layered;
+}
+
 }  // namespace
 }  // namespace andros::view

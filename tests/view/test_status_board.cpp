@@ -3,6 +3,9 @@
 
 #include <sstream>
 
+#include "andros/input/script_player.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/run/replay.hpp"
 #include "andros/view/status_board.hpp"
 #include "support/log_capture.hpp"
 
@@ -111,6 +114,7 @@ TEST(RunStatusBoard, ARepeatedReportMovesTheCountersAndANewKindOfControllerTheWo
   RunStatusBoard board(RunStatus{});
   auto r = tick(40);
   r.state = run::OpState::kNotEnabled;
+  r.entered_by = run::OpEvent::kRelease;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   board.observe(r);
   EXPECT_EQ(board.status().enable_text, "deadman released");
@@ -192,6 +196,61 @@ TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
   r.entered_by = run::OpEvent::kRelease;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   EXPECT_EQ(said(), "deadman released");
+}
+
+// Issue 33, item 7: at start-up, and when a controller connects, the state
+// says what enables, not the deadman's "released" as if driving had ended.
+TEST(RunStatusBoard, AtStartUpNotEnabledSaysWhatEnables) {
+  run::TickReport r;
+  r.connected = true;
+  r.state = run::OpState::kNotEnabled;
+  r.link.state = link::LinkState::kUp;
+  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  EXPECT_EQ(view::state_text(r), "press the deadman to enable");
+  r.entered_by = run::OpEvent::kControllerUp;
+  EXPECT_EQ(view::state_text(r), "controller connected: press the deadman to enable");
+  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;  // held at connect: that is what to undo
+  EXPECT_EQ(view::state_text(r), "deadman held since connect or start-up: release and press it again");
+}
+
+/// Every report of an event script replayed through the loop with the shipped mapping_file.
+std::vector<run::TickReport> replayed(const std::string& script, const std::string& mapping_file) {
+  TextReader in(script, "s.events", kEventScriptLimits);
+  input::ScriptPlayer player(in);
+  std::vector<run::TickReport> reports;
+  run::ReplayOptions options;
+  options.observe = [&reports](const run::TickReport& r) { reports.push_back(r); };
+  run::replay(player, mapping::Engine(mapping::load_mapping(mapping_file), options.engine), options,
+              [](std::int64_t, const protocol::DataBytes&) {});
+  return reports;
+}
+
+// Issue 33, item 7: the pad that stopped is named as it was at the stop: its
+// unplug, or another pad plugged in, changes neither the name on the screen
+// nor the log, where the stop is said once (the unplug is the controller's line).
+TEST(RunStatusBoard, TheStopKeepsTheNameOfThePadThatStoppedAndAnUnplugIsNoSecondStop) {
+  const auto stopped = [](const std::string& script, const std::string& mapping_file, const std::string& said) {
+    const LogCapture log;
+    RunStatusBoard board(RunStatus{});
+    for (const auto& r : replayed(script, mapping_file)) board.observe(r);
+    const auto s = board.status();
+    EXPECT_EQ(s.state, run::OpState::kStopped);
+    EXPECT_EQ(s.stopped_by, said);
+    EXPECT_EQ(s.enable_text.rfind(said + ": ", 0), 0U) << s.enable_text;
+    const auto screen = render_run_screen(s, {80, 24}).text();
+    EXPECT_NE(screen.find("STOP: " + said), std::string::npos) << screen;
+    EXPECT_EQ(count(log.text(), "STOP:"), 1U) << log.text();
+    return log.text();
+  };
+  const auto operators = stopped(
+      "0 connect Pad A\n40 button leftshoulder 1\n120 button guide 1\n160 button guide 0\n240 disconnect\n"
+      "320 connect Pad C\n400 end\n",
+      ANDROS_MAPPINGS_DIR "/hd1.yaml", "stopped by the operator (Pad A)");
+  EXPECT_NE(operators.find("info: controller: none connected"), std::string::npos) << operators;
+  stopped(
+      "0 connect Pad A\n0 supervisor connect Pad B\n10 button leftshoulder 1\n90 supervisor button x 1\n"
+      "95 supervisor button x 0\n200 supervisor disconnect\n300 end\n",
+      ANDROS_TEST_DATA_DIR "/mappings/supervisor.yaml", "stopped by the supervisor (Pad B)");
 }
 
 TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
@@ -283,6 +342,7 @@ TEST(RunStatusBoard, StoppedSaysWhoMayResetAndHowOrHowToGoOn) {
   r.state = run::OpState::kStopped;
   r.stopped_by = run::StopBy::kOperator;
   r.controller = "Pad A";
+  r.stopper = "Pad A";
   r.connected = true;
   r.engine.operator_reset = "back+start";
   r.engine.supervisor_reset = "back+start";
@@ -332,6 +392,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.engine.operator_reset = "back+start";
   r.engine.supervisor_reset = "back+start";
   r.engine.reset_hold_ms = 2000;
+  r.stopper = "Pad B";
   board.observe(r);
   auto s = board.status();
   EXPECT_EQ(s.stopped_by, "stopped by the supervisor (Pad B)");
@@ -350,6 +411,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 120;
   r.state = run::OpState::kNotEnabled;
   r.stopped_by.reset();
+  r.stopper.clear();
   r.reset_by = run::StopBy::kSupervisor;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   board.observe(r);
@@ -360,6 +422,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.state = run::OpState::kStopped;
   r.reset_by.reset();
   r.stopped_by = run::StopBy::kOperator;
+  r.stopper = "pad";
   r.operator_may_reset = true;
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
@@ -367,7 +430,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 200;
   r.connected = false;
   r.controller.clear();
-  r.stopper_pad = input::PadIdentity{"pad", "", "", ""};
+  r.stopper_pad = input::PadIdentity{"pad", "", "", ""};  // r.stopper stays "pad"
   r.operator_may_reset = false;
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");

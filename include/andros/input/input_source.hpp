@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "andros/input/device_layout.hpp"
 #include "andros/input/feedback.hpp"
@@ -38,6 +39,12 @@ class InputSource {
   /// The live controller's inputs (whether SDL knows it as a game
   /// controller); none while none is connected, and never for a script.
   [[nodiscard]] virtual std::optional<DeviceLayout> device() const { return std::nullopt; }
+
+  /// Why a role has no controller although one is attached: a pad refused
+  /// (two pads SDL cannot tell apart, docs/controllers.md), and what to do,
+  /// in words for the screen; "" while no role waits on a refusal. A script
+  /// refuses nothing.
+  [[nodiscard]] virtual std::string refusal() const { return {}; }
 };
 
 }  // namespace andros::input

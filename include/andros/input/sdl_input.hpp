@@ -109,6 +109,8 @@ class SdlInput final : public InputSource {
 
   /// The chosen controller's inputs; none while it is not connected.
   [[nodiscard]] std::optional<DeviceLayout> device() const override;
+  /// The operator's role's refusal, else the supervisor's (InputSource::refusal).
+  [[nodiscard]] std::string refusal() const override;
 
   /// "the first controller", "controller 1", "controller named 'xbox'"...
   [[nodiscard]] std::string selection() const;

@@ -21,6 +21,7 @@ class RecordingInput final : public input::InputSource {
   // Everything else the loop and the screen ask of the input is the inner source's.
   [[nodiscard]] bool supervised() const override { return inner_.supervised(); }
   [[nodiscard]] std::optional<input::DeviceLayout> device() const override { return inner_.device(); }
+  [[nodiscard]] std::string refusal() const override { return inner_.refusal(); }
 
  private:
   input::InputSource& inner_;

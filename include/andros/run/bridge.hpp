@@ -90,7 +90,13 @@ struct TickReport {
   /// stop is the supervisor's, or another pad's (the one that stopped is gone).
   bool operator_may_reset = false;
   bool supervisor_may_reset = false;
-  /// The event that brought the machine into `state` (OperatingState::entered_by): the first cause.
+  /// The name of the pad whose stop is latched, as it was when it stopped (stopper_pad's): "" when none is.
+  std::string stopper;
+  /// The first cause of `state`: the event that brought the machine into it
+  /// (OperatingState::entered_by), kLinkUp only for a link lost and regained.
+  /// A link that opened (the first time, or again after the bridge's own
+  /// close for a suspend) is no cause: then what brought the machine into
+  /// kNoLink before it (none at start-up, kResume after a suspend).
   std::optional<OpEvent> entered_by;
   bool supervisor_back =
       false;  ///< entered by kControllerUp: the supervisor's controller came back (the operator's stayed)
@@ -100,8 +106,10 @@ struct TickReport {
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
   bool supervisor_connected = false;  ///< and it is connected
   std::string supervisor;             ///< its name (may be empty)
-  mapping::EngineStatus engine;       ///< after this tick's step (the last step's when none ran)
-  link::LinkStatus link;              ///< after this tick's send
+  /// A controller attached but refused (InputSource::refusal): why, and what to do; "" when none is.
+  std::string refusal;
+  mapping::EngineStatus engine;  ///< after this tick's step (the last step's when none ran)
+  link::LinkStatus link;         ///< after this tick's send
   /// The frame the loop chose broke a safety rule: which (data is then the
   /// frame gate's neutral one, and the state stopped). Empty: it passed.
   std::string gate_fault;
@@ -110,12 +118,6 @@ struct TickReport {
   [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
-  /// The name of the controller whose stop is latched ("" when none is, or the frame gate's).
-  [[nodiscard]] std::string stopper_name() const {
-    if (stopped_by == StopBy::kSupervisor) return supervisor;
-    if (stopped_by == StopBy::kOperator) return controller;
-    return {};
-  }
 };
 
 struct BridgeOptions {
@@ -218,6 +220,9 @@ class Bridge {
   /// Job control: the process stops in control.pause(); afresh after it.
   void pause(const RunControl& control);
   void advance();
+  /// The link came up or was lost: the event through the machine, and whether an up is a regain (for the report).
+  void link_changed(bool up);
+  /// Who stopped, named once a stop latches or becomes another's (after every event through the machine).
   /// The link carries motion (link::carries_motion): for the state, a stalled link is not up.
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
@@ -247,6 +252,9 @@ class Bridge {
   // For the report's first cause (TickReport::entered_by).
   bool supervisor_back_ = false;
   bool reload_refused_ = false;
+  bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
+  /// The first cause for the state the last kLinkUp brought: kLinkUp for a link regained (TickReport::entered_by).
+  std::optional<OpEvent> link_up_cause_;
 };
 
 }  // namespace andros::run

@@ -104,6 +104,12 @@ std::string plain(const Line& line, std::size_t width);
 /// after the first starts with indent spaces. Nothing is left out.
 std::vector<std::string> wrap_text(std::string_view text, std::size_t width, std::size_t indent);
 
+/// text cut in its middle to at most room characters (UTF-8 code points),
+/// "..." where it was cut: a third of what is kept from its start, two from
+/// its end (a path's file name, a by-id path's serial number). Left whole
+/// when room is too small for that to say anything.
+std::string cut_middle(std::string_view text, std::size_t room);
+
 /// line as lines of at most width characters, broken as wrap_text breaks
 /// its text, each piece keeping its style; continuations start line.hang()
 /// spaces in.

@@ -13,6 +13,8 @@ namespace {
 constexpr const char* kWhatToDo =
     "use controllers of different models, or name each by its port "
     "(--controller and --supervisor /dev/input/by-path/...; docs/controllers.md)";
+/// What the state line says to do: the log has the whole line.
+constexpr const char* kByPort = "name each by its port: --controller and --supervisor /dev/input/by-path/...";
 
 }  // namespace
 
@@ -46,7 +48,8 @@ bool PadRoles::wanted(const Slot& slot, PadFacts& pad) const {
   return pad.guid == slot.bound->guid && reader_.serial(pad) == slot.bound->serial;
 }
 
-bool PadRoles::may_take(const Slot& slot, const Slot* other, PadFacts& pad, std::vector<PadFacts>& attached) {
+bool PadRoles::may_take(const Slot& slot, const Slot* other, PadFacts& pad, std::vector<PadFacts>& attached,
+                        std::string& refused) {
   if (!wanted(slot, pad)) return false;
   if (other == nullptr) return true;
   if (other->device && other->device->instance_id() == pad.instance) return false;
@@ -54,11 +57,20 @@ bool PadRoles::may_take(const Slot& slot, const Slot* other, PadFacts& pad, std:
   // named by one role is never the other's.
   if ((slot.selection.is_first() || other->selection.by_path()) && other->selection.matches(pad)) return false;
   if (slot.selection.by_path()) return true;  // the port named is the pad
-  for (auto& twin : attached) {
-    if (twin.instance == pad.instance || twin.guid != pad.guid || told_apart(slot, *other, pad, twin)) continue;
-    twins_[pad.guid] = describe(twin);
+  // pad and the pads attached that cannot be told from it; twin: the first of those.
+  int alike = 1;
+  const PadFacts* twin = nullptr;
+  for (auto& each : attached) {
+    if (each.instance == pad.instance || each.guid != pad.guid || told_apart(slot, *other, pad, each)) continue;
+    ++alike;
+    if (twin == nullptr) twin = &each;
+  }
+  if (twin != nullptr) {
+    twins_[pad.guid] = describe(*twin);
     spdlog::error("{}: refused {}: it cannot be told from {}, so that the roles could swap: {}", slot.role(),
-                  describe(pad), describe(twin), kWhatToDo);
+                  describe(pad), describe(*twin), kWhatToDo);
+    refused = std::to_string(alike) + " identical controllers " + quote_name(pad.name) +
+              " refused: SDL cannot tell them apart, so the roles could swap; " + kByPort;
     return false;
   }
   if (other->bound) {
@@ -66,12 +78,16 @@ bool PadRoles::may_take(const Slot& slot, const Slot* other, PadFacts& pad, std:
     if (!told_apart(slot, *other, theirs, pad)) {
       spdlog::error("{}: refused {}: it may be {}, and SDL gives nothing that tells them apart: {}", slot.role(),
                     describe(pad), other->describe(), kWhatToDo);
+      refused = slot.role() + ": " + quote_name(pad.name) + " refused: it may be " + other->role() +
+                " (SDL cannot tell them apart); " + kByPort;
       return false;
     }
   }
   if (const auto seen = twins_.find(pad.guid); seen != twins_.end()) {
     spdlog::error("{}: refused {}: it cannot be told from {}, seen beside it, so that the roles could swap: {}",
                   slot.role(), describe(pad), seen->second, kWhatToDo);
+    refused = slot.role() + ": " + quote_name(pad.name) +
+              " refused: SDL cannot tell it from the one seen beside it, so the roles could swap; " + kByPort;
     return false;
   }
   return true;

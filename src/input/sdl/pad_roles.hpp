@@ -37,6 +37,8 @@ struct Slot {
   std::int64_t connect_t = -1;
   bool rescan = true;  // a device may have appeared: look for the chosen one
   bool waiting_logged = false;
+  /// Why the last scan took no pad although one was wanted (PadRoles::may_take's words); "" once it has one.
+  std::string refused;
 };
 
 class PadRoles {
@@ -45,8 +47,10 @@ class PadRoles {
 
   /// Whether slot may open pad (one of attached, every device attached now);
   /// other: the other role, nullptr without a supervisor. A refusal the
-  /// operator must hear of (a pad that may be the other role's) is logged.
-  bool may_take(const Slot& slot, const Slot* other, PadFacts& pad, std::vector<PadFacts>& attached);
+  /// operator must hear of (a pad that may be the other role's) is logged,
+  /// and said in refused in a few words for the screen's state line.
+  bool may_take(const Slot& slot, const Slot* other, PadFacts& pad, std::vector<PadFacts>& attached,
+                std::string& refused);
   /// Binds slot to pad, just opened (with a supervisor).
   void bind(Slot& slot, PadFacts pad) const;
 

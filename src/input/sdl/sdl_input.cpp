@@ -84,7 +84,11 @@ void SdlInput::Impl::handle(Slot& slot, const SDL_Event& event, std::int64_t now
     slot.rescan = true;
     return;
   }
-  if (!slot.device) return;
+  if (!slot.device) {
+    // A refusal holds while the pads refused are there: look again.
+    if (event.type == SDL_JOYDEVICEREMOVED && !slot.refused.empty()) slot.rescan = true;
+    return;
+  }
   if (event.type == SDL_JOYDEVICEREMOVED) {
     if (event.jdevice.which == slot.device->instance_id()) lose(slot, now_ms);
     return;
@@ -105,10 +109,15 @@ Slot* SdlInput::Impl::other_of(const Slot& slot) {
 
 void SdlInput::Impl::connect_chosen(Slot& slot, std::int64_t now_ms) {
   slot.rescan = false;
+  slot.refused.clear();
   Slot* other = other_of(slot);
   auto attached = roles.reader().attached();
   for (auto& pad : attached) {
-    if (!roles.may_take(slot, other, pad, attached)) continue;
+    std::string refused;
+    if (!roles.may_take(slot, other, pad, attached, refused)) {
+      if (!refused.empty()) slot.refused = std::move(refused);
+      continue;
+    }
     slot.device = SdlDevice::open(pad.index);
     if (!slot.device) {
       spdlog::warn("cannot open controller {} {}: {}", pad.index, quote_name(pad.name), SDL_GetError());
@@ -120,6 +129,7 @@ void SdlInput::Impl::connect_chosen(Slot& slot, std::int64_t now_ms) {
                  printable_text(slot.device->name()), printable_text(slot.device->guid()),
                  slot.device->is_game_controller() ? "game controller" : "joystick");
     slot.waiting_logged = false;
+    slot.refused.clear();
     slot.connect_t = now_ms;
     InputEvent connect = event(slot, InputEvent::Type::kConnect, now_ms);
     connect.name = slot.device->name();
@@ -190,6 +200,13 @@ void SdlInput::feedback(const FeedbackPattern& pattern) {
 std::optional<DeviceLayout> SdlInput::device() const {
   if (!impl_->driver.device) return std::nullopt;
   return impl_->driver.device->layout();
+}
+
+std::string SdlInput::refusal() const {
+  for (const Slot* slot : {&impl_->driver, impl_->supervisor ? &*impl_->supervisor : nullptr}) {
+    if (slot != nullptr && !slot->device && !slot->refused.empty()) return slot->refused;
+  }
+  return {};
 }
 
 std::string SdlInput::selection() const { return impl_->driver.selection.describe(); }

@@ -198,7 +198,7 @@ TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
     EXPECT_EQ(status.game_controller, std::optional<bool>(pad));
     const auto screen = view::render_run_screen(status, {80, 24}).render({80, 24}, false);
     if (pad) {
-      EXPECT_EQ(status.enable_text, "deadman released");
+      EXPECT_EQ(status.enable_text, "press the deadman to enable");
       EXPECT_EQ(screen.find("plain joystick"), std::string::npos) << screen;
     } else {
       EXPECT_NE(status.enable_text.find("not a game controller"), std::string::npos) << status.enable_text;
@@ -210,7 +210,7 @@ TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
     // A mapping of numbered inputs (learned for this stick) needs no hint.
     board.set_pad_names(false);
     board.observe(r, input);
-    EXPECT_EQ(board.status().enable_text, "deadman released");
+    EXPECT_EQ(board.status().enable_text, "press the deadman to enable");
     // Unplugged: nothing is said of a device that is not there.
     device.unplug();
     tick(input);

@@ -9,6 +9,12 @@
 #include <string>
 
 #include "andros/input/sdl_input.hpp"
+#include "andros/link/fault_link.hpp"
+#include "andros/mapping/loader.hpp"
+#include "andros/record/record_sink.hpp"
+#include "andros/record/recorded_loop.hpp"
+#include "andros/run/engine_frames.hpp"
+#include "andros/view/status_board.hpp"
 #include "support/log_capture.hpp"
 #include "support/temp_dir.hpp"
 #include "support/virtual_device.hpp"
@@ -141,6 +147,51 @@ TEST_F(PadRolesTest, TwoPadsSdlCannotTellApartAreRefusedAndNeverSwap) {
   tick(input);
   EXPECT_FALSE(state_.connected());
   EXPECT_FALSE(state_.supervisor().connected());
+}
+
+// Issue 33, item 7: through the loop as `run` has it (the flight recorder's
+// input around SDL's), a refusal is what the screen's state line says while
+// it holds, not "connect a controller" (the log's line scrolls away): both
+// pads, then the one left (which may be either), until none is attached.
+TEST_F(PadRolesTest, ARefusalIsSaidOnTheStateLineWhileItHolds) {
+  const andros::testing::LogCapture log;
+  const andros::testing::TempDir dir;
+  std::optional<VirtualDevice> first(twin());
+  std::optional<VirtualDevice> second(twin());
+  SdlInput sdl(by_index());
+  record::SessionWriter writer(std::make_unique<record::FileRecordSink>((dir.path() / "run.session").string()));
+  record::Recorder recorder(writer);
+  record::RecordingInput input(sdl, recorder);
+  const auto frames = run::make_engine_frames(
+      mapping::Engine(mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"), mapping::EngineOptions{}));
+  link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+  VirtualClock clock;
+  run::Bridge bridge(clock, input, *frames, link,
+                     run::BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
+  view::RunStatusBoard board(view::RunStatus{});
+  std::vector<view::RunStatus> seen;
+  bridge.run([&] { return seen.size() >= 6; },
+             [&](const run::TickReport& r) {
+               board.observe(r);
+               if (r.shutting_down()) return;
+               seen.push_back(board.status());
+               if (seen.size() == 2) second.reset();
+               if (seen.size() == 4) first.reset();
+             });
+  writer.close(1000);
+  ASSERT_EQ(seen.size(), 6U);
+  const std::string twins = "2 identical controllers 'Twin Pad' refused: SDL cannot tell them apart";
+  const std::string left = "the operator's controller: 'Twin Pad' refused: SDL cannot tell it from";
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].state, run::OpState::kNoController) << i;
+    const auto& said = seen[i].enable_text;
+    if (i < 2) EXPECT_EQ(said.rfind(twins, 0), 0U) << i << ": " << said;
+    else if (i < 4) EXPECT_EQ(said.rfind(left, 0), 0U) << i << ": " << said;
+    else EXPECT_EQ(said, "connect a controller, then press the deadman") << i;
+  }
+  const auto screen = view::render_run_screen(seen[0], {80, 24}).text();
+  EXPECT_NE(screen.find("state       NO CONTROLLER: 2 identical controllers 'Twin Pad' refused"), std::string::npos)
+      << screen;
 }
 
 // A role that holds its pad keeps it when an identical one appears, but that
