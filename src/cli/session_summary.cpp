@@ -52,7 +52,7 @@ SessionSummary summarize_session(const record::Session& s) {
   count_fires(s, out);
   for (const auto& r : s.stops) {
     if (r.reset) ++out.resets[r.by == run::StopBy::kSupervisor ? 1 : 0];
-    else ++out.stops[static_cast<std::size_t>(r.by)];
+    else if (!r.again) ++out.stops[static_cast<std::size_t>(r.by)];  // stops latched (or made the supervisor's)
   }
   std::array<bool, 2> connected{};
   for (const auto& e : s.events) {

@@ -1,5 +1,6 @@
 #include "andros/input/pad_identity.hpp"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -48,6 +49,28 @@ std::string PadIdentity::fields() const {
     out += (out.empty() ? "" : " ") + std::string(label) + '=' + word(*value);
   }
   return out;
+}
+
+PadId PadRegistry::id_of(const PadIdentity& pad) {
+  if (pad.empty()) return kNoPad;
+  for (const auto& [id, known] : pads_) {
+    if (known.same_pad(pad)) return id;
+  }
+  pads_.emplace_back(++next_, pad);
+  return next_;
+}
+
+const PadIdentity& PadRegistry::identity(PadId id) const {
+  static const PadIdentity kNone;
+  for (const auto& [known_id, known] : pads_) {
+    if (known_id == id) return known;
+  }
+  return kNone;
+}
+
+void PadRegistry::keep(std::initializer_list<PadId> ids) {
+  std::erase_if(pads_,
+                [&ids](const auto& entry) { return std::find(ids.begin(), ids.end(), entry.first) == ids.end(); });
 }
 
 bool parse_pad_fields(std::string_view text, PadIdentity& id) {

@@ -114,16 +114,17 @@ std::string gate(std::int64_t t_ms, std::string_view fault) {
   return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
 }
 namespace {
-std::string pad_json(const input::PadIdentity& pad) {
-  return nlohmann::json{{"name", printable_text(pad.name)},
-                        {"path", printable_text(pad.path)},
-                        {"serial", printable_text(pad.serial)},
-                        {"guid", printable_text(pad.guid)}}
-      .dump();
+std::string pad_json(const input::PadIdentity& pad, bool again = false) {
+  nlohmann::json j{{"name", printable_text(pad.name)},
+                   {"path", printable_text(pad.path)},
+                   {"serial", printable_text(pad.serial)},
+                   {"guid", printable_text(pad.guid)}};
+  if (again) j["again"] = true;
+  return j.dump();
 }
 }  // namespace
-std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad) {
-  return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad);
+std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad, bool again) {
+  return "stop " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad, again);
 }
 std::string reset(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad) {
   return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad);

@@ -76,6 +76,10 @@ void read_stop_pad(Fields& f, StopRecord& r) {
     *field = unescape_text(it->get<std::string>(), f.pos());
   }
   r.name = r.pad.name;
+  if (const auto again = j.find("again"); again != j.end()) {
+    if (!again->is_boolean() || r.reset) throw InputError(f.pos(), "a stop's 'again' is true or false, on a stop only");
+    r.again = again->get<bool>();
+  }
 }
 
 /// A record's time: -1 (before the first tick) up to kMaxSessionMs.

@@ -50,7 +50,12 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     // frame; every change since the last tick counts, not only where it ended.
     input_.begin_tick();
     source_.pump(input_, t_ms);
-    machine_.set_pads(input_.operator_pad().identity(), input_.supervisor().identity());
+    // The pads in each role, as numbers: the machine decides on them; the registry keeps what is said of them.
+    operator_pad_ = pads_.id_of(input_.operator_pad().identity());
+    supervisor_pad_ = pads_.id_of(input_.supervisor().identity());
+    machine_.set_pads(operator_pad_, supervisor_pad_);
+    pads_.keep(
+        {operator_pad_, supervisor_pad_, machine_.stopper_pad(), machine_.reset_pad(), machine_.last_stop_pad()});
     on_request(control.poll());
     for (const auto& fault : input_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
@@ -248,17 +253,17 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.sent = sent;
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
-  r.stopper = machine_.stopper_pad().name;
+  r.stopper = pads_.identity(machine_.stopper_pad()).name;
   r.reset_by = machine_.reset_by();
-  r.stopper_pad = machine_.stopper_pad();
-  r.reset_pad = machine_.reset_pad();
+  r.stopper_pad = pads_.identity(machine_.stopper_pad());
+  r.reset_pad = pads_.identity(machine_.reset_pad());
   r.stop_count = machine_.stop_count();
   r.last_stop = machine_.last_stop();
-  r.last_stop_pad = machine_.last_stop_pad();
+  r.last_stop_pad = pads_.identity(machine_.last_stop_pad());
+  r.last_stop_again = machine_.last_stop_again();
   r.reset_count = machine_.reset_count();
-  r.operator_may_reset = machine_.may_reset(StopBy::kOperator, input_.operator_pad().identity());
-  r.supervisor_may_reset =
-      source_.supervised() && machine_.may_reset(StopBy::kSupervisor, input_.supervisor().identity());
+  r.operator_may_reset = machine_.may_reset(StopBy::kOperator, operator_pad_);
+  r.supervisor_may_reset = source_.supervised() && machine_.may_reset(StopBy::kSupervisor, supervisor_pad_);
   r.entered_by = machine_.entered_by() == OpEvent::kLinkUp ? link_up_cause_ : machine_.entered_by();
   r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
   r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;

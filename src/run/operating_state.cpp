@@ -180,7 +180,7 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
       const auto& pad = by == StopBy::kSupervisor ? supervisor_pad_ : operator_pad_;
       if (!may_reset(by, pad)) return false;
       stopped_by_.reset();
-      stopper_pad_ = {};
+      stopper_pad_ = input::kNoPad;
       reset_by_ = by;
       reset_pad_ = pad;
       ++reset_count_;
@@ -217,7 +217,7 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
   return true;
 }
 
-void OperatingState::note_stop(StopBy by, const input::PadIdentity& pad) {
+void OperatingState::note_stop(StopBy by, input::PadId pad) {
   reset_by_.reset();
   if (state_ == S::kStopping) return;  // the run ends on neutral frames anyway
   const bool latches = !stopped_by_;
@@ -232,19 +232,27 @@ void OperatingState::note_stop(StopBy by, const input::PadIdentity& pad) {
     ++stop_count_;
     last_stop_ = by;
     last_stop_pad_ = pad;
+    last_stop_again_ = !latches && !taken;
   }
 }
 
-bool OperatingState::may_reset(StopBy by, const input::PadIdentity& pad) const {
+bool OperatingState::may_reset(StopBy by, input::PadId pad) const {
   if (state_ != S::kStopped || !stopped_by_) return false;
   // The supervisor resets any stop; the operator its own or the gate's (an internal error the operator saw).
   if (by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor) return false;
   // A role's own stop only from the physical pad that stopped: another pad that took the role did not.
   if (by == StopBy::kSupervisor && stopped_by_ != StopBy::kSupervisor) return true;
-  return pad.same_pad(stopper_pad_);
+  return pad == stopper_pad_;
 }
 
-void OperatingState::set_pads(const input::PadIdentity& operator_pad, const input::PadIdentity& supervisor_pad) {
+bool OperatingState::operator==(const OperatingState& o) const {
+  return state_ == o.state_ && link_up_ == o.link_up_ && controller_up_ == o.controller_up_ &&
+         neutral_due_ == o.neutral_due_ && waiting_ == o.waiting_ && stopped_by_ == o.stopped_by_ &&
+         reset_by_ == o.reset_by_ && entered_by_ == o.entered_by_ && operator_pad_ == o.operator_pad_ &&
+         supervisor_pad_ == o.supervisor_pad_ && stopper_pad_ == o.stopper_pad_ && reset_pad_ == o.reset_pad_;
+}
+
+void OperatingState::set_pads(input::PadId operator_pad, input::PadId supervisor_pad) {
   operator_pad_ = operator_pad;
   supervisor_pad_ = supervisor_pad;
 }

@@ -59,6 +59,7 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
       layer = session.layers[layer_at++].text;
     for (; stop_at < session.stops.size() && session.stops[stop_at].t_ms <= t; ++stop_at) {
       const auto& r = session.stops[stop_at];
+      if (r.again) continue;  // pressed again while stopped: whose the stop is did not change
       stop = r.reset ? std::nullopt : std::optional(r.by);
       reset = r.reset ? std::optional(r.by) : std::nullopt;
     }

@@ -89,6 +89,7 @@ class RecordCursor {
         if (state == run::OpState::kEnabled) reset = nullptr;
       } else if (stop_due) {
         const auto& r = s_.stops[stop_at_++];
+        if (r.again) continue;  // pressed again while stopped: whose the stop is did not change
         stop = r.reset ? nullptr : &r;
         reset = r.reset ? &r : nullptr;
       } else {

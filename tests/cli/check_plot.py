@@ -200,6 +200,8 @@ def band_names():
         t, rest = text.split(" ", 1)
         if kind == "state":
             state = rest
+        elif kind == "stop" and '"again":true' in rest:
+            continue  # pressed again while stopped: whose the stop is did not change
         elif kind == "stop":
             whose = rest.split(" ")[0].strip('"')
             whose = "frame gate" if whose == "frame" else whose

@@ -14,13 +14,18 @@
 namespace andros::test {
 
 /// Who latched a stop, as the contract has it: the supervisor may reset any
-/// stop, the operator only the operator's (and the frame gate's).
+/// stop, the operator only the operator's (and the frame gate's), and only
+/// from the pad that stopped (ISO 13850: no reset by a pad that is not the
+/// stopper's or the supervisor's).
 enum class Stopper : std::uint8_t { kNone, kOperator, kSupervisor, kGate };
 
 class StateOracle {
  public:
   /// link_up: the machine was made with the link up (a replay's sink).
   explicit StateOracle(bool link_up) : link_(link_up) {}
+
+  /// The operator's pad now (another physical pad took the role, or the first came back).
+  void operator_pad(std::uint32_t pad) { operator_pad_ = pad; }
 
   /// Follows one event the machine was given; `before` and `after` are its
   /// state around it, `effect` what it answered, `latched` its stop latch
@@ -43,7 +48,10 @@ class StateOracle {
       case E::kOperatorStop:
       case E::kGateTrip:  // the frame gate stopped a frame: a stop like the button's
         if (!shutdown_) {
-          if (!stop_) stopper_ = event == E::kGateTrip ? Stopper::kGate : Stopper::kOperator;
+          if (!stop_) {
+            stopper_ = event == E::kGateTrip ? Stopper::kGate : Stopper::kOperator;
+            stopper_pad_ = operator_pad_;
+          }
           stop_ = owed_stop_ = true;
         }
         break;
@@ -53,8 +61,11 @@ class StateOracle {
           stop_ = owed_stop_ = true;
         }
         break;
-      case E::kOperatorReset:  // stopped: the operator's own stop (or the gate's) only
-        if (stop_ && before == run::OpState::kStopped && stopper_ != Stopper::kSupervisor) stop_ = false;
+      case E::kOperatorReset:  // stopped: the operator's own stop (or the gate's) only, from the pad that stopped
+        if (stop_ && before == run::OpState::kStopped && stopper_ != Stopper::kSupervisor &&
+            operator_pad_ == stopper_pad_) {
+          stop_ = false;
+        }
         break;
       case E::kSupervisorReset:  // stopped: any stop
         if (stop_ && before == run::OpState::kStopped) stop_ = false;
@@ -121,6 +132,8 @@ class StateOracle {
   bool controller_ = false;
   bool stop_ = false;
   Stopper stopper_ = Stopper::kNone;
+  std::uint32_t operator_pad_ = 1;  // the operator's pad now
+  std::uint32_t stopper_pad_ = 0;   // the operator's pad that stopped
   bool shutdown_ = false;
   bool owed_link_ = false;   // a link lost: rebase once it is back
   bool owed_stop_ = false;   // a stop latched: rebase once it is reset

@@ -336,6 +336,8 @@ TEST(Recorder, WhoStoppedAndWhoResetAreRecordedAndReplayed) {
   EXPECT_EQ(s.stops[0].t_ms, 200);
   EXPECT_EQ(s.stops[0].pad, pad);
   EXPECT_FALSE(s.stops[1].reset);  // pressed again while stopped: recorded, the latch kept
+  EXPECT_TRUE(s.stops[1].again);
+  EXPECT_FALSE(s.stops[0].again);
   EXPECT_EQ(s.stops[1].t_ms, 400);
   EXPECT_TRUE(s.stops[2].reset);
   EXPECT_EQ(s.stops[2].by, run::StopBy::kOperator);

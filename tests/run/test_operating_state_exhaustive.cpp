@@ -18,28 +18,44 @@ namespace andros::run {
 namespace {
 
 /// The depth: every sequence of this many events, and so each shorter one
-/// as its prefix. Fixed by the build, never chosen by speed: 20 events to
-/// depth 8 is 25,600,000,000 sequences per start, of which the walk steps 92
-/// million nodes (a no-op is not walked further: walk()): 4.1 s of CPU (-O2)
-/// on the 2-core machine; depth 9 is some 20 times that. Under the sanitizers
+/// as its prefix. Fixed by the build, never chosen by speed: 21 steps (20
+/// events and a pad swap) to depth 8 is 37,822,859,361 sequences per start, of which the walk
+/// steps 236 million nodes (a no-op is not walked further: walk()): 10.8 s
+/// of CPU (-O2) on the 2-core machine; depth 9 is some 20 times that. Under the sanitizers
 /// (support/sweep.hpp) depth 7: every sequence one event shorter, at about a
 /// tenth of the steps.
 constexpr int kDepth = test::kSanitizedSweep ? 7 : 8;
 
-/// Every event of the enum, read off it, so that an event added is searched too.
-std::vector<OpEvent> all_events() {
-  std::vector<OpEvent> out;
+/// One step of a walk: an event of the machine's, or (swap) another
+/// physical pad taking the operator's role (pad 1 and pad 2 in turn; the
+/// supervisor's is pad 3), which the machine reads as the loop tells it.
+struct Step {
+  OpEvent event{};
+  bool swap = false;
+};
+
+/// Every event of the enum, read off it, so that an event added is searched too; and the swap.
+std::vector<Step> all_events() {
+  std::vector<Step> out;
   for (int i = 0; i <= UINT8_MAX; ++i) {
     const auto event = static_cast<OpEvent>(i);
     if (to_string(event) == "?") break;
-    out.push_back(event);
+    out.push_back({event, false});
   }
+  out.push_back({OpEvent{}, true});
   return out;
 }
+
+std::string to_string(const Step& step) {
+  return step.swap ? "another operator's pad" : std::string(run::to_string(step.event));
+}
+
+constexpr input::PadId kSupervisorPad = 3;
 
 struct Node {
   OperatingState machine;
   test::StateOracle oracle;
+  input::PadId operator_pad = 1;
 
   bool operator==(const Node&) const = default;
 };
@@ -51,7 +67,7 @@ struct Node {
 /// one after its parent, which the walk checks anyway (the two are values,
 /// and each step a function of them and the event). Its sequences are
 /// counted as checked; `walked` counts the nodes actually stepped.
-std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::string& failure, std::uint64_t& walked) {
+std::uint64_t walk(const Node& start, const std::vector<Step>& events, std::string& failure, std::uint64_t& walked) {
   std::vector<Node> path(kDepth + 1, start);
   std::array<std::size_t, kDepth + 1> next{};
   std::array<std::uint64_t, kDepth + 1> below{};  // sequences of kDepth under a node at each depth
@@ -67,12 +83,19 @@ std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::s
       continue;
     }
     const auto d = static_cast<std::size_t>(depth);
-    const OpEvent event = events[next[d]++];
+    const Step step = events[next[d]++];
     Node& node = path[d + 1];
     node = path[d];
-    const OpState before = node.machine.state();
-    const Effect effect = node.machine.on(event);
-    const char* broken = node.oracle.step(event, before, node.machine.state(), effect, node.machine.stop_latched());
+    const char* broken = "";
+    if (step.swap) {
+      node.operator_pad = node.operator_pad == 1 ? 2 : 1;
+      node.machine.set_pads(node.operator_pad, kSupervisorPad);
+      node.oracle.operator_pad(node.operator_pad);
+    } else {
+      const OpState before = node.machine.state();
+      const Effect effect = node.machine.on(step.event);
+      broken = node.oracle.step(step.event, before, node.machine.state(), effect, node.machine.stop_latched());
+    }
     ++walked;
     if (*broken == '\0' && node == path[d]) {
       full += below[d + 1];  // a no-op: what follows it follows its parent too
@@ -81,7 +104,7 @@ std::uint64_t walk(const Node& start, const std::vector<OpEvent>& events, std::s
     if (*broken != '\0') {
       if (failure.empty()) {
         failure = std::string(broken) + " after:";
-        for (std::size_t k = 0; k <= d; ++k) failure += std::string(" ") + std::string(to_string(events[next[k] - 1]));
+        for (std::size_t k = 0; k <= d; ++k) failure += " " + to_string(events[next[k] - 1]);
       }
       continue;  // its longer sequences would only repeat it
     }
@@ -96,12 +119,14 @@ TEST(OperatingStateExhaustive, EverySequenceOfEventsKeepsTheRules) {
   ASSERT_GE(events.size(), 16U);
   // More would say that to_string(OpEvent) no longer answers "?" past the
   // last event, and the walk would never end (256 to the sixth).
-  ASSERT_LE(events.size(), 24U);
+  ASSERT_LE(events.size(), 25U);
   std::uint64_t checked = 0;
   std::uint64_t walked = 0;
   for (const bool link_up : {false, true}) {
     std::string failure;
-    checked += walk(Node{OperatingState(link_up), test::StateOracle(link_up)}, events, failure, walked);
+    Node start{OperatingState(link_up), test::StateOracle(link_up)};
+    start.machine.set_pads(start.operator_pad, kSupervisorPad);
+    checked += walk(start, events, failure, walked);
     EXPECT_EQ(failure, "") << "from the link " << (link_up ? "up" : "down");
   }
   std::uint64_t per_start = 1;
@@ -150,6 +175,18 @@ TEST(StateOracle, CatchesEachBrokenRule) {
   EXPECT_NE(step(good, E::kRelease, S::kEnabled, S::kEnabled, none, false), "");
   EXPECT_EQ(step(good, E::kOperatorStop, S::kEnabled, S::kStopped, changed, true), "");
   EXPECT_NE(step(good, E::kResume, S::kStopped, S::kNotEnabled, rebased, true), "");
+  // A reset from a pad that is not the one that stopped (another took the operator's role): refused.
+  test::StateOracle pads(true);
+  EXPECT_EQ(step(pads, E::kControllerUp, S::kNoController, S::kNotEnabled, changed, false), "");
+  EXPECT_EQ(step(pads, E::kOperatorStop, S::kNotEnabled, S::kStopped, changed, true), "");
+  pads.operator_pad(2);
+  EXPECT_NE(step(pads, E::kOperatorReset, S::kStopped, S::kNotEnabled, rebased, false), "");
+  test::StateOracle back(true);
+  EXPECT_EQ(step(back, E::kControllerUp, S::kNoController, S::kNotEnabled, changed, false), "");
+  EXPECT_EQ(step(back, E::kOperatorStop, S::kNotEnabled, S::kStopped, changed, true), "");
+  back.operator_pad(2);
+  back.operator_pad(1);  // the pad that stopped, back
+  EXPECT_EQ(step(back, E::kOperatorReset, S::kStopped, S::kNotEnabled, rebased, false), "");
 }
 
 }  // namespace

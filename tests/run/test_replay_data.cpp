@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(
         // A stop is reset by the book: on the pad that stopped (or the supervisor's), deliberately.
         Case{"stop_reset_by_the_book", "stops.yaml"}, Case{"supervisor_stop_not_reset_by_the_operator", "stops.yaml"},
         // Issue 33: a stop button held is never a reset; nothing moves while it is held.
-        Case{"supervisor_stop_held_never_drives", "issue33.yaml"},
+        Case{"supervisor_stop_held_never_drives", "issue33.yaml"}, Case{"another_pad_cannot_reset", "stops.yaml"},
         // A stop outlives its own tick; a panic ends only with a full release.
         Case{"stop_tapped_within_a_tick", ANDROS_MAPPINGS_DIR "/hd1.yaml"},
         Case{"stop_tapped_as_the_supervisor_returns", ANDROS_MAPPINGS_DIR "/hd1.yaml"},

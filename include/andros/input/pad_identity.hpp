@@ -4,8 +4,12 @@
 /// script's `connect {path=... serial=... guid=...} NAME`. A stop is reset
 /// only from the same physical pad that stopped, or by the supervisor.
 
+#include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace andros::input {
 
@@ -29,6 +33,27 @@ struct PadIdentity {
   /// The identity's fields that are not the name, as a script writes them in
   /// braces: "path=P serial=S guid=G" (each only when known); "" for none.
   [[nodiscard]] std::string fields() const;
+};
+
+/// A physical pad as a small number (PadId), so that the operating state
+/// keeps numbers, not names: the same pad (PadIdentity::same_pad) is given
+/// the number it had while that number is kept. Only the pads kept (keep())
+/// are remembered: a run that sees a million pads holds a handful.
+using PadId = std::uint32_t;
+inline constexpr PadId kNoPad = 0;
+
+class PadRegistry {
+ public:
+  /// The pad's number: a kept one's when it is the same pad, else a new one; kNoPad for no pad.
+  PadId id_of(const PadIdentity& pad);
+  /// What is known of the pad (empty for kNoPad or one no longer kept).
+  [[nodiscard]] const PadIdentity& identity(PadId id) const;
+  /// Forgets every pad but these.
+  void keep(std::initializer_list<PadId> ids);
+
+ private:
+  std::vector<std::pair<PadId, PadIdentity>> pads_;
+  PadId next_ = kNoPad;
 };
 
 /// Reads fields() back into id (its name untouched); false: not such a text.

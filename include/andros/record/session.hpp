@@ -110,7 +110,8 @@ std::string gate(std::int64_t t_ms, std::string_view fault);
 /// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
 /// PAD as JSON: name, path, serial, guid, each as printable_text() writes
 /// it (text from a controller's descriptors may be any bytes).
-std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad);
+/// again: pressed while stopped, the latch and whose it is unchanged (`"again":true` in PAD).
+std::string stop(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad, bool again = false);
 std::string reset(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& pad);
 std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
@@ -175,7 +176,7 @@ struct StateRecord {
 };
 
 /// `stop T operator|supervisor|gate "NAME" {PAD}` (whose stop latched, or
-/// became whose, or was pressed again while latched; the gate's: the frame
+/// became whose, or was pressed again while latched (`"again":true`); the gate's: the frame
 /// gate tripped), `reset T operator|supervisor "NAME" {PAD}` (who reset it),
 /// PAD the physical pad's identity as JSON (path, serial, guid). Sessions
 /// of earlier versions have no PAD, and a reset no NAME.
@@ -185,6 +186,8 @@ struct StopRecord {
   run::StopBy by = run::StopBy::kOperator;
   std::string name;          ///< the controller's name
   input::PadIdentity pad{};  ///< the physical pad that pressed it (empty: not recorded, or the gate's)
+  /// A stop pressed again while stopped: recorded, but the latch and whose it is are unchanged.
+  bool again = false;
 };
 
 struct EndRecord {

@@ -84,6 +84,7 @@ struct TickReport {
   std::uint32_t stop_count = 0;      ///< stop presses so far (OperatingState::stop_count): a new one is recorded
   std::optional<StopBy> last_stop;   ///< the last of them: whose
   input::PadIdentity last_stop_pad;  ///< and the pad
+  bool last_stop_again = false;      ///< and it came while stopped, the latch and its owner unchanged
   std::uint32_t reset_count = 0;     ///< resets so far
   /// Stopped: a reset gesture completed now on the operator's pad (the
   /// supervisor's) would reset the stop; false on the operator's when the
@@ -252,6 +253,9 @@ class Bridge {
   // For the report's first cause (TickReport::entered_by).
   bool supervisor_back_ = false;
   bool reload_refused_ = false;
+  input::PadRegistry pads_;  ///< the physical pads the machine knows by number
+  input::PadId operator_pad_ = input::kNoPad;
+  input::PadId supervisor_pad_ = input::kNoPad;
   bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
   /// The first cause for the state the last kLinkUp brought: kLinkUp for a link regained (TickReport::entered_by).
   std::optional<OpEvent> link_up_cause_;

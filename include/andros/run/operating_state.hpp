@@ -118,24 +118,28 @@ class OperatingState {
   /// Who reset the last stop, until the next stop or the bridge enabled again.
   [[nodiscard]] std::optional<StopBy> reset_by() const { return reset_by_; }
   /// The physical pad whose stop is latched (the operator's pad at a gate's trip).
-  [[nodiscard]] const input::PadIdentity& stopper_pad() const { return stopper_pad_; }
+  [[nodiscard]] input::PadId stopper_pad() const { return stopper_pad_; }
   /// The pad that reset the last stop (with reset_by).
-  [[nodiscard]] const input::PadIdentity& reset_pad() const { return reset_pad_; }
+  [[nodiscard]] input::PadId reset_pad() const { return reset_pad_; }
   /// Stop presses so far: each stop that latched, made the stop another's,
   /// or was pressed again while stopped (what the session records, each once).
   [[nodiscard]] std::uint32_t stop_count() const { return stop_count_; }
   /// The last of them: whose, and the pad.
   [[nodiscard]] std::optional<StopBy> last_stop() const { return last_stop_; }
-  [[nodiscard]] const input::PadIdentity& last_stop_pad() const { return last_stop_pad_; }
+  [[nodiscard]] input::PadId last_stop_pad() const { return last_stop_pad_; }
+  /// The last of them came while stopped and changed neither the latch nor whose it is.
+  [[nodiscard]] bool last_stop_again() const { return last_stop_again_; }
   /// Resets so far.
   [[nodiscard]] std::uint32_t reset_count() const { return reset_count_; }
   /// Whether a reset gesture completed now by `by` on `pad` would reset the
   /// latched stop: stopped; the supervisor's any stop, the operator's only
   /// the operator's or the gate's; and a stop by a role only from the pad that stopped.
-  [[nodiscard]] bool may_reset(StopBy by, const input::PadIdentity& pad) const;
+  [[nodiscard]] bool may_reset(StopBy by, input::PadId pad) const;
   /// The pads in each role now (the loop tells the machine each tick, before
   /// its events): a stop is the pad's that pressed it, a reset the pad's that made it.
-  void set_pads(const input::PadIdentity& operator_pad, const input::PadIdentity& supervisor_pad);
+  void set_pads(input::PadId operator_pad, input::PadId supervisor_pad);
+  /// The same machine: the counts and the last press, which are for the record and decide nothing, aside.
+  bool operator==(const OperatingState& other) const;
   /// The event that brought the machine into its state (the first cause of
   /// "not enabled": a link regained, a reload, a resume, a reset...); none at the start.
   [[nodiscard]] std::optional<OpEvent> entered_by() const { return entered_by_; }
@@ -162,8 +166,6 @@ class OperatingState {
   /// The whole table, for docs and tests.
   static std::span<const Transition> table();
 
-  bool operator==(const OperatingState&) const = default;
-
  private:
   [[nodiscard]] OpState settled() const;
   /// The event through the conditions and its row; false: it had no row.
@@ -180,17 +182,18 @@ class OperatingState {
   std::optional<StopBy> stopped_by_;  ///< a stop is latched, and whose
   std::optional<StopBy> reset_by_;
   std::optional<OpEvent> entered_by_;
-  input::PadIdentity operator_pad_;  ///< the pads in each role now (set_pads)
-  input::PadIdentity supervisor_pad_;
-  input::PadIdentity stopper_pad_;
-  input::PadIdentity reset_pad_;
+  input::PadId operator_pad_ = input::kNoPad;  ///< the pads in each role now (set_pads)
+  input::PadId supervisor_pad_ = input::kNoPad;
+  input::PadId stopper_pad_ = input::kNoPad;
+  input::PadId reset_pad_ = input::kNoPad;
   std::uint32_t stop_count_ = 0;
   std::optional<StopBy> last_stop_;
-  input::PadIdentity last_stop_pad_;
+  input::PadId last_stop_pad_ = input::kNoPad;
+  bool last_stop_again_ = false;
   std::uint32_t reset_count_ = 0;
 
   /// A stop by `by` from `pad`: latches, or makes the stop the supervisor's, or is pressed again.
-  void note_stop(StopBy by, const input::PadIdentity& pad);
+  void note_stop(StopBy by, input::PadId pad);
 };
 
 std::string_view to_string(OpState state);
