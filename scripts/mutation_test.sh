@@ -37,7 +37,7 @@ mutations=(
   "a stop button held does not hold off a reset|src/mapping/stop_buttons.cpp|s/out.pressed.any\(\) \|\| down\(op, operator_\) \|\| down\(sup, supervisor_\)/out.pressed.any()/"
   "issue 33: a stop button let go and held 2 s resets|src/mapping/stop_buttons.cpp|s/supervisor_reset_.keys = keys_of\(mapping.supervisor->reset\);/supervisor_reset_.keys = {mapping.supervisor->stop.key};/; s/operator_reset_.keys = keys_of\(mapping.stop_reset\);/if (mapping.estop) operator_reset_.keys = {mapping.estop->key};/; s/const bool blocked = out.pressed.any\(\) \|\| down\(op, operator_\) \|\| down\(sup, supervisor_\) \|\| deadman_touched;/const bool blocked = deadman_touched;/; s/return fresh \|\| down\(pad, b\);/return fresh;/"
   "a stop button held stops only when pressed|src/mapping/stop_buttons.cpp|s/return fresh \|\| down\(pad, b\);/return fresh;/"
-  "another pad of the role resets the stop|src/run/operating_state.cpp|s/return pad.same_pad\(stopper_pad_\);/return true;/"
+  "another pad of the role resets the stop|src/run/operating_state.cpp|s/return pad == stopper_pad_;/return true;/"
   "the operator resets any stop, the supervisor's too|src/run/operating_state.cpp|s/if \(by == StopBy::kOperator && stopped_by_ == StopBy::kSupervisor\) return false;/if (by == StopBy::kOperator) return true;/"
   "the supervisor's stop button ignored|src/mapping/stop_buttons.cpp|s/const bool by_supervisor = take\(input.supervisor\(\), supervisor_\);/const bool by_supervisor = take(input.supervisor(), supervisor_) \&\& false;/"
 )
