@@ -75,9 +75,17 @@ std::string speed_note(const mapping::Mapping& m) {
   return out;
 }
 
-/// How long a stop button is held to reset a stop: "2 s".
+/// How long a reset is held: "2 s".
 std::string reset_hold(const mapping::Mapping& m) {
   return figure(static_cast<double>(m.stop_reset_hold_ms) / 1000) + " s";
+}
+
+/// A reset gesture as the sheet says it: "Back and Start held together 2 s"; "" for none.
+std::string reset_words(const std::vector<mapping::InputUse>& reset, const mapping::Mapping& m) {
+  if (reset.empty()) return {};
+  std::string out = label(reset.front().key);
+  for (std::size_t i = 1; i < reset.size(); ++i) out += " and " + label(reset[i].key);
+  return out + (reset.size() > 1 ? " held together " : " held ") + reset_hold(m);
 }
 
 }  // namespace
@@ -127,9 +135,11 @@ std::vector<std::string> sheet_notes(const mapping::Mapping& m) {
   }
   if (m.supervisor) {
     // On the second controller: not drawn on the operator's pad, said here.
-    std::string text = "Supervisor's controller (run --supervisor): " + label(m.supervisor->stop.key) +
-                       " stops (latched; released, then held " + reset_hold(m) +
-                       ", it resets any stop; then the deadman pressed afresh)";
+    const auto reset = reset_words(m.supervisor->reset, m);
+    std::string text =
+        "Supervisor's controller (run --supervisor): " + label(m.supervisor->stop.key) +
+        " stops (latched; it never resets)" +
+        (reset.empty() ? "; it has no reset" : "; " + reset + " resets any stop (then the deadman pressed afresh)");
     if (m.supervisor->weapons_consent) {
       text += "; " + label(m.supervisor->weapons_consent->key) +
               " held is the weapons consent (a two-person rule: pressed after the weapons became possible)";
@@ -137,10 +147,13 @@ std::vector<std::string> sheet_notes(const mapping::Mapping& m) {
     out.push_back(text + ". Losing either controller stops motion.");
   }
   if (m.estop) {
+    const auto reset = reset_words(m.stop_reset, m);
     out.push_back("STOP: a press of " + label(m.estop->key) +
-                  " stops the vehicle; it stays stopped until reset on the controller that stopped: release " +
-                  label(m.estop->key) + ", then hold it " + reset_hold(m) +
-                  " with the deadman released; then press the deadman afresh.");
+                  " (or holding it) stops the vehicle, whenever; it stays stopped until reset on the controller "
+                  "that stopped: " +
+                  (reset.empty() ? std::string("this mapping has no stop_reset (the supervisor resets, or restart)")
+                                 : "release every stop button and the deadman, then " + reset) +
+                  "; then press the deadman afresh.");
   }
   if (m.enable_timeout_ms) {
     char timeout[160];

@@ -174,9 +174,9 @@ TEST(Sheet, NotesGiveTheSupervisorsButtons) {
       has("Weapons fire only when the run has --weapons, the deadman (LB) is held and the arming input "
           "(RB) is held, and the supervisor holds its consent."));
   EXPECT_TRUE(
-      has("Supervisor's controller (run --supervisor): X stops (latched; released, then held 2 s, it resets any "
-          "stop; then the deadman pressed afresh); A held is the weapons consent (a two-person rule: pressed after "
-          "the weapons became possible). Losing either controller stops motion."));
+      has("Supervisor's controller (run --supervisor): X stops (latched; it never resets); Back and Start held "
+          "together 2 s resets any stop (then the deadman pressed afresh); A held is the weapons consent (a "
+          "two-person rule: pressed after the weapons became possible). Losing either controller stops motion."));
   EXPECT_NE(render_sheet_text(s).find("Supervisor's controller"), std::string::npos);
   EXPECT_NE(render_sheet_svg(s).find("Supervisor"), std::string::npos);
   for (const auto& n : kinds_sheet().notes) EXPECT_EQ(n.find("upervisor"), std::string::npos) << n;
@@ -191,9 +191,9 @@ TEST(Sheet, TheStopNoteIsTheResetHold) {
             std::string::npos)
       << text;
   EXPECT_NE(std::find(s.notes.begin(), s.notes.end(),
-                      "STOP: a press of Guide stops the vehicle; it stays stopped until reset on the controller that "
-                      "stopped: release Guide, then hold it 2 s with the deadman released; then press the deadman "
-                      "afresh."),
+                      "STOP: a press of Guide (or holding it) stops the vehicle, whenever; it stays stopped until "
+                      "reset on the controller that stopped: release every stop button and the deadman, then Back "
+                      "and Start held together 2 s; then press the deadman afresh."),
             s.notes.end());
   EXPECT_EQ(text.find("deadman are released"), std::string::npos) << text;
   EXPECT_EQ(render_sheet_svg(s).find("deadman are released"), std::string::npos);
