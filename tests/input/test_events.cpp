@@ -124,6 +124,56 @@ TEST(EventScript, AControllerNameIsOneLineOfPrintableText) {
   }
 }
 
+// Which physical pad a connect is: `{path=P serial=S guid=G}` before the
+// name, written and read back, hostile bytes and spaces escaped; a name that
+// begins with a brace is not taken for one.
+TEST(EventScript, AConnectNamesItsPhysicalPad) {
+  InputEvent connect;
+  connect.type = T::kConnect;
+  connect.name = "Pad \xFF";
+  connect.device = PadIdentity{"", "/dev/input/event 5", "S/N\n7", "030000005e040000"}.fields();
+  const auto line = format_event(connect);
+  EXPECT_EQ(line, "0       connect     {path=/dev/input/event\\x205 serial=S/N\\n7 guid=030000005e040000} Pad \\xFF");
+  const auto back = parse_event_script(line + "\n", "x.events").at(0);
+  EXPECT_EQ(back.name, "Pad \xFF");
+  EXPECT_EQ(back.device, connect.device);
+  InputState state;
+  state.apply(back);
+  EXPECT_EQ(state.operator_pad().identity(),
+            (PadIdentity{"Pad \xFF", "/dev/input/event 5", "S/N\n7", "030000005e040000"}));
+  // A name that begins with a brace stays a name.
+  connect.device.clear();
+  connect.name = "{guid=1} Pad";
+  EXPECT_EQ(format_event(connect), "0       connect     \\x7bguid=1} Pad");
+  const auto named = parse_event_script(format_event(connect) + "\n", "x.events").at(0);
+  EXPECT_EQ(named.name, "{guid=1} Pad");
+  EXPECT_EQ(named.device, "");
+  // Fields that are not an identity are refused at their line.
+  EXPECT_THROW(parse_event_script("0 connect {colour=red} Pad\n", "x.events"), InputError);
+  EXPECT_THROW(parse_event_script("0 connect {path=/dev/x Pad\n", "x.events"), InputError);
+}
+
+// The same physical pad, as far as can be told: a serial on both decides with
+// the GUID; without, the path, GUID and name together (a new path is another pad).
+TEST(PadIdentity, TheSamePadOnlyWhenItCanBeTold) {
+  const PadIdentity a{"Pad", "/dev/input/event5", "", "0300"};
+  EXPECT_TRUE(a.same_pad(a));
+  EXPECT_FALSE(a.same_pad(PadIdentity{"Pad", "/dev/input/event6", "", "0300"}));
+  EXPECT_FALSE(a.same_pad(PadIdentity{"Pad 2", "/dev/input/event5", "", "0300"}));
+  const PadIdentity s{"Pad", "/dev/input/event5", "SN1", "0300"};
+  EXPECT_TRUE(s.same_pad(PadIdentity{"Pad", "/dev/input/event9", "SN1", "0300"}));  // replugged elsewhere
+  EXPECT_FALSE(s.same_pad(PadIdentity{"Pad", "/dev/input/event5", "SN2", "0300"}));
+  EXPECT_FALSE(s.same_pad(a));  // one with a serial, one without: not told to be the same
+  PadRegistry pads;
+  const auto first = pads.id_of(s);
+  EXPECT_EQ(pads.id_of(PadIdentity{"Pad", "/dev/input/event9", "SN1", "0300"}), first);
+  EXPECT_NE(pads.id_of(a), first);
+  EXPECT_EQ(pads.id_of(PadIdentity{}), kNoPad);
+  pads.keep({first});
+  EXPECT_EQ(pads.identity(first), s);
+  EXPECT_TRUE(pads.identity(first + 1).empty());  // forgotten
+}
+
 TEST(EventScript, AControllerNameWithARawControlByteIsRefused) {
   const auto error = [](const std::string& script) {
     try {
