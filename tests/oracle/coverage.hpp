@@ -56,7 +56,7 @@ struct OracleCoverage {
   std::int64_t supervisor_stops = 0;   ///< presses of a supervisor's stop button
   std::int64_t operator_resets = 0;    ///< stops reset by the operator's hold
   std::int64_t supervisor_resets = 0;  ///< stops reset by the supervisor's hold
-  std::int64_t refused_resets = 0;     ///< the operator's holds done on the supervisor's stop
+  std::int64_t refused_resets = 0;  ///< resets made and refused: the operator's of the supervisor's stop, another pad's
   std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
   std::int64_t gated = 0;              ///< frames offered to the link, each checked by the frame gate
   std::int64_t rest_held = 0;          ///< enabled frames where the rest rule held drive or pivot at the trim

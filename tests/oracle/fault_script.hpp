@@ -24,6 +24,7 @@
 // deadman let go and pressed again, or the trigger squeezed past its panic
 // point and back, within one frame.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -167,10 +168,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   // stopped, where a reset gesture is read: a gesture is made neither while
   // suspended (it is resumed first) nor within a second of a reload, a suspend or a resume.
   const auto settled_for_a_reset = [&] {
-    for (auto it = events.rbegin(); it != events.rend(); ++it) {
-      if (it->type == T::kSuspend) add(T::kResume);
-      if (it->type == T::kSuspend || it->type == T::kResume) break;
-    }
+    const auto last = std::find_if(events.rbegin(), events.rend(), [](const input::InputEvent& e) {
+      return e.type == T::kSuspend || e.type == T::kResume;
+    });
+    if (last != events.rend() && last->type == T::kSuspend) add(T::kResume);  // (adding may move the events)
     for (auto it = events.rbegin(); it != events.rend() && it->t_ms > t - 1000; ++it) {
       if (it->type == T::kReload || it->type == T::kSuspend || it->type == T::kResume) {
         t = it->t_ms + 1000 + pick.below(100);

@@ -215,8 +215,8 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "held at it by the rest rule\n",
       static_cast<long long>(coverage.trimmed), static_cast<long long>(coverage.rest_held));
   std::printf(
-      "fault simulation: %lld stops reset by the operator and %lld by the supervisor (%lld operator's holds on "
-      "the supervisor's stop refused)\n",
+      "fault simulation: %lld stops reset by the operator and %lld by the supervisor (%lld resets refused: the "
+      "operator's of the supervisor's stop, or from a pad that did not stop)\n",
       static_cast<long long>(coverage.operator_resets), static_cast<long long>(coverage.supervisor_resets),
       static_cast<long long>(coverage.refused_resets));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
