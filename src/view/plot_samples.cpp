@@ -4,11 +4,13 @@
 // to, and one, sending nothing, where the loop skipped ticks (a stall); never
 // one a tick, so that the work is the records', whatever the session's length.
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 #include "andros/timing/rate.hpp"
 #include "andros/view/plot.hpp"
 #include "plot_page.hpp"
+#include "record_cursor.hpp"
 
 namespace andros::view {
 
@@ -24,6 +26,7 @@ using plot_detail::tick_at_or_after;
 
 /// Who stopped, as the plot labels it.
 std::string stopper(std::optional<run::StopBy> by) { return by ? std::string(run::to_string(*by)) : std::string(); }
+std::string stopper(const record::StopRecord* r) { return r != nullptr ? stopper(r->by) : std::string(); }
 
 }  // namespace
 
@@ -42,33 +45,13 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
   const timing::FrameClock clock(session.settings.rate_millihertz);
   const auto& frames = session.frames;
   const std::int64_t last = session.end ? session.end->last_tick : (frames.empty() ? -1 : frames.back().tick);
-  std::size_t state_at = 0;
-  std::size_t layer_at = 0;
-  std::size_t stop_at = 0;
-  run::OpState state = run::OpState::kNoLink;
-  std::string layer;
-  std::optional<run::StopBy> stop;
-  std::optional<run::StopBy> reset;  // who reset the last stop: until the next stop or enabled (TickReport's)
-  // The state, layer and stop in effect at tick's time.
-  const auto catch_up = [&](std::int64_t t) {
-    for (; state_at < session.states.size() && session.states[state_at].t_ms <= t; ++state_at) {
-      state = session.states[state_at].state;
-      if (state == run::OpState::kEnabled) reset.reset();
-    }
-    while (layer_at < session.layers.size() && session.layers[layer_at].t_ms <= t)
-      layer = session.layers[layer_at++].text;
-    for (; stop_at < session.stops.size() && session.stops[stop_at].t_ms <= t; ++stop_at) {
-      const auto& r = session.stops[stop_at];
-      if (r.again) continue;  // pressed again while stopped: whose the stop is did not change
-      stop = r.reset ? std::nullopt : std::optional(r.by);
-      reset = r.reset ? std::optional(r.by) : std::nullopt;
-    }
-  };
+  // The state, layer and stop in effect at a tick's time; who reset the last stop until the next stop or enabled.
+  RecordCursor records(session);
   const auto sample = [&](const record::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
     const std::int64_t t = clock.time_of(tick);
-    catch_up(t);
-    out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, state, layer, stopper(stop),
-                             stopper(reset), ticks});
+    records.at(t);
+    out.push_back(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, records.state, records.layer,
+                             stopper(records.stop), stopper(records.reset), ticks});
   };
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
@@ -77,13 +60,10 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
     while (from <= through) {
       // To the tick before the next state or layer change inside this record, or its end.
       std::int64_t next = through + 1;
-      const std::int64_t t = clock.time_of(from);
-      catch_up(t);
-      if (state_at < session.states.size())
-        next = std::min(next, tick_at_or_after(clock, session.states[state_at].t_ms));
-      if (layer_at < session.layers.size())
-        next = std::min(next, tick_at_or_after(clock, session.layers[layer_at].t_ms));
-      if (stop_at < session.stops.size()) next = std::min(next, tick_at_or_after(clock, session.stops[stop_at].t_ms));
+      records.at(clock.time_of(from));
+      if (const auto change = records.next_change(); change != std::numeric_limits<std::int64_t>::max()) {
+        next = std::min(next, tick_at_or_after(clock, change));
+      }
       next = std::max(next, from + 1);
       sample(f, from, next - from == 1 ? 1 : next - from - 1);
       if (next - from > 1) sample(f, next - 1, 1);  // where it holds to: a step, not a slope
@@ -92,8 +72,9 @@ std::vector<PlotSample> plot_samples(const record::Session& session) {
     if (i + 1 < frames.size() && frames[i + 1].gap > 0) {
       // The ticks the loop did not run: nothing went out, the line breaks.
       const std::int64_t t = clock.time_of(through + 1);
-      catch_up(t);
-      out.push_back(PlotSample{t, {}, false, state, layer, stopper(stop), stopper(reset), 0});
+      records.at(t);
+      out.push_back(
+          PlotSample{t, {}, false, records.state, records.layer, stopper(records.stop), stopper(records.reset), 0});
     }
   }
   return out;

@@ -15,6 +15,7 @@
 #include "andros/protocol/signals.hpp"
 #include "andros/timing/rate.hpp"
 #include "andros/view/held_inputs.hpp"
+#include "record_cursor.hpp"
 
 namespace andros::view {
 namespace {
@@ -67,54 +68,18 @@ std::string pad_text(const record::StopRecord* r) {
   return pad.empty() ? "" : pad.describe();
 }
 
-/// What the records say at each tick: taken in time order.
-class RecordCursor {
- public:
-  explicit RecordCursor(const record::Session& s) : s_(s) {
-    // A shutdown request: SIGINT's or SIGTERM's request record, or an event script's `stop`, which stands for one.
-    for (const auto& r : s.requests) {
-      if (r.text == "stop") shutdown_from_ = std::min(shutdown_from_, r.t_ms);
-    }
-    for (const auto& e : s.events) {
-      if (e.type == input::InputEvent::Type::kShutdown) shutdown_from_ = std::min(shutdown_from_, e.t_ms);
-    }
+/// A shutdown asked for (SIGINT's or SIGTERM's request record, or an event
+/// script's `stop`, which stands for one): from when; the largest time for none.
+std::int64_t shutdown_from(const record::Session& s) {
+  std::int64_t from = std::numeric_limits<std::int64_t>::max();
+  for (const auto& r : s.requests) {
+    if (r.text == "stop") from = std::min(from, r.t_ms);
   }
-  void at(std::int64_t t) {
-    // The states and the stops in time order: an enable ends who reset.
-    for (;;) {
-      const bool state_due = state_at_ < s_.states.size() && s_.states[state_at_].t_ms <= t;
-      const bool stop_due = stop_at_ < s_.stops.size() && s_.stops[stop_at_].t_ms <= t;
-      if (state_due && (!stop_due || s_.states[state_at_].t_ms <= s_.stops[stop_at_].t_ms)) {
-        state = s_.states[state_at_++].state;
-        if (state == run::OpState::kEnabled) reset = nullptr;
-      } else if (stop_due) {
-        const auto& r = s_.stops[stop_at_++];
-        if (r.again) continue;  // pressed again while stopped: whose the stop is did not change
-        stop = r.reset ? nullptr : &r;
-        reset = r.reset ? &r : nullptr;
-      } else {
-        break;
-      }
-    }
-    while (layer_at_ < s_.layers.size() && s_.layers[layer_at_].t_ms <= t) layer = s_.layers[layer_at_++].text;
-    t_ = t;
+  for (const auto& e : s.events) {
+    if (e.type == input::InputEvent::Type::kShutdown) from = std::min(from, e.t_ms);
   }
-  /// Shutting down on a shutdown request.
-  [[nodiscard]] bool shutdown_requested() const { return t_ >= shutdown_from_ && state == run::OpState::kStopping; }
-
-  run::OpState state = run::OpState::kNoLink;
-  std::string layer;
-  const record::StopRecord* stop = nullptr;   ///< the stop latched: until its reset
-  const record::StopRecord* reset = nullptr;  ///< the last stop's reset: until the next stop or an enable
-
- private:
-  const record::Session& s_;
-  std::size_t state_at_ = 0;
-  std::size_t stop_at_ = 0;
-  std::size_t layer_at_ = 0;
-  std::int64_t t_ = 0;
-  std::int64_t shutdown_from_ = std::numeric_limits<std::int64_t>::max();
-};
+  return from;
+}
 
 /// The session's controller events read with the mapping in effect (the
 /// recorded one, each ok reload's from its time), row by row: an input
@@ -193,6 +158,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
   }
   const timing::FrameClock clock(s.settings.rate_millihertz);
   RecordCursor records(s);
+  const std::int64_t shutdown = shutdown_from(s);
   std::vector<Cell> cells;
   const std::int64_t last = s.end ? s.end->last_tick : (s.frames.empty() ? -1 : s.frames.back().tick);
   for (std::size_t i = 0; i < s.frames.size(); ++i) {
@@ -209,7 +175,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
                pad_text(records.stop),
                std::string(stopper_text(records.reset)),
                pad_text(records.reset),
-               std::int64_t{records.shutdown_requested()},
+               std::int64_t{t >= shutdown && records.state == run::OpState::kStopping},
                printable_text(records.layer),
                std::string(record::result_name(f))};
       const auto since = inputs ? std::optional(inputs->since_last(t)) : std::nullopt;
