@@ -22,6 +22,8 @@ StopButtons::StopButtons(const Mapping& mapping) : hold_ms_(mapping.stop_reset_h
     supervisor_.key = mapping.supervisor->stop.key;
     supervisor_reset_.keys = keys_of(mapping.supervisor->reset);
   }
+  operator_gesture_ = gesture_text(operator_reset_.keys);
+  supervisor_gesture_ = gesture_text(supervisor_reset_.keys);
 }
 
 void StopButtons::start(const input::InputState& input, bool at_start_up) {
@@ -98,14 +100,17 @@ bool StopButtons::tick(const input::PadState& pad, Reset& r, bool blocked, std::
     r.releases[i] = now.releases;
   }
   if (blocked) {
-    // A stop pressed or held, or the deadman touched: the hold ends, and the gesture is made again from the start.
-    r.open = false;
+    // A stop pressed or held, or the deadman touched: the hold ends, and a gesture still made is made again.
+    r.open = !made;
     r.hold_since.reset();
+    return false;
   }
   // Let go (even let go and made again between two ticks): the hold ends, and a making now is afresh.
-  if (!made || let_go) r.hold_since.reset();
-  if (!made || (let_go && !blocked)) r.open = true;
-  if (blocked || !made || !r.open) return false;
+  if (!made || let_go) {
+    r.open = true;
+    r.hold_since.reset();
+  }
+  if (!made || !r.open) return false;
   if (!r.hold_since) r.hold_since = now_ms;
   if (now_ms - *r.hold_since < hold_ms_) return false;
   r.hold_since.reset();
@@ -140,8 +145,8 @@ std::string gesture_text(const std::vector<input::InputKey>& keys) {
 }
 
 void StopButtons::held(const input::InputState& input, EngineStatus& status) const {
-  status.operator_reset = gesture_text(operator_reset_.keys);
-  status.supervisor_reset = gesture_text(supervisor_reset_.keys);
+  status.operator_reset = operator_gesture_;
+  status.supervisor_reset = supervisor_gesture_;
   status.reset_hold_ms = hold_ms_;
   status.reset_hold.reset();  // a stopped tick's (StoppedTick::hold)
   status.supervisor_stop = down(input.supervisor(), supervisor_);

@@ -253,7 +253,6 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.sent = sent;
   r.state = machine_.state();
   r.stopped_by = machine_.stopped_by();
-  r.stopper = pads_.identity(machine_.stopper_pad()).name;
   r.reset_by = machine_.reset_by();
   r.stopper_pad = pads_.identity(machine_.stopper_pad());
   r.reset_pad = pads_.identity(machine_.reset_pad());

@@ -17,9 +17,8 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.refusal, r.state,
-                  r.stopped_by, r.stopper, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine,
-                  r.link.state, r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed,
-                  r.link.detail);
+                  r.stopped_by, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
+                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed, r.link.detail);
 }
 
 }  // namespace
@@ -257,7 +256,7 @@ std::string stopped_by_text(const run::TickReport& r) {
     return "stopped by the frame gate (an internal error: a frame broke a safety rule; see the log)";
   }
   return "stopped by the " + std::string(run::to_string(*r.stopped_by)) + " (" +
-         (r.stopper.empty() ? std::string("controller") : printable_text(r.stopper)) + ")";
+         (r.stopper_pad.name.empty() ? std::string("controller") : printable_text(r.stopper_pad.name)) + ")";
 }
 
 std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {

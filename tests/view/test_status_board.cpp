@@ -342,7 +342,7 @@ TEST(RunStatusBoard, StoppedSaysWhoMayResetAndHowOrHowToGoOn) {
   r.state = run::OpState::kStopped;
   r.stopped_by = run::StopBy::kOperator;
   r.controller = "Pad A";
-  r.stopper = "Pad A";
+  r.stopper_pad.name = "Pad A";
   r.connected = true;
   r.engine.operator_reset = "back+start";
   r.engine.supervisor_reset = "back+start";
@@ -392,7 +392,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.engine.operator_reset = "back+start";
   r.engine.supervisor_reset = "back+start";
   r.engine.reset_hold_ms = 2000;
-  r.stopper = "Pad B";
+  r.stopper_pad.name = "Pad B";
   board.observe(r);
   auto s = board.status();
   EXPECT_EQ(s.stopped_by, "stopped by the supervisor (Pad B)");
@@ -411,7 +411,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 120;
   r.state = run::OpState::kNotEnabled;
   r.stopped_by.reset();
-  r.stopper.clear();
+  r.stopper_pad = {};
   r.reset_by = run::StopBy::kSupervisor;
   r.engine.enable = mapping::EnableState::kDeadmanReleased;
   board.observe(r);
@@ -422,7 +422,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.state = run::OpState::kStopped;
   r.reset_by.reset();
   r.stopped_by = run::StopBy::kOperator;
-  r.stopper = "pad";
+  r.stopper_pad.name = "pad";
   r.operator_may_reset = true;
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
@@ -430,7 +430,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.t_ms = 200;
   r.connected = false;
   r.controller.clear();
-  r.stopper_pad = input::PadIdentity{"pad", "", "", ""};  // r.stopper stays "pad"
+  // r.stopper_pad stays the pad that stopped
   r.operator_may_reset = false;
   board.observe(r);
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");

@@ -82,6 +82,8 @@ class StopButtons {
   Button supervisor_;
   Reset operator_reset_;
   Reset supervisor_reset_;
+  std::string operator_gesture_;  ///< gesture_text() of each, said in every status
+  std::string supervisor_gesture_;
   std::int64_t hold_ms_;
 };
 

@@ -91,8 +91,6 @@ struct TickReport {
   /// stop is the supervisor's, or another pad's (the one that stopped is gone).
   bool operator_may_reset = false;
   bool supervisor_may_reset = false;
-  /// The name of the pad whose stop is latched, as it was when it stopped (stopper_pad's): "" when none is.
-  std::string stopper;
   /// The first cause of `state`: the event that brought the machine into it
   /// (OperatingState::entered_by), kLinkUp only for a link lost and regained.
   /// A link that opened (the first time, or again after the bridge's own
