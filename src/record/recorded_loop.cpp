@@ -1,5 +1,6 @@
 #include "andros/record/recorded_loop.hpp"
 
+#include <optional>
 #include <utility>
 
 namespace andros::record {
@@ -31,8 +32,17 @@ run::RunControl recorded_control(run::RunControl control, Recorder& recorder,
     auto outcome = finish();
     if (outcome) {
       if (outcome->ok) {
-        const SessionSettings now = settings();
-        recorder.reloaded(*outcome, &now);
+        // The settings put in place, read back for the record: should that
+        // fail, the reload's records are dropped (counted), never the reload.
+        std::optional<SessionSettings> now;
+        try {
+          now = settings();
+        } catch (...) {
+          recorder.drop();
+          recorder.drop();
+          return outcome;
+        }
+        recorder.reloaded(*outcome, &*now);
       } else {
         recorder.reloaded(*outcome, nullptr);
       }

@@ -60,6 +60,8 @@ bool SessionWriter::push(std::string payload) {
   return true;
 }
 
+void SessionWriter::drop() { shared_->dropped.fetch_add(1, std::memory_order_relaxed); }
+
 void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   Shared& s = *shared;
   RecordChain chain;
@@ -207,84 +209,98 @@ std::string SessionWriter::last_hash() const {
 }
 
 void Recorder::header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
-                      const SessionSettings& settings, const link::LinkStatus& link_before) {
-  push(payload::header());
-  push(payload::program(version));
-  push(payload::started(local_time, pid, host));
-  push(payload::settings(settings));
-  push(payload::link(-1, link_before));
-  link_state_ = link_before.state;
-  link_motion_ = link_before.motion_allowed;
-  link_detail_ = link_before.detail;
+                      const SessionSettings& settings, const link::LinkStatus& link_before) noexcept {
+  guarded([&] {
+    record([&] { return payload::header(); });
+    record([&] { return payload::program(version); });
+    record([&] { return payload::started(local_time, pid, host); });
+    record([&] { return payload::settings(settings); });
+    record([&] { return payload::link(-1, link_before); });
+    link_state_ = link_before.state;
+    link_motion_ = link_before.motion_allowed;
+    link_detail_ = link_before.detail;
+  });
 }
 
-void Recorder::pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events) {
-  t_ms_ = t_ms;
-  if (after_pause_) {
-    push(payload::pause(t_ms));
-    after_pause_ = false;
-  }
-  for (const auto& e : events) push(payload::event(e));
+void Recorder::pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events) noexcept {
+  guarded([&] {
+    t_ms_ = t_ms;
+    if (after_pause_) {
+      record([&] { return payload::pause(t_ms); });
+      after_pause_ = false;
+    }
+    for (const auto& e : events) record([&] { return payload::event(e); });
+  });
 }
 
-void Recorder::request(run::Request request) {
-  if (request == run::Request::kNone) return;
-  // A stop asked once is answered on every tick after it until the run ends:
-  // one record says it (one Ctrl-C, one `request stop`).
-  if (request == run::Request::kShutdown && std::exchange(stop_recorded_, true)) return;
-  push(payload::request(t_ms_, request));
+void Recorder::request(run::Request request) noexcept {
+  guarded([&] {
+    if (request == run::Request::kNone) return;
+    // A stop asked once is answered on every tick after it until the run ends:
+    // one record says it (one Ctrl-C, one `request stop`).
+    if (request == run::Request::kShutdown && std::exchange(stop_recorded_, true)) return;
+    record([&] { return payload::request(t_ms_, request); });
+  });
 }
 
-void Recorder::reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) {
-  if (outcome.ok && settings != nullptr) push(payload::settings(*settings));
-  push(payload::reload(t_ms_, outcome));
+void Recorder::reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) noexcept {
+  guarded([&] {
+    if (outcome.ok && settings != nullptr) record([&] { return payload::settings(*settings); });
+    record([&] { return payload::reload(t_ms_, outcome); });
+  });
 }
 
-void Recorder::input_end(std::int64_t t_ms) {
-  if (input_ended_) return;
-  input_ended_ = true;
-  push(payload::input_end(t_ms));
+void Recorder::input_end(std::int64_t t_ms) noexcept {
+  guarded([&] {
+    if (input_ended_) return;
+    input_ended_ = true;
+    record([&] { return payload::input_end(t_ms); });
+  });
 }
 
-void Recorder::observe(const run::TickReport& r) {
-  if (!r.gate_fault.empty()) push(payload::gate(r.t_ms, r.gate_fault));
-  if (first_ || r.state != state_) {
-    state_ = r.state;
-    push(payload::state(r.t_ms, r.state));
-  }
-  // Every stop press (one that latched, made the stop another's, or came
-  // again while stopped) and every reset, once, with the pad that made it.
-  if (r.stop_count != stop_count_) {
-    stop_count_ = r.stop_count;
-    if (r.last_stop) push(payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad, r.last_stop_again));
-  }
-  if (r.reset_count != reset_count_) {
-    reset_count_ = r.reset_count;
-    if (r.reset_by) push(payload::reset(r.t_ms, *r.reset_by, r.reset_pad));
-  }
-  if (first_ || r.engine.layer != layer_) {
-    layer_ = r.engine.layer;
-    push(payload::layer(r.t_ms, layer_));
-  }
-  if (r.link.state != link_state_ || r.link.motion_allowed != link_motion_ || r.link.detail != link_detail_) {
-    link_state_ = r.link.state;
-    link_motion_ = r.link.motion_allowed;
-    link_detail_ = r.link.detail;
-    push(payload::link(r.t_ms, r.link));
-  }
-  const std::int64_t gap = r.tick - last_tick_ - 1;
-  if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_) {
-    data_ = r.data;
-    result_ = r.result;
-    sent_ = r.sent;
-    push(payload::frame(r, gap));
-  }
-  if (r.sent && r.result == link::SendResult::kSent) ++frames_sent_;
-  last_tick_ = r.tick;
-  last_t_ms_ = r.t_ms;
-  first_ = false;
+void Recorder::observe(const run::TickReport& r) noexcept {
+  guarded([&] {
+    if (!r.gate_fault.empty()) record([&] { return payload::gate(r.t_ms, r.gate_fault); });
+    if (first_ || r.state != state_) {
+      state_ = r.state;
+      record([&] { return payload::state(r.t_ms, r.state); });
+    }
+    // Every stop press (one that latched, made the stop another's, or came
+    // again while stopped) and every reset, once, with the pad that made it.
+    if (r.stop_count != stop_count_) {
+      stop_count_ = r.stop_count;
+      if (r.last_stop) record([&] { return payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad, r.last_stop_again); });
+    }
+    if (r.reset_count != reset_count_) {
+      reset_count_ = r.reset_count;
+      if (r.reset_by) record([&] { return payload::reset(r.t_ms, *r.reset_by, r.reset_pad); });
+    }
+    if (first_ || r.engine.layer != layer_) {
+      layer_ = r.engine.layer;
+      record([&] { return payload::layer(r.t_ms, layer_); });
+    }
+    if (r.link.state != link_state_ || r.link.motion_allowed != link_motion_ || r.link.detail != link_detail_) {
+      link_state_ = r.link.state;
+      link_motion_ = r.link.motion_allowed;
+      link_detail_ = r.link.detail;
+      record([&] { return payload::link(r.t_ms, r.link); });
+    }
+    const std::int64_t gap = r.tick - last_tick_ - 1;
+    if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_) {
+      data_ = r.data;
+      result_ = r.result;
+      sent_ = r.sent;
+      record([&] { return payload::frame(r, gap); });
+    }
+    if (r.sent && r.result == link::SendResult::kSent) ++frames_sent_;
+    last_tick_ = r.tick;
+    last_t_ms_ = r.t_ms;
+    first_ = false;
+  });
 }
 
-void Recorder::end(std::string_view why) { push(payload::end(last_t_ms_, last_tick_, frames_sent_, why)); }
+void Recorder::end(std::string_view why) noexcept {
+  guarded([&] { record([&] { return payload::end(last_t_ms_, last_tick_, frames_sent_, why); }); });
+}
 
 }  // namespace andros::record

@@ -14,19 +14,26 @@
 namespace andros::record {
 namespace {
 
+/// Text from outside as a JSON string: printable_text() of its bytes, which
+/// is valid UTF-8 whatever they were (so the JSON layer cannot refuse it) and
+/// gives them back whole (unescape_text()).
+nlohmann::json text_json(std::string_view text) { return printable_text(text); }
+
 nlohmann::json settings_json(const SessionSettings& s) {
   nlohmann::json files = nlohmann::json::array();
-  for (const auto& f : s.sources) files.push_back({{"path", f.path}, {"sha256", sha256_hex(f.text)}, {"text", f.text}});
-  return {{"robot", s.robot},
-          {"mapping", s.mapping_file},
+  for (const auto& f : s.sources) {
+    files.push_back({{"path", text_json(f.path)}, {"sha256", sha256_hex(f.text)}, {"text", text_json(f.text)}});
+  }
+  return {{"robot", text_json(s.robot)},
+          {"mapping", text_json(s.mapping_file)},
           {"rate_millihertz", s.rate_millihertz},
           {"weapons", s.weapons},
           {"code", hex_byte(s.code)},
           {"center", s.center},
-          {"port", s.port},
+          {"port", text_json(s.port)},
           {"baud", s.baud},
-          {"input", s.input},
-          {"config", s.config},
+          {"input", text_json(s.input)},
+          {"config", text_json(s.config)},
           {"supervised", s.supervised},
           {"files", files}};
 }
@@ -91,7 +98,7 @@ namespace payload {
 std::string header() { return std::string(kSessionMagic) + " " + std::to_string(kSessionFormat); }
 std::string program(std::string_view version) { return "program andros-bridge " + std::string(version); }
 std::string started(std::string_view local_time, long pid, std::string_view host) {
-  return "started " + std::string(local_time) + " pid " + std::to_string(pid) + " host " + std::string(host);
+  return "started " + std::string(local_time) + " pid " + std::to_string(pid) + " host " + printable_text(host);
 }
 std::string settings(const SessionSettings& s) { return "settings " + settings_json(s).dump(); }
 std::string event(const input::InputEvent& e) { return "event " + input::format_event(e); }
@@ -100,7 +107,7 @@ std::string request(std::int64_t t_ms, run::Request r) {
 }
 std::string pause(std::int64_t t_ms) { return "pause " + std::to_string(t_ms); }
 std::string reload(std::int64_t t_ms, const run::ReloadOutcome& o) {
-  return "reload " + std::to_string(t_ms) + (o.ok ? " ok " : " failed ") + nlohmann::json(o.message).dump();
+  return "reload " + std::to_string(t_ms) + (o.ok ? " ok " : " failed ") + text_json(o.message).dump();
 }
 std::string frame(const run::TickReport& r, std::int64_t gap) {
   FrameRecord f{.offered = r.sent, .result = r.result};
@@ -111,14 +118,14 @@ std::string state(std::int64_t t_ms, run::OpState s) {
   return "state " + std::to_string(t_ms) + " " + std::string(run::to_string(s));
 }
 std::string gate(std::int64_t t_ms, std::string_view fault) {
-  return "gate " + std::to_string(t_ms) + " " + nlohmann::json(std::string(fault)).dump();
+  return "gate " + std::to_string(t_ms) + " " + text_json(fault).dump();
 }
 namespace {
 std::string pad_json(const input::PadIdentity& pad, bool again = false) {
-  nlohmann::json j{{"name", printable_text(pad.name)},
-                   {"path", printable_text(pad.path)},
-                   {"serial", printable_text(pad.serial)},
-                   {"guid", printable_text(pad.guid)}};
+  nlohmann::json j{{"name", text_json(pad.name)},
+                   {"path", text_json(pad.path)},
+                   {"serial", text_json(pad.serial)},
+                   {"guid", text_json(pad.guid)}};
   if (again) j["again"] = true;
   return j.dump();
 }
@@ -130,17 +137,17 @@ std::string reset(std::int64_t t_ms, run::StopBy by, const input::PadIdentity& p
   return "reset " + std::to_string(t_ms) + " " + std::string(stopper_word(by)) + " " + pad_json(pad);
 }
 std::string layer(std::int64_t t_ms, std::string_view layer) {
-  return "layer " + std::to_string(t_ms) + " " + nlohmann::json(std::string(layer)).dump();
+  return "layer " + std::to_string(t_ms) + " " + text_json(layer).dump();
 }
 std::string link(std::int64_t t_ms, const link::LinkStatus& s) {
   return "link " + std::to_string(t_ms) + " " + std::string(link::to_string(s.state)) +
-         (s.motion_allowed ? " motion " : " neutral-only ") + nlohmann::json(s.detail).dump();
+         (s.motion_allowed ? " motion " : " neutral-only ") + text_json(s.detail).dump();
 }
 std::string input_end(std::int64_t t_ms) { return "input-end " + std::to_string(t_ms); }
 std::string dropped(std::uint64_t count) { return "dropped " + std::to_string(count); }
 std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why) {
   return "end " + std::to_string(t_ms) + " tick " + std::to_string(last_tick) + " frames " +
-         std::to_string(frames_sent) + " " + nlohmann::json(std::string(why)).dump();
+         std::to_string(frames_sent) + " " + text_json(why).dump();
 }
 
 }  // namespace payload

@@ -50,6 +50,14 @@ class Fields {
     }
   }
   [[nodiscard]] const SourcePos& pos() const { return pos_; }
+  /// A JSON string of text from outside, as the session's format wrote it:
+  /// from kEscapedTextFormat as printable_text() writes it (any bytes).
+  std::string text(const nlohmann::json& j, int format) const {
+    if (!j.is_string()) throw InputError(pos_, "expected a JSON string");
+    return format >= kEscapedTextFormat ? unescape_text(j.get<std::string>(), pos_) : j.get<std::string>();
+  }
+  /// The rest as such a JSON string.
+  std::string text(int format) { return text(json(), format); }
 
  private:
   std::string_view text_;
@@ -107,25 +115,27 @@ void check_tick(const Session& s, std::int64_t tick, std::int64_t t_ms, const So
   }
 }
 
-SessionSettings parse_settings(const nlohmann::json& j, const SourcePos& pos) {
+SessionSettings parse_settings(const Fields& f, const nlohmann::json& j, int format) {
+  const auto& pos = f.pos();
+  const auto text = [&](const nlohmann::json& field) { return f.text(field, format); };
   try {
     SessionSettings s;
-    s.robot = j.at("robot").get<std::string>();
-    s.mapping_file = j.at("mapping").get<std::string>();
+    s.robot = text(j.at("robot"));
+    s.mapping_file = text(j.at("mapping"));
     // Format 1 wrote the same value as `rate_mhz`.
     s.rate_millihertz = j.at(j.contains("rate_millihertz") ? "rate_millihertz" : "rate_mhz").get<std::int64_t>();
     s.weapons = j.at("weapons").get<bool>();
     s.code = parse_code(j.at("code").get<std::string>(), pos);
     s.center = j.at("center").get<int>();
-    s.port = j.at("port").get<std::string>();
+    s.port = text(j.at("port"));
     s.baud = j.at("baud").get<int>();
-    s.input = j.at("input").get<std::string>();
-    s.config = j.at("config").get<std::string>();
+    s.input = text(j.at("input"));
+    s.config = text(j.at("config"));
     s.supervised = j.value("supervised", false);
-    for (const auto& f : j.at("files")) {
-      MappingSource src{f.at("path").get<std::string>(), f.at("text").get<std::string>()};
-      if (sha256_hex(src.text) != f.at("sha256").get<std::string>()) {
-        throw InputError(pos, src.path + ": its text does not match its SHA-256");
+    for (const auto& file : j.at("files")) {
+      MappingSource src{text(file.at("path")), text(file.at("text"))};
+      if (sha256_hex(src.text) != file.at("sha256").get<std::string>()) {
+        throw InputError(pos, printable_text(src.path) + ": its text does not match its SHA-256");
       }
       s.sources.push_back(std::move(src));
     }
@@ -154,6 +164,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     if (format < kOldestSessionFormat || format > kSessionFormat) {
       throw InputError(pos, "a session format this program does not read");
     }
+    s.format = static_cast<int>(format);
   } else if (kind == "program") {
     f.word();
     s.version = std::string(f.word());
@@ -162,9 +173,9 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     f.word();
     s.pid = static_cast<long>(f.integer());
     f.word();
-    s.host = std::string(f.rest());
+    s.host = s.format >= kEscapedTextFormat ? unescape_text(f.rest(), pos) : std::string(f.rest());
   } else if (kind == "settings") {
-    auto settings = parse_settings(f.json(), pos);
+    auto settings = parse_settings(f, f.json(), s.format);
     if (s.settings.sources.empty()) s.settings = settings;
     else pending = std::move(settings);
   } else if (kind == "event") {
@@ -185,7 +196,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     ReloadRecord r;
     r.t_ms = time(f);
     r.outcome.ok = f.word() == "ok";
-    r.outcome.message = f.json().get<std::string>();
+    r.outcome.message = f.text(s.format);
     if (r.outcome.ok) {
       if (!pending) throw InputError(pos, "a reload without the settings it put in place");
       r.settings = std::exchange(pending, std::nullopt);
@@ -215,7 +226,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     s.states.push_back({t, *state});
   } else if (kind == "gate") {
     const auto t = time(f);
-    s.gate_trips.push_back({t, f.json().get<std::string>()});
+    s.gate_trips.push_back({t, f.text(s.format)});
   } else if (kind == "stop" || kind == "reset") {
     StopRecord r;
     r.t_ms = time(f);
@@ -228,13 +239,13 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     s.stops.push_back(std::move(r));
   } else if (kind == "layer") {
     const auto t = time(f);
-    s.layers.push_back({t, f.json().get<std::string>()});
+    s.layers.push_back({t, f.text(s.format)});
   } else if (kind == "link") {
     LinkRecord l;
     l.t_ms = time(f);
     l.state = f.word() == "up" ? link::LinkState::kUp : link::LinkState::kConnecting;
     l.motion_allowed = f.word() == "motion";
-    l.detail = f.json().get<std::string>();
+    l.detail = f.text(s.format);
     s.links.push_back(std::move(l));
   } else if (kind == "input-end") {
     s.input_end = time(f);
@@ -249,7 +260,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     e.last_tick = f.integer();
     f.word();
     e.frames_sent = static_cast<std::uint64_t>(f.integer());
-    e.why = f.json().get<std::string>();
+    e.why = f.text(s.format);
     // Its tick is where the last frame record leaves off, or later at the rate.
     if (e.last_tick != -1 || !s.frames.empty()) check_tick(s, e.last_tick, e.t_ms, pos);
     if (!s.frames.empty() && e.last_tick < s.frames.back().tick) {

@@ -14,6 +14,7 @@
 #include "andros/input/script_input.hpp"
 #include "andros/link/fault_link.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/protocol/signals.hpp"
 #include "andros/record/recorded_loop.hpp"
 #include "andros/record/recorder.hpp"
 #include "andros/record/session_replay.hpp"
@@ -200,11 +201,13 @@ struct RecordedRun {
   std::filesystem::path session = dir.path() / "live.andros-session";
   std::vector<std::pair<std::int64_t, protocol::DataBytes>> delivered;
   std::vector<run::TickReport> reports;
+  std::string reload_file = kMappings + "/f6a.yaml";  ///< what a reload puts in place
+  std::string input = "script";                       ///< the settings' input, as run names it
 
   void run(const std::string& script_text) {
     const auto script_path = dir.write("drive.events", script_text);
     input::ScriptInput script(script_path);
-    const auto engine_for = [](const std::string& file, bool weapons) {
+    const auto engine_for = [this](const std::string& file, bool weapons) {
       auto m = mapping::load_mapping(file);
       SessionSettings s{.robot = m->robot.value_or("HD1"),
                         .mapping_file = m->file,
@@ -214,7 +217,7 @@ struct RecordedRun {
                         .center = m->center,
                         .port = "test",
                         .baud = 9600,
-                        .input = "script",
+                        .input = input,
                         .config = "",
                         .sources = read_mapping_sources(m->chain)};
       return std::make_pair(
@@ -240,7 +243,7 @@ struct RecordedRun {
     control.begin_reload = [&](const std::string&) { reload_ticks = 0; };
     control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
       if (++reload_ticks < 4) return std::nullopt;  // the worker still reads
-      auto [next, s] = engine_for(kMappings + "/f6a.yaml", true);
+      auto [next, s] = engine_for(reload_file, true);
       frames.replace(std::move(next));
       reloaded = s;
       return run::ReloadOutcome{true, "reloaded", true};
@@ -318,6 +321,48 @@ TEST(Recorder, ARecordedSessionReplaysByteForByte) {
     EXPECT_EQ(replayed[i].tick, live.reports[i].tick) << i;
     EXPECT_EQ(replayed[i].state, live.reports[i].state) << "tick " << live.reports[i].tick;
   }
+}
+
+TEST(Recorder, TextOfAnyBytesIsRecordedWholeAndNeverEndsTheDrive) {
+  // A pad that names itself with every byte value (USB descriptors may hold
+  // any), an input path and a mapping that are not UTF-8: the drive goes on
+  // through the stop, its reset and a reload, and the session gives back the
+  // exact bytes (issue 34: the JSON layer refused them and ended the run).
+  std::string name;
+  for (int b = 0x01; b <= 0xff; ++b) name += static_cast<char>(b);
+  RecordedRun live;
+  const std::string latin = "robot: HD1\nextends: " + kMappings + "/hd1.yaml\n# caf\xe9, \xff\xc3: Latin-1\n";
+  live.reload_file = live.dir.write("latin.yaml", latin).string();
+  live.input = "drive-caf\xe9-\xff.events";
+  input::InputEvent connect{.t_ms = 0, .type = input::InputEvent::Type::kConnect, .name = name};
+  live.run(input::format_event(connect) +
+           "\n40 button leftshoulder 1\n200 axis lefty -20000\n"
+           "1000 button guide 1\n1100 button guide 0\n1120 axis lefty 0\n1140 button leftshoulder 0\n"
+           "1200 button back 1\n1200 button start 1\n3400 button back 0\n3400 button start 0\n"
+           "3600 reload\n4200 button leftshoulder 1\n4400 axis lefty -20000\n5000 end\n");
+  ASSERT_TRUE(verify_session(live.session).intact);
+  const Session s = read_session(live.session);
+  ASSERT_FALSE(s.events.empty());
+  EXPECT_EQ(s.events[0].name, name);
+  EXPECT_EQ(s.settings.input, live.input);
+  ASSERT_EQ(s.stops.size(), 2u);  // the stop and its reset
+  EXPECT_EQ(s.stops[0].pad.name, name);
+  EXPECT_EQ(s.stops[1].pad.name, name);
+  EXPECT_TRUE(s.stops[1].reset);
+  ASSERT_EQ(s.reloads.size(), 1u);
+  ASSERT_TRUE(s.reloads[0].settings);
+  EXPECT_EQ(s.reloads[0].settings->sources.at(0).path, live.reload_file);
+  EXPECT_EQ(s.reloads[0].settings->sources.at(0).text, latin);
+  EXPECT_EQ(s.dropped, 0u);
+  ASSERT_TRUE(s.end);
+  // It drove after the reload: a frame with the drive off centre went out after 4.4 s.
+  const auto drove = std::any_of(live.reports.begin(), live.reports.end(), [](const run::TickReport& r) {
+    return r.t_ms >= 4400 && r.state == run::OpState::kEnabled &&
+           protocol::read_signals(r.data)[protocol::signal_id("drive")] != protocol::kNeutralCentre;
+  });
+  EXPECT_TRUE(drove);
+  const auto result = replay_session(s, load_recorded_mapping, [](const run::TickReport&) {});
+  EXPECT_TRUE(result.identical) << result.difference;
 }
 
 TEST(Recorder, WhoStoppedAndWhoResetAreRecordedAndReplayed) {

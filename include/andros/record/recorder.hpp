@@ -38,6 +38,9 @@ class SessionWriter {
   /// Queues one record's payload (without SEQ or hash); false when the queue
   /// is full and it was dropped (counted). Never blocks.
   bool push(std::string payload);
+  /// Counts one record that could not be made (its text could not be
+  /// built): said by a `dropped` record, as a full queue's are.
+  void drop();
   /// Lets the thread write what is queued and end, waiting at most timeout_ms
   /// for a stalled disk (then it is left behind, and what it held is lost).
   /// True when everything queued was written.
@@ -66,30 +69,52 @@ class SessionWriter {
 
 /// The records of one run, from the loop's thread: the input decorator's
 /// events, the requests and reloads the loop answered, and each tick's
-/// report (a frame record only when something changed).
+/// report (a frame record only when something changed). No exception leaves
+/// it: a record that cannot be made (memory, a text the JSON layer refuses)
+/// is dropped and counted, and the loop goes on.
 class Recorder {
  public:
   explicit Recorder(SessionWriter& writer) : writer_(writer) {}
 
   /// Before the loop starts: the session's header.
   void header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
-              const SessionSettings& settings, const link::LinkStatus& link_before);
-  void pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events);
-  void request(run::Request request);
+              const SessionSettings& settings, const link::LinkStatus& link_before) noexcept;
+  void pumped(std::int64_t t_ms, const std::vector<input::InputEvent>& events) noexcept;
+  void request(run::Request request) noexcept;
   /// After a job-control stop: the loop's next pump is its end.
   void paused() { after_pause_ = true; }
-  void reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings);
-  void input_end(std::int64_t t_ms);
-  void observe(const run::TickReport& report);
+  void reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) noexcept;
+  void input_end(std::int64_t t_ms) noexcept;
+  void observe(const run::TickReport& report) noexcept;
   /// The run's last record.
-  void end(std::string_view why);
+  void end(std::string_view why) noexcept;
+  /// A record the caller could not make (its settings could not be read).
+  void drop() noexcept { writer_.drop(); }
 
   [[nodiscard]] std::uint64_t frames_sent() const { return frames_sent_; }
   /// The dropped records the writer has not been told of yet go in a record of their own.
   [[nodiscard]] std::uint64_t dropped() const { return writer_.dropped(); }
 
  private:
-  void push(std::string payload) { writer_.push(std::move(payload)); }
+  /// One record, its payload made by make: whatever that throws is a record
+  /// dropped, and what the recorder keeps of the loop goes on.
+  template <class Make>
+  void record(Make&& make) noexcept {
+    try {
+      writer_.push(make());
+    } catch (...) {
+      writer_.drop();
+    }
+  }
+  /// A method's whole body (its bookkeeping too): what it throws is a record dropped.
+  template <class Body>
+  void guarded(Body&& body) noexcept {
+    try {
+      body();
+    } catch (...) {
+      writer_.drop();
+    }
+  }
 
   SessionWriter& writer_;
   std::int64_t t_ms_ = 0;  ///< the last pump's time: the tick's

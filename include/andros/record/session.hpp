@@ -26,9 +26,17 @@ namespace andros::record {
 
 /// The first record's kind: a file whose first line is `0 andros-session ...` is a session.
 inline constexpr std::string_view kSessionMagic = "andros-session";
-/// The format written. 2: the settings' rate is `rate_millihertz`; format 1
-/// named it `rate_mhz` (read as megahertz by everyone), and is still read.
-inline constexpr int kSessionFormat = 2;
+/// The format written. 3: every text that came from outside (the settings'
+/// paths and mapping texts, the host, a reload's message, a gate's fault, a
+/// layer's name, a link's detail, the end's why) is written as
+/// printable_text() writes it, inside its JSON string, so that any bytes are
+/// recorded whole and the record is always valid UTF-8; format 2 wrote them as
+/// JSON strings of the text itself (and could not hold bytes that are not
+/// UTF-8). 2: the settings' rate is `rate_millihertz`; format 1 named it
+/// `rate_mhz` (read as megahertz by everyone). All three are read.
+inline constexpr int kSessionFormat = 3;
+/// The first format whose texts are written as printable_text() writes them.
+inline constexpr int kEscapedTextFormat = 3;
 inline constexpr int kOldestSessionFormat = 1;
 inline constexpr std::string_view kSessionExtension = ".andros-session";
 /// The longest line read (checked while reading: a longer one is refused
@@ -200,8 +208,9 @@ struct EndRecord {
 /// A session's records, by kind, in time order.
 struct Session {
   std::string path;
-  std::string version;  ///< of the program that recorded it
-  std::string started;  ///< local time, ISO 8601
+  int format = kSessionFormat;  ///< the header's: how its texts are written
+  std::string version;          ///< of the program that recorded it
+  std::string started;          ///< local time, ISO 8601
   long pid = 0;
   std::string host;
   SessionSettings settings;
