@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "andros/base/cpu_limit.hpp"
 #include "andros/base/error.hpp"
 #include "andros/base/job_control.hpp"
 #include "andros/base/shutdown_request.hpp"
@@ -103,6 +104,8 @@ int run_bridge(const RunOptions& opt) {
   // write error, never a signal that ends the run between two frames. (The
   // data commands keep the default: `frame decode | head` just ends.)
   std::signal(SIGPIPE, SIG_IGN);
+  // A CPU-time limit's SIGKILL must not come first: SIGXCPU, a stop, does.
+  if (const auto cpu = keep_room_before_cpu_kill(); !cpu.empty()) spdlog::info("{}", cpu);
   // Blocked before anything starts a thread (SDL does), so that every thread inherits the mask.
   ShutdownRequest stop(kRunShutdownSignals);
   JobControlSignals job;
