@@ -14,7 +14,8 @@ struct SessionWriter::Shared {
   // producer's, tail the consumer's; a slot is the consumer's from tail to head.
   std::atomic<std::size_t> head{0};
   std::atomic<std::size_t> tail{0};
-  std::atomic<std::uint64_t> dropped{0};
+  std::atomic<std::uint64_t> dropped{0};  ///< refused by the full queue, and those below
+  std::atomic<std::uint64_t> unmade{0};   ///< records whose text could not be made (drop())
   std::atomic<std::uint64_t> lost{0};
   std::atomic<std::uint64_t> written{0};
   /// 1 while the thread sleeps on an empty queue with nothing left to sync:
@@ -60,13 +61,19 @@ bool SessionWriter::push(std::string payload) {
   return true;
 }
 
-void SessionWriter::drop() { shared_->dropped.fetch_add(1, std::memory_order_relaxed); }
+void SessionWriter::drop() {
+  shared_->unmade.fetch_add(1, std::memory_order_relaxed);
+  shared_->dropped.fetch_add(1, std::memory_order_relaxed);
+}
 
 void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   Shared& s = *shared;
   RecordChain chain;
   std::uint64_t reported_drops = 0;
+  std::uint64_t reported_unmade = 0;
   std::uint64_t missing = 0;  // records dropped or lost since the last one written, not yet said
+  std::string missing_why;    // why the last of them went missing
+  bool stop_told = false;     // a `dropped` record has taken the closing room once, when recording stopped
   bool failed = false;        // a sync failed: nothing more is written
   auto last_sync = std::chrono::steady_clock::now();
   bool unsynced = false;  // written since the last sync
@@ -78,25 +85,32 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
   };
   // Appends lines from the chain's present place; false (and the chain back
   // there) when the sink failed: it left the file at its last whole record.
-  const auto put = [&](const std::function<std::string()>& lines) {
+  // closing: the session's last word, which may use the room kept for it.
+  const auto put = [&](const std::function<std::string()>& lines, bool closing = false) {
     const auto seq = chain.records();
     const auto from = chain.last();
     std::string error;
-    if (s.sink->write(lines(), error)) {
+    if (closing ? s.sink->write_closing(lines(), error) : s.sink->write(lines(), error)) {
       s.written.store(chain.records(), std::memory_order_relaxed);
       unsynced = true;
       return true;
     }
     fail(error);
+    missing_why = error;
     chain.rewind(seq, from);
     return false;
   };
-  // What went missing, said by a `dropped N` record where it fits (never before the header).
-  const auto tell = [&] {
-    if (missing != 0 && chain.records() != 0 && put([&] { return chain.line(payload::dropped(missing)); })) missing = 0;
+  // What went missing, said by a `dropped N "WHY"` record where it fits (never before the header).
+  const auto tell = [&](bool closing = false) {
+    if (missing != 0 && chain.records() != 0 &&
+        put([&] { return chain.line(payload::dropped(missing, missing_why)); }, closing)) {
+      missing = 0;
+    }
   };
   // Whole records or none: a batch at once, else record by record as many as
-  // fit, and a `dropped N` record for the rest, where they went missing.
+  // fit, and a `dropped N` record for the rest, where they went missing. A
+  // write that fails stops the batch's records but its `end`, which (after
+  // the `dropped` record that says what is missing) takes the closing room.
   const auto write_batch = [&] {
     if (batch.empty() && missing == 0) return;
     if (failed) {
@@ -104,7 +118,7 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
     } else if (bool told = false; put([&] {
                  std::string text;
                  if (missing != 0 && chain.records() != 0) {
-                   text = chain.line(payload::dropped(missing));
+                   text = chain.line(payload::dropped(missing, missing_why));
                    told = true;
                  }
                  for (const auto& payload : batch) text += chain.line(payload);
@@ -112,14 +126,23 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
                })) {
       if (told) missing = 0;
     } else {
-      std::size_t done = 0;
-      for (; done < batch.size(); ++done) {
-        tell();
-        if ((missing != 0 && chain.records() != 0) || !put([&] { return chain.line(batch[done]); })) break;
+      bool stopped = false;  // a record of this batch did not fit: those after it are not tried
+      for (const auto& payload : batch) {
+        const bool closing = payload.starts_with("end ");
+        if (!stopped || closing) {
+          tell(closing);
+          if ((missing == 0 || chain.records() == 0) && put([&] { return chain.line(payload); }, closing)) continue;
+        }
+        stopped = true;
+        s.lost.fetch_add(1, std::memory_order_relaxed);
+        ++missing;
       }
-      s.lost.fetch_add(batch.size() - done, std::memory_order_relaxed);
-      missing += batch.size() - done;
-      tell();
+      // Recording has stopped here (a full disk, a file-size limit): said at
+      // once, in the closing room, so that a run killed later still shows why.
+      if (stopped && !stop_told && chain.records() != 0) {
+        stop_told = true;
+        tell(true);
+      }
     }
     batch.clear();
     batch_bytes = 0;
@@ -136,6 +159,10 @@ void SessionWriter::work(const std::shared_ptr<Shared>& shared) {
     // Records the full queue refused: said where they went missing.
     if (const auto drops = s.dropped.load(std::memory_order_relaxed); drops != reported_drops) {
       missing += drops - reported_drops;
+      const auto unmade = s.unmade.load(std::memory_order_relaxed);
+      missing_why = unmade != reported_unmade ? "a record's text could not be made"
+                                              : "the queue was full: the disk did not keep up";
+      reported_unmade = unmade;
       reported_drops = drops;
       write_batch();
     }

@@ -144,7 +144,9 @@ std::string link(std::int64_t t_ms, const link::LinkStatus& s) {
          (s.motion_allowed ? " motion " : " neutral-only ") + text_json(s.detail).dump();
 }
 std::string input_end(std::int64_t t_ms) { return "input-end " + std::to_string(t_ms); }
-std::string dropped(std::uint64_t count) { return "dropped " + std::to_string(count); }
+std::string dropped(std::uint64_t count, std::string_view why) {
+  return "dropped " + std::to_string(count) + " " + text_json(why).dump();
+}
 std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why) {
   return "end " + std::to_string(t_ms) + " tick " + std::to_string(last_tick) + " frames " +
          std::to_string(frames_sent) + " " + text_json(why).dump();

@@ -253,6 +253,8 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto n = f.integer();
     if (n <= 0) throw InputError(pos, "a dropped record of no records");
     s.dropped += static_cast<std::uint64_t>(n);
+    // Why, from format 3 (earlier ones wrote the count alone).
+    if (!f.rest().empty()) s.dropped_why = f.text(s.format);
   } else if (kind == "end") {
     EndRecord e;
     e.t_ms = f.integer();

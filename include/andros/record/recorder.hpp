@@ -46,7 +46,7 @@ class SessionWriter {
   /// True when everything queued was written.
   bool close(int timeout_ms);
 
-  /// Records the full queue refused.
+  /// Records the full queue refused, and those whose text could not be made (drop()).
   [[nodiscard]] std::uint64_t dropped() const;
   /// Records taken from the queue but not written (the disk failed, or was
   /// stalled at close).

@@ -125,7 +125,9 @@ std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
 std::string input_end(std::int64_t t_ms);
-std::string dropped(std::uint64_t count);
+/// `dropped N "WHY"`: N records went missing here, and why the last of them
+/// did ("No space left on device", "File too large", "the queue was full...").
+std::string dropped(std::uint64_t count, std::string_view why);
 std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why);
 }  // namespace payload
 
@@ -226,6 +228,9 @@ struct Session {
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;
   std::uint64_t dropped = 0;
+  /// Why the last `dropped` record's records went missing (a write's error:
+  /// "No space left on device", "File too large"; or the full queue); "" when not said.
+  std::string dropped_why;
   std::optional<EndRecord> end;
   int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
 
