@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "andros/base/error.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/mapping/loader.hpp"
 #include "commands.hpp"
 
@@ -126,7 +127,7 @@ void add_check_command(CLI::App& app, int& exit_code) {
           notes += (notes.empty() ? "" : "; ") + trim;
         }
         if (!notes.empty()) notes.insert(0, " (").append(")");
-        std::printf("%s: ok%s\n", file.c_str(), notes.c_str());
+        std::printf("%s: ok%s\n", terminal_text(file).c_str(), notes.c_str());
         std::fflush(stdout);
         for (const auto& w : warnings(mapping)) std::fprintf(stderr, "%s\n", w.c_str());
         for (const auto& w : lost_signals(mapping)) std::fprintf(stderr, "%s\n", w.c_str());

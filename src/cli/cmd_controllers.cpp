@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "andros/base/error.hpp"
-#include "andros/base/text.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/input/sdl_input.hpp"
 #include "commands.hpp"
 #include "sdl_options.hpp"
@@ -21,13 +21,13 @@ int run_controllers(const ControllersOptions& opt) {
   const auto list = input::list_controllers(opt.sdl);
   if (opt.json) {
     for (const auto& c : list) {
+      // A name is bytes from the device: escaped, so that the line is JSON whatever they are.
       const nlohmann::json line = {{"index", c.index},
-                                   {"name", c.name},
-                                   {"guid", c.guid},
+                                   {"name", json_text(c.name)},
+                                   {"guid", json_text(c.guid)},
                                    {"type", c.game_controller ? "controller" : "joystick"},
-                                   {"path", c.path}};
-      // A name is bytes from the device: invalid UTF-8 becomes U+FFFD rather than ending the list.
-      std::printf("%s\n", line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+                                   {"path", json_text(c.path)}};
+      std::printf("%s\n", line.dump().c_str());
     }
     return kExitOk;
   }
@@ -38,8 +38,8 @@ int run_controllers(const ControllersOptions& opt) {
   std::printf("%-5s  %-10s  %-32s  %-18s  %s\n", "INDEX", "TYPE", "GUID", "PATH", "NAME");
   for (const auto& c : list) {
     std::printf("%-5d  %-10s  %-32s  %-18s  %s\n", c.index, c.game_controller ? "controller" : "joystick",
-                printable_text(c.guid).c_str(), c.path.empty() ? "-" : printable_text(c.path).c_str(),
-                printable_text(c.name).c_str());
+                terminal_text(c.guid).c_str(), c.path.empty() ? "-" : terminal_text(c.path).c_str(),
+                terminal_text(c.name).c_str());
   }
   return kExitOk;
 }

@@ -9,6 +9,7 @@
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
 #include "andros/base/shutdown_request.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
 #include "andros/input/sdl_input.hpp"
@@ -43,13 +44,13 @@ view::AxisUses load_uses(const InputsOptions& opt, std::string& source) {
     const auto config = find_default_config(true);
     if (!config.empty()) read_config_file(config, settings);
     why = config.empty() ? " (run's default: no --robot or --mapping given)"
-                         : " (run's, from " + config + ": no --robot or --mapping given)";
+                         : " (run's, from " + terminal_text(config) + ": no --robot or --mapping given)";
   } else {
     settings.mapping = opt.mapping;
     if (!opt.robot.empty()) settings.robot = opt.robot;
   }
   const auto mapping = mapping::load_chosen_mapping(settings.mapping, settings.robot);
-  source = "deadzones and thresholds of " + mapping->file + why;
+  source = "deadzones and thresholds of " + terminal_text(mapping->file) + why;
   return view::axis_uses(*mapping);
 }
 

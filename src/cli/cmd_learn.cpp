@@ -6,6 +6,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/shutdown_request.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/cli/learn_session.hpp"
 #include "andros/mapping/loader.hpp"
 #include "commands.hpp"
@@ -36,21 +37,23 @@ int run_learn(const LearnCommandOptions& opt) {
   std::printf(
       "learning %s (robot %s, %zu inputs) from %s\n"
       "Enter keeps the input, s skips the rest of this layer, b goes back, w writes now, q quits without writing\n",
-      opt.output.c_str(), plan.base().robot.value_or("?").c_str(), plan.steps().size(), pad.selection().c_str());
+      terminal_text(opt.output).c_str(), plan.base().robot.value_or("?").c_str(), plan.steps().size(),
+      pad.selection().c_str());
   LearnSession session(plan, pad, keys, stdout);
   while (!signals.requested() && session.step(20)) {
   }
   if (session.end() != LearnSession::End::kWrite) {
-    std::printf("quit: %s not written\n", opt.output.c_str());
+    std::printf("quit: %s not written\n", terminal_text(opt.output).c_str());
     return kExitRuntime;
   }
   if (!plan.changed()) {
-    std::printf("nothing changed: %s not written\n", opt.output.c_str());
+    std::printf("nothing changed: %s not written\n", terminal_text(opt.output).c_str());
     return kExitOk;
   }
   const auto text = plan.extending_yaml(target.extends, target.over);
   write_learned_or_show(plan, text, opt.output, stdout);  // on failure the YAML on stdout, the reason on stderr
-  std::printf("wrote %s; try it with 'andros-bridge check %s'\n", opt.output.c_str(), opt.output.c_str());
+  const auto shown = terminal_text(opt.output);
+  std::printf("wrote %s; try it with 'andros-bridge check %s'\n", shown.c_str(), shown.c_str());
   return kExitOk;
 }
 

@@ -10,6 +10,7 @@
 #include "andros/base/error.hpp"
 #include "andros/base/output_file.hpp"
 #include "andros/base/shutdown_request.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/base/version.hpp"
 #include "andros/cli/command_line.hpp"
@@ -76,7 +77,7 @@ int record(const Settings& settings, input::SdlInput& input, ShutdownRequest& st
   if (ended.at_limit)
     std::fprintf(stderr, "the recording reached 24 h, the longest script 'replay' and 'run' take: ended there\n");
   std::fprintf(stderr, "recorded %lld events%s%s\n", static_cast<long long>(ended.events), output == "-" ? "" : " to ",
-               output == "-" ? "" : output.c_str());
+               output == "-" ? "" : terminal_text(output).c_str());
   return kExitOk;
 }
 

@@ -8,6 +8,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/base/output_file.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/cli/command_line.hpp"
 #include "andros/cli/config.hpp"
@@ -57,13 +58,14 @@ int replay_session_file(const ReplayOptions& opt) {
   }
   const auto check = record::verify_session(opt.events);
   if (!check.intact) {
-    std::cout << "NOT INTACT: " << check.problem << " (andros-bridge verify)\n";
+    std::cout << "NOT INTACT: " << terminal_line(check.problem) << " (andros-bridge verify)\n";
     return kExitRuntime;
   }
   const auto session = record::read_session(opt.events);
   const auto result = record::replay_session(session);
   if (!result.identical) {
-    std::cout << "DIFFERENT after " << result.compared << " identical frames: " << result.difference << "\n";
+    std::cout << "DIFFERENT after " << result.compared << " identical frames: " << terminal_line(result.difference)
+              << "\n";
     return kExitRuntime;
   }
   std::cout << result.compared << " frames identical\n";

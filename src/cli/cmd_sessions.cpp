@@ -14,6 +14,7 @@
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/record/session.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
@@ -92,16 +93,18 @@ void print_table(const std::vector<Row>& rows) {
   for (const auto& r : rows) {
     if (!r.intact || !r.session) ++untrusted;
     if (!r.session) {
-      std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict, r.name);
+      std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict,
+                               terminal_text(r.name));
       continue;
     }
     const auto& s = *r.session;
     const auto& m = r.summary;
-    std::cout << fmt::format(
-        kRowFormat, start_text(s.started), duration_text(s.length_ms()), s.settings.robot, s.frames_sent(),
-        m.weapons_fired ? "FIRED" : "no", by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
-        by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
-        by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost, r.verdict, r.name);
+    std::cout << fmt::format(kRowFormat, terminal_text(start_text(s.started)), duration_text(s.length_ms()),
+                             terminal_text(s.settings.robot), s.frames_sent(), m.weapons_fired ? "FIRED" : "no",
+                             by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
+                             by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
+                             by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost,
+                             r.verdict, terminal_text(r.name));
   }
   if (untrusted != 0) {
     std::cout << fmt::format(
@@ -112,17 +115,17 @@ void print_table(const std::vector<Row>& rows) {
 }
 
 nlohmann::json json_row(const Row& r) {
-  nlohmann::json j = {{"file", r.name},
+  nlohmann::json j = {{"file", json_text(r.name)},
                       {"verify", r.verdict},
                       {"intact", r.intact},
-                      {"problem", r.problem},
+                      {"problem", json_text(r.problem)},
                       {"readable", r.session.has_value()}};
   if (!r.session) return j;
   const auto& s = *r.session;
   const auto& m = r.summary;
-  j["start"] = s.started;
+  j["start"] = json_text(s.started);
   j["length_s"] = static_cast<double>(s.length_ms()) / 1000.0;
-  j["robot"] = s.settings.robot;
+  j["robot"] = json_text(s.settings.robot);
   j["frames_sent"] = s.frames_sent();
   j["supervised"] = s.settings.supervised;
   j["weapons_fired"] = m.weapons_fired;
@@ -155,10 +158,10 @@ void run_sessions(const SessionsOptions& opt) {
     return;
   }
   if (rows.empty()) {
-    std::cout << "no sessions in " << dir.string() << "\n";
+    std::cout << "no sessions in " << terminal_text(dir.string()) << "\n";
     return;
   }
-  std::cout << "sessions in " << dir.string() << ":\n";
+  std::cout << "sessions in " << terminal_text(dir.string()) << ":\n";
   print_table(rows);
 }
 

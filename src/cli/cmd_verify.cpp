@@ -6,6 +6,7 @@
 #include <string>
 
 #include "andros/base/error.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/record/session.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
@@ -19,7 +20,7 @@ int run_verify(const std::string& path) {
   if (!std::filesystem::exists(path, ec)) throw InputError(SourcePos{path}, "no such session file");
   const auto result = record::verify_session(path);
   if (!result.intact) {
-    std::cout << "NOT INTACT: " << result.problem << "\n";
+    std::cout << "NOT INTACT: " << terminal_line(result.problem) << "\n";
     return kExitRuntime;
   }
   // Half a record at the end is a run cut off, told apart from an edit: the records before it stand.

@@ -14,8 +14,11 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "andros/base/error.hpp"
+#include "andros/base/error_list.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/base/version.hpp"
 #include "andros/timing/rate.hpp"
 #include "andros/view/log_sink.hpp"
@@ -100,8 +103,12 @@ int run(CLI::App& app, int argc, char** argv, const int& exit_code, andros::view
     log.write_line(std::string("andros-bridge: error: ") + e.what() + " (see --help)");
     return andros::kExitBadInput;
   } catch (const andros::InputError& e) {
-    // With no file to name, say which program is talking.
-    log.write_line((e.pos().file.empty() ? "andros-bridge: " : "") + std::string(e.what()));
+    // With no file to name, say which program is talking. Several errors of
+    // one input, a line each: a log line is one line (a newline in it is escaped).
+    const auto* several = dynamic_cast<const andros::InputErrors*>(&e);
+    for (const auto& one : several != nullptr ? several->errors() : std::vector<andros::InputError>{e}) {
+      log.write_line((one.pos().file.empty() ? "andros-bridge: " : "") + std::string(one.what()));
+    }
     return andros::kExitBadInput;
   } catch (const std::exception& e) {
     log.write_line(std::string("andros-bridge: error: ") + e.what());
@@ -157,7 +164,7 @@ int andros::cli::program_main(int argc, char** argv) try {
 
   return check_stdout(run(app, argc, argv, exit_code, *log), *log);
 } catch (const std::exception& e) {
-  std::fprintf(stderr, "andros-bridge: error: %s\n", e.what());
+  std::fprintf(stderr, "andros-bridge: error: %s\n", andros::terminal_line(e.what()).c_str());
   return andros::kExitRuntime;
 } catch (...) {
   std::fprintf(stderr, "andros-bridge: error: an unknown exception\n");

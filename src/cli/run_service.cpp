@@ -3,6 +3,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "andros/base/clock.hpp"
+#include "andros/base/sink_text.hpp"
 
 namespace andros::cli {
 
@@ -29,7 +30,8 @@ void ServiceReporter::observe(const run::TickReport& report, const view::RunStat
   }
   if (line != status_) {
     status_ = line;
-    message += "STATUS=" + line;
+    // One line whatever a link's detail or a reload's error holds: a newline would start a field of its own.
+    message += "STATUS=" + terminal_line(line);
   }
   if (!message.empty()) notifier_.send(message);
 }

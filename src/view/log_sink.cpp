@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "andros/base/service_notify.hpp"
+#include "andros/base/sink_text.hpp"
 #include "andros/base/write_fully.hpp"
 #include "andros/view/screen.hpp"
 #include "andros/view/terminal_display.hpp"
@@ -145,7 +146,9 @@ FdLogSink::~FdLogSink() {
   else queue_->thread.detach();
 }
 
-void FdLogSink::write_line(std::string line, int priority) {
+void FdLogSink::write_line(std::string_view line, int priority) { queue(terminal_line(line), priority); }
+
+void FdLogSink::queue(std::string line, int priority) {
   if (priority_prefix_) line.insert(0, "<" + std::to_string(priority) + ">");
   line += '\n';
   const std::lock_guard lock(queue_->mutex);
@@ -179,10 +182,14 @@ std::uint64_t FdLogSink::dropped() const {
 }
 
 void FdLogSink::log(const spdlog::details::log_msg& msg) {
+  // The message, not the line: the level's colour is the sink's own escape sequence.
+  const std::string text = terminal_line(std::string_view(msg.payload.data(), msg.payload.size()));
+  spdlog::details::log_msg escaped = msg;
+  escaped.payload = spdlog::string_view_t(text.data(), text.size());
   spdlog::memory_buf_t buf;
   {
     const std::lock_guard lock(format_mutex_);
-    formatter_->format(msg, buf);
+    formatter_->format(escaped, buf);
   }
   std::string line(buf.data(), buf.size());
   if (!line.empty() && line.back() == '\n') line.pop_back();
@@ -190,7 +197,7 @@ void FdLogSink::log(const spdlog::details::log_msg& msg) {
     line.insert(msg.color_range_end, "\x1b[m");
     line.insert(msg.color_range_start, level_colour(msg.level));
   }
-  write_line(std::move(line), syslog_priority(msg.level));
+  queue(std::move(line), syslog_priority(msg.level));
 }
 
 void FdLogSink::flush() { flush_for(queue_->flush_wait_ms); }

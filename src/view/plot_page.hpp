@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "andros/base/sink_text.hpp"
 #include "andros/protocol/signals.hpp"
 #include "andros/timing/rate.hpp"
 #include "andros/view/plot.hpp"
@@ -60,7 +61,7 @@ class Page {
     close(title, "rect");
   }
   void text(double x, double y, std::string_view text, std::string_view attrs = "") {
-    out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n", x, y, attrs, sheet_detail::xml_escape(text));
+    out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\"{}>{}</text>\n", x, y, attrs, svg_text(text));
   }
   void line(double x0, double y0, double x1, double y1, std::string_view stroke, double width = 1,
             std::string_view title = "") {
@@ -76,7 +77,7 @@ class Page {
  private:
   void close(std::string_view title, std::string_view element) {
     if (title.empty()) out_ += "/>\n";
-    else out_ += fmt::format("><title>{}</title></{}>\n", sheet_detail::xml_escape(title), element);
+    else out_ += fmt::format("><title>{}</title></{}>\n", svg_text(title), element);
   }
 
   std::int64_t from_;

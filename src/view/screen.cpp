@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "andros/base/text.hpp"
+#include "andros/base/sink_text.hpp"
 
 namespace andros::view {
 namespace {
@@ -56,8 +56,8 @@ void cut(const Line& line, std::size_t width, Out out) {
 
 Line& Line::add(std::string_view text, Style style) {
   // A control character would move the cursor: a name from a controller or
-  // a file is shown, never obeyed (escaped as everywhere: base/text.hpp).
-  pieces_.push_back(Piece{printable_line(text), style});
+  // a file is shown, never obeyed (escaped as on every sink: base/sink_text.hpp).
+  pieces_.push_back(Piece{terminal_line(text), style});
   return *this;
 }
 

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "andros/base/sink_text.hpp"
 #include "andros/base/text.hpp"
 #include "andros/protocol/signals.hpp"
 #include "andros/timing/rate.hpp"
@@ -45,19 +46,6 @@ constexpr std::array<std::string_view, 9> kRecordColumns = {
 
 /// A cell after `t`: empty (JSON null), a number, or text.
 using Cell = std::variant<std::monostate, std::int64_t, std::string>;
-
-/// A text cell in CSV: never a formula to a spreadsheet (OWASP's CSV
-/// injection: a cell that starts with = + - @, a tab or a return gets a
-/// leading apostrophe), quoted when it must be (RFC 4180).
-std::string csv_text(std::string_view text) {
-  std::string cell;
-  if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) cell = "'";
-  cell += text;
-  if (cell.find_first_of(",\"\r\n") == std::string::npos) return cell;
-  std::string out = "\"";
-  for (const char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 /// The pad of a stop or a reset record (PadIdentity::describe()); a session
 /// of an earlier version recorded only a stop's controller name, and no pad.
@@ -190,7 +178,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
         for (const auto& cell : cells) {
           out << ',';
           if (const auto* n = std::get_if<std::int64_t>(&cell)) out << *n;
-          else if (const auto* text = std::get_if<std::string>(&cell)) out << csv_text(*text);
+          else if (const auto* text = std::get_if<std::string>(&cell)) out << csv_cell(*text);
         }
         out << '\n';
         continue;

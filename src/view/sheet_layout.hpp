@@ -38,9 +38,6 @@ std::optional<std::size_t> pad_slot_index(input::InputKey key);
 /// The schematic pad, its top-left corner at (x, y), scale mm per pad unit.
 std::string draw_pad(double x, double y, double scale);
 
-/// Text for an SVG element or attribute: & < > " escaped.
-std::string xml_escape(std::string_view text);
-
 /// Text cut into lines of at most width characters, at spaces (a longer word
 /// stays whole on its own line).
 std::vector<std::string> wrap(const std::string& text, std::size_t width);

@@ -121,23 +121,6 @@ std::string draw_pad(double x, double y, double scale) {
   return out + "</g>";
 }
 
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default:
-        // A control byte or a broken UTF-8 sequence would make the file
-        // unreadable as XML; names on the sheet are ASCII in practice.
-        out += (c >= 0x20 && c < 0x7f) ? c : '?';
-    }
-  }
-  return out;
-}
-
 std::vector<std::string> wrap(const std::string& text, std::size_t width) {
   std::vector<std::string> lines;
   std::string line;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "andros/base/sink_text.hpp"
 #include "andros/view/sheet.hpp"
 #include "sheet_layout.hpp"
 
@@ -11,7 +12,6 @@ namespace andros::view {
 namespace {
 
 using sheet_detail::num;
-using sheet_detail::xml_escape;
 
 constexpr double kPageWidth = 190;  // fits A4 (210 x 297) and Letter (215.9 x 279.4) with margins
 constexpr double kPageHeight = 260;
@@ -75,10 +75,10 @@ std::string label(const SheetEntry& entry, double x, double y, std::string_view 
            std::string(mark_name(e.mark)) + " </tspan>";
   }
   out += "<tspan fill=\"" + std::string(e.inherited ? "#555555" : "#111111") + "\"" +
-         (e.inherited ? " font-style=\"italic\"" : "") + ">" + xml_escape(e.function) + "</tspan>";
+         (e.inherited ? " font-style=\"italic\"" : "") + ">" + svg_text(e.function) + "</tspan>";
   if (!e.detail.empty()) {
     out +=
-        "<tspan fill=\"#555555\" font-size=\"" + num(kSmallSize * scale) + "\"> (" + xml_escape(e.detail) + ")</tspan>";
+        "<tspan fill=\"#555555\" font-size=\"" + num(kSmallSize * scale) + "\"> (" + svg_text(e.detail) + ")</tspan>";
   }
   return out + "</text>";
 }
@@ -91,7 +91,7 @@ std::string panel_frame(const SheetPanel& panel, double width, double height) {
          "\" rx=\"2\" fill=\"none\" stroke=\"#999999\" stroke-width=\"0.3\"/><rect x=\"0.3\" y=\"0.3\" width=\"" +
          num(width - 0.6) + "\" height=\"" + num(kTitleBand) +
          "\" rx=\"2\" fill=\"#e4e9f0\"/><text x=\"3\" y=\"4.3\" font-size=\"3.2\"><tspan font-weight=\"bold\">" +
-         xml_escape(title) + "</tspan><tspan font-size=\"2.6\" fill=\"#333333\">  " + xml_escape(panel.how) +
+         svg_text(title) + "</tspan><tspan font-size=\"2.6\" fill=\"#333333\">  " + svg_text(panel.how) +
          "</tspan></text>";
 }
 
@@ -146,7 +146,7 @@ std::string list_panel(const Sheet& sheet, const SheetPanel& panel, double width
   double y = kTitleBand + kListRow;
   for (const auto& e : panel.entries) {
     out += "<text x=\"3\" y=\"" + num(y) + "\" font-size=\"" + num(kLabelSize) + "\" font-weight=\"bold\">" +
-           xml_escape(e.input) + "</text>" + label(e, kListFunctionX, y, "start", width - kListFunctionX - 2);
+           svg_text(e.input) + "</text>" + label(e, kListFunctionX, y, "start", width - kListFunctionX - 2);
     y += kListRow;
   }
   return out;
@@ -206,22 +206,22 @@ std::string render_sheet_svg(const Sheet& sheet) {
                     num(kPageWidth) + "mm\" height=\"" + num(kPageHeight) + "mm\" viewBox=\"0 0 " + num(kPageWidth) +
                     " " + num(kPageHeight) +
                     "\" xml:space=\"preserve\" font-family=\"DejaVu Sans, Arial, Helvetica, sans-serif\">\n";
-  out += "<title>" + xml_escape(robot + " cheat sheet (" + sheet.file + ")") + "</title>\n";
+  out += "<title>" + svg_text(robot + " cheat sheet (" + sheet.file + ")") + "</title>\n";
   out += "<rect width=\"" + num(kPageWidth) + "\" height=\"" + num(kPageHeight) + "\" fill=\"#ffffff\"/>\n";
-  out += "<text x=\"0\" y=\"6\" font-size=\"5.5\" font-weight=\"bold\">" + xml_escape(robot) +
+  out += "<text x=\"0\" y=\"6\" font-size=\"5.5\" font-weight=\"bold\">" + svg_text(robot) +
          " cheat sheet</text><text x=\"" + num(kPageWidth) +
          "\" y=\"6\" font-size=\"2.6\" text-anchor=\"end\" "
          "fill=\"#555555\">" +
-         xml_escape(sheet.file) + ", made by andros-bridge sheet</text>\n";
+         svg_text(sheet.file) + ", made by andros-bridge sheet</text>\n";
   if (!sheet.deadman.empty()) {
     out +=
         "<text x=\"0\" y=\"11.5\" font-size=\"3\">Hold <tspan font-weight=\"bold\" fill=\"#c62828\">" +
-        xml_escape(sheet.deadman) +
+        svg_text(sheet.deadman) +
         (sheet.stop.empty() ? std::string("</tspan> (the deadman) to move anything; after connecting, press it afresh. "
                                           "Releasing it stops everything.")
                             : "</tspan> (the deadman) to move anything; press it afresh after connecting. "
                               "<tspan font-weight=\"bold\" fill=\"#d50000\">" +
-                                  xml_escape(sheet.stop) + "</tspan> = STOP (latched: see the notes).") +
+                                  svg_text(sheet.stop) + "</tspan> = STOP (latched: see the notes).") +
         "</text>\n";
   }
   const double x = (kPageWidth - kPageWidth * scale) / 2;
@@ -236,7 +236,7 @@ std::string render_sheet_svg(const Sheet& sheet) {
   y += kNoteRow;
   for (const auto& line : notes) {
     y += kNoteRow;
-    out += "<text x=\"0\" y=\"" + num(y) + "\" font-size=\"" + num(kNoteSize) + "\">" + xml_escape(line) + "</text>\n";
+    out += "<text x=\"0\" y=\"" + num(y) + "\" font-size=\"" + num(kNoteSize) + "\">" + svg_text(line) + "</text>\n";
   }
   return out + "</svg>\n";
 }

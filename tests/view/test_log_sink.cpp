@@ -3,11 +3,16 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <spdlog/logger.h>
+
+#include <algorithm>
 #include <chrono>
+#include <memory>
 #include <string>
 
 #include "andros/base/unique_fd.hpp"
 #include "andros/view/log_sink.hpp"
+#include "support/hostile_text.hpp"
 
 namespace andros::view {
 namespace {
@@ -59,6 +64,24 @@ TEST(FdLogSink, WritesLinesInOrder) {
   EXPECT_TRUE(sink.flush_for(2000));
   EXPECT_EQ(drain(out.read.get(), 2000), "one\ntwo\n");
   EXPECT_FALSE(sink.failed());
+}
+
+TEST(FdLogSink, TextFromOutsideIsShownOnOneLineNeverObeyed) {
+  // A layer's name, a mapping's path, a link's detail, logged as they are:
+  // each message is one line, with no control byte, invalid UTF-8 or bidi override in it.
+  auto out = make_pipe();
+  auto sink = std::make_shared<FdLogSink>(out.write.get(), FdLogSink::Options{});
+  spdlog::logger logger("test", sink);
+  logger.set_pattern("%l: %v");
+  for (const auto& text : testing::kHostileTexts) logger.info("layer: {}", text);
+  sink->write_line("andros-bridge: error: " + testing::kHostileTexts[0]);  // an error's what(), a path raw in it
+  EXPECT_TRUE(sink->flush_for(2000));
+  const auto lines = drain(out.read.get(), 2000);
+  EXPECT_EQ(testing::raw_text_in(lines, true), std::nullopt);
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), static_cast<long>(testing::kHostileTexts.size()) + 1)
+      << lines;
+  EXPECT_NE(lines.find("info: layer: x\\n2024-01-01"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("info: layer: rtl\\xE2\\x80\\xAEevil\n"), std::string::npos) << lines;
 }
 
 TEST(FdLogSink, AClosedReaderIsDroppedOnceWithANote) {

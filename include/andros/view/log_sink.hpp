@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <string_view>
 
 namespace andros::view {
 
@@ -36,9 +37,11 @@ class FdLogSink final : public spdlog::sinks::sink {
   FdLogSink(const FdLogSink&) = delete;
   FdLogSink& operator=(const FdLogSink&) = delete;
 
-  /// Queues one line as is (the newline is added; with priority_prefix, the
-  /// `<priority>` too: 3, err, for the callers' own error lines). Never blocks on the fd.
-  void write_line(std::string line, int priority = 3);
+  /// Queues one line, escaped as every log line is (terminal_line(),
+  /// base/sink_text.hpp: a newline in it is shown as \n, never a second
+  /// line; the newline is added; with priority_prefix, the `<priority>` too:
+  /// 3, err, for the callers' own error lines). Never blocks on the fd.
+  void write_line(std::string_view line, int priority = 3);
   /// Waits at most timeout_ms until every queued line is written (or given up).
   bool flush_for(int timeout_ms);
   /// True once a write to the fd failed: nothing more is written to it.
@@ -46,7 +49,8 @@ class FdLogSink final : public spdlog::sinks::sink {
   /// Lines dropped from a full queue, or after the fd failed.
   [[nodiscard]] std::uint64_t dropped() const;
 
-  /// spdlog's side: log() formats and queues; flush() waits at most flush_wait_ms.
+  /// spdlog's side: log() escapes the message (terminal_line()), formats and queues; flush() waits at most
+  /// flush_wait_ms.
   void log(const spdlog::details::log_msg& msg) override;
   void flush() override;
   void set_pattern(const std::string& pattern) override;
@@ -55,6 +59,8 @@ class FdLogSink final : public spdlog::sinks::sink {
  private:
   struct Queue;
   static void write_out(const std::shared_ptr<Queue>& q);
+  /// Queues a line already escaped.
+  void queue(std::string line, int priority);
 
   std::shared_ptr<Queue> queue_;  ///< shared with the writer thread, which may outlive the sink
   bool colour_;

@@ -31,8 +31,8 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos);
 /// input was held at any moment since the row before, empty (JSON null) when
 /// the mapping has no such input; then every signal of the frame by name.
 /// Text from outside (a layer's name, a pad's) is printable_text(); in CSV,
-/// a text cell is never a formula (a leading apostrophe) and is quoted as RFC
-/// 4180 says. CSV has a header row; JSONL a JSON object a line. Returns why
+/// every text cell is csv_cell() (base/sink_text.hpp): never a formula (a
+/// leading apostrophe), quoted as RFC 4180 says. CSV has a header row; JSONL a JSON object a line. Returns why
 /// the input columns are empty throughout (the recorded mapping cannot be
 /// read), or "".
 std::string export_session(const record::Session& session, ExportFormat format, std::ostream& out,
