@@ -15,6 +15,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/record/session.hpp"
+#include "andros/record/session_replay.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 #include "session_summary.hpp"
@@ -35,7 +36,28 @@ struct Row {
   std::string problem;  ///< verify's, or why it could not be read
   std::optional<record::Session> session;
   SessionSummary summary;
+  /// The replay made every record again the same (weapons fired and stops
+  /// are then what the loop makes of the recorded input, not only what the
+  /// records say); else why not.
+  bool proven = false;
+  std::string unproven;
 };
+
+/// Whether the replay proves the session's records: WEAPONS and STOPS are counted from them.
+void prove(Row& row) {
+  if (!row.intact) {
+    row.unproven = "not intact";
+    return;
+  }
+  try {
+    const auto result = record::replay_session(*row.session);
+    row.proven = result.proven();
+    if (!result.identical) row.unproven = result.difference;
+    else if (!row.proven) row.unproven = std::to_string(result.unproven) + " records after the last frame record";
+  } catch (const std::exception& e) {
+    row.unproven = e.what();  // records dropped, a mapping that does not load
+  }
+}
 
 Row read_row(const std::filesystem::path& path, std::string name) {
   Row row;
@@ -50,6 +72,7 @@ Row read_row(const std::filesystem::path& path, std::string name) {
                                               : "intact, not closed";
     row.session = record::read_session(path);
     row.summary = summarize_session(*row.session);
+    prove(row);
   } catch (const std::exception& e) {
     // Its chain may be whole and its records still not a session's (crafted, or another format).
     row.session.reset();
@@ -89,25 +112,35 @@ void print_table(const std::vector<Row>& rows) {
   std::cout << fmt::format(kRowFormat, "START", "LENGTH", "ROBOT", "FRAMES", "WEAPONS", "STOPS", "RESETS",
                            "CONTROLLERS LOST", "LINK LOST", "VERIFY", "FILE");
   int untrusted = 0;
+  int unproven = 0;
   for (const auto& r : rows) {
     if (!r.intact || !r.session) ++untrusted;
+    if (r.session && !r.proven) ++unproven;
     if (!r.session) {
       std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict, r.name);
       continue;
     }
     const auto& s = *r.session;
     const auto& m = r.summary;
-    std::cout << fmt::format(
-        kRowFormat, start_text(s.started), duration_text(s.length_ms()), s.settings.robot, s.frames_sent(),
-        m.weapons_fired ? "FIRED" : "no", by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
-        by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
-        by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost, r.verdict, r.name);
+    const std::string mark = r.proven ? "" : "?";
+    std::cout << fmt::format(kRowFormat, start_text(s.started), duration_text(s.length_ms()), s.settings.robot,
+                             s.frames_sent(), (m.weapons_fired ? "FIRED" : "no") + mark,
+                             by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}) + mark,
+                             by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
+                             by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost,
+                             r.verdict, r.name);
   }
   if (untrusted != 0) {
     std::cout << fmt::format(
         "{} of {} sessions NOT INTACT or unreadable: what the table shows of them is what their records say, "
         "not evidence ('verify SESSION' names the first record altered)\n",
         untrusted, rows.size());
+  }
+  if (unproven != 0) {
+    std::cout << fmt::format(
+        "{} of {} sessions with WEAPONS and STOPS marked ?: what their records say, not proven by replay "
+        "('replay SESSION' says why)\n",
+        unproven, rows.size());
   }
 }
 
@@ -125,6 +158,8 @@ nlohmann::json json_row(const Row& r) {
   j["robot"] = s.settings.robot;
   j["frames_sent"] = s.frames_sent();
   j["supervised"] = s.settings.supervised;
+  j["proven"] = r.proven;
+  j["unproven"] = r.unproven;
   j["weapons_fired"] = m.weapons_fired;
   j["weapons"] = m.weapons;
   j["first_fire_s"] = m.first_fire_ms ? nlohmann::json(static_cast<double>(*m.first_fire_ms) / 1000.0) : nullptr;
@@ -172,9 +207,10 @@ void add_sessions_command(CLI::App& app, int& exit_code) {
                          "robot, frames sent, whether weapons fired (a weapon signal in a frame sent while\n"
                          "enabled), the stops by whom (op: the operator's stop button, sup: the supervisor's,\n"
                          "gate: the frame gate), the stops reset by whom (op, sup), the controllers lost (op,\n"
-                         "sup), the link lost, and the verdict of 'verify'. A session that is not intact is\n"
-                         "listed with what its records say, marked NOT INTACT; one that cannot be read, as\n"
-                         "unreadable.");
+                         "sup), the link lost, and the verdict of 'verify'. WEAPONS and STOPS are proven by\n"
+                         "replay (the loop run again makes every record the same); marked ? when not (what the\n"
+                         "records say). A session that is not intact is listed with what its records say,\n"
+                         "marked NOT INTACT; one that cannot be read, as unreadable.");
   cmd->add_option("--record-dir,--dir", opt->dir,
                   "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
                   "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"

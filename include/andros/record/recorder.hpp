@@ -69,7 +69,16 @@ class SessionWriter {
 /// report (a frame record only when something changed).
 class Recorder {
  public:
-  explicit Recorder(SessionWriter& writer) : writer_(writer) {}
+  /// Where the payloads go: the writer's queue, or (replay) the comparison
+  /// with the records a session holds. Never blocks the loop.
+  using PayloadSink = std::function<void(std::string payload)>;
+
+  explicit Recorder(SessionWriter& writer)
+      : writer_(&writer), sink_([&writer](std::string payload) { writer.push(std::move(payload)); }) {}
+  /// repeat_frame_ms: the frame record written again after this long
+  /// (kFrameRecordPeriodMs); 0 for a replay of a format that did not.
+  explicit Recorder(PayloadSink sink, std::int64_t repeat_frame_ms = kFrameRecordPeriodMs)
+      : sink_(std::move(sink)), repeat_frame_ms_(repeat_frame_ms) {}
 
   /// Before the loop starts: the session's header.
   void header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
@@ -86,12 +95,14 @@ class Recorder {
 
   [[nodiscard]] std::uint64_t frames_sent() const { return frames_sent_; }
   /// The dropped records the writer has not been told of yet go in a record of their own.
-  [[nodiscard]] std::uint64_t dropped() const { return writer_.dropped(); }
+  [[nodiscard]] std::uint64_t dropped() const { return writer_ == nullptr ? 0 : writer_->dropped(); }
 
  private:
-  void push(std::string payload) { writer_.push(std::move(payload)); }
+  void push(std::string payload) { sink_(std::move(payload)); }
 
-  SessionWriter& writer_;
+  SessionWriter* writer_ = nullptr;  ///< null: not writing (a replay's)
+  PayloadSink sink_;
+  std::int64_t repeat_frame_ms_ = kFrameRecordPeriodMs;
   std::int64_t t_ms_ = 0;  ///< the last pump's time: the tick's
   bool after_pause_ = false;
   bool input_ended_ = false;
@@ -110,6 +121,7 @@ class Recorder {
   bool sent_ = true;
   std::int64_t last_tick_ = -1;
   std::int64_t last_t_ms_ = 0;
+  std::int64_t frame_t_ms_ = 0;  ///< the last frame record's time
   std::uint64_t frames_sent_ = 0;
 };
 
