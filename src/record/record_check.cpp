@@ -31,8 +31,9 @@ RecordCheck::Recorded RecordCheck::recorded(Kind kind, std::size_t i) const {
       const auto& r = s_.requests[i];
       return {payload::request(r.t_ms, parse_request(r.text).value_or(run::Request::kNone)), r.t_ms, r.line};
     }
-    case kGate: return {payload::gate(s_.gate_trips[i].t_ms, s_.gate_trips[i].text), s_.gate_trips[i].t_ms,
-                        s_.gate_trips[i].line};
+    case kGate:
+      return {payload::gate(s_.gate_trips[i].t_ms, s_.gate_trips[i].text), s_.gate_trips[i].t_ms,
+              s_.gate_trips[i].line};
     case kState: return {payload::state(s_.states[i].t_ms, s_.states[i].state), s_.states[i].t_ms, s_.states[i].line};
     case kStop: {
       const auto& r = s_.stops[i];
@@ -96,8 +97,8 @@ void RecordCheck::made(std::string_view payload) {
   if (!same) {
     differ("line " + std::to_string(r.line) + ": recorded " + shown(r.text) + ", the replay makes " + shown(payload));
   } else if (r.line <= last_line_) {
-    differ("line " + std::to_string(r.line) + ": " + shown(r.text) + " is out of its place: the loop writes it after line " +
-           std::to_string(last_line_));
+    differ("line " + std::to_string(r.line) + ": " + shown(r.text) +
+           " is out of its place: the loop writes it after line " + std::to_string(last_line_));
   } else {
     last_line_ = r.line;
     ++next_[kind];
@@ -124,7 +125,8 @@ void RecordCheck::finish() {
     }
   }
   if (first != nullptr) {
-    differ("line " + std::to_string(left.line) + ": recorded " + shown(left.text) + ", the replay makes no such record");
+    differ("line " + std::to_string(left.line) + ": recorded " + shown(left.text) +
+           ", the replay makes no such record");
   }
 }
 

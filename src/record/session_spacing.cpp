@@ -18,11 +18,11 @@ void check_record_spacing(const Session& s) {
   const auto within = [&](const FrameRecord& from, std::int64_t through, int line) {
     const std::int64_t after = clock.time_of(through) - from.t_ms;
     if (after < kFrameRecordPeriodMs) return;
-    throw InputError(SourcePos{s.path, line},
-                     "tick " + std::to_string(through) + " is " + std::to_string(after) +
-                         " ms after the frame record it repeats (line " + std::to_string(from.line) +
-                         "): a session of format " + std::to_string(s.format) + " has one every " +
-                         std::to_string(kFrameRecordPeriodMs / kMsPerSecond) + " s at least");
+    throw InputError(SourcePos{s.path, line}, "tick " + std::to_string(through) + " is " + std::to_string(after) +
+                                                  " ms after the frame record it repeats (line " +
+                                                  std::to_string(from.line) + "): a session of format " +
+                                                  std::to_string(s.format) + " has one every " +
+                                                  std::to_string(kFrameRecordPeriodMs / kMsPerSecond) + " s at least");
   };
   for (std::size_t i = 1; i < s.frames.size(); ++i) {
     within(s.frames[i - 1], s.frames[i].tick - s.frames[i].gap - 1, s.frames[i].line);

@@ -72,6 +72,8 @@ def grow(lines, size):
             data = rest.split(b" ")[3]
         if kind == b"end":
             break
+        if kind == b"input-end":
+            continue  # the input goes on: replay runs every tick grown
         kept.append(b" ".join(payload(line).split(b" ")[1:]))
     out = kept
     total = sum(len(l) + 67 for l in out)
