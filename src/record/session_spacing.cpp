@@ -9,10 +9,10 @@
 
 namespace andros::record {
 
-void check_record_spacing(const Session& s) {
+void check_record_spacing(const Session& s, bool any_format) {
   // Records dropped leave ticks no record stands for: such a session keeps
   // the older formats' bound (24 h), and replay refuses it.
-  if (s.format < kSpacedFormat || s.dropped != 0) return;
+  if ((s.format < kSpacedFormat && !any_format) || s.dropped != 0) return;
   const timing::FrameClock clock(s.settings.rate_millihertz);
   // The ticks from record `from` through `through` repeat its frame; `line` is where they end.
   const auto within = [&](const FrameRecord& from, std::int64_t through, int line) {
@@ -20,8 +20,8 @@ void check_record_spacing(const Session& s) {
     if (after < kFrameRecordPeriodMs) return;
     throw InputError(SourcePos{s.path, line}, "tick " + std::to_string(through) + " is " + std::to_string(after) +
                                                   " ms after the frame record it repeats (line " +
-                                                  std::to_string(from.line) + "): a session of format " +
-                                                  std::to_string(s.format) + " has one every " +
+                                                  std::to_string(from.line) + "): format " +
+                                                  std::to_string(kSpacedFormat) + " writes one every " +
                                                   std::to_string(kFrameRecordPeriodMs / kMsPerSecond) + " s at least");
   };
   for (std::size_t i = 1; i < s.frames.size(); ++i) {

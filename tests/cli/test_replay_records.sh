@@ -74,4 +74,11 @@ python3 "$tool" long "$drive" 0.01 320 2 "$TMP/short2.andros-session"
 expect_exit 0 "$BIN" export "$TMP/short2.andros-session"
 [[ $(wc -l <"$TMP/out") -eq 11521 ]] || fail "export of 36 s at 320 Hz: $(wc -l <"$TMP/out") lines"
 
+# `sessions` replays a format 2 session only within the same rule: the 24 h one is listed unproven, not replayed.
+mkdir -p "$TMP/old"
+python3 "$tool" long "$drive" 24 320 2 "$TMP/old/long2.andros-session"
+expect_exit 0 "$BIN" sessions --record-dir "$TMP/old" --format jsonl
+grep -qF '"proven":false' "$TMP/out" && grep -qF 'is 86399996 ms after the frame record it repeats (line 9)' "$TMP/out" ||
+  fail "sessions of a format 2 session of 24 h at 320 Hz: $(cat "$TMP/out")"
+
 exit $((failures > 0))

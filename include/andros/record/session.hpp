@@ -261,8 +261,9 @@ Session read_session(const std::filesystem::path& path);
 /// within kFrameRecordPeriodMs of it. Throws InputError at the record (the
 /// end's, for the ticks after the last frame record) that breaks it: a
 /// session crafted to make replay and export step far more ticks than it
-/// has records is refused before they start.
-void check_record_spacing(const Session& session);
+/// has records is refused before they start. any_format: a session of an
+/// earlier format held to it too (`sessions` replays only such a one).
+void check_record_spacing(const Session& session, bool any_format = false);
 
 std::string_view request_name(run::Request request);
 std::optional<run::Request> parse_request(std::string_view name);
