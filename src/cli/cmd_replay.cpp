@@ -68,7 +68,13 @@ int replay_session_file(const ReplayOptions& opt) {
               << "\n";
     return kExitRuntime;
   }
-  std::cout << result.compared << " frames identical\n";
+  std::cout << result.compared << " frames identical; " << result.records
+            << " records of the loop's (state, stop, reset, layer, gate, request, frame) made again the same";
+  if (result.unproven != 0) {
+    std::cout << "; " << result.unproven << " from line " << result.first_unproven_line
+              << " on not replayed (the session was not closed: what the loop sent then is not known)";
+  }
+  std::cout << "\n";
   return kExitOk;
 }
 
@@ -113,8 +119,9 @@ void add_replay_command(CLI::App& app, int& exit_code) {
                          "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
                          "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
                          "any machine, at any speed. Given a flight recorder's session (docs/recording.md), replays\n"
-                         "it with its own settings and mapping and prints 'N frames identical', or the first\n"
-                         "frame that differs (exit 1).");
+                         "it with its own settings and mapping and prints 'N frames identical; M records ... made\n"
+                         "again the same' (every state, stop, reset, layer, gate, request and frame record the loop\n"
+                         "wrote, in order), or the first frame or record that differs, with its line (exit 1).");
   cmd->add_option("EVENTS", opt->events,
                   "event script (docs/event-scripts.md), or - for standard input; checked whole\n"
                   "before the first frame is written; or a session file (a bare name, as 'sessions'\n"

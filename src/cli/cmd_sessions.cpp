@@ -16,6 +16,7 @@
 #include "andros/base/error.hpp"
 #include "andros/base/sink_text.hpp"
 #include "andros/record/session.hpp"
+#include "andros/record/session_replay.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 #include "session_summary.hpp"
@@ -36,7 +37,30 @@ struct Row {
   std::string problem;  ///< verify's, or why it could not be read
   std::optional<record::Session> session;
   SessionSummary summary;
+  /// The replay made every record again the same (weapons fired and stops
+  /// are then what the loop makes of the recorded input, not only what the
+  /// records say); else why not.
+  bool proven = false;
+  std::string unproven;
 };
+
+/// Whether the replay proves the session's records: WEAPONS and STOPS are counted from them.
+void prove(Row& row) {
+  if (!row.intact) {
+    row.unproven = "not intact";
+    return;
+  }
+  try {
+    // An earlier format's ticks are bounded by 24 h only: replayed when they are within its records' 60 s each.
+    record::check_record_spacing(*row.session, true);
+    const auto result = record::replay_session(*row.session);
+    row.proven = result.proven();
+    if (!result.identical) row.unproven = result.difference;
+    else if (!row.proven) row.unproven = std::to_string(result.unproven) + " records after the last frame record";
+  } catch (const std::exception& e) {
+    row.unproven = e.what();  // records dropped, a mapping that does not load, ticks its records do not hold
+  }
+}
 
 Row read_row(const std::filesystem::path& path, std::string name) {
   Row row;
@@ -51,6 +75,7 @@ Row read_row(const std::filesystem::path& path, std::string name) {
                                               : "intact, not closed";
     row.session = record::read_session(path);
     row.summary = summarize_session(*row.session);
+    prove(row);
   } catch (const std::exception& e) {
     // Its chain may be whole and its records still not a session's (crafted, or another format).
     row.session.reset();
@@ -90,8 +115,10 @@ void print_table(const std::vector<Row>& rows) {
   std::cout << fmt::format(kRowFormat, "START", "LENGTH", "ROBOT", "FRAMES", "WEAPONS", "STOPS", "RESETS",
                            "CONTROLLERS LOST", "LINK LOST", "VERIFY", "FILE");
   int untrusted = 0;
+  int unproven = 0;
   for (const auto& r : rows) {
     if (!r.intact || !r.session) ++untrusted;
+    if (r.session && !r.proven) ++unproven;
     if (!r.session) {
       std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict,
                                terminal_text(r.name));
@@ -99,9 +126,11 @@ void print_table(const std::vector<Row>& rows) {
     }
     const auto& s = *r.session;
     const auto& m = r.summary;
+    const std::string mark = r.proven ? "" : "?";
     std::cout << fmt::format(kRowFormat, terminal_text(start_text(s.started)), duration_text(s.length_ms()),
-                             terminal_text(s.settings.robot), s.frames_sent(), m.weapons_fired ? "FIRED" : "no",
-                             by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}),
+                             terminal_text(s.settings.robot), s.frames_sent(),
+                             (m.weapons_fired ? "FIRED" : "no") + mark,
+                             by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}) + mark,
                              by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
                              by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost,
                              r.verdict, terminal_text(r.name));
@@ -111,6 +140,12 @@ void print_table(const std::vector<Row>& rows) {
         "{} of {} sessions NOT INTACT or unreadable: what the table shows of them is what their records say, "
         "not evidence ('verify SESSION' names the first record altered)\n",
         untrusted, rows.size());
+  }
+  if (unproven != 0) {
+    std::cout << fmt::format(
+        "{} of {} sessions with WEAPONS and STOPS marked ?: what their records say, not proven by replay "
+        "('replay SESSION' says why)\n",
+        unproven, rows.size());
   }
 }
 
@@ -128,6 +163,8 @@ nlohmann::json json_row(const Row& r) {
   j["robot"] = json_text(s.settings.robot);
   j["frames_sent"] = s.frames_sent();
   j["supervised"] = s.settings.supervised;
+  j["proven"] = r.proven;
+  j["unproven"] = r.unproven;
   j["weapons_fired"] = m.weapons_fired;
   j["weapons"] = m.weapons;
   j["first_fire_s"] = m.first_fire_ms ? nlohmann::json(static_cast<double>(*m.first_fire_ms) / 1000.0) : nullptr;
@@ -175,9 +212,10 @@ void add_sessions_command(CLI::App& app, int& exit_code) {
                          "robot, frames sent, whether weapons fired (a weapon signal in a frame sent while\n"
                          "enabled), the stops by whom (op: the operator's stop button, sup: the supervisor's,\n"
                          "gate: the frame gate), the stops reset by whom (op, sup), the controllers lost (op,\n"
-                         "sup), the link lost, and the verdict of 'verify'. A session that is not intact is\n"
-                         "listed with what its records say, marked NOT INTACT; one that cannot be read, as\n"
-                         "unreadable.");
+                         "sup), the link lost, and the verdict of 'verify'. WEAPONS and STOPS are proven by\n"
+                         "replay (the loop run again makes every record the same); marked ? when not (what the\n"
+                         "records say). A session that is not intact is listed with what its records say,\n"
+                         "marked NOT INTACT; one that cannot be read, as unreadable.");
   cmd->add_option("--record-dir,--dir", opt->dir,
                   "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
                   "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"

@@ -313,7 +313,10 @@ void Recorder::observe(const run::TickReport& r) noexcept {
       record([&] { return payload::link(r.t_ms, r.link); });
     }
     const std::int64_t gap = r.tick - last_tick_ - 1;
-    if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_) {
+    // Written again after a while unchanged, so that a reader can bound the ticks a record stands for.
+    const bool due = repeat_frame_ms_ != 0 && r.t_ms - frame_t_ms_ >= repeat_frame_ms_;
+    if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_ || due) {
+      frame_t_ms_ = r.t_ms;
       data_ = r.data;
       result_ = r.result;
       sent_ = r.sent;

@@ -68,6 +68,7 @@ class Fields {
 /// each escaped as printable_text() writes it; earlier versions wrote a
 /// stop's name alone as a JSON string, and nothing after a reset.
 void read_stop_pad(Fields& f, StopRecord& r) {
+  r.has_pad = false;
   if (f.rest().empty() && r.reset) return;
   const auto j = f.json();
   if (j.is_string() && !r.reset) {
@@ -75,6 +76,7 @@ void read_stop_pad(Fields& f, StopRecord& r) {
     r.pad.name = r.name;
     return;
   }
+  r.has_pad = true;
   if (!j.is_object()) throw InputError(f.pos(), "a stop's pad is an object {\"name\": ..., \"path\": ...}");
   for (const auto& [key, field] :
        {std::pair{"name", &r.pad.name}, {"path", &r.pad.path}, {"serial", &r.pad.serial}, {"guid", &r.pad.guid}}) {
@@ -189,7 +191,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto t = time(f);
     const auto name = f.word();
     if (!parse_request(name)) throw InputError(pos, "unknown request " + quote(name));
-    s.requests.push_back({t, std::string(name)});
+    s.requests.push_back({t, std::string(name), pos.line});
   } else if (kind == "pause") {
     s.pauses.push_back(time(f));
   } else if (kind == "reload") {
@@ -213,6 +215,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto g = gap.starts_with("gap=") ? to_integer(gap.substr(4)) : std::nullopt;
     if (!g || *g < 0) throw InputError(pos, "bad gap " + quote(gap));
     fr.gap = *g;
+    fr.line = pos.line;
     if (!s.frames.empty() && fr.tick <= s.frames.back().tick) throw InputError(pos, "frame records out of order");
     check_tick(s, fr.tick, fr.t_ms, pos);
     if (fr.tick - fr.gap <= (s.frames.empty() ? -1 : s.frames.back().tick)) {
@@ -223,14 +226,15 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto t = time(f);
     const auto state = parse_op_state(f.rest());
     if (!state) throw InputError(pos, "unknown state " + quote(f.rest()));
-    s.states.push_back({t, *state});
+    s.states.push_back({t, *state, pos.line});
   } else if (kind == "gate") {
     const auto t = time(f);
-    s.gate_trips.push_back({t, f.text(s.format)});
+    s.gate_trips.push_back({t, f.text(s.format), pos.line});
   } else if (kind == "stop" || kind == "reset") {
     StopRecord r;
     r.t_ms = time(f);
     r.reset = kind == "reset";
+    r.line = pos.line;
     const auto who = f.word();
     const auto by = parse_stopper(who);
     if (!by || (r.reset && *by == run::StopBy::kGate)) throw InputError(pos, "unknown stopper " + quote(who));
@@ -239,7 +243,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     s.stops.push_back(std::move(r));
   } else if (kind == "layer") {
     const auto t = time(f);
-    s.layers.push_back({t, f.text(s.format)});
+    s.layers.push_back({t, f.text(s.format), pos.line});
   } else if (kind == "link") {
     LinkRecord l;
     l.t_ms = time(f);
@@ -263,6 +267,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     f.word();
     e.frames_sent = static_cast<std::uint64_t>(f.integer());
     e.why = f.text(s.format);
+    e.line = pos.line;
     // Its tick is where the last frame record leaves off, or later at the rate.
     if (e.last_tick != -1 || !s.frames.empty()) check_tick(s, e.last_tick, e.t_ms, pos);
     if (!s.frames.empty() && e.last_tick < s.frames.back().tick) {
@@ -313,6 +318,7 @@ Session read_session(const std::filesystem::path& path) {
   }
   if (lines.line_no() == 0) throw InputError(SourcePos{path.string()}, "empty: not a session");
   if (s.settings.sources.empty()) throw InputError(SourcePos{path.string()}, "a session without its settings");
+  check_record_spacing(s);
   return s;
 }
 

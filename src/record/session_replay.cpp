@@ -4,7 +4,10 @@
 
 #include "andros/base/error.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/record/recorded_loop.hpp"
+#include "andros/record/recorder.hpp"
 #include "andros/run/engine_frames.hpp"
+#include "record_check.hpp"
 
 namespace andros::record {
 namespace {
@@ -44,8 +47,10 @@ class Playback {
   void start() { link_ = status_at(-1); }
 
   // The controls.
+  /// Past the live run's last tick: a session cut short (or astray) ends here.
+  [[nodiscard]] bool past_end() const { return expected_tick_ > last_tick_; }
+  /// The request recorded at this tick's time, or none.
   run::Request poll() {
-    if (expected_tick_ > last_tick_) return run::Request::kShutdown;  // a session cut short (or astray): ends here
     if (next_request_ < s_.requests.size() && s_.requests[next_request_].t_ms == now_ms_) {
       return *parse_request(s_.requests[next_request_++].text);
     }
@@ -103,13 +108,12 @@ class Playback {
   void move_clock_to(std::int64_t ns) {
     if (ns > clock_.now().count()) clock_.advance(Nanos(ns) - clock_.now());
   }
-  [[nodiscard]] LinkRecord status_at(std::int64_t t_ms) const {
-    LinkRecord out{-1, link::LinkState::kUp, true, ""};
-    for (const auto& l : s_.links) {
-      if (l.t_ms > t_ms) break;
-      out = l;
-    }
-    return out;
+  /// The link as the last record at or before t_ms left it. t_ms never goes
+  /// back (the pumps' times), so each record is passed once: a link that
+  /// flapped every second costs a step per flap, not a walk from the start.
+  [[nodiscard]] const LinkRecord& status_at(std::int64_t t_ms) {
+    while (next_link_ < s_.links.size() && s_.links[next_link_].t_ms <= t_ms) status_ = s_.links[next_link_++];
+    return status_;
   }
 
   const Session& s_;
@@ -125,6 +129,8 @@ class Playback {
   std::size_t next_request_ = 0;
   std::size_t next_pause_ = 0;
   std::size_t next_reload_ = 0;
+  std::size_t next_link_ = 0;
+  LinkRecord status_{-1, link::LinkState::kUp, true, ""};  ///< before the first link record
   LinkRecord link_;
 };
 
@@ -196,11 +202,16 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
                                             "was full): it cannot be replayed exactly");
   }
   SessionReplayResult out;
+  // The records the loop writes, made again by the recorder the run uses, and compared as they come.
+  RecordCheck check(s);
+  Recorder recorder([&check](const std::string& payload) { check.made(payload); },
+                    s.format >= kSpacedFormat ? kFrameRecordPeriodMs : 0);
   run::ReloadableFrames frames(nullptr);
   Playback playback(s, load, frames);
   frames.replace(playback.engine_frames(s.settings));
   playback.start();
-  PlaybackInput input(playback, s.settings.supervised);
+  PlaybackInput playback_input(playback, s.settings.supervised);
+  RecordingInput input(playback_input, recorder);  // the request records' time is the pump's
   PlaybackLink link(playback);
   run::Bridge bridge(playback.clock(), input, frames, link,
                      run::BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
@@ -208,39 +219,50 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
                                         .rules = {s.settings.weapons, s.settings.code}});
 
   run::RunControl control;
-  control.poll = [&] { return playback.poll(); };
+  control.poll = [&] {
+    if (playback.past_end()) return run::Request::kShutdown;
+    const run::Request r = playback.poll();
+    recorder.request(r);
+    return r;
+  };
   control.pause = [&] { playback.pause(); };
   control.begin_reload = [](const std::string&) {};  // its outcome is the session's
   control.finish_reload = [&] { return playback.finish_reload(); };
 
-  const auto differ = [&out](std::string what) {
-    if (out.difference.empty()) out.difference = std::move(what);
-  };
+  // Each tick's frame against the record in effect (a difference named at
+  // its tick), then the tick's records against the session's.
   bridge.run(control, [&](const run::TickReport& r) {
     if (observe) observe(r);
+    ++out.ticks;
     if (r.tick != playback.expected_tick()) {
-      differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " + std::to_string(playback.expected_tick()) +
-             " here");
+      check.differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " +
+                   std::to_string(playback.expected_tick()) + " here");
     } else if (r.tick <= playback.last_tick()) {
       const FrameRecord* live = s.frame_at(r.tick);
       const bool live_sent = live != nullptr && live->offered && live->result == link::SendResult::kSent;
+      const std::string at = "tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) + " ms, line " +
+                             std::to_string(live == nullptr ? 0 : live->line) + ")";
       if (live_sent && (!r.sent || r.data != live->data)) {
-        differ("tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) + " ms): recorded " +
-               frame_text(live->data) + ", replayed " + (r.sent ? frame_text(r.data) : std::string("no frame")));
-      } else if (live_sent) {
-        ++out.compared;
+        check.differ(at + ": recorded " + frame_text(live->data) + ", replayed " +
+                     (r.sent ? frame_text(r.data) : std::string("no frame")));
       } else if (live != nullptr && !live->offered && r.sent) {
-        differ("tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) +
-               " ms): the live loop sent nothing, the replay " + frame_text(r.data));
+        check.differ(at + ": the live loop sent nothing, the replay " + frame_text(r.data));
       }
+      recorder.observe(r);
+      if (live_sent && check.difference().empty()) ++out.compared;
     }
     playback.ticked(r.tick);
   });
-  if (s.end && out.compared != s.end->frames_sent && out.difference.empty()) {
-    differ("the live run sent " + std::to_string(s.end->frames_sent) + " frames, the replay reproduced " +
-           std::to_string(out.compared));
+  check.finish();
+  if (s.end && out.compared != s.end->frames_sent) {
+    check.differ("the live run sent " + std::to_string(s.end->frames_sent) + " frames, the replay reproduced " +
+                 std::to_string(out.compared));
   }
+  out.difference = check.difference();
   out.identical = out.difference.empty();
+  out.records = check.matched();
+  out.unproven = check.unproven();
+  out.first_unproven_line = check.first_unproven_line();
   return out;
 }
 

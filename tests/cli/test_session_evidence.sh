@@ -16,7 +16,7 @@ run_cmd harness "$TMP/cap" -- "$BIN" run --robot hd1 --port {PTY} --input "$LIVE
 session=$(ls "$STATE"/*.andros-session | tail -1)
 expect_exit 0 "$BIN" replay "$session"
 identical=$(cat "$TMP/out")
-[[ $identical =~ ^[0-9]+\ frames\ identical$ ]] || fail "replay of the session: $identical"
+[[ $identical =~ ^[0-9]+\ frames\ identical\;\ [0-9]+\ records\ .*\ made\ again\ the\ same$ ]] || fail "replay of the session: $identical"
 
 # 1. A recorded path is a label: `../` in it writes nothing anywhere.
 cp "$session" "$TMP/dotdot.andros-session"
@@ -94,7 +94,8 @@ grep -q "^not closed" "$TMP/out" || fail "verify: a session cut short is closed:
 mkdir -p "$TMP/cutdir"
 cp "$TMP/cut.andros-session" "$TMP/cutdir/20240101-000000-1.andros-session"
 expect_exit 0 "$BIN" sessions --record-dir "$TMP/cutdir"
-grep -Eq "HD1 +[0-9]+ +no +0 +0 +0 +0 +intact, cut short +$TMP/cutdir/20240101-000000-1.andros-session" "$TMP/out" ||
+# Its records after the last frame record (the stopping state) are not replayed: WEAPONS and STOPS unproven.
+grep -Eq "HD1 +[0-9]+ +no\\? +0\\? +0 +0 +0 +intact, cut short +$TMP/cutdir/20240101-000000-1.andros-session" "$TMP/out" ||
   fail "sessions of a session cut short: $(cat "$TMP/out")"
 expect_exit 0 "$BIN" plot "$TMP/cut.andros-session" --output "$TMP/cut.svg"
 grep -q "cut short at line $((records + 1))" "$TMP/cut.svg" || fail "the plot does not say the session was cut short"

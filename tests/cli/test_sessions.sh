@@ -3,7 +3,9 @@
 # and the resets by whom, the controllers and the link lost, and the verdict;
 # the same as JSON lines. Crafted sessions (tests/data/sessions/drive.andros-session's first
 # records, then records written here, the chain rehashed) check each field;
-# one altered and one unreadable are listed, marked, never left out.
+# one altered and one unreadable are listed, marked, never left out. None of
+# them is the loop's own (replay makes other records): their WEAPONS and
+# STOPS are marked unproven (?); tests/cli/test_replay_records.sh has proven ones.
 source "$(dirname "$0")/lib.sh"
 tool="$(dirname "$0")/session_tool.py"
 dir=$TMP/rec
@@ -63,16 +65,18 @@ row() { grep -F "$dir/$1.andros-session" "$TMP/table"; }
 header='^START +LENGTH +ROBOT +FRAMES +WEAPONS +STOPS +RESETS +CONTROLLERS LOST +LINK LOST +VERIFY +FILE$'
 sed -n 2p "$TMP/table" | grep -Eq "$header" || fail "the table's header: $(sed -n 2p "$TMP/table")"
 row 20240101-000000-1 | grep -Eq \
-  "^2026-11-26 08:33:39 +0:00:01 +HD1 +31 +FIRED +3 \(op 1, sup 1, gate 1\) +1 \(sup 1\) +2 \(op 1, sup 1\) +2 +intact +$dir/" ||
+  "^2026-11-26 08:33:39 +0:00:01 +HD1 +31 +FIRED\? +3 \(op 1, sup 1, gate 1\)\? +1 \(sup 1\) +2 \(op 1, sup 1\) +2 +intact +$dir/" ||
   fail "the incident's row: $(row 20240101-000000-1)"
-row 20240102-000000-2 | grep -Eq "^2026-11-26 08:33:39 +0:00:00 +HD1 +2 +no +0 +0 +0 +0 +intact " ||
+row 20240102-000000-2 | grep -Eq "^2026-11-26 08:33:39 +0:00:00 +HD1 +2 +no\? +0\? +0 +0 +0 +intact " ||
   fail "the quiet session's row: $(row 20240102-000000-2)"
-row 20240103-000000-3 | grep -Eq " HD1 +3 +no +0 +0 +0 +0 +NOT INTACT +$dir/" ||
+row 20240103-000000-3 | grep -Eq " HD1 +3 +no\? +0\? +0 +0 +0 +NOT INTACT +$dir/" ||
   fail "the altered session's row: $(row 20240103-000000-3)"
 row 20240104-000000-4 | grep -Eq '^\? +\? +\? +\? +\? +\? +\? +\? +\? +unreadable ' ||
   fail "the unreadable session's row: $(row 20240104-000000-4)"
 grep -q "^2 of 4 sessions NOT INTACT or unreadable: what the table shows of them is what their records say, not evidence" \
   "$TMP/table" || fail "no footnote for the sessions not to be trusted: $(cat "$TMP/table")"
+grep -q "^3 of 4 sessions with WEAPONS and STOPS marked ?: what their records say, not proven by replay" "$TMP/table" ||
+  fail "no footnote for the sessions not proven: $(cat "$TMP/table")"
 
 # --format jsonl: an object a session, the documented fields.
 expect_exit 0 "$BIN" sessions --record-dir "$dir" --format jsonl
@@ -94,7 +98,9 @@ want = [
      "controllers_lost": {"operator": 0, "supervisor": 0}, "links_lost": 0, "dropped": 0},
 ]
 for got, w in zip(rows, want):
+    assert got.pop("proven") is False and got.pop("unproven").startswith("tick 0 (0 ms, line "), got
     assert got == w, (got, w)
+assert rows[2]["proven"] is False and rows[2]["unproven"] == "not intact", rows[2]
 assert rows[2]["verify"] == "NOT INTACT" and rows[2]["intact"] is False, rows[2]
 assert rows[2]["problem"].startswith("record 9 removed"), rows[2]
 assert rows[2]["readable"] is True and rows[2]["stops"]["operator"] == 0, rows[2]

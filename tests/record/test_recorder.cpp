@@ -3,6 +3,7 @@
 // Ctrl-Z, a link loss and a reload inside it) replays byte for byte.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -19,6 +20,7 @@
 #include "andros/record/recorder.hpp"
 #include "andros/record/session_replay.hpp"
 #include "andros/run/engine_frames.hpp"
+#include "andros/timing/rate.hpp"
 #include "support/temp_dir.hpp"
 
 namespace andros::record {
@@ -411,6 +413,79 @@ TEST(Recorder, ASessionWithDroppedRecordsIsNotReplayed) {
   Session s = read_session(live.session);
   s.dropped = 3;
   EXPECT_THROW(replay_session(s), InputError);
+}
+
+TEST(Recorder, EveryRecordTheLoopWritesIsComparedWithItsLine) {
+  RecordedRun live;
+  live.run(
+      "0 connect {path=/dev/input/event5 guid=030000005e040000} Pad A\n40 button leftshoulder 1\n"
+      "200 button guide 1\n300 button guide 0\n320 button leftshoulder 0\n"
+      "500 button back 1\n500 button start 1\n2700 button back 0\n2700 button start 0\n3000 end\n");
+  const Session s = read_session(live.session);
+  ASSERT_TRUE(replay_session(s).identical) << replay_session(s).difference;
+  ASSERT_EQ(s.stops.size(), 2u);
+  ASSERT_GE(s.states.size(), 3u);
+  const auto differs = [](const Session& altered, const std::string& start) {
+    const auto result = replay_session(altered);
+    EXPECT_FALSE(result.identical);
+    EXPECT_EQ(result.difference.rfind(start, 0), 0u) << result.difference;
+  };
+  // Frames unchanged, each record altered in turn: the replay names its line and both texts.
+  Session state = s;
+  state.states[1].state = run::OpState::kNotEnabled;
+  differs(state, "line " + std::to_string(s.states[1].line) + ": recorded 'state " + std::to_string(s.states[1].t_ms) +
+                     " not enabled', the replay makes 'state ");
+  Session stop = s;
+  stop.stops[0].by = run::StopBy::kSupervisor;
+  differs(stop, "line " + std::to_string(s.stops[0].line) + ": recorded 'stop 200 supervisor {");
+  Session reset = s;
+  reset.stops.pop_back();
+  differs(reset, "the replay makes 'reset 2520 operator {");
+  Session layer = s;
+  layer.layers[0].text = "weapons";
+  differs(layer, "line " + std::to_string(s.layers[0].line) + ": recorded 'layer 0 \"weapons\"'");
+  Session gate = s;
+  gate.gate_trips.push_back({s.states[1].t_ms, "forged", s.states[1].line});
+  differs(gate, "line " + std::to_string(s.states[1].line) + ": recorded 'gate ");
+  // A frame record repeating the one before it a tick later: the same frames, a record the loop never writes.
+  Session frame = s;
+  const auto spaced =
+      std::adjacent_find(frame.frames.begin(), frame.frames.end(),
+                         [](const FrameRecord& a, const FrameRecord& b) { return b.tick > a.tick + 1; });
+  ASSERT_NE(spaced, frame.frames.end());
+  FrameRecord again = *spaced;
+  ++again.tick;
+  again.t_ms = timing::FrameClock(25'000).time_of(again.tick);
+  frame.frames.insert(spaced + 1, again);
+  differs(frame, "line " + std::to_string(again.line) + ": recorded 'frame " + std::to_string(again.tick) + " ");
+  // In the file's order: a record matched out of its place is named.
+  Session moved = s;
+  std::swap(moved.states[1].line, moved.frames[1].line);
+  differs(moved, "line ");
+}
+
+TEST(Recorder, AFrameRecordIsWrittenAgainEveryMinuteAndReadersHoldItsWriterToIt) {
+  RecordedRun live;
+  live.run("0 connect pad\n130000 end\n");  // 130 s at rest: one frame throughout
+  const Session s = read_session(live.session);
+  // After the last change (the link and controller settling), the same frame a minute apart.
+  std::vector<std::int64_t> at;
+  for (const auto& f : s.frames) {
+    if (f.t_ms < 130'000) at.push_back(f.t_ms);
+  }
+  ASSERT_GE(at.size(), 3u);
+  EXPECT_LT(at[at.size() - 3], 60'000);
+  EXPECT_EQ(at[at.size() - 2], at[at.size() - 3] + 60'000);
+  EXPECT_EQ(at.back(), at[at.size() - 3] + 120'000);
+  EXPECT_EQ(s.format, kSessionFormat);
+  EXPECT_TRUE(replay_session(s).proven()) << replay_session(s).difference;
+  // Without the record at 60 s, ticks stand 60 s and more after a record: refused.
+  Session gap = s;
+  std::erase_if(gap.frames, [&at](const FrameRecord& f) { return f.t_ms == at[at.size() - 2]; });
+  EXPECT_THROW(check_record_spacing(gap), InputError);
+  // An earlier format (whose writer did not repeat its record) is read as before.
+  gap.format = 2;
+  EXPECT_NO_THROW(check_record_spacing(gap));
 }
 
 }  // namespace

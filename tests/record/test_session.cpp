@@ -200,12 +200,13 @@ TEST(Session, StopAndResetRecordsReadBack) {
   settings.mapping_file = "/m/hd1.yaml";
   settings.rate_millihertz = 25'000;
   settings.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
-  for (const auto& p : {payload::header(), payload::program("1.0"), payload::settings(settings),
-                        payload::stop(120, run::StopBy::kOperator, {"Pad A", "/dev/input/event5", "", "0300abcd"}),
-                        payload::stop(160, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
-                        payload::reset(2200, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
-                        std::string("stop 2300 operator \"Old pad\""), std::string("reset 2350 operator"),
-                        payload::end(2400, 60, 60, "x")}) {
+  for (const auto& p :
+       {payload::header(), payload::program("1.0"), payload::settings(settings),
+        payload::stop(120, run::StopBy::kOperator, {"Pad A", "/dev/input/event5", "", "0300abcd"}),
+        payload::stop(160, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
+        payload::reset(2200, run::StopBy::kSupervisor, {"Pad \"B\"\xff", "", "S/N 7", ""}),
+        std::string("stop 2300 operator \"Old pad\""), std::string("reset 2350 operator"),
+        std::string("frame 60 2400 sent 0000182000908080000000010020CC02 gap=60"), payload::end(2400, 60, 60, "x")}) {
     text += chain.line(p);
   }
   EXPECT_EQ(

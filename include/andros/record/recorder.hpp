@@ -74,7 +74,16 @@ class SessionWriter {
 /// is dropped and counted, and the loop goes on.
 class Recorder {
  public:
-  explicit Recorder(SessionWriter& writer) : writer_(writer) {}
+  /// Where the payloads go: the writer's queue, or (replay) the comparison
+  /// with the records a session holds. Never blocks the loop.
+  using PayloadSink = std::function<void(std::string payload)>;
+
+  explicit Recorder(SessionWriter& writer)
+      : writer_(&writer), sink_([&writer](std::string payload) { writer.push(std::move(payload)); }) {}
+  /// repeat_frame_ms: the frame record written again after this long
+  /// (kFrameRecordPeriodMs); 0 for a replay of a format that did not.
+  explicit Recorder(PayloadSink sink, std::int64_t repeat_frame_ms = kFrameRecordPeriodMs)
+      : sink_(std::move(sink)), repeat_frame_ms_(repeat_frame_ms) {}
 
   /// Before the loop starts: the session's header.
   void header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
@@ -89,11 +98,13 @@ class Recorder {
   /// The run's last record.
   void end(std::string_view why) noexcept;
   /// A record the caller could not make (its settings could not be read).
-  void drop() noexcept { writer_.drop(); }
+  void drop() noexcept {
+    if (writer_ != nullptr) writer_->drop();
+  }
 
   [[nodiscard]] std::uint64_t frames_sent() const { return frames_sent_; }
   /// The dropped records the writer has not been told of yet go in a record of their own.
-  [[nodiscard]] std::uint64_t dropped() const { return writer_.dropped(); }
+  [[nodiscard]] std::uint64_t dropped() const { return writer_ == nullptr ? 0 : writer_->dropped(); }
 
  private:
   /// One record, its payload made by make: whatever that throws is a record
@@ -101,9 +112,9 @@ class Recorder {
   template <class Make>
   void record(Make&& make) noexcept {
     try {
-      writer_.push(make());
+      sink_(make());
     } catch (...) {
-      writer_.drop();
+      drop();
     }
   }
   /// A method's whole body (its bookkeeping too): what it throws is a record dropped.
@@ -112,11 +123,13 @@ class Recorder {
     try {
       body();
     } catch (...) {
-      writer_.drop();
+      drop();
     }
   }
 
-  SessionWriter& writer_;
+  SessionWriter* writer_ = nullptr;  ///< null: not writing (a replay's)
+  PayloadSink sink_;
+  std::int64_t repeat_frame_ms_ = kFrameRecordPeriodMs;
   std::int64_t t_ms_ = 0;  ///< the last pump's time: the tick's
   bool after_pause_ = false;
   bool input_ended_ = false;
@@ -135,6 +148,7 @@ class Recorder {
   bool sent_ = true;
   std::int64_t last_tick_ = -1;
   std::int64_t last_t_ms_ = 0;
+  std::int64_t frame_t_ms_ = 0;  ///< the last frame record's time
   std::uint64_t frames_sent_ = 0;
 };
 

@@ -30,13 +30,24 @@ inline constexpr std::string_view kSessionMagic = "andros-session";
 /// paths and mapping texts, the host, a reload's message, a gate's fault, a
 /// layer's name, a link's detail, the end's why) is written as
 /// printable_text() writes it, inside its JSON string, so that any bytes are
-/// recorded whole and the record is always valid UTF-8; format 2 wrote them as
-/// JSON strings of the text itself (and could not hold bytes that are not
-/// UTF-8). 2: the settings' rate is `rate_millihertz`; format 1 named it
-/// `rate_mhz` (read as megahertz by everyone). All three are read.
+/// recorded whole and the record is always valid UTF-8 (format 2 wrote them
+/// as JSON strings of the text itself, and could not hold bytes that are not
+/// UTF-8); and the loop's frame record is written again (the same frame,
+/// gap=0) when kFrameRecordPeriodMs have passed since the last, so that no
+/// tick is more than that after a record (a reader refuses a session of
+/// format 3 or later whose ticks stretch further: check_record_spacing()).
+/// 2: the settings' rate is `rate_millihertz`; format 1 named it `rate_mhz`
+/// (read as megahertz by everyone). All three are read.
 inline constexpr int kSessionFormat = 3;
 /// The first format whose texts are written as printable_text() writes them.
 inline constexpr int kEscapedTextFormat = 3;
+/// The first format whose frame records are kFrameRecordPeriodMs apart at most.
+inline constexpr int kSpacedFormat = 3;
+/// The longest a frame record holds in a session of kSpacedFormat: the ticks
+/// it stands for lie within this of its own. Reading such a session (replay's
+/// ticks, export's rows) is then work linear in its records: at most
+/// records x 60 s x rate ticks.
+inline constexpr std::int64_t kFrameRecordPeriodMs = 60'000;
 inline constexpr int kOldestSessionFormat = 1;
 inline constexpr std::string_view kSessionExtension = ".andros-session";
 /// The longest line read (checked while reading: a longer one is refused
@@ -153,6 +164,7 @@ std::string cut_short_text(const VerifyResult& result);
 struct TimedText {
   std::int64_t t_ms = 0;
   std::string text;
+  int line = 0;  ///< the record's line in the file (replay names a difference by it)
 };
 
 struct FrameRecord {
@@ -162,6 +174,7 @@ struct FrameRecord {
   link::SendResult result = link::SendResult::kSent;
   protocol::DataBytes data{};
   std::int64_t gap = 0;  ///< ticks the live loop did not run just before this one (a stall, a pause)
+  int line = 0;          ///< the record's line in the file
 };
 
 /// What became of a frame record's frame, as the record says it: sent, busy, down, or none (nothing offered).
@@ -183,6 +196,7 @@ struct LinkRecord {
 struct StateRecord {
   std::int64_t t_ms = 0;
   run::OpState state = run::OpState::kNoLink;
+  int line = 0;  ///< the record's line in the file
 };
 
 /// `stop T operator|supervisor|gate "NAME" {PAD}` (whose stop latched, or
@@ -198,6 +212,8 @@ struct StopRecord {
   input::PadIdentity pad{};  ///< the physical pad that pressed it (empty: not recorded, or the gate's)
   /// A stop pressed again while stopped: recorded, but the latch and whose it is are unchanged.
   bool again = false;
+  bool has_pad = true;  ///< false: an earlier version's record, without PAD (its name alone, or nothing)
+  int line = 0;         ///< the record's line in the file
 };
 
 struct EndRecord {
@@ -205,14 +221,14 @@ struct EndRecord {
   std::int64_t last_tick = 0;
   std::uint64_t frames_sent = 0;
   std::string why;
+  int line = 0;  ///< the record's line in the file
 };
 
 /// A session's records, by kind, in time order.
 struct Session {
   std::string path;
-  int format = kSessionFormat;  ///< the header's: how its texts are written
-  std::string version;          ///< of the program that recorded it
-  std::string started;          ///< local time, ISO 8601
+  std::string version;  ///< of the program that recorded it
+  std::string started;  ///< local time, ISO 8601
   long pid = 0;
   std::string host;
   SessionSettings settings;
@@ -232,6 +248,7 @@ struct Session {
   /// "No space left on device", "File too large"; or the full queue); "" when not said.
   std::string dropped_why;
   std::optional<EndRecord> end;
+  int format = 0;          ///< its header's: how its texts and frame records are written
   int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
 
   /// The frame record in effect at tick (the last one at or before it), or null.
@@ -251,6 +268,15 @@ struct Session {
 /// frame record's. Throws InputError at FILE:LINE for a record it cannot
 /// read, but for a last line cut short, which is left out (cut_short_line).
 Session read_session(const std::filesystem::path& path);
+
+/// A session of kSpacedFormat or later without dropped records: each frame
+/// record's ticks (to the next record's, less a gap's, or to the end's)
+/// within kFrameRecordPeriodMs of it. Throws InputError at the record (the
+/// end's, for the ticks after the last frame record) that breaks it: a
+/// session crafted to make replay and export step far more ticks than it
+/// has records is refused before they start. any_format: a session of an
+/// earlier format held to it too (`sessions` replays only such a one).
+void check_record_spacing(const Session& session, bool any_format = false);
 
 std::string_view request_name(run::Request request);
 std::optional<run::Request> parse_request(std::string_view name);

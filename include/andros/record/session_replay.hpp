@@ -4,7 +4,8 @@
 /// moved (a stall's skipped ticks, a Ctrl-Z's pause), the recorded input
 /// events, requests, reload outcomes and link results played back at the
 /// ticks they came, and the engine made from the recorded mapping text. Every
-/// frame the live loop handed to the link is compared with the replay's.
+/// frame the live loop handed to the link is compared with the replay's, and
+/// every record the loop writes (record_check.hpp) with the session's.
 
 #include <cstdint>
 #include <functional>
@@ -19,8 +20,19 @@ namespace andros::record {
 
 struct SessionReplayResult {
   std::uint64_t compared = 0;  ///< frames sent live that the replay reproduced byte for byte
+  std::uint64_t ticks = 0;     ///< ticks the replay ran (its work: at most the session's ticks and a stop's few)
+  /// Every frame and every record the loop decides (request, gate, state,
+  /// stop, reset, layer, frame) made again the same, in the file's order.
   bool identical = false;
-  std::string difference;  ///< the first difference, when not identical
+  std::string difference;     ///< the first difference, when not identical: its line and both texts
+  std::uint64_t records = 0;  ///< the session's records of those kinds made again the same
+  /// Records of a session not closed after its last frame record: the replay
+  /// does not run the ticks they came in (what the live loop sent then is not
+  /// known), so they are neither proven nor different.
+  std::uint64_t unproven = 0;
+  int first_unproven_line = 0;
+  /// Every record of the session proven by the replay.
+  [[nodiscard]] bool proven() const { return identical && unproven == 0; }
 };
 
 /// The mapping a session's files make (the first file is the mapping).
