@@ -159,7 +159,12 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
   if (!result.note.empty()) spdlog::info("{}", result.note);
   if (!result.settings) {
     ReloadOutcome out{false, "reload (SIGHUP) failed, the old settings stay: " + result.error};
-    spdlog::error("{}", out.message);
+    // Several errors of the files, a log line each (a log line is one line).
+    for (std::string_view rest = out.message; !rest.empty();) {
+      const auto nl = rest.find('\n');
+      spdlog::error("{}", rest.substr(0, nl));
+      rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+    }
     to.service.reloaded("reload failed: " + result.error);
     return out;
   }
