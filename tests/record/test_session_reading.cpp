@@ -101,8 +101,8 @@ TEST(SessionReading, RecordsAfterTheChainBreaksAreNotData) {
 
 TEST(SessionReading, NulBytesAfterAClosedSessionLeaveItClosed) {
   testing::TempDir dir;
-  const auto path = write_chained(dir, with(drive_payloads(), {payload::end(600, 15, 16, "SIGINT")}), true,
-                                  std::string(4096, '\0'));
+  const auto path =
+      write_chained(dir, with(drive_payloads(), {payload::end(600, 15, 16, "SIGINT")}), true, std::string(4096, '\0'));
   const auto checked = read_checked_session(path);
   EXPECT_TRUE(checked.verdict.intact) << checked.verdict.problem;
   EXPECT_TRUE(checked.verdict.closed);
@@ -135,7 +135,8 @@ TEST(SessionReading, AnEndHoldsNoMoreThanTheSession) {
   EXPECT_EQ(unreadable_text(many), dir.path().string() +
                                        "/d.andros-session:8: error: 17 frames sent: not within a session that ended "
                                        "at tick 15 (at most 16)");
-  EXPECT_TRUE(read_checked_session(write_chained(dir, with(drive_payloads(), {payload::end(600, 15, 16, "x")}))).session);
+  EXPECT_TRUE(
+      read_checked_session(write_chained(dir, with(drive_payloads(), {payload::end(600, 15, 16, "x")}))).session);
 }
 
 TEST(SessionReading, ASessionWhoseRecordsSayTheDiskFilledIsSaidSo) {
