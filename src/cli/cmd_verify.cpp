@@ -17,7 +17,7 @@ int run_verify(const std::string& path) {
   std::error_code ec;
   // Anything else that is there (a FIFO, a device) is refused by the reading, saying what it is.
   if (!std::filesystem::exists(path, ec)) throw InputError(SourcePos{path}, "no such session file");
-  const auto checked = record::read_checked_session(path);
+  const auto checked = record::read_checked_session(path, record::Keep::kVerdict);
   const auto& result = checked.verdict;
   if (!result.intact) {
     std::cout << "NOT INTACT: " << result.problem << "\n";

@@ -71,12 +71,16 @@ class ChainCheck {
 /// cannot read.
 class RecordReader {
  public:
-  explicit RecordReader(const std::filesystem::path& path) { s_.path = path.string(); }
+  RecordReader(const std::filesystem::path& path, Keep keep) : keep_(keep) { s_.path = path.string(); }
   void read(std::string_view line, const SourcePos& pos);
   /// The session read. Throws InputError for one without its settings.
   Session finish() &&;
 
  private:
+  /// Keep::kVerdict: what a later record's checks and the verdict need, no more.
+  void forget();
+
+  Keep keep_;
   Session s_;
   std::optional<SessionSettings> pending_;  ///< a reload's settings, until its reload record
   bool last_dropped_ = false;               ///< the last record read is a `dropped` one

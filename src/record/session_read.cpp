@@ -329,6 +329,21 @@ void RecordReader::read(std::string_view line, const SourcePos& pos) {
   // Records that end with a `dropped` one: the writer could write nothing after it.
   last_dropped_ = dropped;
   if (dropped && for_want_of_room(s_.dropped_why)) out_of_room_ = true;
+  if (keep_ == Keep::kVerdict) forget();
+}
+
+void RecordReader::forget() {
+  // A frame record is checked against the one before it; nothing else against an earlier record.
+  if (s_.frames.size() > 1) s_.frames.erase(s_.frames.begin(), s_.frames.end() - 1);
+  s_.events.clear();
+  s_.requests.clear();
+  s_.pauses.clear();
+  s_.reloads.clear();
+  s_.states.clear();
+  s_.gate_trips.clear();
+  s_.stops.clear();
+  s_.layers.clear();
+  s_.links.clear();
 }
 
 Session RecordReader::finish() && {
@@ -337,12 +352,12 @@ Session RecordReader::finish() && {
   return std::move(s_);
 }
 
-CheckedSession read_checked_session(const std::filesystem::path& path) {
+CheckedSession read_checked_session(const std::filesystem::path& path, Keep keep) {
   CheckedSession out;
   VerifyResult& v = out.verdict;
   SessionLines lines(path);
   ChainCheck chain(path);
-  RecordReader records(path);
+  RecordReader records(path, keep);
   // The records are read while the chain holds and they read: after a
   // record that does not, the chain is still checked, for its verdict.
   const auto unreadable = [&out](InputError e) {

@@ -81,7 +81,9 @@ std::string ChainCheck::take(std::string_view line, int at) {
   return {};
 }
 
-VerifyResult verify_session(const std::filesystem::path& path) { return read_checked_session(path).verdict; }
+VerifyResult verify_session(const std::filesystem::path& path) {
+  return read_checked_session(path, Keep::kVerdict).verdict;
+}
 
 std::string cut_short_text(const VerifyResult& result) {
   return "cut short at line " + std::to_string(result.cut_short_line) +

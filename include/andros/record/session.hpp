@@ -270,7 +270,12 @@ struct CheckedSession {
 /// record that does not read, the chain is still checked. Throws InputError
 /// for a path that is not a regular file (require_session_file), RuntimeError
 /// for a read that fails.
-CheckedSession read_checked_session(const std::filesystem::path& path);
+///
+/// What of the records is kept: all of them, or (verify's) only what the
+/// verdict needs, each record checked all the same, in memory of a line's
+/// size: the settings, the end, the dropped count and the last frame record.
+enum class Keep : std::uint8_t { kRecords, kVerdict };
+CheckedSession read_checked_session(const std::filesystem::path& path, Keep keep = Keep::kRecords);
 
 /// read_checked_session()'s records: throws its `unreadable` error. A
 /// session that is not intact gives the records before the break.
