@@ -24,6 +24,18 @@ forge weapon 17 "17 frame 16 640 sent 0600182100908080000000010020CC02 gap=0"
 forge stop 17 '17 stop 640 supervisor {"name":"boss","path":"","serial":"","guid":""}'
 forge end 22 '22 end 9000 tick 225 frames 226 "end of the input"'
 
+# alone FILE DIR: FILE as the one session in $TMP/DIR (20240101-000000-1.andros-session).
+alone() {
+  mkdir -p "$TMP/$2"
+  cp "$1" "$TMP/$2/20240101-000000-1.andros-session"
+}
+# listed FILE DIR VERDICT NOTE: sessions lists FILE, alone in DIR, as VERDICT, with NOTE (a regex) under the table.
+listed() {
+  alone "$1" "$2"
+  expect_exit 0 "$BIN" sessions --record-dir "$TMP/$2"
+  grep -Eq " $3 +$TMP/$2/20240101-000000-1.andros-session\$" "$TMP/out" || fail "sessions of $2: $(cat "$TMP/out")"
+  grep -Eq "^$TMP/$2/20240101-000000-1.andros-session: $4" "$TMP/out" || fail "sessions of $2 does not say /$4/: $(cat "$TMP/out")"
+}
 # jsonl_row DIR: the one session's JSON object in DIR without its file name and verdict.
 jsonl_row() {
   "$BIN" sessions --record-dir "$1" --format jsonl |
@@ -31,6 +43,16 @@ jsonl_row() {
 }
 # svg_body FILE: the page without its source line (which names the file and says it was cut short).
 svg_body() { grep -v '>session ' "$1"; }
+# same_page_and_rows BASE FILE WHAT: FILE's plot (but for its source line,
+# $TMP/got.svg) and export ($TMP/err: its warnings) are BASE's.
+same_page_and_rows() {
+  expect_exit 0 "$BIN" plot "$1" --output "$TMP/base.svg"
+  expect_exit 0 "$BIN" plot "$2" --output "$TMP/got.svg"
+  [[ $(svg_body "$TMP/got.svg") == "$(svg_body "$TMP/base.svg")" ]] || fail "plot drew $3"
+  expect_exit 0 "$BIN" export "$1" --output "$TMP/base.csv"
+  expect_exit 0 "$BIN" export "$2" --output "$TMP/got.csv"
+  cmp -s "$TMP/base.csv" "$TMP/got.csv" || fail "export wrote $3: $(diff "$TMP/base.csv" "$TMP/got.csv" | head -5)"
+}
 
 for forged in weapon:to17:17 stop:to17:17 end:to22:22; do
   IFS=: read -r name base n <<<"$forged"
@@ -40,9 +62,8 @@ for forged in weapon:to17:17 stop:to17:17 end:to22:22; do
     fail "verify of the forged $name line: $(cat "$TMP/out")"
   grep -q "^not closed: " "$TMP/out" || fail "verify: the forged $name line closed the session: $(cat "$TMP/out")"
   # sessions, table and JSON: what the records before it say.
-  mkdir -p "$TMP/$name" "$TMP/$name-base"
-  cp "$F/$name.andros-session" "$TMP/$name/20240101-000000-1.andros-session"
-  cp "$F/$base.andros-session" "$TMP/$name-base/20240101-000000-1.andros-session"
+  alone "$F/$name.andros-session" "$name"
+  alone "$F/$base.andros-session" "$name-base"
   expect_exit 0 "$BIN" sessions --record-dir "$TMP/$name"
   grep -q "intact, cut short" "$TMP/out" || fail "sessions of the forged $name line: $(cat "$TMP/out")"
   [[ $(jsonl_row "$TMP/$name") == "$(jsonl_row "$TMP/$name-base")" ]] ||
@@ -52,16 +73,10 @@ for forged in weapon:to17:17 stop:to17:17 end:to22:22; do
   want=$(cat "$TMP/out")
   expect_exit 0 "$BIN" replay "$F/$name.andros-session"
   expect_stdout "$want"
-  # plot: the same page, but for its source line, which says it was cut short.
-  expect_exit 0 "$BIN" plot "$F/$base.andros-session" --output "$TMP/base.svg"
-  expect_exit 0 "$BIN" plot "$F/$name.andros-session" --output "$TMP/$name.svg"
-  [[ $(svg_body "$TMP/$name.svg") == "$(svg_body "$TMP/base.svg")" ]] || fail "plot drew the forged $name line"
-  grep -q "cut short at line $((n + 1))" "$TMP/$name.svg" || fail "plot does not say the $name session was cut short"
-  # export: the same rows, and a warning.
-  expect_exit 0 "$BIN" export "$F/$base.andros-session" --output "$TMP/base.csv"
-  expect_exit 0 "$BIN" export "$F/$name.andros-session" --output "$TMP/$name.csv"
-  cmp -s "$TMP/base.csv" "$TMP/$name.csv" || fail "export wrote the forged $name line: $(diff "$TMP/base.csv" "$TMP/$name.csv" | head -5)"
+  # plot and export: the same page (its source line says it was cut short) and rows (and a warning).
+  same_page_and_rows "$F/$base.andros-session" "$F/$name.andros-session" "the forged $name line"
   expect_stderr_matches "cut short at line $((n + 1))"
+  grep -q "cut short at line $((n + 1))" "$TMP/got.svg" || fail "plot does not say the $name session was cut short"
 done
 # The issue's words, each: no weapon fired, no stop, not 226 frames.
 cp "$F/weapon.andros-session" "$F/stop.andros-session" "$F/end.andros-session" "$TMP/weapon/"
@@ -79,9 +94,8 @@ PY
 # the 16 records before it say; replay refuses.
 sed '17s/ sent 0600182000908080000000010020CC02 / sent 0600182100908080000000010020CC02 /' "$S" >"$F/altered.andros-session"
 head -n 16 "$S" >"$F/to16.andros-session"
-mkdir -p "$TMP/altered" "$TMP/altered-base"
-cp "$F/altered.andros-session" "$TMP/altered/20240101-000000-1.andros-session"
-cp "$F/to16.andros-session" "$TMP/altered-base/20240101-000000-1.andros-session"
+alone "$F/altered.andros-session" altered
+alone "$F/to16.andros-session" altered-base
 expect_exit 0 "$BIN" sessions --record-dir "$TMP/altered"
 grep -Eq " HD1 +[0-9]+ +no +0 .* NOT INTACT " "$TMP/out" || fail "sessions counted a record after the break: $(cat "$TMP/out")"
 [[ $(jsonl_row "$TMP/altered" | python3 -c 'import json,sys; r=json.loads(sys.stdin.read()); print(r["weapons_fired"], r["frames_sent"])') == \
@@ -89,13 +103,8 @@ grep -Eq " HD1 +[0-9]+ +no +0 .* NOT INTACT " "$TMP/out" || fail "sessions count
   fail "sessions --format jsonl read records after the break: $(jsonl_row "$TMP/altered")"
 expect_exit 1 "$BIN" replay "$F/altered.andros-session"
 expect_stdout "NOT INTACT: record 16 (line 17) altered: its content or hash no longer matches the chain (andros-bridge verify)"
-expect_exit 0 "$BIN" plot "$F/to16.andros-session" --output "$TMP/base.svg"
-expect_exit 0 "$BIN" plot "$F/altered.andros-session" --output "$TMP/altered.svg"
-[[ $(svg_body "$TMP/altered.svg") == "$(svg_body "$TMP/base.svg")" ]] || fail "plot drew records after the break"
-grep -q "NOT INTACT: record 16 (line 17) altered" "$TMP/altered.svg" || fail "plot does not say the session is not intact"
-expect_exit 0 "$BIN" export "$F/to16.andros-session" --output "$TMP/base.csv"
-expect_exit 0 "$BIN" export "$F/altered.andros-session" --output "$TMP/altered.csv"
-cmp -s "$TMP/base.csv" "$TMP/altered.csv" || fail "export wrote records after the break"
+same_page_and_rows "$F/to16.andros-session" "$F/altered.andros-session" "records after the break"
+grep -q "NOT INTACT: record 16 (line 17) altered" "$TMP/got.svg" || fail "plot does not say the session is not intact"
 expect_stderr_matches "NOT INTACT: record 16 \(line 17\) altered.*: exported the 16 records before it"
 
 # An end holds what a session can: its time within 24 h, its tick -1 only at
@@ -111,7 +120,7 @@ for end in "0 tick -1 frames 5000000000:5000000000 frames sent: not within a ses
     expect_exit 2 "$BIN" $cmd "$F/end-range.andros-session"
     expect_stderr_matches "end-range.andros-session:10: error: $why"
   done
-  mkdir -p "$TMP/range" && cp "$F/end-range.andros-session" "$TMP/range/20240101-000000-1.andros-session"
+  alone "$F/end-range.andros-session" range
   expect_exit 0 "$BIN" sessions --record-dir "$TMP/range"
   grep -Eq '^\? +\? .* unreadable ' "$TMP/out" || fail "sessions of end $fields: $(cat "$TMP/out")"
 done
@@ -141,11 +150,7 @@ expect_exit 0 "$BIN" verify "$F/nul.andros-session"
 [[ $(head -2 "$TMP/out") == "intact (23 records)
 closed: the run ended and its last record is here; 4096 NUL bytes after it (blocks a power loss left unwritten)" ]] ||
   fail "verify of a closed session with a NUL tail: $(cat "$TMP/out")"
-mkdir -p "$TMP/nul" && cp "$F/nul.andros-session" "$TMP/nul/20240101-000000-1.andros-session"
-expect_exit 0 "$BIN" sessions --record-dir "$TMP/nul"
-grep -Eq " intact +$TMP/nul/20240101-000000-1.andros-session$" "$TMP/out" || fail "sessions of a NUL tail: $(cat "$TMP/out")"
-grep -q "20240101-000000-1.andros-session: closed: .*4096 NUL bytes after it" "$TMP/out" ||
-  fail "sessions does not say the NUL tail: $(cat "$TMP/out")"
+listed "$F/nul.andros-session" nul "intact" "closed: .*4096 NUL bytes after it"
 
 # The recording stopped for want of room, as the run's own records say: a
 # `dropped` record last (with or without its reason), and no end after it.
@@ -155,11 +160,7 @@ for dropped in "dropped 3 disk-full" "dropped 3"; do
   expect_exit 0 "$BIN" verify "$F/full.andros-session"
   grep -qx "not closed: recording stopped at tick 15: the disk was full or a file-size limit was reached" "$TMP/out" ||
     fail "verify after '$dropped': $(cat "$TMP/out")"
-  mkdir -p "$TMP/full" && cp "$F/full.andros-session" "$TMP/full/20240101-000000-1.andros-session"
-  expect_exit 0 "$BIN" sessions --record-dir "$TMP/full"
-  grep -Eq " intact, disk full +$TMP/full/" "$TMP/out" || fail "sessions after '$dropped': $(cat "$TMP/out")"
-  grep -q "20240101-000000-1.andros-session: recording stopped at tick 15: the disk was full" "$TMP/out" ||
-    fail "sessions does not say the disk was full after '$dropped': $(cat "$TMP/out")"
+  listed "$F/full.andros-session" full "intact, disk full" "recording stopped at tick 15: the disk was full"
 done
 
 # An output FIFO that no reader opens: refused with a clear line, not waited on for ever.

@@ -15,6 +15,7 @@
 
 #include "andros/base/error.hpp"
 #include "andros/record/session.hpp"
+#include "support/session_head.hpp"
 #include "support/temp_dir.hpp"
 
 namespace andros::record {
@@ -25,18 +26,11 @@ const std::string kWeapon1 = "0600182100908080000000010020CC02";  // byte 3 bit 
 
 /// A drive's payloads to tick 15 at 25 Hz, enabled from 120 ms, not closed.
 std::vector<std::string> drive_payloads() {
-  SessionSettings s;
-  s.robot = "HD1";
-  s.mapping_file = "/m/hd1.yaml";
-  s.rate_millihertz = 25'000;
-  s.sources = {{"/m/hd1.yaml", "robot: HD1\n"}};
-  return {payload::header(),
-          payload::program("9.9.9"),
-          payload::started("2024-05-01T12:00:00+0200", 42, "bench"),
-          payload::settings(s),
-          "frame 0 0 sent " + kNoWeapon + " gap=0",
-          "state 120 enabled",
-          "frame 15 600 sent " + kNoWeapon + " gap=0"};
+  auto out = testing::session_head();
+  for (const auto& p : {"frame 0 0 sent " + kNoWeapon + " gap=0", std::string("state 120 enabled"),
+                        "frame 15 600 sent " + kNoWeapon + " gap=0"})
+    out.push_back(p);
+  return out;
 }
 
 /// payloads chained; the last without its newline when `ended` is false.
@@ -119,8 +113,7 @@ TEST(SessionReading, NulBytesAfterAClosedSessionLeaveItClosed) {
 
 TEST(SessionReading, AnEndHoldsNoMoreThanTheSession) {
   testing::TempDir dir;
-  auto header = drive_payloads();
-  header.resize(4);  // through the settings
+  const auto header = testing::session_head();
   // Before the first tick: tick -1 at 0 ms, no frames.
   EXPECT_TRUE(read_checked_session(write_chained(dir, with(header, {payload::end(0, -1, 0, "SIGINT")}))).session);
   for (const auto& end : {payload::end(9'000'000'000'000'000, -1, 0, "SIGINT"),
