@@ -274,8 +274,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto n = f.integer();
     if (n <= 0) throw InputError(pos, "a dropped record of no records");
     s.dropped += static_cast<std::uint64_t>(n);
-    // `dropped N WHY...`: the writer's reason, when it gave one.
-    if (const auto why = f.rest(); !why.empty()) s.dropped_why = std::string(why);
+    s.dropped_why = std::string(f.rest());  // `dropped N WHY`: the writer's reason, when it gave one
   } else if (kind == "end") {
     s.end = read_end(f, s);
   } else {
@@ -326,9 +325,11 @@ void require_session_file(const std::filesystem::path& path) {
 
 void RecordReader::read(std::string_view line, const SourcePos& pos) {
   const bool dropped = read_line(line, pos, s_, pending_);
-  // Records that end with a `dropped` one: the writer could write nothing after it.
-  last_dropped_ = dropped;
-  if (dropped && for_want_of_room(s_.dropped_why)) out_of_room_ = true;
+  const bool room = dropped && for_want_of_room(s_.dropped_why);
+  out_of_room_ = out_of_room_ || room;
+  // Records that end with a `dropped` one, for want of room or for no reason
+  // given (an earlier writer's): the writer could write nothing after it.
+  last_dropped_ = room || (dropped && s_.dropped_why.empty());
   if (keep_ == Keep::kVerdict) forget();
 }
 

@@ -230,10 +230,11 @@ struct Session {
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;
   std::uint64_t dropped = 0;
-  std::string dropped_why;  ///< the last `dropped N WHY` record's WHY ("disk-full"), "" without one
+  std::string dropped_why;  ///< the last `dropped N WHY` record's WHY ("disk-full"); "" when it gave none
   /// Not closed, and its records say the recording stopped for want of room:
-  /// they end with a `dropped` record, or one's WHY is `disk-full`,
-  /// `file-size` or `quota`. The last frame record's tick (-1: none).
+  /// a `dropped` record's WHY is `disk-full`, `file-size` or `quota`, or
+  /// they end with a `dropped` record that gives no WHY (an earlier
+  /// writer's). The last frame record's tick (-1: none).
   std::optional<std::int64_t> stopped_for_room;
   std::optional<EndRecord> end;
   int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
