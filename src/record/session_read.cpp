@@ -409,7 +409,7 @@ CheckedSession read_checked_session(const std::filesystem::path& path, Keep keep
   v.closed = chain.closed() && v.cut_short_line == 0;
   if (v.records == 0 && v.problem.empty()) v.problem = "empty: not a session";
   v.intact = v.problem.empty();
-  if (v.records == 0) unreadable(InputError(SourcePos{path.string()}, "empty: not a session"));
+  if (v.records == 0) unreadable(InputError(SourcePos{path.string()}, v.problem));
   if (out.unreadable) return out;
   try {
     out.session = std::move(records).finish();
