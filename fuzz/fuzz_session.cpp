@@ -1,6 +1,7 @@
 // libFuzzer target: a session file (docs/recording.md) as verify, sessions,
-// plot, export and replay read it. Any bytes either read or are refused with
-// an InputError at the file (and a line in it); what reads keeps a session's
+// plot, export and replay read it (read_checked_session, the one reading).
+// Any bytes either read or are refused with an InputError at the file (and a
+// line in it); a last line cut short is never a record; what reads keeps a session's
 // bounds (frame ticks in order at their times, within 24 h, the end at or
 // after the last frame), the plot's samples and lanes are as many as its
 // records, not its ticks, and a short session replays without a crash.
@@ -69,14 +70,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fclose(f);
   }
   try {
-    const auto result = andros::record::verify_session(path);
+    const auto checked = andros::record::read_checked_session(path);
+    const auto& result = checked.verdict;
     check(result.intact || !result.problem.empty());
     if (result.intact) check(result.records > 0 && result.last_hash.size() == 64);
-  } catch (const andros::InputError& e) {
-    check(e.pos().file == path);
-  }
-  try {
-    check_session(andros::record::read_session(path));
+    // A line cut short, or a NUL tail, ends the reading: nothing after it closes the session.
+    if (result.cut_short_line != 0) check(!result.closed && result.nul_tail == 0);
+    check(checked.session.has_value() != checked.unreadable.has_value());
+    if (checked.unreadable) check(checked.unreadable->pos().file == path);
+    if (checked.session) check_session(*checked.session);
   } catch (const andros::InputError& e) {
     check(e.pos().file == path);
   }

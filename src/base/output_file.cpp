@@ -20,6 +20,26 @@ namespace fs = std::filesystem;
 constexpr std::size_t kBufferBytes = std::size_t{64} * 1024;
 /// Links followed before giving up, as the kernel does (ELOOP).
 constexpr int kMaxLinks = 40;
+/// How long a FIFO is given to get a reader (one started just after the
+/// command, `cat FIFO &`), and how often it is asked.
+constexpr int kFifoReaderWaitMs = 5000;
+constexpr int kFifoReaderPollMs = 50;
+
+/// A FIFO opened for writing once it has a reader: an open that would block
+/// for ever without one (no stop request could end it) is tried without
+/// blocking until kFifoReaderWaitMs have passed. -1 and errno, ENXIO: no reader came.
+int open_fifo(const std::string& path) {
+  for (int waited = 0;; waited += kFifoReaderPollMs) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (fd >= 0) {
+      // Written like any other file from here: a reader that is slow is waited for.
+      ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+      return fd;
+    }
+    if (errno != ENXIO || waited >= kFifoReaderWaitMs) return -1;
+    ::usleep(kFifoReaderPollMs * 1000);
+  }
+}
 
 int write_all(int fd, std::string_view text) { return write_fully(fd, text); }
 
@@ -62,7 +82,11 @@ OutputFile::OutputFile(std::string path, WriteFn write_fn, NewFile new_file)
     if (S_ISDIR(st.st_mode)) throw cannot_open(EISDIR);
     if (!S_ISREG(st.st_mode)) {
       // A device, FIFO or socket: written where it is, never truncated, removed or replaced.
-      fd_ = ::open(path_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      fd_ = S_ISFIFO(st.st_mode) ? open_fifo(path_) : ::open(path_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      if (fd_ < 0 && errno == ENXIO && S_ISFIFO(st.st_mode)) {
+        throw RuntimeError("cannot open " + quote_name(path_) + " for writing: a FIFO that no reader opened in " +
+                           std::to_string(kFifoReaderWaitMs / 1000) + " s (start its reader first)");
+      }
       if (fd_ < 0) throw cannot_open(errno);
       own_fd_ = true;
       return;

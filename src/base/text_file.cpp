@@ -40,6 +40,13 @@ std::string file_kind(const struct stat& st, int fd) {
 
 }  // namespace
 
+std::string path_kind(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return {};
+  // A pipe that has a name: a FIFO (mkfifo).
+  return S_ISFIFO(st.st_mode) ? "a FIFO" : file_kind(st, -1);
+}
+
 std::string format_size(std::size_t bytes) {
   if (bytes != 0 && bytes % kMiB == 0) return std::to_string(bytes / kMiB) + " MiB";
   if (bytes != 0 && bytes % kKiB == 0) return std::to_string(bytes / kKiB) + " KiB";

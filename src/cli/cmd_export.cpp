@@ -23,10 +23,21 @@ struct ExportOptions {
 
 void run_export(const ExportOptions& opt) {
   const auto format = view::parse_export_format(opt.format, SourcePos{"--format"});
-  const auto session = record::read_session(opt.session);
+  // The one reading verify makes: the records of the chain's intact part,
+  // never a last line cut short; what is left out is said.
+  const auto checked = record::read_checked_session(opt.session);
+  if (checked.unreadable) throw *checked.unreadable;
+  const auto& verdict = checked.verdict;
+  if (!verdict.intact) {
+    spdlog::warn("NOT INTACT: {}: exported the {} records before it, not evidence (andros-bridge verify)",
+                 verdict.problem, verdict.records);
+  } else if (verdict.cut_short_line != 0) {
+    spdlog::warn("{}", record::cut_short_text(verdict));
+  }
+  if (verdict.intact && checked.session->stopped_for_room) spdlog::warn("{}", record::room_text(*checked.session));
   // Written as the rows come: a failed write leaves FILE as it was.
   OutputFile out(opt.output.empty() ? "-" : opt.output);
-  const auto why_no_inputs = view::export_session(session, format, out.stream());
+  const auto why_no_inputs = view::export_session(*checked.session, format, out.stream());
   out.commit();
   if (!why_no_inputs.empty()) spdlog::warn("the input columns are empty: {}", why_no_inputs);
 }
@@ -47,7 +58,9 @@ void add_export_command(CLI::App& app, int& exit_code) {
                                  "supervisor_consent: 1 when held at any moment since the row before, so that a\n"
                                  "press shorter than a tick shows; empty when the mapping has no such input);\n"
                                  "then every signal of the frame by name (drive, pivot...). For a spreadsheet,\n"
-                                 "PlotJuggler or Python's csv module, as it is.");
+                                 "PlotJuggler or Python's csv module, as it is. Read as verify reads it: a last\n"
+                                 "line cut short is left out, and of a session that is not intact only the records\n"
+                                 "before the break are exported, with a warning.");
   cmd->add_option("SESSION", opt->session,
                   "a session file, or its bare name as 'sessions' prints it (looked up in the\n"
                   "sessions' folder)")

@@ -73,7 +73,11 @@ view::PlotInput from_session(const PlotOptions& opt) {
                        "not for a session: it is drawn with the settings it recorded");
     }
   }
-  const auto s = record::read_session(opt.source);
+  // The one reading verify makes: the records of the chain's intact part, never a last line cut short.
+  const auto checked = record::read_checked_session(opt.source);
+  if (checked.unreadable) throw *checked.unreadable;
+  const auto& s = *checked.session;
+  const auto& check = checked.verdict;
   view::PlotInput in;
   in.title = fmt::format("{} drive, mapping {}", s.settings.robot, file_name(s.settings.mapping_file));
   in.settings = fmt::format("{} Hz, code {:02X}, {}, input {}, port {}", timing::rate_text(s.settings.rate_millihertz),
@@ -82,10 +86,11 @@ view::PlotInput from_session(const PlotOptions& opt) {
   in.source = fmt::format("session {}, recorded {} on {} by andros-bridge {}", file_name(opt.source), s.started, s.host,
                           s.version);
   // Drawn all the same, but never passed off as a whole record.
-  const auto check = record::verify_session(opt.source);
-  if (!check.intact) in.source += "; NOT INTACT: " + check.problem;
+  if (!check.intact)
+    in.source += fmt::format("; NOT INTACT: {}: the {} records before it drawn", check.problem, check.records);
   else if (check.cut_short_line != 0) in.source += "; " + record::cut_short_text(check);
   if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
+  if (check.intact && s.stopped_for_room) in.source += "; " + record::room_text(s);
   in.rate_millihertz = s.settings.rate_millihertz;
   in.samples = view::plot_samples(s);
   view::add_lanes(in, s);
@@ -147,7 +152,12 @@ view::PlotInput from_script(const PlotOptions& opt) {
 }
 
 void run_plot(const PlotOptions& opt) {
-  if (!std::filesystem::is_regular_file(opt.source)) throw InputError(SourcePos{opt.source}, "no such file");
+  // Read twice (a script: replayed, then its lanes), so a regular file: what else is there is said.
+  const auto kind = path_kind(opt.source);
+  if (kind.empty()) throw InputError(SourcePos{opt.source}, "no such file");
+  if (kind != "a regular file") {
+    throw InputError(SourcePos{opt.source}, "is " + kind + ", not a session or an event script file");
+  }
   const std::int64_t from = opt.from.empty() ? 0 : parse_seconds(opt.from, "--from");
   const std::int64_t to = opt.to.empty() ? -1 : parse_seconds(opt.to, "--to");
   if (to >= 0 && to <= from) throw InputError(SourcePos{"--to"}, "must be later than --from");

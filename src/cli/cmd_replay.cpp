@@ -38,9 +38,13 @@ void write_frames(const Settings& opt, const std::function<void(std::ostream&)>&
   out.commit();
 }
 
-/// A flight recorder's session (its first line says so), rather than an event script.
+/// A flight recorder's session (its first line says so), rather than an event
+/// script. One named as a session that is a FIFO, a directory, a device or a
+/// socket is refused at once, saying what it is, never waited on.
 bool is_session_file(const std::string& path) {
-  if (path == "-" || !std::filesystem::is_regular_file(path)) return false;
+  if (path == "-") return false;
+  if (std::filesystem::path(path).extension() == record::kSessionExtension) record::require_session_file(path);
+  if (!std::filesystem::is_regular_file(path)) return false;
   std::ifstream in(path, std::ios::binary);
   std::string first(64, '\0');
   in.read(first.data(), static_cast<std::streamsize>(first.size()));
@@ -56,13 +60,15 @@ int replay_session_file(const ReplayOptions& opt) {
       throw InputError(SourcePos{std::string(flag)}, "not for a session: it replays with the settings it recorded");
     }
   }
-  const auto check = record::verify_session(opt.events);
-  if (!check.intact) {
-    std::cout << "NOT INTACT: " << terminal_line(check.problem) << " (andros-bridge verify)\n";
+  // The one reading verify makes: only the records of an intact chain are
+  // replayed, never a last line cut short.
+  const auto checked = record::read_checked_session(opt.events);
+  if (!checked.verdict.intact) {
+    std::cout << "NOT INTACT: " << terminal_line(checked.verdict.problem) << " (andros-bridge verify)\n";
     return kExitRuntime;
   }
-  const auto session = record::read_session(opt.events);
-  const auto result = record::replay_session(session);
+  if (checked.unreadable) throw *checked.unreadable;
+  const auto result = record::replay_session(*checked.session);
   if (!result.identical) {
     std::cout << "DIFFERENT after " << result.compared << " identical frames: " << terminal_line(result.difference)
               << "\n";

@@ -2,8 +2,9 @@
 // holds, what an investigator looks for first (weapons fired, stops and
 // resets, the controllers and the link lost: session_summary.hpp) and whether it is
 // intact (docs/recording.md). A session is data: one that is not intact is
-// listed with what its records say and marked, one that cannot be read is
-// listed as such; none is left out.
+// listed with what the records before its break say and marked, one that
+// cannot be read is listed as such; none is left out. Each is read as the
+// other commands read it (record::read_checked_session), one at a time.
 #include <spdlog/fmt/fmt.h>
 
 #include <filesystem>
@@ -30,12 +31,22 @@ struct SessionsOptions {
 };
 
 /// One session as listed: what was read of it, and how far it can be trusted.
+/// Only what the table and the JSON show is kept, not the session's records:
+/// the folder is read a session at a time.
 struct Row {
   std::string name;
-  std::string verdict;  ///< intact, intact, cut short, intact, not closed, NOT INTACT, unreadable (the chain whole)
+  /// intact, intact, cut short, intact, not closed, intact, disk full, NOT INTACT, unreadable (the chain whole)
+  std::string verdict;
   bool intact = false;
   std::string problem;  ///< verify's, or why it could not be read
-  std::optional<record::Session> session;
+  std::string note;     ///< how it ends, when that needs saying: stopped for want of room, a NUL tail
+  bool readable = false;
+  std::string started;
+  std::int64_t length_ms = 0;
+  std::string robot;
+  std::uint64_t frames_sent = 0;
+  bool supervised = false;
+  std::uint64_t dropped = 0;
   SessionSummary summary;
   /// The replay made every record again the same (weapons fired and stops
   /// are then what the loop makes of the recorded input, not only what the
@@ -45,15 +56,15 @@ struct Row {
 };
 
 /// Whether the replay proves the session's records: WEAPONS and STOPS are counted from them.
-void prove(Row& row) {
+void prove(Row& row, const record::Session& session) {
   if (!row.intact) {
     row.unproven = "not intact";
     return;
   }
   try {
     // An earlier format's ticks are bounded by 24 h only: replayed when they are within its records' 60 s each.
-    record::check_record_spacing(*row.session, true);
-    const auto result = record::replay_session(*row.session);
+    record::check_record_spacing(session, true);
+    const auto result = record::replay_session(session);
     row.proven = result.proven();
     if (!result.identical) row.unproven = result.difference;
     else if (!row.proven) row.unproven = std::to_string(result.unproven) + " records after the last frame record";
@@ -62,25 +73,51 @@ void prove(Row& row) {
   }
 }
 
+std::string verdict_of(const record::CheckedSession& checked) {
+  const auto& v = checked.verdict;
+  if (!v.intact) return "NOT INTACT";
+  if (checked.unreadable) return "unreadable";
+  if (v.cut_short_line != 0) return "intact, cut short";
+  if (v.closed) return checked.session->stopped_for_room ? "intact, disk full" : "intact";
+  return checked.session->stopped_for_room ? "intact, disk full" : "intact, not closed";
+}
+
+/// What a session's end needs said beside the verdict, or "".
+std::string note_of(const record::CheckedSession& checked) {
+  if (checked.verdict.intact && checked.session && checked.session->stopped_for_room)
+    return record::room_text(*checked.session);
+  if (checked.verdict.intact && checked.verdict.nul_tail != 0) return record::closing_text(checked);
+  return {};
+}
+
 Row read_row(const std::filesystem::path& path, std::string name) {
   Row row;
   row.name = std::move(name);
   try {
-    const auto check = record::verify_session(path);
-    row.intact = check.intact;
-    row.problem = check.problem;
-    row.verdict = !check.intact               ? "NOT INTACT"
-                  : check.cut_short_line != 0 ? "intact, cut short"
-                  : check.closed              ? "intact"
-                                              : "intact, not closed";
-    row.session = record::read_session(path);
-    row.summary = summarize_session(*row.session);
-    prove(row);
+    // The one reading verify, replay, plot and export make: a NOT INTACT
+    // session is listed with what the records before its break say.
+    const auto checked = record::read_checked_session(path);
+    row.intact = checked.verdict.intact;
+    row.verdict = verdict_of(checked);
+    row.problem = !checked.verdict.problem.empty() ? checked.verdict.problem
+                  : checked.unreadable             ? checked.unreadable->what()
+                                                   : "";
+    row.note = note_of(checked);
+    if (!checked.session) return row;
+    const auto& s = *checked.session;
+    row.readable = true;
+    row.started = s.started;
+    row.length_ms = s.length_ms();
+    row.robot = s.settings.robot;
+    row.frames_sent = s.frames_sent();
+    row.supervised = s.settings.supervised;
+    row.dropped = s.dropped;
+    row.summary = summarize_session(s);
+    prove(row, s);
   } catch (const std::exception& e) {
-    // Its chain may be whole and its records still not a session's (crafted, or another format).
-    row.session.reset();
-    if (row.verdict.empty() || row.intact) row.verdict = "unreadable";
-    if (row.problem.empty()) row.problem = e.what();
+    row.readable = false;
+    row.verdict = "unreadable";
+    row.problem = e.what();
   }
   return row;
 }
@@ -117,19 +154,17 @@ void print_table(const std::vector<Row>& rows) {
   int untrusted = 0;
   int unproven = 0;
   for (const auto& r : rows) {
-    if (!r.intact || !r.session) ++untrusted;
-    if (r.session && !r.proven) ++unproven;
-    if (!r.session) {
+    if (!r.intact || !r.readable) ++untrusted;
+    if (!r.readable) {
       std::cout << fmt::format(kRowFormat, "?", "?", "?", "?", "?", "?", "?", "?", "?", r.verdict,
                                terminal_text(r.name));
       continue;
     }
-    const auto& s = *r.session;
+    if (!r.proven) ++unproven;
     const auto& m = r.summary;
     const std::string mark = r.proven ? "" : "?";
-    std::cout << fmt::format(kRowFormat, terminal_text(start_text(s.started)), duration_text(s.length_ms()),
-                             terminal_text(s.settings.robot), s.frames_sent(),
-                             (m.weapons_fired ? "FIRED" : "no") + mark,
+    std::cout << fmt::format(kRowFormat, terminal_text(start_text(r.started)), duration_text(r.length_ms),
+                             terminal_text(r.robot), r.frames_sent, (m.weapons_fired ? "FIRED" : "no") + mark,
                              by_whom({{"op", m.stops[0]}, {"sup", m.stops[1]}, {"gate", m.stops[2]}}) + mark,
                              by_whom({{"op", m.resets[0]}, {"sup", m.resets[1]}}),
                              by_whom({{"op", m.controllers_lost[0]}, {"sup", m.controllers_lost[1]}}), m.links_lost,
@@ -147,6 +182,9 @@ void print_table(const std::vector<Row>& rows) {
         "('replay SESSION' says why)\n",
         unproven, rows.size());
   }
+  for (const auto& r : rows) {
+    if (!r.note.empty()) std::cout << fmt::format("{}: {}\n", terminal_text(r.name), terminal_line(r.note));
+  }
 }
 
 nlohmann::json json_row(const Row& r) {
@@ -154,17 +192,17 @@ nlohmann::json json_row(const Row& r) {
                       {"verify", r.verdict},
                       {"intact", r.intact},
                       {"problem", json_text(r.problem)},
-                      {"readable", r.session.has_value()}};
-  if (!r.session) return j;
-  const auto& s = *r.session;
+                      {"readable", r.readable}};
+  if (!r.note.empty()) j["note"] = json_text(r.note);
+  if (!r.readable) return j;
   const auto& m = r.summary;
-  j["start"] = json_text(s.started);
-  j["length_s"] = static_cast<double>(s.length_ms()) / 1000.0;
-  j["robot"] = json_text(s.settings.robot);
-  j["frames_sent"] = s.frames_sent();
-  j["supervised"] = s.settings.supervised;
+  j["start"] = json_text(r.started);
+  j["length_s"] = static_cast<double>(r.length_ms) / 1000.0;
+  j["robot"] = json_text(r.robot);
+  j["frames_sent"] = r.frames_sent;
+  j["supervised"] = r.supervised;
   j["proven"] = r.proven;
-  j["unproven"] = r.unproven;
+  j["unproven"] = json_text(r.unproven);
   j["weapons_fired"] = m.weapons_fired;
   j["weapons"] = m.weapons;
   j["first_fire_s"] = m.first_fire_ms ? nlohmann::json(static_cast<double>(*m.first_fire_ms) / 1000.0) : nullptr;
@@ -172,7 +210,7 @@ nlohmann::json json_row(const Row& r) {
   j["resets"] = {{"operator", m.resets[0]}, {"supervisor", m.resets[1]}};
   j["controllers_lost"] = {{"operator", m.controllers_lost[0]}, {"supervisor", m.controllers_lost[1]}};
   j["links_lost"] = m.links_lost;
-  j["dropped"] = s.dropped;
+  j["dropped"] = r.dropped;
   return j;
 }
 
@@ -214,8 +252,9 @@ void add_sessions_command(CLI::App& app, int& exit_code) {
                          "gate: the frame gate), the stops reset by whom (op, sup), the controllers lost (op,\n"
                          "sup), the link lost, and the verdict of 'verify'. WEAPONS and STOPS are proven by\n"
                          "replay (the loop run again makes every record the same); marked ? when not (what the\n"
-                         "records say). A session that is not intact is listed with what its records say,\n"
-                         "marked NOT INTACT; one that cannot be read, as unreadable.");
+                         "records say). A session that is not intact is listed with what the records before its\n"
+                         "break say, marked NOT INTACT; one that cannot be read, as unreadable. A last line cut\n"
+                         "short is never counted.");
   cmd->add_option("--record-dir,--dir", opt->dir,
                   "the folder to list (run's --record-dir; --dir is the same option's older name);\n"
                   "default $STATE_DIRECTORY, else $XDG_STATE_HOME/andros-bridge, else\n"

@@ -18,7 +18,8 @@ int run_verify(const std::string& path) {
   std::error_code ec;
   // Anything else that is there (a FIFO, a device) is refused by the reading, saying what it is.
   if (!std::filesystem::exists(path, ec)) throw InputError(SourcePos{path}, "no such session file");
-  const auto result = record::verify_session(path);
+  const auto checked = record::read_checked_session(path, record::Keep::kVerdict);
+  const auto& result = checked.verdict;
   if (!result.intact) {
     std::cout << "NOT INTACT: " << terminal_line(result.problem) << "\n";
     return kExitRuntime;
@@ -26,11 +27,12 @@ int run_verify(const std::string& path) {
   // Half a record at the end is a run cut off, told apart from an edit: the records before it stand.
   if (result.cut_short_line != 0) std::cout << record::cut_short_text(result) << "\n";
   else std::cout << "intact (" << result.records << " records)\n";
-  std::cout << (result.closed ? "closed: the run ended and its last record is here\n"
-                              : "not closed: the run is still going, ended without closing it (a crash, power "
-                                "lost), or its last records were removed\n");
+  // A whole chain of records that are not a session's (crafted, or another program's): what
+  // sessions, replay, plot and export refuse is not vouched for here either.
+  if (checked.unreadable) std::cout << "unreadable: " << checked.unreadable->what() << "\n";
+  std::cout << record::closing_text(checked) << "\n";
   std::cout << "last hash: " << result.last_hash << "\n";
-  return kExitOk;
+  return checked.unreadable ? kExitRuntime : kExitOk;
 }
 
 }  // namespace
@@ -41,7 +43,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       app.add_subcommand("verify",
                          "Check a flight recorder session's hash chain (docs/recording.md): prints 'intact (N\n"
                          "records)' and the last record's hash (exit 0), or the first record that was altered,\n"
-                         "removed or reordered (exit 1).");
+                         "removed or reordered (exit 1). A last line without its newline is 'cut short' and never\n"
+                         "read; records whose chain is whole but which are not a session's are 'unreadable'\n"
+                         "(exit 1), as sessions, replay, plot and export find them: all read it the same way.");
   cmd->add_option("SESSION", *path,
                   "a session file, or its bare name as 'andros-bridge sessions' prints it (looked up in\n"
                   "the sessions' folder)")

@@ -32,18 +32,29 @@ std::optional<std::uint64_t> seq_of(std::string_view payload) {
   return static_cast<std::uint64_t>(*value);
 }
 
+namespace {
+
+/// The path, once require_session_file() has refused what is not a regular file.
+const std::filesystem::path& refused_unless_regular(const std::filesystem::path& path) {
+  require_session_file(path);
+  return path;
+}
+
+}  // namespace
+
 SessionLines::SessionLines(const std::filesystem::path& path)
-    : text_(TextReader::open_regular(path.string(), kSessionLimits)) {}
+    : text_(TextReader::open_regular(refused_unless_regular(path).string(), kSessionLimits)) {}
 
 std::optional<std::string_view> SessionLines::next() { return text_.next_line(); }
 
-bool SessionLines::cut_short(std::string_view line) {
-  if (!text_.line_ended()) return true;
-  if (line.empty() || !only_nul(line)) return false;
+std::optional<std::uint64_t> SessionLines::nul_tail(std::string_view line) {
+  if (line.empty() || !only_nul(line)) return std::nullopt;
+  std::uint64_t bytes = line.size();
   while (const auto more = text_.next_line()) {
-    if (!only_nul(*more)) return false;
+    if (!only_nul(*more)) return std::nullopt;
+    bytes += more->size();
   }
-  return true;
+  return bytes;
 }
 
 }  // namespace andros::record

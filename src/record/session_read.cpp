@@ -1,6 +1,10 @@
-// read_session (andros/record/session.hpp): the records back into what replay
-// and plot need, each checked as it is read against what a session can hold:
-// its ticks fall at the recorded rate's times, within a day.
+// read_checked_session (andros/record/session.hpp), the one reading of a
+// session: the chain checked (session_verify.cpp) and the records turned back
+// into what replay and plot need in the same pass, each checked as it is read
+// against what a session can hold: its ticks fall at the recorded rate's
+// times, within a day.
+#include <cerrno>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -9,6 +13,7 @@
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
+#include "andros/base/text_file.hpp"
 #include "andros/input/events.hpp"
 #include "andros/record/session.hpp"
 #include "andros/timing/rate.hpp"
@@ -159,6 +164,36 @@ link::SendResult parse_result(std::string_view w, bool& offered, const SourcePos
   throw InputError(pos, "unknown frame result " + quote(w));
 }
 
+/// `end T tick K frames N "WHY"`, each field within what the session can
+/// hold: K at T at the rate, at or after the last frame record's tick (-1,
+/// at 0 ms: the run ended before its first tick), and at most K + 1 frames sent.
+EndRecord read_end(Fields& f, const Session& s) {
+  const auto& pos = f.pos();
+  EndRecord e;
+  e.t_ms = time(f);
+  f.word();
+  e.last_tick = f.integer();
+  f.word();
+  const auto frames = f.integer();
+  e.why = f.text(s.format);
+  e.line = pos.line;
+  if (e.last_tick == -1 && s.frames.empty()) {
+    if (e.t_ms != 0) throw InputError(pos, "an end before the first tick at " + std::to_string(e.t_ms) + " ms, not 0");
+  } else {
+    check_tick(s, e.last_tick, e.t_ms, pos);
+    if (!s.frames.empty() && e.last_tick < s.frames.back().tick) {
+      throw InputError(pos, "the end's tick " + std::to_string(e.last_tick) + " is before the last frame record's");
+    }
+  }
+  // A frame at most each tick, 0 through the last.
+  if (frames < 0 || frames > e.last_tick + 1) {
+    throw InputError(pos, std::to_string(frames) + " frames sent: not within a session that ended at tick " +
+                              std::to_string(e.last_tick) + " (at most " + std::to_string(e.last_tick + 1) + ")");
+  }
+  e.frames_sent = static_cast<std::uint64_t>(frames);
+  return e;
+}
+
 void read_record(std::string_view kind, Fields& f, Session& s, std::optional<SessionSettings>& pending) {
   const auto& pos = f.pos();
   if (kind == kSessionMagic) {
@@ -257,30 +292,17 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto n = f.integer();
     if (n <= 0) throw InputError(pos, "a dropped record of no records");
     s.dropped += static_cast<std::uint64_t>(n);
-    // Why, from format 3 (earlier ones wrote the count alone).
-    if (!f.rest().empty()) s.dropped_why = f.text(s.format);
+    // Why (`dropped N "WHY"`, from format 3; earlier writers wrote the count alone).
+    s.dropped_why = f.rest().empty() ? std::string() : f.text(s.format);
   } else if (kind == "end") {
-    EndRecord e;
-    e.t_ms = f.integer();
-    f.word();
-    e.last_tick = f.integer();
-    f.word();
-    e.frames_sent = static_cast<std::uint64_t>(f.integer());
-    e.why = f.text(s.format);
-    e.line = pos.line;
-    // Its tick is where the last frame record leaves off, or later at the rate.
-    if (e.last_tick != -1 || !s.frames.empty()) check_tick(s, e.last_tick, e.t_ms, pos);
-    if (!s.frames.empty() && e.last_tick < s.frames.back().tick) {
-      throw InputError(pos, "the end's tick " + std::to_string(e.last_tick) + " is before the last frame record's");
-    }
-    s.end = std::move(e);
+    s.end = read_end(f, s);
   } else {
     throw InputError(pos, "unknown record " + quote(kind));
   }
 }
 
-/// One line's record into s.
-void read_line(std::string_view line, const SourcePos& pos, Session& s, std::optional<SessionSettings>& pending) {
+/// One line's record into s; true when it is a `dropped` record.
+bool read_line(std::string_view line, const SourcePos& pos, Session& s, std::optional<SessionSettings>& pending) {
   std::string_view payload;
   std::string_view hash;
   if (!split_record(line, payload, hash)) throw InputError(pos, "not a session record");
@@ -296,30 +318,171 @@ void read_line(std::string_view line, const SourcePos& pos, Session& s, std::opt
     if (!e.pos().file.empty()) throw;
     throw InputError(pos, e.message());  // a field's own check (a frame's data) names no place
   }
+  return kind == "dropped";
+}
+
+/// The reasons a `dropped N "WHY"` gives for want of room, as the writer
+/// (a write's strerror()) says them: the disk full (ENOSPC), a file-size
+/// limit (EFBIG, `ulimit -f`), a disk quota (EDQUOT).
+bool for_want_of_room(std::string_view why) {
+  return why == std::strerror(ENOSPC) || why == std::strerror(EFBIG) || why == std::strerror(EDQUOT);
+}
+
+/// "a FIFO", "a directory"... when path is there and is not a regular file; "" otherwise.
+std::string not_regular_kind(const std::filesystem::path& path) {
+  const auto kind = path_kind(path.string());
+  return kind.empty() || kind == "a regular file" ? std::string() : kind;
 }
 
 }  // namespace
 
-Session read_session(const std::filesystem::path& path) {
-  Session s;
-  s.path = path.string();
+void require_session_file(const std::filesystem::path& path) {
+  if (const auto kind = not_regular_kind(path); !kind.empty()) {
+    throw InputError(SourcePos{path.string()}, "is " + kind + ", not a session file");
+  }
+}
+
+void RecordReader::read(std::string_view line, const SourcePos& pos) {
+  const bool dropped = read_line(line, pos, s_, pending_);
+  const bool room = dropped && for_want_of_room(s_.dropped_why);
+  // Where recording stopped: the last frame record's tick before the first
+  // `dropped` record for want of room (or before the last one, with no reason).
+  const std::int64_t tick = s_.frames.empty() ? -1 : s_.frames.back().tick;
+  if (room && !out_of_room_) room_tick_ = tick;
+  out_of_room_ = out_of_room_ || room;
+  // Records that end with a `dropped` one, for want of room or for no reason
+  // given (an earlier writer's): the writer could write nothing after it.
+  last_dropped_ = room || (dropped && s_.dropped_why.empty());
+  if (last_dropped_ && !out_of_room_) room_tick_ = tick;
+  if (keep_ == Keep::kVerdict) forget();
+}
+
+void RecordReader::forget() {
+  // The frame records stay: the ticks they stand for are checked at the end
+  // (check_record_spacing(), which a later `dropped` record waives). Nothing
+  // else is checked against an earlier record.
+  s_.events.clear();
+  s_.requests.clear();
+  s_.pauses.clear();
+  s_.reloads.clear();
+  s_.states.clear();
+  s_.gate_trips.clear();
+  s_.stops.clear();
+  s_.layers.clear();
+  s_.links.clear();
+}
+
+Session RecordReader::finish() && {
+  if (s_.settings.sources.empty()) {
+    // Its settings dropped (a file-size limit under the settings' size): said so.
+    if (!s_.dropped_why.empty()) {
+      throw InputError(SourcePos{s_.path},
+                       "a session without its settings: they were dropped (" + printable_text(s_.dropped_why) + ")");
+    }
+    throw InputError(SourcePos{s_.path}, "a session without its settings");
+  }
+  check_record_spacing(s_);
+  // A `dropped` record for want of room says so whether the run closed or not
+  // (the writer keeps room for its closing records); one with no reason, only
+  // when the records end with it.
+  if (out_of_room_ || (!s_.end && last_dropped_)) s_.stopped_for_room = room_tick_;
+  return std::move(s_);
+}
+
+CheckedSession read_checked_session(const std::filesystem::path& path, Keep keep) {
+  CheckedSession out;
+  VerifyResult& v = out.verdict;
   SessionLines lines(path);
-  std::optional<SessionSettings> pending;
-  while (const auto line = lines.next()) {
-    const SourcePos pos{path.string(), lines.line_no()};
+  ChainCheck chain(path);
+  RecordReader records(path, keep);
+  // The records are read while the chain holds and they read: after a
+  // record that does not, the chain is still checked, for its verdict.
+  const auto unreadable = [&out](InputError e) {
+    if (!out.unreadable) out.unreadable = std::move(e);
+  };
+  while (true) {
+    std::optional<std::string_view> line;
     try {
-      read_line(*line, pos, s, pending);
-    } catch (const InputError&) {
-      // Half a record at the end: the run was cut off there; what is before it is read.
-      if (pos.line == 1 || !lines.cut_short(*line)) throw;
-      s.cut_short_line = pos.line;
+      line = lines.next();
+    } catch (const InputError& e) {
+      v.problem = "record " + std::to_string(chain.records()) + " (line " + std::to_string(e.pos().line) +
+                  ") altered: " + e.message() + ", longer than any record";
+      unreadable(e);
       break;
     }
+    if (!line) break;
+    const int at = lines.line_no();
+    // NUL bytes to the end, after whole records: blocks a power loss left unwritten, not records.
+    if (chain.records() != 0 && !line->empty() && line->find_first_not_of('\0') == std::string_view::npos) {
+      if (const auto nul = lines.nul_tail(*line)) {
+        v.nul_tail = *nul;
+        break;
+      }
+      v.problem =
+          "record " + std::to_string(chain.records()) + " (line " + std::to_string(at) + ") altered: not a record line";
+      break;
+    }
+    // A line without its newline is never a whole record, whatever it holds: a write cut off.
+    if (!lines.ended()) {
+      if (chain.records() == 0) v.problem = "cut short at line 1: not one whole record, not a session";
+      else v.cut_short_line = at;
+      break;
+    }
+    if (auto problem = chain.take(*line, at); !problem.empty()) {
+      v.problem = std::move(problem);
+      if (chain.records() == 0) unreadable(InputError(SourcePos{path.string(), at}, "not a session"));
+      break;
+    }
+    if (out.unreadable) continue;
+    try {
+      records.read(*line, SourcePos{path.string(), at});
+    } catch (const InputError& e) {
+      unreadable(e);
+    }
   }
-  if (lines.line_no() == 0) throw InputError(SourcePos{path.string()}, "empty: not a session");
-  if (s.settings.sources.empty()) throw InputError(SourcePos{path.string()}, "a session without its settings");
-  check_record_spacing(s);
-  return s;
+  v.records = chain.records();
+  v.last_hash = chain.last_hash();
+  v.closed = chain.closed() && v.cut_short_line == 0;
+  if (v.records == 0 && v.problem.empty()) v.problem = "empty: not a session";
+  v.intact = v.problem.empty();
+  if (v.records == 0) unreadable(InputError(SourcePos{path.string()}, v.problem));
+  if (out.unreadable) return out;
+  try {
+    out.session = std::move(records).finish();
+    out.session->cut_short_line = v.cut_short_line;
+  } catch (const InputError& e) {
+    unreadable(e);
+  }
+  return out;
+}
+
+Session read_session(const std::filesystem::path& path) {
+  auto checked = read_checked_session(path);
+  if (checked.unreadable) throw *checked.unreadable;
+  return std::move(*checked.session);
+}
+
+std::string closing_text(const CheckedSession& checked) {
+  const auto& v = checked.verdict;
+  if (v.closed) {
+    std::string text = "closed: the run ended and its last record is here";
+    // The writer keeps room for its last word: a full disk still closes the session.
+    if (checked.session && checked.session->stopped_for_room) text += "; " + room_text(*checked.session);
+    if (v.nul_tail != 0) {
+      text += "; " + std::to_string(v.nul_tail) + " NUL bytes after it (blocks a power loss left unwritten)";
+    }
+    return text;
+  }
+  if (checked.session && checked.session->stopped_for_room) return "not closed: " + room_text(*checked.session);
+  return "not closed: the run is still going, ended without closing it (a crash, power lost), or its last records "
+         "were removed";
+}
+
+std::string room_text(const Session& s) {
+  const auto tick = s.stopped_for_room.value_or(-1);
+  return tick < 0 ? "recording stopped before the first tick: the disk was full or a file-size limit was reached"
+                  : "recording stopped at tick " + std::to_string(tick) +
+                        ": the disk was full or a file-size limit was reached";
 }
 
 }  // namespace andros::record

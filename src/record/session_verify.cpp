@@ -1,4 +1,5 @@
-// verify_session (andros/record/session.hpp): the chain, record by record.
+// The chain, record by record (andros/record/session.hpp): verify's half of
+// the one reading, read_checked_session (session_read.cpp).
 #include <string>
 
 #include "andros/base/error.hpp"
@@ -68,45 +69,20 @@ std::string line_problem(const std::filesystem::path& path, std::string_view lin
 
 }  // namespace
 
+std::string ChainCheck::take(std::string_view line, int at) {
+  if (auto problem = line_problem(path_, line, at, records_, prev_); !problem.empty()) return problem;
+  const auto hash = line.substr(line.size() - 64);
+  prev_ = parse_digest(hash);
+  last_hash_ = std::string(hash);
+  ++records_;
+  const auto payload = line.substr(0, line.size() - 65);
+  const auto kind_at = payload.find(' ');
+  closed_ = kind_at != std::string_view::npos && payload.substr(kind_at + 1).starts_with("end ");
+  return {};
+}
+
 VerifyResult verify_session(const std::filesystem::path& path) {
-  VerifyResult out;
-  SessionLines lines(path);
-  Sha256Digest prev{};
-  while (true) {
-    std::optional<std::string_view> line;
-    try {
-      line = lines.next();
-    } catch (const InputError& e) {
-      out.problem = "record " + std::to_string(out.records) + " (line " + std::to_string(e.pos().line) +
-                    ") altered: " + e.message() + ", longer than any record";
-      return out;
-    }
-    if (!line) break;
-    const int at = lines.line_no();
-    if (auto problem = line_problem(path, *line, at, out.records, prev); !problem.empty()) {
-      // Half a record at the end is a run cut off, not an edit: what is before it stands.
-      if (out.records == 0 || !lines.cut_short(*line)) {
-        out.problem = std::move(problem);
-        return out;
-      }
-      out.cut_short_line = at;
-      out.closed = false;
-      break;
-    }
-    const auto hash = line->substr(line->size() - 64);
-    prev = parse_digest(hash);
-    out.last_hash = std::string(hash);
-    ++out.records;
-    const auto payload = line->substr(0, line->size() - 65);
-    const auto kind_at = payload.find(' ');
-    out.closed = kind_at != std::string_view::npos && payload.substr(kind_at + 1).starts_with("end ");
-  }
-  if (out.records == 0) {
-    out.problem = "empty: not a session";
-    return out;
-  }
-  out.intact = true;
-  return out;
+  return read_checked_session(path, Keep::kVerdict).verdict;
 }
 
 std::string cut_short_text(const VerifyResult& result) {

@@ -80,8 +80,11 @@ expect_stderr_matches "recorder: records dropped \(File too large\).*driving goe
 limited=$(ls "$TMP/limited"/*.andros-session)
 (($(stat -c %s "$limited") <= 4096)) || fail "the session grew past the limit"
 [[ $(tail -c 1 "$limited" | od -An -c | tr -d ' ') == '\n' ]] || fail "the session ends in half a record"
-expect_exit 0 "$BIN" verify "$limited"
+# Its chain is whole; its settings did not fit, so its ticks cannot be read:
+# verify says so, as sessions (unreadable) and replay do.
+expect_exit 1 "$BIN" verify "$limited"
 grep -q "^intact" "$TMP/out" || fail "verify of the limited session: $(cat "$TMP/out")"
+grep -q "^unreadable: .*a tick before the settings" "$TMP/out" || fail "verify of the limited session: $(cat "$TMP/out")"
 
 # 4. A session cut short (the disk full, power lost mid-record) is told from
 # an altered one, listed with what was read, and plotted.
@@ -115,7 +118,10 @@ open(sys.argv[2], "w").write("\n".join(lines))
 PY
 tool rehash "$TMP/far.andros-session"
 end_line=$(grep -n " end " "$TMP/far.andros-session" | cut -d: -f1)
-expect_exit 0 "$BIN" verify "$TMP/far.andros-session"
+# The chain is whole, but its records are not a session's: verify says so, as sessions does.
+expect_exit 1 "$BIN" verify "$TMP/far.andros-session"
+grep -q "^unreadable: .*far.andros-session:$end_line: error: tick 100000000000: not within a session" "$TMP/out" ||
+  fail "verify of an end tick of 1e11: $(cat "$TMP/out")"
 for cmd in replay plot export; do
   expect_exit 2 "$BIN" $cmd "$TMP/far.andros-session"
   expect_stderr_matches "far.andros-session:$end_line: error: tick 100000000000: not within a session"
@@ -131,7 +137,7 @@ expect_exit 1 "$BIN" verify "$TMP/not.andros-session"
 expect_stdout "NOT INTACT: record 0 (line 1) altered: not a record line"
 mkfifo "$TMP/fifo.andros-session"
 expect_exit 2 timeout 10 "$BIN" verify "$TMP/fifo.andros-session"
-expect_stderr_matches "is a pipe, not a regular file"
+expect_stderr_matches "is a FIFO, not a session file"
 
 # 7. One answer to a reload that cannot be read: replay, as run, keeps the
 # old mapping, logs it and goes on.

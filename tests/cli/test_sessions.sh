@@ -49,7 +49,8 @@ craft 20240102-000000-2 \
   "frame 3 120 busy $fire gap=0" "frame 4 160 sent $rest gap=0" 'link 180 connecting neutral-only "closed"' \
   'end 200 tick 5 frames 2 "end of the input"'
 # Altered after it was written (a stop record removed, not rehashed): listed
-# with what its records say, marked NOT INTACT, and counted in the footnote.
+# with what the records before the break say (not the end after it: FRAMES 1,
+# tick 0's), marked NOT INTACT, and counted in the footnote.
 craft 20240103-000000-3 \
   'link -1 connecting motion "not opened yet"' 'event 0 connect Op pad' 'state 0 not enabled' \
   'link 0 up motion ""' "frame 0 0 sent $rest gap=0" 'stop 40 operator "Op pad"' \
@@ -69,7 +70,7 @@ row 20240101-000000-1 | grep -Eq \
   fail "the incident's row: $(row 20240101-000000-1)"
 row 20240102-000000-2 | grep -Eq "^2026-11-26 08:33:39 +0:00:00 +HD1 +2 +no\? +0\? +0 +0 +0 +intact " ||
   fail "the quiet session's row: $(row 20240102-000000-2)"
-row 20240103-000000-3 | grep -Eq " HD1 +3 +no\? +0\? +0 +0 +0 +NOT INTACT +$dir/" ||
+row 20240103-000000-3 | grep -Eq " HD1 +1 +no\? +0\? +0 +0 +0 +NOT INTACT +$dir/" ||
   fail "the altered session's row: $(row 20240103-000000-3)"
 row 20240104-000000-4 | grep -Eq '^\? +\? +\? +\? +\? +\? +\? +\? +\? +unreadable ' ||
   fail "the unreadable session's row: $(row 20240104-000000-4)"

@@ -4,7 +4,9 @@
 ///
 /// - `-` is standard output (never a file named `-`: write `./-` for that);
 /// - a device node, FIFO or socket (the path, or where its links lead) is
-///   written in place: never truncated by us, removed or replaced;
+///   written in place: never truncated by us, removed or replaced; a FIFO
+///   that gets no reader within 5 s is refused (`cannot open 'PATH' for
+///   writing: a FIFO that no reader opened in 5 s`), never waited on for ever;
 /// - anything else (a regular file, or nothing yet) is written to a temporary
 ///   file beside it (`.NAME.XXXXXX`), which commit() renames over it: the old
 ///   file stays whole until then, and keeps its mode (and its owner, where

@@ -121,6 +121,11 @@ TextReader hold_in_memory(TextReader text);
 /// A whole file within limits, for formats that are parsed as a whole (YAML).
 std::string read_text_file(const std::string& path, const TextLimits& limits, const StopCheck& stop = {});
 
+/// What is at path (a link followed), as messages say it: "a regular file",
+/// "a directory", "a FIFO", "a socket", "a character device"...; "" when
+/// nothing is there. Never opens it.
+std::string path_kind(const std::string& path);
+
 /// "64 KiB", "256 MiB", "4096 bytes": a limit as the messages and docs say it.
 std::string format_size(std::size_t bytes);
 

@@ -3,8 +3,10 @@
 /// record, `SEQ KIND FIELDS... HASH`, where HASH is the SHA-256 of the
 /// previous record's HASH (32 bytes; zeros before the first) and of this
 /// line up to the space before HASH. A record altered, removed or moved
-/// breaks the chain at that record; verify_session() names the first.
-/// read_session() turns the records back into what replay and plot need.
+/// breaks the chain at that record. read_checked_session() is the one
+/// reading every command makes: it checks the chain and turns the records
+/// back into what replay and plot need in the same pass, so that no two
+/// commands tell a session apart.
 
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "andros/base/error.hpp"
 #include "andros/base/sha256.hpp"
 #include "andros/input/input_state.hpp"
 #include "andros/input/pad_identity.hpp"
@@ -60,6 +63,11 @@ inline constexpr std::int64_t kMaxSessionMs = std::int64_t{24} * 3600 * 1000;
 
 /// True when text (a file's first line, or more) starts a session.
 bool is_session_start(std::string_view first_line);
+
+/// Refuses at once, never opening or waiting on it, a path that is there and
+/// is not a regular file: InputError `FILE: error: is a FIFO, not a session
+/// file` (a directory, a character device, a socket...).
+void require_session_file(const std::filesystem::path& path);
 
 /// Turns payloads into chained lines: `SEQ PAYLOAD HASH\n`.
 class RecordChain {
@@ -142,19 +150,24 @@ std::string dropped(std::uint64_t count, std::string_view why);
 std::string end(std::int64_t t_ms, std::int64_t last_tick, std::uint64_t frames_sent, std::string_view why);
 }  // namespace payload
 
-/// What verify_session() found.
+/// The chain's verdict (read_checked_session).
 struct VerifyResult {
   bool intact = false;
   std::uint64_t records = 0;  ///< records read in order (all of them when intact)
-  bool closed = false;        ///< the session has its end record
+  bool closed = false;        ///< the session has its end record, its last whole one
   std::string last_hash;      ///< the last record's hash (compare with the log's closing line)
   std::string problem;        ///< the first record altered, removed or reordered
   /// Not 0: the file's last line, half a record, was cut short there (a run
   /// cut off: power lost, a full disk); the records before it are intact.
+  /// A line without its newline is such a line, even when it would chain:
+  /// it is never read as a record.
   int cut_short_line = 0;
+  /// NUL bytes after the last whole record, to the end of the file: the
+  /// blocks a power loss left unwritten (after an end record too).
+  std::uint64_t nul_tail = 0;
 };
 
-/// Checks the chain of the session at path. Throws RuntimeError when it cannot be read.
+/// The chain's verdict of the session at path: read_checked_session(path).verdict.
 VerifyResult verify_session(const std::filesystem::path& path);
 
 /// "cut short at line N: the run was cut off, power lost or disk full; the R records before it are intact".
@@ -244,9 +257,15 @@ struct Session {
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;
   std::uint64_t dropped = 0;
-  /// Why the last `dropped` record's records went missing (a write's error:
-  /// "No space left on device", "File too large"; or the full queue); "" when not said.
+  /// Why the last `dropped` record's records went missing, as its WHY says
+  /// (a write's error: "No space left on device", "File too large", "Disk
+  /// quota exceeded"; or the full queue); "" when it gave none.
   std::string dropped_why;
+  /// Its records say the recording stopped for want of room: a `dropped`
+  /// record's WHY is a full disk's, a file-size limit's or a quota's, or
+  /// (not closed) they end with a `dropped` record that gives no WHY (an
+  /// earlier writer's). The last frame record's tick before it (-1: none).
+  std::optional<std::int64_t> stopped_for_room;
   std::optional<EndRecord> end;
   int format = 0;          ///< its header's: how its texts and frame records are written
   int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
@@ -262,11 +281,36 @@ struct Session {
   [[nodiscard]] std::uint64_t frames_sent() const;
 };
 
-/// Reads the session at path (its chain is verify_session's business), each
-/// record checked against what a session holds: a tick at its time at the
-/// recorded rate, within kMaxSessionMs, the end's tick at or after the last
-/// frame record's. Throws InputError at FILE:LINE for a record it cannot
-/// read, but for a last line cut short, which is left out (cut_short_line).
+/// A session read once: the chain's verdict, and what the records of its
+/// intact part say.
+struct CheckedSession {
+  VerifyResult verdict;
+  /// The records before the chain's first break (all of them when intact),
+  /// never a last line cut short or a NUL tail; nullopt when unreadable.
+  std::optional<Session> session;
+  /// Why the records are not a session's: the first record (before the
+  /// chain breaks) that does not read, at FILE:LINE, or a session without
+  /// its settings.
+  std::optional<InputError> unreadable;
+};
+
+/// The one reading of the session at path, for verify, sessions, replay,
+/// plot and export: the chain checked and the records read in the same
+/// pass, each record checked against what a session holds (a tick at its
+/// time at the recorded rate, within kMaxSessionMs; the end's tick at or
+/// after the last frame record's, its frames at most its ticks). After a
+/// record that does not read, the chain is still checked. Throws InputError
+/// for a path that is not a regular file (require_session_file), RuntimeError
+/// for a read that fails.
+///
+/// What of the records is kept: all of them, or (verify's) only what the
+/// verdict needs, each record checked all the same, in memory of a line's
+/// size: the settings, the end, the dropped count and the last frame record.
+enum class Keep : std::uint8_t { kRecords, kVerdict };
+CheckedSession read_checked_session(const std::filesystem::path& path, Keep keep = Keep::kRecords);
+
+/// read_checked_session()'s records: throws its `unreadable` error. A
+/// session that is not intact gives the records before the break.
 Session read_session(const std::filesystem::path& path);
 
 /// A session of kSpacedFormat or later without dropped records: each frame
@@ -277,6 +321,14 @@ Session read_session(const std::filesystem::path& path);
 /// has records is refused before they start. any_format: a session of an
 /// earlier format held to it too (`sessions` replays only such a one).
 void check_record_spacing(const Session& session, bool any_format = false);
+
+/// How the session ends, as verify says it: `closed: ...` (and a NUL tail
+/// after it), or `not closed: ...`: recording stopped for want of room
+/// (room_text), or the run still going, crashed, or its last records removed.
+std::string closing_text(const CheckedSession& checked);
+
+/// "recording stopped at tick T: the disk was full or a file-size limit was reached" (Session::stopped_for_room).
+std::string room_text(const Session& session);
 
 std::string_view request_name(run::Request request);
 std::optional<run::Request> parse_request(std::string_view name);
