@@ -108,7 +108,12 @@ std::int64_t time(Fields& f) {
 
 /// A tick and its time: the tick falls at that time at the session's rate, within kMaxSessionMs.
 void check_tick(const Session& s, std::int64_t tick, std::int64_t t_ms, const SourcePos& pos) {
-  if (s.settings.sources.empty()) throw InputError(pos, "a tick before the settings");
+  if (s.settings.sources.empty()) {
+    // The settings dropped (a file-size limit under their size): said so.
+    throw InputError(pos, "a tick before the settings" +
+                              (s.dropped_why.empty() ? std::string()
+                                                     : ": they were dropped (" + printable_text(s.dropped_why) + ")"));
+  }
   const std::int64_t rate = s.settings.rate_millihertz;
   const timing::FrameClock clock(rate);
   const std::int64_t last = kMaxSessionMs * rate / (kMsPerSecond * timing::kMillihertzPerHz);

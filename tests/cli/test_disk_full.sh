@@ -22,7 +22,8 @@ check_stopped_session() {
   local session; session=$(ls "$1"/*.andros-session)
   grep -q 'sim vehicle decoded 104 frames: 104 valid' "$TMP/err" || fail "$2: the drive: $(tail -3 "$TMP/err")"
   expect_exit 0 "$BIN" verify "$session"
-  grep -q '^closed' "$TMP/out" || fail "$2: not closed: $(cat "$TMP/out")"
+  grep -Eq "^closed: the run ended and its last record is here; recording stopped at tick [0-9]+: the disk was full or a file-size limit was reached" "$TMP/out" ||
+    fail "$2: verify: $(cat "$TMP/out")"
   grep -q " dropped [0-9]* \"$2\" " "$session" || fail "$2: no dropped record says why: $(tail -c 400 "$session")"
   tail -1 "$session" | grep -q ' end 4120 tick 103 frames 104 ' || fail "$2: the end record: $(tail -1 "$session")"
 }
@@ -35,9 +36,22 @@ expect_exit 0 unshare -rm bash -c 'mount -t tmpfs -o size=16k tmpfs full && "$0"
 (($(stat -c %s kept/*.andros-session) < 16384)) || fail "the session is larger than the disk"
 check_stopped_session kept "No space left on device"
 
-# A file-size limit of 8 KB: the settings record itself (9 KB) does not fit.
-expect_exit 0 bash -c 'ulimit -f 8 && exec "$0" run --input busy.events --port sim --record-dir limited' "$BIN"
-(($(stat -c %s limited/*.andros-session) <= 8192)) || fail "the session grew past the limit"
+expect_exit 0 "$BIN" sessions --record-dir kept
+grep -q ' intact, disk full ' "$TMP/out" || fail "sessions: $(cat "$TMP/out")"
+
+# A file-size limit of 16 KB: the settings record (9 KB) fits, the drive does not.
+expect_exit 0 bash -c 'ulimit -f 16 && exec "$0" run --input busy.events --port sim --record-dir limited' "$BIN"
+(($(stat -c %s limited/*.andros-session) <= 16384)) || fail "the session grew past the limit"
 check_stopped_session limited "File too large"
+
+# A file-size limit of 8 KB: the settings record itself does not fit. The
+# session still closes and says why: it cannot be replayed, and says that.
+expect_exit 0 bash -c 'ulimit -f 8 && exec "$0" run --input busy.events --port sim --record-dir tiny' "$BIN"
+grep -q 'sim vehicle decoded 104 frames: 104 valid' "$TMP/err" || fail "8 KB: the drive: $(tail -3 "$TMP/err")"
+tiny=$(ls tiny/*.andros-session)
+tail -1 "$tiny" | grep -q ' end 4120 tick 103 frames 104 ' || fail "8 KB: the end record: $(tail -1 "$tiny")"
+expect_exit 1 "$BIN" verify "$tiny"
+grep -q 'before the settings: they were dropped (File too large)' "$TMP/out" "$TMP/err" ||
+  fail "8 KB: verify: $(cat "$TMP/out" "$TMP/err")"
 
 exit $((failures > 0))

@@ -50,7 +50,9 @@ clean "$TMP/out" "the sessions table"
 rows=$(grep -c 'andros-session$' "$TMP/out")
 [[ $rows -eq ${#names[@]} ]] || fail "the sessions table has $rows rows for ${#names[@]} sessions: $(cat "$TMP/out")"
 grep -q '^2024-01-01' "$TMP/out" && fail "a forged row: $(cat "$TMP/out")"
-[[ $(wc -l <"$TMP/out") -eq $((rows + 2)) ]] || fail "the sessions table has lines besides its rows: $(cat "$TMP/out")"
+# Its heading, its header and its rows; and under them, one line: the crafted sessions are not proven by replay.
+[[ $(wc -l <"$TMP/out") -eq $((rows + 3)) ]] || fail "the sessions table has lines besides its rows: $(cat "$TMP/out")"
+tail -1 "$TMP/out" | grep -q "sessions with WEAPONS and STOPS marked ?" || fail "the last line: $(tail -1 "$TMP/out")"
 grep -qF 'a\n2024-01-01' "$TMP/out" || fail "the file name's newline is not shown as \\n: $(cat "$TMP/out")"
 grep -qF 'd\xFF.andros-session' "$TMP/out" || fail "the byte 0xFF is not shown as \\xFF: $(cat "$TMP/out")"
 
