@@ -86,6 +86,7 @@ class RecordReader {
   bool last_dropped_ = false;               ///< the last record read is a `dropped` one
   bool out_of_room_ = false;                ///< a `dropped` record said the disk or a file-size limit was full
   std::int64_t room_tick_ = -1;             ///< where recording stopped (Session::stopped_for_room)
+  std::optional<InputError> spacing_;       ///< Keep::kVerdict: the first frame records too far apart
 };
 
 }  // namespace andros::record

@@ -363,9 +363,15 @@ void RecordReader::read(std::string_view line, const SourcePos& pos) {
 }
 
 void RecordReader::forget() {
-  // The frame records stay: the ticks they stand for are checked at the end
-  // (check_record_spacing(), which a later `dropped` record waives). Nothing
-  // else is checked against an earlier record.
+  // A frame record is checked against the one before it (its ticks' place,
+  // and their spacing: the first error kept, for finish(), as a later
+  // `dropped` record waives it); nothing else against an earlier record.
+  if (s_.frames.size() > 1) {
+    const auto& from = s_.frames[s_.frames.size() - 2];
+    const auto& next = s_.frames.back();
+    if (!spacing_) spacing_ = spacing_error(s_, from, next.tick - next.gap - 1, next.line);
+    s_.frames.erase(s_.frames.begin(), s_.frames.end() - 1);
+  }
   s_.events.clear();
   s_.requests.clear();
   s_.pauses.clear();
@@ -386,7 +392,8 @@ Session RecordReader::finish() && {
     }
     throw InputError(SourcePos{s_.path}, "a session without its settings");
   }
-  check_record_spacing(s_);
+  if (keep_ == Keep::kVerdict && spacing_ && (s_.format >= kSpacedFormat && s_.dropped == 0)) throw *spacing_;
+  check_record_spacing(s_, false, keep_ == Keep::kVerdict);
   // A `dropped` record for want of room says so whether the run closed or not
   // (the writer keeps room for its closing records); one with no reason, only
   // when the records end with it.

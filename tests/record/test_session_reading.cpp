@@ -165,6 +165,31 @@ TEST(SessionReading, ASessionWhoseRecordsSayTheDiskFilledIsSaidSo) {
   EXPECT_FALSE(room({"dropped 3", payload::end(600, 15, 16, "SIGINT")}).session->stopped_for_room);
 }
 
+// verify keeps one frame record at a time (Keep::kVerdict), the other
+// readers them all: the rule that a frame record stands for 60 s at most is
+// the same verdict for both, between two frame records and before the end.
+TEST(SessionReading, FrameRecordsTooFarApartAreTheSameVerdictForEveryReader) {
+  testing::TempDir dir;
+  const auto far_frame = with(drive_payloads(), {"frame 1600 64000 sent " + kNoWeapon + " gap=0",
+                                                 "frame 1601 64040 sent " + kWeapon1 + " gap=0"});
+  const auto far_end = with(drive_payloads(), {payload::end(64000, 1600, 1601, "SIGINT")});
+  for (const auto& payloads : {far_frame, far_end}) {
+    const auto path = write_chained(dir, payloads);
+    const auto all = read_checked_session(path, Keep::kRecords);
+    const auto verdict = read_checked_session(path, Keep::kVerdict);
+    ASSERT_TRUE(all.unreadable) << payloads.back();
+    ASSERT_TRUE(verdict.unreadable) << payloads.back();
+    EXPECT_EQ(unreadable_text(verdict), unreadable_text(all));
+    EXPECT_NE(unreadable_text(all).find("ms after the frame record it repeats (line 7)"), std::string::npos)
+        << unreadable_text(all);
+  }
+  // Records dropped waive the rule (the record may be the one dropped), for both.
+  const auto path = write_chained(dir, with(far_frame, {"dropped 4 \"No space left on device\""}));
+  EXPECT_FALSE(read_checked_session(path, Keep::kRecords).unreadable);
+  EXPECT_FALSE(read_checked_session(path, Keep::kVerdict).unreadable)
+      << unreadable_text(read_checked_session(path, Keep::kVerdict));
+}
+
 TEST(SessionReading, WhatIsNotARegularFileIsRefusedAtOnceSayingWhatItIs) {
   testing::TempDir dir;
   const auto fifo = dir.path() / "f.andros-session";

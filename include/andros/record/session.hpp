@@ -320,7 +320,14 @@ Session read_session(const std::filesystem::path& path);
 /// session crafted to make replay and export step far more ticks than it
 /// has records is refused before they start. any_format: a session of an
 /// earlier format held to it too (`sessions` replays only such a one).
-void check_record_spacing(const Session& session, bool any_format = false);
+/// frames_checked: the frame records were checked as they were read (spacing_error(), one
+/// pair at a time: a reader that does not keep them all), only the end's ticks are left.
+void check_record_spacing(const Session& session, bool any_format = false, bool frames_checked = false);
+/// The error for the ticks a frame record stands for, from it through tick
+/// `through` (`line`: the record where they end), when they run
+/// kFrameRecordPeriodMs or more past it; nullopt when they do not.
+std::optional<InputError> spacing_error(const Session& session, const FrameRecord& from, std::int64_t through,
+                                        int line);
 
 /// How the session ends, as verify says it: `closed: ...` (and a NUL tail
 /// after it), or `not closed: ...`: recording stopped for want of room
