@@ -66,7 +66,7 @@ bool is_session(const std::string& path) {
   return record::is_session_start(first);
 }
 
-view::PlotInput from_session(const PlotOptions& opt) {
+view::PlotInput from_session(const PlotOptions& opt, const view::PlotAxis& axis) {
   for (const auto& row : settings_table()) {
     if ((row.commands & kPlot) != 0 && opt.settings->given(flag_name(row))) {
       throw InputError(SourcePos{std::string(flag_name(row))},
@@ -92,7 +92,8 @@ view::PlotInput from_session(const PlotOptions& opt) {
   if (check.intact && s.dropped != 0) in.source += fmt::format("; {} records dropped while recording", s.dropped);
   if (check.intact && s.stopped_for_room) in.source += "; " + record::room_text(s);
   in.rate_millihertz = s.settings.rate_millihertz;
-  in.samples = view::plot_samples(s);
+  // Sampled to the page's width: a long session's samples take the page's memory, not its ticks'.
+  in.samples = view::plot_samples(s, view::PlotAxis{axis.from_ms, axis.to_ms});
   view::add_lanes(in, s);
   return in;
 }
@@ -161,7 +162,7 @@ void run_plot(const PlotOptions& opt) {
   const std::int64_t from = opt.from.empty() ? 0 : parse_seconds(opt.from, "--from");
   const std::int64_t to = opt.to.empty() ? -1 : parse_seconds(opt.to, "--to");
   if (to >= 0 && to <= from) throw InputError(SourcePos{"--to"}, "must be later than --from");
-  view::PlotInput in = is_session(opt.source) ? from_session(opt) : from_script(opt);
+  view::PlotInput in = is_session(opt.source) ? from_session(opt, view::PlotAxis{from, to}) : from_script(opt);
   in.from_ms = from;
   in.to_ms = to;
   write_page(opt.output, view::render_plot_svg(in));

@@ -77,6 +77,26 @@ PlotSample plot_sample(const run::TickReport& report);
 /// records', not the ticks').
 std::vector<PlotSample> plot_samples(const record::Session& session);
 
+/// The page's time axis, for samples made to its width: from_ms to to_ms (-1:
+/// the session's last tick), as PlotInput's.
+struct PlotAxis {
+  std::int64_t from_ms = 0;
+  std::int64_t to_ms = -1;
+};
+
+/// As plot_samples(session), sampled to the page's width: of the samples
+/// that fall in one pixel column, only those the page draws are kept: the
+/// column's first and last; each where the frame's sending, the state, the
+/// layer, a stop or a switch signal's bit changes; and one at the lowest and
+/// one at the highest drive and pivot (a trace draws a column's first,
+/// lowest, highest and last). Each stands for the ticks of those dropped
+/// after it. The page drawn from them is the one every sample draws, byte
+/// for byte; a stick moving on every tick leaves at most 6 samples a column
+/// (945 columns) of its changes, and a column's samples are held only while
+/// it is made. Switch signals are kept at each change: a bit that changes on
+/// every tick keeps a sample a tick, as the page draws it.
+std::vector<PlotSample> plot_samples(const record::Session& session, const PlotAxis& axis);
+
 /// Builds the lanes from what the input did (plot_lanes.cpp): the controllers'
 /// events read with the mapping in effect (its deadman, stop buttons,
 /// consent and arming inputs), and the link's changes.
