@@ -204,7 +204,7 @@ struct RecordedRun {
   std::vector<std::pair<std::int64_t, protocol::DataBytes>> delivered;
   std::vector<run::TickReport> reports;
   std::string reload_file = kMappings + "/f6a.yaml";  ///< what a reload puts in place
-  std::string input = "script";                       ///< the settings' input, as run names it
+  std::string input_name = "script";                  ///< the settings' input, as run names it
 
   void run(const std::string& script_text) {
     const auto script_path = dir.write("drive.events", script_text);
@@ -219,7 +219,7 @@ struct RecordedRun {
                         .center = m->center,
                         .port = "test",
                         .baud = 9600,
-                        .input = input,
+                        .input = input_name,
                         .config = "",
                         .sources = read_mapping_sources(m->chain)};
       return std::make_pair(
@@ -335,7 +335,7 @@ TEST(Recorder, TextOfAnyBytesIsRecordedWholeAndNeverEndsTheDrive) {
   RecordedRun live;
   const std::string latin = "robot: HD1\nextends: " + kMappings + "/hd1.yaml\n# caf\xe9, \xff\xc3: Latin-1\n";
   live.reload_file = live.dir.write("latin.yaml", latin).string();
-  live.input = "drive-caf\xe9-\xff.events";
+  live.input_name = "drive-caf\xe9-\xff.events";
   input::InputEvent connect{.t_ms = 0, .type = input::InputEvent::Type::kConnect, .name = name};
   live.run(input::format_event(connect) +
            "\n40 button leftshoulder 1\n200 axis lefty -20000\n"
@@ -346,7 +346,7 @@ TEST(Recorder, TextOfAnyBytesIsRecordedWholeAndNeverEndsTheDrive) {
   const Session s = read_session(live.session);
   ASSERT_FALSE(s.events.empty());
   EXPECT_EQ(s.events[0].name, name);
-  EXPECT_EQ(s.settings.input, live.input);
+  EXPECT_EQ(s.settings.input, live.input_name);
   ASSERT_EQ(s.stops.size(), 2u);  // the stop and its reset
   EXPECT_EQ(s.stops[0].pad.name, name);
   EXPECT_EQ(s.stops[1].pad.name, name);

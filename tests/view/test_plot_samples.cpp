@@ -59,7 +59,8 @@ record::Session busy_two_hours() {
     s.states.push_back({t + 300'000, run::OpState::kEnabled});
   }
   s.stops.push_back(record::StopRecord{.t_ms = 4'000'000, .by = run::StopBy::kOperator, .name = "pad"});
-  s.end = record::EndRecord{.t_ms = (kTicks - 1) * 40, .last_tick = kTicks - 1, .frames_sent = kTicks - 1};
+  s.end = record::EndRecord{
+      .t_ms = (kTicks - 1) * 40, .last_tick = kTicks - 1, .frames_sent = kTicks - 1, .why = "SIGINT", .line = 0};
   return s;
 }
 
