@@ -121,13 +121,16 @@ class SafetyOracle {
   }
 
   // Every tick up to the script's end gets a frame while the link is up and
-  // nothing holds the loop (a suspend, a stop): none is lost on the way.
+  // nothing holds the loop (a suspend once its neutral frames are out, a
+  // stop): none is lost on the way, a suspend's own neutral frames included.
   std::string missing_before(std::int64_t t) {
     const std::int64_t period = options_.loop.period_ms;
     for (std::int64_t u = last_t_ < 0 ? 0 : last_t_ + period; u < t && u <= end_tick_; u += period) {
       advance_to(u);
       reading_.at_tick(u);
       const auto& loop = reading_.loop();
+      if (loop.link_up() && loop.suspending(u) && !loop.stopped())
+        return "no frame at t=" + std::to_string(u) + " (the link up, one of a suspend's neutral frames owed)";
       if (loop.link_up() && !loop.suspended() && !loop.stopped())
         return "no frame at t=" + std::to_string(u) + " (the link up, not suspended, not stopping)";
     }

@@ -60,6 +60,9 @@ constexpr std::uint64_t kScripts = test::sweep_size(10'000, 1'000);
 
 constexpr std::uint8_t kCode = 0x5A;
 
+/// A seed's dip-switch code, over the whole byte (0x00..0xFF), apart from its mapping (a Fibonacci hash's top byte).
+std::uint8_t code_of(std::uint64_t seed) { return static_cast<std::uint8_t>((seed * 0x9E3779B97F4A7C15ULL) >> 56U); }
+
 std::uint64_t from_environment(const char* name, std::uint64_t fallback) {
   const char* text = std::getenv(name);
   if (text == nullptr || *text == '\0') return fallback;
@@ -121,6 +124,7 @@ void trace(const TickReport& r) {
 /// What a failure prints: enough to play it again by hand.
 std::string describe_failure(std::uint64_t seed, const std::string& mapping_file, bool weapons,
                              const std::vector<input::InputEvent>& script, const std::string& violation) {
+  const std::string code = test::code_text(code_of(seed));
   const std::string name = "andros-sim-" + std::to_string(seed) + (weapons ? "-weapons" : "") + ".events";
   const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / name;
   std::ofstream(saved) << test::script_text(script);
@@ -128,7 +132,7 @@ std::string describe_failure(std::uint64_t seed, const std::string& mapping_file
          "\nagain: ANDROS_SIM_SEED_BASE=" + std::to_string(seed) +
          " ANDROS_SIM_SCRIPTS=1 andros_simulation_tests, or\n"
          "       andros-bridge replay --mapping " +
-         mapping_file + (weapons ? " --weapons" : "") + " --code 5A " + saved.string() + "\nthe script:\n" +
+         mapping_file + (weapons ? " --weapons" : "") + " --code " + code + " " + saved.string() + "\nthe script:\n" +
          test::script_text(script);
 }
 
@@ -159,7 +163,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       const auto script = test::fault_script(rng, library.targets());
       const std::string& mapping_file = library.mapping_for(seed);
       for (const bool weapons : {false, true}) {
-        const auto out = test::simulate(library, mapping_file, script, weapons, kCode, observe);
+        const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe);
         w.coverage += out.coverage;
         if (!out.violation.empty()) {
           ++w.failed;
@@ -245,6 +249,76 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   // After a stop, motion comes only after its reset (the last interruption before the press is the reset).
   for (const auto after : {Ending::kReset, Ending::kPanic, Ending::kTimeout}) {
     EXPECT_GT(coverage.motion_after[static_cast<std::size_t>(after)], 0) << "no motion after a " << to_string(after);
+  }
+}
+
+// What the simulation once missed (issue 35), each a script through the
+// simulation with the simulated mappings' HD1 (an enable timeout of 2 s):
+// frames are checked by the oracle, and what must still drive is asked for.
+struct Played {
+  std::string violation;
+  std::vector<std::int64_t> enabled;  ///< the ticks whose frame the link took with safety = 1
+};
+Played play(const std::string& text, std::uint8_t code = kCode) {
+  Library library;
+  const std::string hd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";
+  Played p;
+  const auto script = input::parse_event_script(text, "issue35.events");
+  const auto out = test::simulate(library, hd1, script, false, code, [&p](const TickReport& r) {
+    if (r.sent && r.result == link::SendResult::kSent && r.enabled()) p.enabled.push_back(r.t_ms);
+  });
+  p.violation = out.violation;
+  return p;
+}
+
+// A deadman wedged down and the stick jittering 60 every 100 ms: noise within
+// the 1024 band, so "enabled" ends 2 s after the last change (seen at 80: the
+// frame at 2080 is neutral); a hand moving 2,200 drives on.
+std::string jittering(int size) {
+  std::string text = "0 connect\n20 button leftshoulder 1\n60 axis lefty -20000\n";
+  for (int t = 160, sign = 1; t <= 3900; t += 100, sign = -sign) {
+    text += std::to_string(t) + " axis lefty " + std::to_string(-20000 + sign * size) + "\n";
+  }
+  return text + "4000 end\n";
+}
+
+TEST(FaultSimulation, PadNoiseWithinTheBandDoesNotHoldOffTheEnableTimeout) {
+  const auto noise = play(jittering(30));
+  EXPECT_EQ(noise.violation, "");
+  ASSERT_FALSE(noise.enabled.empty());
+  EXPECT_EQ(noise.enabled.back(), 2040);
+  const auto hand = play(jittering(1100));
+  EXPECT_EQ(hand.violation, "");
+  ASSERT_FALSE(hand.enabled.empty());
+  EXPECT_EQ(hand.enabled.back(), 4000);
+}
+
+// A TCP server that stops reading gets neutral frames only, through fresh
+// deadman presses, a reset and the link reopened, until it is seen reading;
+// then a fresh press drives again.
+TEST(FaultSimulation, AStalledLinkGetsNoMotionThroughFreshPressesAndResets) {
+  const auto p = play(
+      "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n200 link stalled\n"
+      "300 button leftshoulder 0\n340 button leftshoulder 1\n500 button leftshoulder 0\n540 button leftshoulder 1\n"
+      "600 link down\n700 link up\n800 button leftshoulder 0\n840 button leftshoulder 1\n1000 link reading\n"
+      "1100 button leftshoulder 0\n1140 button leftshoulder 1\n1200 axis lefty 0\n1240 axis lefty -32768\n"
+      "1400 end\n");
+  EXPECT_EQ(p.violation, "");
+  ASSERT_FALSE(p.enabled.empty());
+  EXPECT_LT(p.enabled.front(), 200);
+  const auto stalled = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 200; });
+  ASSERT_NE(stalled, p.enabled.end());
+  EXPECT_EQ(*stalled, 1160);  // the first tick after the fresh press once it reads again
+}
+
+// Every dip-switch code, 0x00 to 0xFF, given as `--code` text, reaches byte
+// 11 of the frames on the wire (the oracle reads them off the encoded bytes).
+TEST(FaultSimulation, EveryDipSwitchCodeReachesTheWire) {
+  for (int code = 0; code <= 0xFF; ++code) {
+    const auto p =
+        play("0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n200 end\n", static_cast<std::uint8_t>(code));
+    EXPECT_EQ(p.violation, "") << "code " << code;
+    EXPECT_FALSE(p.enabled.empty()) << "code " << code;
   }
 }
 

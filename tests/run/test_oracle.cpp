@@ -8,6 +8,7 @@
 #include "andros/mapping/loader.hpp"
 #include "oracle/safety_oracle.hpp"
 #include "oracle/simulation.hpp"
+#include "oracle/wire_frame.hpp"
 
 namespace andros::run {
 namespace {
@@ -283,6 +284,50 @@ TEST_F(OracleTest, RefusesMotionAfterAPanicSqueezeAndBackWithinATick) {
   EXPECT_EQ(o.frame(120, enabled),
             "safety = 1 while not enabled (deadman held but not pressed since the last panic squeeze)");
   EXPECT_EQ(o.coverage().panics, 1);
+}
+
+// docs/mapping.md, "Enable timeout": an axis moved within 1024 of where it was at the last change is noise.
+std::string noisy_script(int size) {
+  std::string script = std::string(kDriving);  // enabled at 40, the stick's last change at 50
+  for (int t = 150, sign = 1; t <= 2950; t += 100, sign = -sign) {
+    script += std::to_string(t) + " axis lefty " + std::to_string(-32768 + 2000 + sign * size) + "\n";
+  }
+  return script + "3000 end\n";
+}
+
+TEST_F(OracleTest, RefusesMotionPastTheEnableTimeoutWhenOnlyNoiseMoved) {
+  const std::string hd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";  // enable_timeout: 2
+  // Moved 2000 from full at 150 (the last change, seen at 160); then 60 back and forth, within the band: due at 2160.
+  auto noise = oracle(noisy_script(30), false, hd1);
+  ASSERT_EQ(noise.frame(0, frame()), "");
+  for (std::int64_t t = 40; t < 2160; t += 40) ASSERT_EQ(noise.frame(t, moving()), "") << t;
+  EXPECT_EQ(noise.frame(2160, moving()),
+            "safety = 1 while not enabled (deadman held but not pressed since the last enable timeout)");
+  // 2 x 1100 back and forth: a hand, and it drives on.
+  auto hand = oracle(noisy_script(1100), false, hd1);
+  ASSERT_EQ(hand.frame(0, frame()), "");
+  for (std::int64_t t = 40; t <= 3000; t += 40) ASSERT_EQ(hand.frame(t, moving()), "") << t;
+}
+
+TEST(OracleWire, ReadsTheProtocolsWorkedExampleAndRefusesABrokenOne) {
+  // docs/protocol.md: 00001C2000907F7E3E0000FFFF20CC02, checksum 0x06F2 sent as F2 06.
+  const std::string hex = "F1F13030303031433230303039303746374533453030303046464646323043433032F206";
+  protocol::Frame wire{};
+  for (std::size_t i = 0; i < wire.size(); ++i)
+    wire[i] = static_cast<std::uint8_t>(std::stoi(hex.substr(2 * i, 2), nullptr, 16));
+  protocol::DataBytes data{};
+  ASSERT_EQ(test::read_wire_frame(wire, data), "");
+  EXPECT_EQ(data, protocol::parse_data_hex("00001C2000907F7E3E0000FFFF20CC02"));
+  auto broken = wire;
+  broken[35] = 0x07;
+  EXPECT_EQ(test::read_wire_frame(broken, data),
+            "the checksum on the wire is not the sum of the 32 digits, low byte first");
+  broken = wire;
+  broken[2] = 'a';  // a lower-case digit: the wire carries upper case
+  EXPECT_EQ(test::read_wire_frame(broken, data), "data byte 0 is not two upper-case hex digits on the wire");
+  broken = wire;
+  broken[1] = 0xF0;
+  EXPECT_EQ(test::read_wire_frame(broken, data), "the frame does not start with F1 F1");
 }
 
 // The loop's state against the oracle's stop latch: a reset made late (or never) is named as an early one is.
