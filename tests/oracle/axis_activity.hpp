@@ -19,6 +19,7 @@ namespace andros::test {
 /// docs/mapping.md: a move of more than this (of -32768..32767) is a change; noise within it is not.
 inline constexpr int kNoiseBand = 1024;
 
+// [rule: timeout-band]
 class AxisActivity {
  public:
   /// An event set key to value: whether that is a change (beyond the band from the last one).

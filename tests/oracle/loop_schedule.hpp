@@ -120,6 +120,7 @@ class LoopSchedule {
     bool reload_frame = false;   ///< one of a reload's
   };
   /// Once suspended, stopping or past the end, only the neutral frames still owed go out.
+  // [rule: delivery]
   Delivery deliver(std::int64_t t, std::int64_t end_tick) {
     Delivery d;
     if (!link_up_) {

@@ -92,12 +92,14 @@ class ScriptReading {
     // Past the panic point now, or at any moment since the last tick (every change between two ticks counts).
     const bool squeezed = std::exchange(squeezed_since_tick_, false);
     const auto past_panic = [this](input::InputKey k) { return !k.is_button() && pads_.axis(k) >= *mappings_.panic; };
+    // [rule: panic]
     if (mappings_.panic && enabled() &&
         (squeezed || std::any_of(mappings_.deadmen.begin(), mappings_.deadmen.end(), past_panic))) {
       ++counts_.panics;
       end_enabled(Ending::kPanic);
     }
     const std::int64_t since = std::max(loop_.tick_of(last_change_), enabled_at_);
+    // [rule: timeout]
     if (mappings_.timeout_ms && enabled() && t - since >= *mappings_.timeout_ms) {
       ++counts_.timeouts;
       end_enabled(Ending::kTimeout);
@@ -188,6 +190,7 @@ class ScriptReading {
     }
   }
 
+  // [rule: fresh-press] [rule: stalled-link]
   [[nodiscard]] bool enabled() const {
     if (!pads_.connected || !loop_.carries_motion() || loop_.suspended() || loop_.stopped() || stop_.latched())
       return false;

@@ -69,6 +69,7 @@ inline std::string script_text(const std::vector<input::InputEvent>& script) {
 /// not reset is "stopped" (unless a suspend, a reload or the shutdown
 /// outranks it), and "stopped" is a stop latched and not reset, so that a
 /// reset made late, or never, breaks a rule as one made early does.
+// [rule: loop-says-stop]
 inline std::string stop_said(run::OpState state, bool latched) {
   using S = run::OpState;
   if (state == S::kSuspended || state == S::kReloading || state == S::kStopping) return {};
@@ -110,11 +111,12 @@ inline SimulationOutcome simulate(
   // The code as `replay --code` reads it; the oracle holds the frames to the byte meant.
   run::ReplayOptions options{.engine = {weapons, parse_code(code_text(code), SourcePos{"--code"})}};
   options.load = [&mappings](const std::string& file) { return mappings.load(file); };
-  // The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle missed).
+  // [rule: gate] The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle
+  // missed).
   std::int64_t gated = 0;
   std::string gate_fault;
-  // And what the loop says is what it sent: a frame the link took carries safety = 1 exactly when the
-  // state after its tick is "enabled" (the screen, the pad's light and the status read that state).
+  // [rule: loop-says-enabled] And what the loop says is what it sent: a frame the link took carries safety = 1 exactly
+  // when the state after its tick is "enabled" (the screen, the pad's light and the status read that state).
   std::string said;
   run::OpState state = run::OpState::kNoLink;  ///< the loop's, at the frame it just sent
   options.observe = [&](const run::TickReport& r) {

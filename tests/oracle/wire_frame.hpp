@@ -13,6 +13,7 @@
 namespace andros::test {
 
 /// frame's data bytes into data; empty, or what is wrong with the encoding.
+// [rule: wire]
 inline std::string read_wire_frame(const protocol::Frame& frame, protocol::DataBytes& data) {
   if (frame[0] != 0xF1 || frame[1] != 0xF1) return "the frame does not start with F1 F1";
   const auto digit = [](std::uint8_t c) -> int {

@@ -2,6 +2,12 @@
 // made by hand: each rule, broken once, is named; what the rules allow passes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "andros/input/events.hpp"
@@ -328,6 +334,37 @@ TEST(OracleWire, ReadsTheProtocolsWorkedExampleAndRefusesABrokenOne) {
   broken = wire;
   broken[1] = 0xF0;
   EXPECT_EQ(test::read_wire_frame(broken, data), "the frame does not start with F1 F1");
+}
+
+// docs/testing.md's table of the oracle's rules ("The oracle's rules") and
+// the oracle's code name the same rules: each check is marked [rule: ID]
+// where it is made, and each ID is a row of the table.
+TEST(OracleRules, TheTableInTestingMdIsTheOraclesChecks) {
+  const auto text_of = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  std::set<std::string> table;
+  const std::string doc = text_of(ANDROS_DOCS_DIR "/testing.md");
+  const auto section = doc.find("\n### The oracle's rules\n");
+  ASSERT_NE(section, std::string::npos);
+  const auto end = doc.find("\n#", section + 1);
+  std::istringstream rows(doc.substr(section, end - section));
+  const std::regex row(R"(^\| `([a-z-]+)` \|)");
+  for (std::string line; std::getline(rows, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, row)) table.insert(m[1]);
+  }
+  std::set<std::string> code;
+  const std::regex mark(R"(\[rule: ([a-z-]+)\])");
+  for (const auto& entry : std::filesystem::directory_iterator(ANDROS_ORACLE_DIR)) {
+    const std::string text = text_of(entry.path());
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), mark); it != std::sregex_iterator(); ++it) {
+      code.insert((*it)[1]);
+    }
+  }
+  EXPECT_GE(table.size(), 20U);
+  EXPECT_EQ(table, code) << "docs/testing.md's rules and the [rule: ID] marks in tests/oracle/ differ";
 }
 
 // The loop's state against the oracle's stop latch: a reset made late (or never) is named as an early one is.
