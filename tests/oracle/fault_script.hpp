@@ -84,9 +84,16 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(50);
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
-  const auto fire = [&] {  // the weapons layer held (RB), armed (LT) or not, fire (A)
+  // The weapons layer held (RB), armed (LT) or not, fire (A); in a supervised
+  // script the supervisor's consent (its A) given now and then, let go after or held on.
+  const auto fire = [&] {
     add(T::kAxis, arm, 0);
     add(T::kButton, weapons_layer, 1);
+    const bool consent = supervised && pick.below(3) != 0;
+    if (consent) {
+      t += pick.below(60);
+      supervisor(T::kButton, fire_button, 1);
+    }
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
@@ -94,6 +101,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
     add(T::kButton, weapons_layer, 0);
+    if (consent && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
 
   const auto stick = [&] {

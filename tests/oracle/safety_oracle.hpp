@@ -81,7 +81,10 @@ class SafetyOracle {
     const auto& pads = reading_.pads();
     const auto armed = [this, &pads](protocol::SignalId id) { return reading_.mappings().armed(id, pads); };
     // [rule: neutral-unless-enabled]
-    if (auto fired = weapon_errors(s, options_.weapons, why, armed, coverage_.weapons); !fired.empty()) return fired;
+    const auto& sup = reading_.mappings().current->supervisor;
+    const bool consent = !sup || !sup->weapons_consent || pads.sup_held(sup->weapons_consent->key);
+    if (auto fired = weapon_errors(s, options_.weapons, why, armed, consent, coverage_.weapons); !fired.empty())
+      return fired;
     if (const auto moving = motion(s)) {
       // [rule: stop-actuated] ISO 13850: a stop device stops whenever it is actuated, whatever came before.
       if (reading_.stop_actuated()) return *moving + " while a stop button is pressed or held";

@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -90,6 +91,10 @@ class Library : public test::MappingCache {
       triggers_.push_back(ANDROS_TEST_DATA_DIR + std::string(trigger));
       targets_.good.push_back(triggers_.back());
     }
+    // HD1 with the supervisor's weapons consent (the two-person rule).
+    const std::string consent = ANDROS_TEST_DATA_DIR "/simulation/mappings/consent.yaml";
+    buttons_.push_back(consent);
+    targets_.good.push_back(consent);
     // A layout whose weapons arm with RB, not LT, and one with another rest rule.
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/core.yaml");
     targets_.good.push_back(ANDROS_TEST_DATA_DIR "/mappings/rest.yaml");
@@ -255,17 +260,21 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
 // What the simulation once missed (issue 35), each a script through the
 // simulation with the simulated mappings' HD1 (an enable timeout of 2 s):
 // frames are checked by the oracle, and what must still drive is asked for.
+const std::string kSimulationHd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";
+
 struct Played {
   std::string violation;
-  std::vector<std::int64_t> enabled;  ///< the ticks whose frame the link took with safety = 1
+  std::vector<std::int64_t> enabled;                      ///< the ticks whose frame the link took with safety = 1
+  std::map<std::int64_t, protocol::ControlState> frames;  ///< each frame the link took, by its tick
 };
-Played play(const std::string& text, std::uint8_t code = kCode) {
+Played play(const std::string& text, std::uint8_t code = kCode, const std::string& mapping_file = kSimulationHd1) {
   Library library;
-  const std::string hd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";
   Played p;
   const auto script = input::parse_event_script(text, "issue35.events");
-  const auto out = test::simulate(library, hd1, script, false, code, [&p](const TickReport& r) {
-    if (r.sent && r.result == link::SendResult::kSent && r.enabled()) p.enabled.push_back(r.t_ms);
+  const auto out = test::simulate(library, mapping_file, script, false, code, [&p](const TickReport& r) {
+    if (!r.sent || r.result != link::SendResult::kSent) return;
+    if (r.enabled()) p.enabled.push_back(r.t_ms);
+    p.frames[r.t_ms] = protocol::read_signals(r.data);
   });
   p.violation = out.violation;
   return p;
@@ -320,6 +329,77 @@ TEST(FaultSimulation, EveryDipSwitchCodeReachesTheWire) {
     EXPECT_EQ(p.violation, "") << "code " << code;
     EXPECT_FALSE(p.enabled.empty()) << "code " << code;
   }
+}
+
+// The weak spots (issue 35, item 3): what only a few seeds reached, each as a
+// script with the frames it must give.
+
+// A layer toggled (the arm: the right stick's click) while not enabled is no
+// layer on enabling: a click without the deadman toggles nothing. The left
+// stick, pushed after the enabling press, drives; no arm signal moves.
+TEST(FaultSimulation, ALayerToggledWhileNotEnabledIsNoLayerOnEnabling) {
+  const auto p = play(
+      "0 connect\n40 button rightstick 1\n60 button rightstick 0\n200 button leftshoulder 1\n"
+      "300 axis lefty -32768\n400 end\n");
+  EXPECT_EQ(p.violation, "");
+  ASSERT_TRUE(p.frames.contains(360));
+  EXPECT_EQ(p.frames.at(360)[protocol::signal_id("drive")], 255);
+  for (const auto& [t, s] : p.frames) {
+    EXPECT_EQ(s[protocol::signal_id("shoulder_ccw")] + s[protocol::signal_id("shoulder_cw")], 0) << t;
+  }
+}
+
+// The deadman tapped during a reset hold: the hold is no reset, the stop stays,
+// and nothing the deadman does after it drives.
+TEST(FaultSimulation, ADeadmanTapDuringAResetHoldIsNoReset) {
+  const auto p = play(
+      "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n100 button guide 1\n110 button guide 0\n"
+      "120 button leftshoulder 0\n200 button back 1\n200 button start 1\n1201 button leftshoulder 1\n"
+      "1211 button leftshoulder 0\n2600 button back 0\n2600 button start 0\n2700 button leftshoulder 1\n"
+      "3000 end\n");
+  EXPECT_EQ(p.violation, "");
+  ASSERT_FALSE(p.enabled.empty());
+  EXPECT_LT(p.enabled.back(), 120);
+}
+
+// A trigger deadman held as the pad reconnects is no press: neutral until it
+// is let go and squeezed again.
+TEST(FaultSimulation, ATriggerHeldAtReconnectIsNoPress) {
+  const auto p = play(
+      "0 connect Pad A\n20 axis lefttrigger 20000\n200 disconnect\n300 connect Pad A\n"
+      "300 axis lefttrigger 20000\n600 axis lefttrigger 0\n700 axis lefttrigger 20000\n900 end\n",
+      kCode, ANDROS_TEST_DATA_DIR "/simulation/mappings/trigger.yaml");
+  EXPECT_EQ(p.violation, "");
+  ASSERT_FALSE(p.enabled.empty());
+  EXPECT_LT(p.enabled.front(), 200);
+  const auto again = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 200; });
+  ASSERT_NE(again, p.enabled.end());
+  EXPECT_EQ(*again, 720);
+}
+
+// Another pad within one frame (lost at 105, Pad B at 110 with the deadman
+// held as it appears) is a new session: neutral from the frame at 120 until
+// a fresh press on it.
+TEST(FaultSimulation, APadWithinOneFrameIsANewSession) {
+  const auto p = play(
+      "0 connect Pad A\n20 button leftshoulder 1\n60 axis lefty -32768\n105 disconnect\n110 connect Pad B\n"
+      "110 button leftshoulder 1\n110 axis lefty -32768\n300 button leftshoulder 0\n340 button leftshoulder 1\n"
+      "400 axis lefty 0\n440 axis lefty -32768\n600 end\n");
+  EXPECT_EQ(p.violation, "");
+  const auto after = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 120; });
+  ASSERT_NE(after, p.enabled.end());
+  EXPECT_EQ(*after, 360);
+}
+
+// The stop tapped during a reload's neutral frames latches for when the
+// reload is done: stopped after it, whatever the deadman does.
+TEST(FaultSimulation, AStopDuringAReloadLatches) {
+  const auto p = play(
+      "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n100 reload\n130 button guide 1\n"
+      "140 button guide 0\n300 button leftshoulder 0\n340 button leftshoulder 1\n600 end\n");
+  EXPECT_EQ(p.violation, "");
+  ASSERT_FALSE(p.enabled.empty());
+  EXPECT_LT(p.enabled.back(), 120);
 }
 
 // Scripts the simulation found (tests/data/simulation/): each broke a rule
