@@ -315,6 +315,31 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     if (pick.below(2) == 0) rearm();
   };
 
+  // A toggle (X: the tool on most layouts) pressed while not enabled, or
+  // while enabled and the deadman then let go and pressed again: it ends with
+  // the deadman, and a press without it does nothing.
+  const auto toggle_through_a_release = [&] {
+    const input::InputKey toggle = button("x");
+    if (held) add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    if (pick.below(2) == 0) {  // while not enabled
+      add(T::kButton, toggle, 1);
+      t += 1 + pick.below(60);
+      add(T::kButton, toggle, 0);
+      t += 80 + pick.below(100);
+    }
+    add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    add(T::kButton, toggle, 1);
+    t += 1 + pick.below(60);
+    add(T::kButton, toggle, 0);
+    t += 40 + pick.below(200);
+    add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    t += 80 + pick.below(200);
+  };
+
   // Pads are told apart by name (a script's identity): another name is another physical pad.
   add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
@@ -427,6 +452,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 36: jitter(); break;
         case 37:
         case 38: stall(); break;
+        case 39: toggle_through_a_release(); break;
         default: rearm(); break;
       }
     }

@@ -92,6 +92,12 @@ class SafetyOracle {
       ++coverage_.motion;
       ++coverage_.motion_after[static_cast<std::size_t>(reading_.pressed_after())];
     }
+    // [rule: toggles]
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      if (s.values[i] == 0 || reading_.toggle_may_be_on(static_cast<protocol::SignalId>(i))) continue;
+      return std::string(protocol::kSignals[i].name) +
+             " = 1 with no press of its toggle since the bridge became enabled (a toggle ends with the deadman)";
+    }
     const auto held = [&pads](input::InputKey k) { return pads.held(k); };
     const auto axis = [&pads](input::InputKey k) { return pads.axis(k); };
     auto& rest = reading_.rest();

@@ -12,10 +12,13 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include "andros/input/events.hpp"
 #include "andros/mapping/model.hpp"
@@ -104,7 +107,30 @@ class ScriptReading {
       ++counts_.timeouts;
       end_enabled(Ending::kTimeout);
     }
+    if (enabled() && !was_enabled_) enabled_since_ = t;
     was_enabled_ = enabled();
+  }
+
+  /// A toggle's signal may be 1: its mapping in force toggles it (it is
+  /// toggled only: docs/mapping.md refuses a signal both toggled and
+  /// momentary) and one of its toggle inputs was pressed since the tick that
+  /// enabled (docs/mapping.md, Toggle: "until pressed again or the deadman is
+  /// released"; presses while not enabled are ignored), or it is no toggle's.
+  [[nodiscard]] bool toggle_may_be_on(protocol::SignalId id) const {
+    bool toggled = false;
+    bool pressed = false;
+    const auto look = [&](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule);
+        if (button == nullptr || !button->toggle || button->signal != id) continue;
+        toggled = true;
+        const auto it = pressed_at_.find(button->input);
+        pressed = pressed || (it != pressed_at_.end() && it->second > enabled_since_ - period_ms_);
+      }
+    };
+    look(mappings_.current->bindings);
+    for (const auto& layer : mappings_.current->layers) look(layer.bindings);
+    return !toggled || pressed;
   }
 
   void apply(const input::InputEvent& e) {
@@ -144,7 +170,10 @@ class ScriptReading {
         if (was != now) last_change_ = e.t_ms;
         // Stamped with the connect's time: the state the pad had when it appeared, not a press.
         const bool initial = e.t_ms == pads_.connect_t;
-        if (now && !was && !initial) rest_.pressed(e.key);
+        if (now && !was && !initial) {
+          rest_.pressed(e.key);
+          pressed_at_[e.key] = e.t_ms;
+        }
         const auto& estop = mappings_.current->estop;
         if (estop && e.key == estop->key) stop_.op.moved(now, was, initial);
         stop_.op_reset.moved(e.key, now);
@@ -312,13 +341,15 @@ class ScriptReading {
   bool supervised_ = false;
   StopLatch stop_;
   DeadmanTicks deadman_;
-  bool resumed_this_tick_ = false;    ///< a resume since the last tick (its rebase takes the presses)
-  AxisActivity activity_;             ///< which axis moves are changes for the timeout
-  std::int64_t last_change_ = 0;      ///< the last event that changed an input
-  bool squeezed_since_tick_ = false;  ///< a trigger deadman past the panic point since the last tick
-  bool was_enabled_ = false;          ///< at the last tick
-  std::int64_t enabled_at_ = 0;       ///< the tick that enabled, the last time
-  std::set<input::InputKey> fresh_;   ///< deadmen pressed since the last ending event
+  bool resumed_this_tick_ = false;                      ///< a resume since the last tick (its rebase takes the presses)
+  AxisActivity activity_;                               ///< which axis moves are changes for the timeout
+  std::int64_t last_change_ = 0;                        ///< the last event that changed an input
+  bool squeezed_since_tick_ = false;                    ///< a trigger deadman past the panic point since the last tick
+  bool was_enabled_ = false;                            ///< at the last tick
+  std::int64_t enabled_at_ = 0;                         ///< the tick that enabled, the last time
+  std::int64_t enabled_since_ = 0;                      ///< the first tick of the last stretch the oracle found enabled
+  std::map<input::InputKey, std::int64_t> pressed_at_;  ///< the operator's last press of each button
+  std::set<input::InputKey> fresh_;                     ///< deadmen pressed since the last ending event
   Ending last_ending_ = Ending::kStart;
   Ending last_interruption_ = Ending::kStart;
   Ending pressed_after_ = Ending::kStart;
