@@ -319,20 +319,20 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   // while enabled and the deadman then let go and pressed again: it ends with
   // the deadman, and a press without it does nothing.
   const auto toggle_through_a_release = [&] {
-    const input::InputKey toggle = button("x");
+    const auto tap = [&] {
+      add(T::kButton, button("x"), 1);
+      t += 1 + pick.below(60);
+      add(T::kButton, button("x"), 0);
+    };
     if (held) add(T::kButton, deadman, 0);
     t += 40 + pick.below(100);
     if (pick.below(2) == 0) {  // while not enabled
-      add(T::kButton, toggle, 1);
-      t += 1 + pick.below(60);
-      add(T::kButton, toggle, 0);
+      tap();
       t += 80 + pick.below(100);
     }
     add(T::kButton, deadman, 1);
     t += 40 + pick.below(100);
-    add(T::kButton, toggle, 1);
-    t += 1 + pick.below(60);
-    add(T::kButton, toggle, 0);
+    tap();
     t += 40 + pick.below(200);
     add(T::kButton, deadman, 0);
     t += 40 + pick.below(100);

@@ -280,6 +280,19 @@ Played play(const std::string& text, std::uint8_t code = kCode, const std::strin
   return p;
 }
 
+/// The first tick at or after t whose frame was enabled; -1: none.
+std::int64_t first_enabled_from(const Played& p, std::int64_t t) {
+  const auto it = std::find_if(p.enabled.begin(), p.enabled.end(), [t](std::int64_t u) { return u >= t; });
+  return it == p.enabled.end() ? -1 : *it;
+}
+
+/// The script kept every rule, drove before t and never from t on.
+void expect_driving_only_before(const Played& p, std::int64_t t) {
+  EXPECT_EQ(p.violation, "");
+  ASSERT_FALSE(p.enabled.empty());
+  EXPECT_LT(p.enabled.back(), t);
+}
+
 // A deadman wedged down and the stick jittering 60 every 100 ms: noise within
 // the 1024 band, so "enabled" ends 2 s after the last change (seen at 80: the
 // frame at 2080 is neutral); a hand moving 2,200 drives on.
@@ -315,9 +328,7 @@ TEST(FaultSimulation, AStalledLinkGetsNoMotionThroughFreshPressesAndResets) {
   EXPECT_EQ(p.violation, "");
   ASSERT_FALSE(p.enabled.empty());
   EXPECT_LT(p.enabled.front(), 200);
-  const auto stalled = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 200; });
-  ASSERT_NE(stalled, p.enabled.end());
-  EXPECT_EQ(*stalled, 1160);  // the first tick after the fresh press once it reads again
+  EXPECT_EQ(first_enabled_from(p, 200), 1160);  // the first tick after the fresh press once it reads again
 }
 
 // Every dip-switch code, 0x00 to 0xFF, given as `--code` text, reaches byte
@@ -357,9 +368,7 @@ TEST(FaultSimulation, ADeadmanTapDuringAResetHoldIsNoReset) {
       "120 button leftshoulder 0\n200 button back 1\n200 button start 1\n1201 button leftshoulder 1\n"
       "1211 button leftshoulder 0\n2600 button back 0\n2600 button start 0\n2700 button leftshoulder 1\n"
       "3000 end\n");
-  EXPECT_EQ(p.violation, "");
-  ASSERT_FALSE(p.enabled.empty());
-  EXPECT_LT(p.enabled.back(), 120);
+  expect_driving_only_before(p, 120);
 }
 
 // A trigger deadman held as the pad reconnects is no press: neutral until it
@@ -372,9 +381,7 @@ TEST(FaultSimulation, ATriggerHeldAtReconnectIsNoPress) {
   EXPECT_EQ(p.violation, "");
   ASSERT_FALSE(p.enabled.empty());
   EXPECT_LT(p.enabled.front(), 200);
-  const auto again = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 200; });
-  ASSERT_NE(again, p.enabled.end());
-  EXPECT_EQ(*again, 720);
+  EXPECT_EQ(first_enabled_from(p, 200), 720);
 }
 
 // Another pad within one frame (lost at 105, Pad B at 110 with the deadman
@@ -386,9 +393,7 @@ TEST(FaultSimulation, APadWithinOneFrameIsANewSession) {
       "110 button leftshoulder 1\n110 axis lefty -32768\n300 button leftshoulder 0\n340 button leftshoulder 1\n"
       "400 axis lefty 0\n440 axis lefty -32768\n600 end\n");
   EXPECT_EQ(p.violation, "");
-  const auto after = std::find_if(p.enabled.begin(), p.enabled.end(), [](std::int64_t t) { return t >= 120; });
-  ASSERT_NE(after, p.enabled.end());
-  EXPECT_EQ(*after, 360);
+  EXPECT_EQ(first_enabled_from(p, 120), 360);
 }
 
 // The stop tapped during a reload's neutral frames latches for when the
@@ -397,9 +402,7 @@ TEST(FaultSimulation, AStopDuringAReloadLatches) {
   const auto p = play(
       "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n100 reload\n130 button guide 1\n"
       "140 button guide 0\n300 button leftshoulder 0\n340 button leftshoulder 1\n600 end\n");
-  EXPECT_EQ(p.violation, "");
-  ASSERT_FALSE(p.enabled.empty());
-  EXPECT_LT(p.enabled.back(), 120);
+  expect_driving_only_before(p, 120);
 }
 
 // Scripts the simulation found (tests/data/simulation/): each broke a rule
