@@ -122,7 +122,8 @@ void add_replay_command(CLI::App& app, int& exit_code) {
       app.add_subcommand("replay",
                          "Run an event script through the bridge's own loop on a virtual clock and write the\n"
                          "frames the vehicle receives: one every 1000/rate ms from t=0 through the script's end.\n"
-                         "Fault events (link down|up|taken, suspend, resume, reload [MAPPING], stop) are answered\n"
+                         "Fault events (link down|up|taken|stalled|reading, suspend, resume, reload [MAPPING], stop)\n"
+                         "are answered "
                          "as run answers the real thing. Deterministic: the same script gives the same bytes on\n"
                          "any machine, at any speed. Given a flight recorder's session (docs/recording.md), replays\n"
                          "it with its own settings and mapping and prints 'N frames identical; M records ... made\n"

@@ -172,7 +172,7 @@ std::optional<InputEvent> EventReader::next() {
       }
       if (!found) throw fail(arg(2), "unknown hat position " + quote(arg(2).text));
     } else if (kind.text == "link") {
-      want_args(1, "link down|up|taken");
+      want_args(1, "link down|up|taken|stalled|reading");
       const auto& what = arg(1).text;
       if (what == "down") {
         ev.type = T::kLinkDown;
@@ -180,8 +180,12 @@ std::optional<InputEvent> EventReader::next() {
         ev.type = T::kLinkUp;
       } else if (what == "taken") {
         ev.type = T::kLinkTaken;
+      } else if (what == "stalled") {
+        ev.type = T::kLinkStalled;
+      } else if (what == "reading") {
+        ev.type = T::kLinkReading;
       } else {
-        throw fail(arg(1), "unknown link event " + quote(what) + " (expected down, up or taken)");
+        throw fail(arg(1), "unknown link event " + quote(what) + " (expected down, up, taken, stalled or reading)");
       }
     } else if (kind.text == "suspend") {
       want_args(0, "suspend");
@@ -265,6 +269,8 @@ std::string format_event(const InputEvent& event) {
     case T::kLinkDown: out += "link down"; break;
     case T::kLinkUp: out += "link up"; break;
     case T::kLinkTaken: out += "link taken"; break;
+    case T::kLinkStalled: out += "link stalled"; break;
+    case T::kLinkReading: out += "link reading"; break;
     case T::kSuspend: out += "suspend"; break;
     case T::kResume: out += "resume"; break;
     case T::kShutdown: out += "stop"; break;

@@ -5,6 +5,7 @@ namespace {
 
 const std::string kDownText = "held down by the event script";
 const std::string kTakenText = "taken by another program (event script)";
+const std::string kStalledText = "stalled: the server reads nothing (event script)";
 
 }  // namespace
 
@@ -22,7 +23,7 @@ const std::string& FaultLink::detail() const {
     case Fault::kTaken: return kTakenText;
     case Fault::kNone: break;
   }
-  return inner_.detail();
+  return stalled_ ? kStalledText : inner_.detail();
 }
 
 const LinkCounters& FaultLink::counters() const {

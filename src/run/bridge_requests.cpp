@@ -33,6 +33,12 @@ void Bridge::on_fault(const input::InputEvent& fault) {
       link_changed(false);
       break;
     case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
+    case T::kLinkStalled:
+      // A stalled server gets neutral frames only: the loop sees the link as lost (docs/event-scripts.md).
+      link_.set_stalled(true);
+      if (machine_.link_up()) link_changed(false);
+      break;
+    case T::kLinkReading: link_.set_stalled(false); break;  // back like `link up`: a new link
     case T::kSuspend:
       suspend_pauses_ = false;
       apply(OpEvent::kSuspend);

@@ -28,7 +28,8 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   PlayerInput input(player);
   std::string mapping_file = engine.mapping().file;
   ReloadableFrames frames(make_engine_frames(std::move(engine)));
-  link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
+  link::SinkLink link(
+      [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
   Bridge bridge(clock, input, frames, link,
                 BridgeOptions{.rate_millihertz = options.rate_millihertz,
                               .neutral_tail_at_end = false,

@@ -74,6 +74,6 @@ frames "$TMP/out" >"$TMP/f5"
 # 5. A bad fault event is an error at its place.
 printf '0 connect\n10 link sideways\n' >"$TMP/bad.events"
 expect_exit 2 "$BIN" replay "$TMP/bad.events" --mapping "$core"
-expect_stderr_matches "bad.events:2:9: error: unknown link event 'sideways' \(expected down, up or taken\)"
+expect_stderr_matches "bad.events:2:9: error: unknown link event 'sideways' \(expected down, up, taken, stalled or reading\)"
 
 finish

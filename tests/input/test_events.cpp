@@ -71,8 +71,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{"0 connect\n10 jump\n", 2, 4,
                   "unknown event 'jump' (expected connect, disconnect, button, axis, hat, end, link, suspend, resume, "
                   "reload, stop or supervisor)"},
-        BadScript{"0 connect\n10 link sideways\n", 2, 9, "unknown link event 'sideways' (expected down, up or taken)"},
-        BadScript{"0 connect\n10 link\n", 2, 4, "expected 'link down|up|taken'"},
+        BadScript{"0 connect\n10 link sideways\n", 2, 9,
+                  "unknown link event 'sideways' (expected down, up, taken, stalled or reading)"},
+        BadScript{"0 connect\n10 link\n", 2, 4, "expected 'link down|up|taken|stalled|reading'"},
         BadScript{"0 connect\n10 suspend now\n", 2, 12, "expected 'suspend'"},
         BadScript{"0 connect\n10 reload a.yaml b.yaml\n", 2, 18, "expected 'reload [MAPPING]'"},
         BadScript{"0 connect\n100 button a 1\n50 button a 0\n", 3, 1,
@@ -275,6 +276,8 @@ TEST(EventScript, FormatReadsBack) {
       "130     button      7 1\n"
       "140     hat         2 rightdown\n"
       "950     disconnect\n"
+      "1000    link stalled\n"
+      "1100    link reading\n"
       "2000    end\n";
   std::string again;
   for (const auto& e : parse_event_script(text, "f")) again += format_event(e) + "\n";

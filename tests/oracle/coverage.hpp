@@ -18,6 +18,7 @@ enum class Ending : std::uint8_t {
   kRelease,
   kLinkDown,
   kLinkUp,
+  kLinkStalled,
   kSuspend,
   kResume,
   kReloadSame,
@@ -33,9 +34,9 @@ enum class Ending : std::uint8_t {
 
 inline const char* to_string(Ending e) {
   constexpr const char* kNames[] = {
-      "start",       "connect",    "disconnect",    "deadman release",    "link down",         "link up",
-      "suspend",     "resume",     "reload (same)", "reload (good file)", "reload (bad file)", "stop",
-      "stop button", "stop reset", "panic squeeze", "enable timeout"};
+      "start",        "connect",     "disconnect", "deadman release", "link down",          "link up",
+      "link stalled", "suspend",     "resume",     "reload (same)",   "reload (good file)", "reload (bad file)",
+      "stop",         "stop button", "stop reset", "panic squeeze",   "enable timeout"};
   return kNames[static_cast<std::size_t>(e)];
 }
 

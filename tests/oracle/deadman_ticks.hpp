@@ -19,6 +19,7 @@
 
 namespace andros::test {
 
+// [rule: between-ticks]
 class DeadmanTicks {
  public:
   /// A new session of the operator's pad: what the old one did is gone.

@@ -84,9 +84,16 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(50);
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
-  const auto fire = [&] {  // the weapons layer held (RB), armed (LT) or not, fire (A)
+  // The weapons layer held (RB), armed (LT) or not, fire (A); in a supervised
+  // script the supervisor's consent (its A) given now and then, let go after or held on.
+  const auto fire = [&] {
     add(T::kAxis, arm, 0);
     add(T::kButton, weapons_layer, 1);
+    const bool consent = supervised && pick.below(3) != 0;
+    if (consent) {
+      t += pick.below(60);
+      supervisor(T::kButton, fire_button, 1);
+    }
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
@@ -94,6 +101,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
     add(T::kButton, weapons_layer, 0);
+    if (consent && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
 
   const auto stick = [&] {
@@ -269,6 +277,69 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(key.is_button() ? T::kButton : T::kAxis, key, back);
   };
 
+  // A wedged deadman: pressed afresh, then for about 3 s (past the simulated
+  // mappings' 2 s enable timeout) nothing but a stick or the trigger jittering
+  // every 100 ms, within the timeout's noise band (no change: it must time
+  // out) or beyond it (a hand: it may drive on).
+  const auto jitter = [&] {
+    rearm();
+    const bool trigger = pick.below(2) == 0;  // LT held at the middle (a trigger deadman), or the left stick
+    const input::InputKey key = trigger ? arm : drive;
+    const int base = trigger ? 19000 + static_cast<int>(pick.below(5000)) : static_cast<int>(pick.below(60001)) - 30000;
+    const bool noise = pick.below(3) != 0;
+    add(T::kAxis, key, base);
+    for (int step = 0, n = 25 + static_cast<int>(pick.below(12)); step < n; ++step) {
+      t += 90 + pick.below(20);
+      const int size = noise ? static_cast<int>(pick.below(501)) : 1100 + static_cast<int>(pick.below(1500));
+      add(T::kAxis, key, base + (step % 2 == 0 ? size : -size));
+    }
+  };
+
+  // A TCP server that stops reading: neutral frames only, through its resets
+  // (dropped and reopened, still not reading), whatever the operator does
+  // (fresh deadman presses, the stick pushed), until it is seen reading again.
+  const auto stall = [&] {
+    add(T::kLinkStalled);
+    for (int presses = 1 + static_cast<int>(pick.below(3)); presses > 0; --presses) {
+      t += 40 + pick.below(300);
+      rearm();
+      t += pick.below(200);
+      if (pick.below(3) == 0) {
+        add(T::kLinkDown);
+        pair_gap();
+        add(T::kLinkUp);
+      }
+    }
+    t += pick.below(400);
+    if (pick.below(6) != 0) add(T::kLinkReading);  // now and then stalled on (to the end, or the next stall)
+    if (pick.below(2) == 0) rearm();
+  };
+
+  // A toggle (X: the tool on most layouts) pressed while not enabled, or
+  // while enabled and the deadman then let go and pressed again: it ends with
+  // the deadman, and a press without it does nothing.
+  const auto toggle_through_a_release = [&] {
+    const auto tap = [&] {
+      add(T::kButton, button("x"), 1);
+      t += 1 + pick.below(60);
+      add(T::kButton, button("x"), 0);
+    };
+    if (held) add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    if (pick.below(2) == 0) {  // while not enabled
+      tap();
+      t += 80 + pick.below(100);
+    }
+    add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    tap();
+    t += 40 + pick.below(200);
+    add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    t += 80 + pick.below(200);
+  };
+
   // Pads are told apart by name (a script's identity): another name is another physical pad.
   add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
@@ -303,7 +374,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(36)) {
+      switch (pick.below(40)) {
         case 0:
         case 1:
         case 2:
@@ -377,6 +448,11 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
         case 33: overlapping_stops(); break;
         case 34: swap_while_stopped(); break;
+        case 35:
+        case 36: jitter(); break;
+        case 37:
+        case 38: stall(); break;
+        case 39: toggle_through_a_release(); break;
         default: rearm(); break;
       }
     }

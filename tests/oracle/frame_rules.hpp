@@ -16,8 +16,11 @@ inline constexpr std::uint8_t kNeutralCentre = 128;
 
 /// Every frame: the validation table, the code, and no opposing pair both 1. Empty, or the rule broken.
 inline std::string frame_errors(const protocol::DataBytes& data, const protocol::ControlState& s, std::uint8_t code) {
+  // [rule: valid]
   if (const auto errors = protocol::validation_errors(data); !errors.empty()) return "invalid frame: " + errors.front();
+  // [rule: code]
   if (data[protocol::kCodeByte] != code) return "byte 11 is not the code";
+  // [rule: pairs]
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     const auto partner = protocol::partner_of(static_cast<protocol::SignalId>(i));
     if (partner && *partner > i && s.values[i] != 0 && s.values[*partner] != 0) {
@@ -29,10 +32,12 @@ inline std::string frame_errors(const protocol::DataBytes& data, const protocol:
 }
 
 /// Weapon bits: only with --weapons, while enabled (why: empty, or why the
-/// frame must be neutral) and with an arming input held. Counts them.
+/// frame must be neutral), with an arming input held and, where the mapping
+/// in force asks for it, the supervisor's consent held (consent). Counts them.
+// [rule: weapons]
 template <typename Armed>
 std::string weapon_errors(const protocol::ControlState& s, bool weapons, const std::string& why, const Armed& armed,
-                          std::int64_t& count) {
+                          bool consent, std::int64_t& count) {
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     const auto& sig = protocol::kSignals[i];
     if (sig.kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
@@ -40,6 +45,8 @@ std::string weapon_errors(const protocol::ControlState& s, bool weapons, const s
     if (!weapons) return std::string(sig.name) + " = 1 without --weapons";
     if (!why.empty()) return std::string(sig.name) + " = 1 while " + why;
     if (!armed(static_cast<protocol::SignalId>(i))) return std::string(sig.name) + " = 1 without its arming input held";
+    // [rule: consent]
+    if (!consent) return std::string(sig.name) + " = 1 without the supervisor's weapons consent held";
   }
   return {};
 }

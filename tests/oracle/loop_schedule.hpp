@@ -48,19 +48,32 @@ class LoopSchedule {
     return reloading(tick) || (reload_tick_ && tick < *reload_tick_);
   }
 
-  /// Link events; true when the event changed the link (a link lost, or back: a new link).
+  /// Link events; true when the event changed whether the link carries
+  /// motion (a link lost or stalled, or back: a new link). A stalled server
+  /// (`link stalled`) gets frames, neutral ones, through its resets (`link
+  /// down`, `link up`) until `link reading`.
   bool link(input::InputEvent::Type type) {
-    const bool up = type == input::InputEvent::Type::kLinkUp;
-    const bool changed = up != link_up_;
-    link_up_ = up;
-    return changed;
+    using T = input::InputEvent::Type;
+    const bool carried = carries_motion();
+    if (type == T::kLinkStalled || type == T::kLinkReading) {
+      stalled_ = type == T::kLinkStalled;
+    } else {
+      link_up_ = type == T::kLinkUp;
+    }
+    return carried != carries_motion();
   }
 
   void suspend(std::int64_t t) {
     if (suspended_) return;
     suspended_ = true;
-    // (One asked for during a reload waits for it: its frames' tick is not known here.)
-    suspend_tick_ = reloading(tick_of(t)) ? std::nullopt : std::optional(tick_of(t));
+    // Asked for while the last one's neutral frames still go out (resumed
+    // meanwhile: the loop answers that resume after them), it is that suspend still.
+    if (suspending(tick_of(t))) return;
+    // One asked for during a reload waits for it: its frames' tick is not known
+    // here, nor whether a suspend soon after (a resume between) is the same one.
+    const bool unknown = reloading(tick_of(t)) || (waited_t_ && t - *waited_t_ < 2 * o_.stop_ticks * o_.period_ms);
+    if (reloading(tick_of(t))) waited_t_ = t;
+    suspend_tick_ = unknown ? std::nullopt : std::optional(tick_of(t));
     suspend_sent_ = 0;
     owed_ += o_.stop_frames;
   }
@@ -107,6 +120,7 @@ class LoopSchedule {
     bool reload_frame = false;   ///< one of a reload's
   };
   /// Once suspended, stopping or past the end, only the neutral frames still owed go out.
+  // [rule: delivery]
   Delivery deliver(std::int64_t t, std::int64_t end_tick) {
     Delivery d;
     if (!link_up_) {
@@ -138,7 +152,11 @@ class LoopSchedule {
   }
 
  public:
+  /// Frames go out (a stalled link's too).
   [[nodiscard]] bool link_up() const { return link_up_; }
+  /// The link up and not stalled: what being enabled needs.
+  [[nodiscard]] bool carries_motion() const { return link_up_ && !stalled_; }
+  [[nodiscard]] bool stalled() const { return stalled_; }
   [[nodiscard]] bool suspended() const { return suspended_; }
   [[nodiscard]] bool stopped() const { return stopped_; }
 
@@ -178,9 +196,11 @@ class LoopSchedule {
   }
 
   LoopOptions o_;
-  bool link_up_ = true;  ///< replay's sink is there from the start
+  bool link_up_ = true;   ///< replay's sink is there from the start
+  bool stalled_ = false;  ///< a `link stalled` not yet answered by `link reading`
   bool suspended_ = false;
   std::optional<std::int64_t> suspend_tick_;  ///< the tick of the last suspend's first neutral frame
+  std::optional<std::int64_t> waited_t_;      ///< the last suspend asked for during a reload
   int suspend_sent_ = 0;                      ///< its neutral frames delivered so far
   std::optional<std::int64_t> reload_tick_;
   int reload_sent_ = 0;               ///< its neutral frames delivered so far

@@ -60,6 +60,7 @@ class SafetyOracle {
     ++coverage_.frames;
     if (supervised_) ++coverage_.supervised_frames;
     if (reading_.mappings().current->center != kNeutralCentre) ++coverage_.trimmed;
+    // [rule: grid]
     if (t % period != 0) return "a frame off the " + std::to_string(period) + " ms grid";
     if (t <= last_t_) return "frame times not increasing (previous " + std::to_string(last_t_) + ")";
     if (auto missing = missing_before(t); !missing.empty()) return missing;
@@ -79,17 +80,28 @@ class SafetyOracle {
                                                  : "not enabled (" + reading_.not_enabled_reason() + ")";
     const auto& pads = reading_.pads();
     const auto armed = [this, &pads](protocol::SignalId id) { return reading_.mappings().armed(id, pads); };
-    if (auto fired = weapon_errors(s, options_.weapons, why, armed, coverage_.weapons); !fired.empty()) return fired;
+    // [rule: neutral-unless-enabled]
+    const auto& sup = reading_.mappings().current->supervisor;
+    const bool consent = !sup || !sup->weapons_consent || pads.sup_held(sup->weapons_consent->key);
+    if (auto fired = weapon_errors(s, options_.weapons, why, armed, consent, coverage_.weapons); !fired.empty())
+      return fired;
     if (const auto moving = motion(s)) {
-      // ISO 13850: a stop device stops whenever it is actuated, whatever came before.
+      // [rule: stop-actuated] ISO 13850: a stop device stops whenever it is actuated, whatever came before.
       if (reading_.stop_actuated()) return *moving + " while a stop button is pressed or held";
       if (!why.empty()) return *moving + " while " + why;
       ++coverage_.motion;
       ++coverage_.motion_after[static_cast<std::size_t>(reading_.pressed_after())];
     }
+    // [rule: toggles]
+    for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+      if (s.values[i] == 0 || reading_.toggle_may_be_on(static_cast<protocol::SignalId>(i))) continue;
+      return std::string(protocol::kSignals[i].name) +
+             " = 1 with no press of its toggle since the bridge became enabled (a toggle ends with the deadman)";
+    }
     const auto held = [&pads](input::InputKey k) { return pads.held(k); };
     const auto axis = [&pads](input::InputKey k) { return pads.axis(k); };
     auto& rest = reading_.rest();
+    // [rule: rest]
     auto broken = rest.frame(t, period, *reading_.mappings().current, s, held, axis);
     coverage_.rest_held += rest.held_at_trim() ? 1 : 0;
     return broken;
@@ -100,6 +112,7 @@ class SafetyOracle {
   std::string finish() {
     if (auto missing = missing_before(end_tick_ + options_.loop.period_ms); !missing.empty()) return missing;
     advance_to(end_tick_);
+    // [rule: stop-frames]
     const bool owed = reading_.loop().stop_owed_frames(script_, end_tick_);
     if (owed) ++coverage_.stops_with_frames;
     return owed ? reading_.loop().stop_frames_missing() : std::string();
@@ -121,13 +134,18 @@ class SafetyOracle {
   }
 
   // Every tick up to the script's end gets a frame while the link is up and
-  // nothing holds the loop (a suspend, a stop): none is lost on the way.
+  // nothing holds the loop (a suspend once its neutral frames are out, a
+  // stop): none is lost on the way, a suspend's own neutral frames included.
   std::string missing_before(std::int64_t t) {
     const std::int64_t period = options_.loop.period_ms;
     for (std::int64_t u = last_t_ < 0 ? 0 : last_t_ + period; u < t && u <= end_tick_; u += period) {
       advance_to(u);
       reading_.at_tick(u);
       const auto& loop = reading_.loop();
+      // [rule: suspend-frames]
+      if (loop.link_up() && loop.suspending(u) && !loop.stopped())
+        return "no frame at t=" + std::to_string(u) + " (the link up, one of a suspend's neutral frames owed)";
+      // [rule: no-frame-lost]
       if (loop.link_up() && !loop.suspended() && !loop.stopped())
         return "no frame at t=" + std::to_string(u) + " (the link up, not suspended, not stopping)";
     }

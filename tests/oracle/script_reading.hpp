@@ -12,13 +12,17 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <utility>
+#include <variant>
+#include <vector>
 
 #include "andros/input/events.hpp"
 #include "andros/mapping/model.hpp"
+#include "oracle/axis_activity.hpp"
 #include "oracle/coverage.hpp"
 #include "oracle/deadman_ticks.hpp"
 #include "oracle/layer_rest.hpp"
@@ -78,35 +82,68 @@ class ScriptReading {
       case StopLatch::Outcome::kNone: break;
     }
     resumed_this_tick_ = false;
+    if (activity_.seen_at_tick(pads_.axes)) last_change_ = std::max(last_change_, t);
     std::set<input::InputKey> held;
     for (const auto k : mappings_.common_deadmen) {
       if (pads_.connected && pads_.down(k)) held.insert(k);
     }
     deadman_.at_tick(deadman_down, std::move(held));
-    // Enabling is the first change (at the next tick, at the latest, after a deadman let go since the last one).
-    if (enabled() && !was_enabled_) enabled_at_ = t + (deadman_.maybe_let_go_this_tick() ? period_ms_ : 0);
+    // Enabling is the first change (at the next tick, at the latest, after a deadman let go since the last one:
+    // enabled here by the oracle's reckoning, it may be enabled afresh at the next by the loop's).
+    const bool maybe_let_go = deadman_.maybe_let_go_this_tick();
+    if (enabled() && (!was_enabled_ || maybe_let_go)) enabled_at_ = t + (maybe_let_go ? period_ms_ : 0);
     // Past the panic point now, or at any moment since the last tick (every change between two ticks counts).
     const bool squeezed = std::exchange(squeezed_since_tick_, false);
     const auto past_panic = [this](input::InputKey k) { return !k.is_button() && pads_.axis(k) >= *mappings_.panic; };
+    // [rule: panic]
     if (mappings_.panic && enabled() &&
         (squeezed || std::any_of(mappings_.deadmen.begin(), mappings_.deadmen.end(), past_panic))) {
       ++counts_.panics;
       end_enabled(Ending::kPanic);
     }
     const std::int64_t since = std::max(loop_.tick_of(last_change_), enabled_at_);
+    // [rule: timeout]
     if (mappings_.timeout_ms && enabled() && t - since >= *mappings_.timeout_ms) {
       ++counts_.timeouts;
       end_enabled(Ending::kTimeout);
     }
+    if (enabled() && !was_enabled_) enabled_since_ = t;
     was_enabled_ = enabled();
+  }
+
+  /// A toggle's signal may be 1: its mapping in force toggles it (it is
+  /// toggled only: docs/mapping.md refuses a signal both toggled and
+  /// momentary) and one of its toggle inputs was pressed since the tick that
+  /// enabled (docs/mapping.md, Toggle: "until pressed again or the deadman is
+  /// released"; presses while not enabled are ignored), or it is no toggle's.
+  [[nodiscard]] bool toggle_may_be_on(protocol::SignalId id) const {
+    bool toggled = false;
+    bool pressed = false;
+    const auto look = [&](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule);
+        if (button == nullptr || !button->toggle || button->signal != id) continue;
+        toggled = true;
+        const auto it = pressed_at_.find(button->input);
+        pressed = pressed || (it != pressed_at_.end() && it->second > enabled_since_ - period_ms_);
+      }
+    };
+    look(mappings_.current->bindings);
+    for (const auto& layer : mappings_.current->layers) look(layer.bindings);
+    return !toggled || pressed;
   }
 
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     take_up(loop_.tick_of(e.t_ms));  // a reload done at an earlier tick
-    if (e.type == T::kLinkDown || e.type == T::kLinkTaken || e.type == T::kLinkUp) {
+    if (e.type == T::kLinkDown || e.type == T::kLinkTaken || e.type == T::kLinkUp || e.type == T::kLinkStalled ||
+        e.type == T::kLinkReading) {
       // A link that comes back is a new link.
-      if (loop_.link(e.type)) end_enabled(e.type == T::kLinkUp ? Ending::kLinkUp : Ending::kLinkDown);
+      if (loop_.link(e.type)) {
+        end_enabled(loop_.carries_motion() ? Ending::kLinkUp
+                    : loop_.stalled()      ? Ending::kLinkStalled
+                                           : Ending::kLinkDown);
+      }
       return;
     }
     if (loop_.stopped()) return;  // nothing else is answered once a stop is in
@@ -116,6 +153,7 @@ class ScriptReading {
       case T::kDisconnect:
         end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
         pads_.connect(e.type == T::kConnect, e.t_ms);
+        activity_.at_rest();
         stop_.op = StopInput{};  // a stop tapped on the old session since the last tick went with it
         stop_.op_name = e.type == T::kConnect ? e.name : std::string();
         set_gesture(stop_.op_reset, mappings_.current->stop_reset, {});
@@ -132,7 +170,10 @@ class ScriptReading {
         if (was != now) last_change_ = e.t_ms;
         // Stamped with the connect's time: the state the pad had when it appeared, not a press.
         const bool initial = e.t_ms == pads_.connect_t;
-        if (now && !was && !initial) rest_.pressed(e.key);
+        if (now && !was && !initial) {
+          rest_.pressed(e.key);
+          pressed_at_[e.key] = e.t_ms;
+        }
         const auto& estop = mappings_.current->estop;
         if (estop && e.key == estop->key) stop_.op.moved(now, was, initial);
         stop_.op_reset.moved(e.key, now);
@@ -142,8 +183,8 @@ class ScriptReading {
       case T::kAxis: {
         if (!pads_.connected) break;
         const bool was = pads_.down(e.key);
-        if (pads_.axis(e.key) != e.value) last_change_ = e.t_ms;
         pads_.axes[e.key] = e.value;
+        if (activity_.moved(e.key, e.value)) last_change_ = e.t_ms;
         if (!mappings_.deadmen.contains(e.key)) break;
         deadman_moved(e.key, was, pads_.down(e.key), e.t_ms);
         if (!e.key.is_button() && mappings_.panic && e.value >= *mappings_.panic) squeezed_since_tick_ = true;
@@ -178,8 +219,10 @@ class ScriptReading {
     }
   }
 
+  // [rule: fresh-press] [rule: stalled-link]
   [[nodiscard]] bool enabled() const {
-    if (!pads_.connected || !loop_.link_up() || loop_.suspended() || loop_.stopped() || stop_.latched()) return false;
+    if (!pads_.connected || !loop_.carries_motion() || loop_.suspended() || loop_.stopped() || stop_.latched())
+      return false;
     if (deadman_.let_go_this_tick()) return false;
     if (supervised_ && !pads_.sup_connected) return false;
     return std::any_of(fresh_.begin(), fresh_.end(), [this](input::InputKey k) { return pads_.down(k); });
@@ -192,6 +235,7 @@ class ScriptReading {
     if (supervised_ && !pads_.sup_connected) return "no supervisor's controller";
     if (loop_.suspended()) return "suspended";
     if (!loop_.link_up()) return "link down";
+    if (loop_.stalled()) return "link stalled (neutral frames only)";
     if (!pads_.connected) return "no controller";
     const auto held = [this](input::InputKey k) { return pads_.held(k); };
     if (std::none_of(mappings_.deadmen.begin(), mappings_.deadmen.end(), held)) return "deadman not held";
@@ -297,12 +341,15 @@ class ScriptReading {
   bool supervised_ = false;
   StopLatch stop_;
   DeadmanTicks deadman_;
-  bool resumed_this_tick_ = false;    ///< a resume since the last tick (its rebase takes the presses)
-  std::int64_t last_change_ = 0;      ///< the last event that changed an input
-  bool squeezed_since_tick_ = false;  ///< a trigger deadman past the panic point since the last tick
-  bool was_enabled_ = false;          ///< at the last tick
-  std::int64_t enabled_at_ = 0;       ///< the tick that enabled, the last time
-  std::set<input::InputKey> fresh_;   ///< deadmen pressed since the last ending event
+  bool resumed_this_tick_ = false;                      ///< a resume since the last tick (its rebase takes the presses)
+  AxisActivity activity_;                               ///< which axis moves are changes for the timeout
+  std::int64_t last_change_ = 0;                        ///< the last event that changed an input
+  bool squeezed_since_tick_ = false;                    ///< a trigger deadman past the panic point since the last tick
+  bool was_enabled_ = false;                            ///< at the last tick
+  std::int64_t enabled_at_ = 0;                         ///< the tick that enabled, the last time
+  std::int64_t enabled_since_ = 0;                      ///< the first tick of the last stretch the oracle found enabled
+  std::map<input::InputKey, std::int64_t> pressed_at_;  ///< the operator's last press of each button
+  std::set<input::InputKey> fresh_;                     ///< deadmen pressed since the last ending event
   Ending last_ending_ = Ending::kStart;
   Ending last_interruption_ = Ending::kStart;
   Ending pressed_after_ = Ending::kStart;

@@ -5,6 +5,7 @@
 // target (fuzz/fuzz_simulation.cpp) for each input.
 
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <optional>
@@ -13,12 +14,14 @@
 #include <vector>
 
 #include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
 #include "andros/base/text_file.hpp"
 #include "andros/input/events.hpp"
 #include "andros/input/script_player.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/run/replay.hpp"
 #include "oracle/safety_oracle.hpp"
+#include "oracle/wire_frame.hpp"
 
 namespace andros::test {
 
@@ -66,6 +69,7 @@ inline std::string script_text(const std::vector<input::InputEvent>& script) {
 /// not reset is "stopped" (unless a suspend, a reload or the shutdown
 /// outranks it), and "stopped" is a stop latched and not reset, so that a
 /// reset made late, or never, breaks a rule as one made early does.
+// [rule: loop-says-stop]
 inline std::string stop_said(run::OpState state, bool latched) {
   using S = run::OpState;
   if (state == S::kSuspended || state == S::kReloading || state == S::kStopping) return {};
@@ -79,8 +83,21 @@ struct SimulationOutcome {
   OracleCoverage coverage;
 };
 
+/// `--code`'s text for code as an operator may write it (two digits, either
+/// case, or 0x and one or two), chosen by code itself.
+inline std::string code_text(std::uint8_t code) {
+  char text[8];
+  switch (code % 3) {
+    case 0: std::snprintf(text, sizeof text, "%02X", code); break;
+    case 1: std::snprintf(text, sizeof text, "%02x", code); break;
+    default: std::snprintf(text, sizeof text, "0x%X", code); break;
+  }
+  return text;
+}
+
 /// Replays script (as its text: what `andros-bridge replay` would read)
-/// through mapping_file and checks every delivered frame and the end.
+/// through mapping_file, with `--code` given as text, and checks every frame
+/// the link took, read off its bytes on the wire, and the end.
 inline SimulationOutcome simulate(
     MappingCache& mappings, const std::string& mapping_file, const std::vector<input::InputEvent>& script, bool weapons,
     std::uint8_t code, const run::Bridge::Observer& observe = [](const run::TickReport&) {}) {
@@ -91,13 +108,15 @@ inline SimulationOutcome simulate(
   SafetyOracle oracle(
       *valid, script, [&mappings](const std::string& f) { return mappings.find(f); },
       SafetyOracle::Options{.weapons = weapons, .code = code});
-  run::ReplayOptions options{.engine = {weapons, code}};
+  // The code as `replay --code` reads it; the oracle holds the frames to the byte meant.
+  run::ReplayOptions options{.engine = {weapons, parse_code(code_text(code), SourcePos{"--code"})}};
   options.load = [&mappings](const std::string& file) { return mappings.load(file); };
-  // The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle missed).
+  // [rule: gate] The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle
+  // missed).
   std::int64_t gated = 0;
   std::string gate_fault;
-  // And what the loop says is what it sent: a frame the link took carries safety = 1 exactly when the
-  // state after its tick is "enabled" (the screen, the pad's light and the status read that state).
+  // [rule: loop-says-enabled] And what the loop says is what it sent: a frame the link took carries safety = 1 exactly
+  // when the state after its tick is "enabled" (the screen, the pad's light and the status read that state).
   std::string said;
   run::OpState state = run::OpState::kNoLink;  ///< the loop's, at the frame it just sent
   options.observe = [&](const run::TickReport& r) {
@@ -112,12 +131,19 @@ inline SimulationOutcome simulate(
              " with safety = " + (safety ? "1" : "0") + " in the frame it sent";
     }
   };
+  // What the vehicle receives: the bytes on the wire, read here (wire_frame.hpp), not the data bytes the loop had.
+  std::optional<std::pair<std::int64_t, protocol::Frame>> on_wire;
+  options.wire = [&on_wire](std::int64_t t, const protocol::Frame& frame) { on_wire.emplace(t, frame); };
   SimulationOutcome out;
   try {
     run::replay(player, mapping::Engine(valid, options.engine), options,
-                [&](std::int64_t t, const protocol::DataBytes& data) {
+                [&](std::int64_t t, const protocol::DataBytes&) {
                   if (!out.violation.empty()) return;
-                  std::string v = oracle.frame(t, data);
+                  protocol::DataBytes data{};
+                  std::string v = !on_wire || on_wire->first != t ? "a frame delivered with no bytes on the wire"
+                                                                  : read_wire_frame(on_wire->second, data);
+                  on_wire.reset();
+                  if (v.empty()) v = oracle.frame(t, data);
                   if (v.empty()) v = stop_said(state, oracle.stop_latched());
                   if (!v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
                 });

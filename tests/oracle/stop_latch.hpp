@@ -97,6 +97,7 @@ struct ResetGesture {
   }
 };
 
+// [rule: stop-latch]
 class StopLatch {
  public:
   /// What a tick did to the latch.

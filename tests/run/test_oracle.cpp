@@ -2,12 +2,19 @@
 // made by hand: each rule, broken once, is named; what the rules allow passes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "andros/input/events.hpp"
 #include "andros/mapping/loader.hpp"
 #include "oracle/safety_oracle.hpp"
 #include "oracle/simulation.hpp"
+#include "oracle/wire_frame.hpp"
 
 namespace andros::run {
 namespace {
@@ -283,6 +290,81 @@ TEST_F(OracleTest, RefusesMotionAfterAPanicSqueezeAndBackWithinATick) {
   EXPECT_EQ(o.frame(120, enabled),
             "safety = 1 while not enabled (deadman held but not pressed since the last panic squeeze)");
   EXPECT_EQ(o.coverage().panics, 1);
+}
+
+// docs/mapping.md, "Enable timeout": an axis moved within 1024 of where it was at the last change is noise.
+std::string noisy_script(int size) {
+  std::string script = std::string(kDriving);  // enabled at 40, the stick's last change at 50
+  for (int t = 150, sign = 1; t <= 2950; t += 100, sign = -sign) {
+    script += std::to_string(t) + " axis lefty " + std::to_string(-32768 + 2000 + sign * size) + "\n";
+  }
+  return script + "3000 end\n";
+}
+
+TEST_F(OracleTest, RefusesMotionPastTheEnableTimeoutWhenOnlyNoiseMoved) {
+  const std::string hd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";  // enable_timeout: 2
+  // Moved 2000 from full at 150 (the last change, seen at 160); then 60 back and forth, within the band: due at 2160.
+  auto noise = oracle(noisy_script(30), false, hd1);
+  ASSERT_EQ(noise.frame(0, frame()), "");
+  for (std::int64_t t = 40; t < 2160; t += 40) ASSERT_EQ(noise.frame(t, moving()), "") << t;
+  EXPECT_EQ(noise.frame(2160, moving()),
+            "safety = 1 while not enabled (deadman held but not pressed since the last enable timeout)");
+  // 2 x 1100 back and forth: a hand, and it drives on.
+  auto hand = oracle(noisy_script(1100), false, hd1);
+  ASSERT_EQ(hand.frame(0, frame()), "");
+  for (std::int64_t t = 40; t <= 3000; t += 40) ASSERT_EQ(hand.frame(t, moving()), "") << t;
+}
+
+TEST(OracleWire, ReadsTheProtocolsWorkedExampleAndRefusesABrokenOne) {
+  // docs/protocol.md: 00001C2000907F7E3E0000FFFF20CC02, checksum 0x06F2 sent as F2 06.
+  const std::string hex = "F1F13030303031433230303039303746374533453030303046464646323043433032F206";
+  protocol::Frame wire{};
+  for (std::size_t i = 0; i < wire.size(); ++i)
+    wire[i] = static_cast<std::uint8_t>(std::stoi(hex.substr(2 * i, 2), nullptr, 16));
+  protocol::DataBytes data{};
+  ASSERT_EQ(test::read_wire_frame(wire, data), "");
+  EXPECT_EQ(data, protocol::parse_data_hex("00001C2000907F7E3E0000FFFF20CC02"));
+  auto broken = wire;
+  broken[35] = 0x07;
+  EXPECT_EQ(test::read_wire_frame(broken, data),
+            "the checksum on the wire is not the sum of the 32 digits, low byte first");
+  broken = wire;
+  broken[2] = 'a';  // a lower-case digit: the wire carries upper case
+  EXPECT_EQ(test::read_wire_frame(broken, data), "data byte 0 is not two upper-case hex digits on the wire");
+  broken = wire;
+  broken[1] = 0xF0;
+  EXPECT_EQ(test::read_wire_frame(broken, data), "the frame does not start with F1 F1");
+}
+
+// docs/testing.md's table of the oracle's rules ("The oracle's rules") and
+// the oracle's code name the same rules: each check is marked [rule: ID]
+// where it is made, and each ID is a row of the table.
+TEST(OracleRules, TheTableInTestingMdIsTheOraclesChecks) {
+  const auto text_of = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  std::set<std::string> table;
+  const std::string doc = text_of(ANDROS_DOCS_DIR "/testing.md");
+  const auto section = doc.find("\n### The oracle's rules\n");
+  ASSERT_NE(section, std::string::npos);
+  const auto end = doc.find("\n#", section + 1);
+  std::istringstream rows(doc.substr(section, end - section));
+  const std::regex row(R"(^\| `([a-z-]+)` \|)");
+  for (std::string line; std::getline(rows, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, row)) table.insert(m[1]);
+  }
+  std::set<std::string> code;
+  const std::regex mark(R"(\[rule: ([a-z-]+)\])");
+  for (const auto& entry : std::filesystem::directory_iterator(ANDROS_ORACLE_DIR)) {
+    const std::string text = text_of(entry.path());
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), mark); it != std::sregex_iterator(); ++it) {
+      code.insert((*it)[1]);
+    }
+  }
+  EXPECT_GE(table.size(), 20U);
+  EXPECT_EQ(table, code) << "docs/testing.md's rules and the [rule: ID] marks in tests/oracle/ differ";
 }
 
 // The loop's state against the oracle's stop latch: a reset made late (or never) is named as an early one is.

@@ -98,13 +98,15 @@ struct InputEvent {
     kEnd,
     // Fault events (docs/event-scripts.md): what happens around the
     // controller, for the run loop to answer as it answers the real thing.
-    kLinkDown,   ///< `link down`: the link is lost
-    kLinkUp,     ///< `link up`: it is back
-    kLinkTaken,  ///< `link taken`: another program holds the port
-    kSuspend,    ///< `suspend`: job control (Ctrl-Z)
-    kResume,     ///< `resume`: fg after it
-    kReload,     ///< `reload [FILE]`: SIGHUP; name = the mapping file to load (empty: the same one)
-    kShutdown,   ///< `stop`: as SIGINT/SIGTERM, the run shuts down on neutral frames
+    kLinkDown,     ///< `link down`: the link is lost
+    kLinkUp,       ///< `link up`: it is back
+    kLinkTaken,    ///< `link taken`: another program holds the port
+    kLinkStalled,  ///< `link stalled`: a TCP server that stopped reading (neutral frames only, through resets)
+    kLinkReading,  ///< `link reading`: the server seen reading again
+    kSuspend,      ///< `suspend`: job control (Ctrl-Z)
+    kResume,       ///< `resume`: fg after it
+    kReload,       ///< `reload [FILE]`: SIGHUP; name = the mapping file to load (empty: the same one)
+    kShutdown,     ///< `stop`: as SIGINT/SIGTERM, the run shuts down on neutral frames
   };
   /// A fault event: one no controller's state takes.
   [[nodiscard]] bool is_fault() const { return type >= Type::kLinkDown; }

@@ -11,7 +11,9 @@
 namespace andros::link {
 
 /// Forwards to a link, except while held down by a fault: then nothing is
-/// sent (kDown), and the state and detail say why.
+/// sent (kDown), and the state and detail say why. Stalled (a TCP server
+/// that stopped reading: TcpLink::motion_allowed), it forwards the frames but
+/// does not allow motion, held down or not, until the server is seen reading.
 class FaultLink final : public Link {
  public:
   explicit FaultLink(Link& inner) : inner_(inner) {}
@@ -19,6 +21,7 @@ class FaultLink final : public Link {
   enum class Fault : std::uint8_t { kNone, kDown, kTaken };
   void set_fault(Fault fault) { fault_ = fault; }
   [[nodiscard]] Fault fault() const { return fault_; }
+  void set_stalled(bool stalled) { stalled_ = stalled; }
 
   SendResult send(const protocol::Frame& frame, std::int64_t now_ns) override;
   bool drain_and_close(int timeout_ms) override { return inner_.drain_and_close(timeout_ms); }
@@ -28,11 +31,12 @@ class FaultLink final : public Link {
   [[nodiscard]] const std::string& name() const override { return inner_.name(); }
   [[nodiscard]] const std::string& detail() const override;
   [[nodiscard]] const LinkCounters& counters() const override;
-  [[nodiscard]] bool motion_allowed() const override { return inner_.motion_allowed(); }
+  [[nodiscard]] bool motion_allowed() const override { return !stalled_ && inner_.motion_allowed(); }
 
  private:
   Link& inner_;
   Fault fault_ = Fault::kNone;
+  bool stalled_ = false;
   std::uint64_t down_ = 0;  ///< ticks held down here
   mutable LinkCounters merged_;
 };

@@ -35,6 +35,10 @@ struct ReplayOptions {
                                                                                      const ReloadOutcome&) {};
   /// Every tick's report (the state machine's state with it), for tests.
   Bridge::Observer observe = [](const TickReport&) {};
+  /// Every frame the link took, as its bytes on the wire, before that tick's report: for tests that read
+  /// the encoding itself (the fault simulation).
+  std::function<void(std::int64_t t_ms, const protocol::Frame& frame)> wire = [](std::int64_t, const protocol::Frame&) {
+  };
 };
 
 /// Runs the loop from t = 0 through the first frame time >= the script's end
