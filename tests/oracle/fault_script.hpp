@@ -20,9 +20,10 @@
 // (the pad's reset chord, back and start, held about 2 s, by either pad, the
 // deadman or a stop button now and then pressed during it); stops from both
 // pads at once, pressed again and held (through a reset chord and a deadman
-// press); a pad swapped for another (another name) while stopped; and a
+// press); a pad swapped for another (another name) while stopped; a
 // deadman let go and pressed again, or the trigger squeezed past its panic
-// point and back, within one frame.
+// point and back, within one frame; and a toggled layer through a deadman
+// release, its buttons pressed after.
 
 #include <algorithm>
 #include <array>
@@ -340,6 +341,40 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 80 + pick.below(200);
   };
 
+  // A toggled layer (the arm's or the camera's) switched on, the deadman let
+  // go (the layer's click now and then made again while not enabled) and
+  // pressed again, then a D-pad button tapped or a stick pushed: the layer
+  // ended with the deadman, so they mean what the base layer says.
+  const auto layer_through_a_release = [&] {
+    if (!held) add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    const input::InputKey toggle = layer_buttons[1 + pick.below(2)];
+    for (const int v : {1, 0}) add(T::kButton, toggle, v);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    if (pick.below(2) == 0) {  // clicked again while not enabled: ignored, not replayed on enabling
+      for (const int v : {1, 0}) add(T::kButton, toggle, v);
+      t += 80 + pick.below(100);
+    }
+    add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    static constexpr std::array<std::string_view, 4> kDpad = {"dpup", "dpdown", "dpleft", "dpright"};
+    for (int n = 1 + static_cast<int>(pick.below(3)); n > 0; --n) {
+      if (pick.below(3) == 0) {
+        add(T::kAxis, axis(pick.below(2) == 0 ? "rightx" : "righty"), 0);
+        t += 40 + pick.below(80);
+        add(T::kAxis, axis(pick.below(2) == 0 ? "rightx" : "righty"), pick.below(2) == 0 ? -32768 : 32767);
+      } else {
+        const input::InputKey b = button(kDpad[pick.below(kDpad.size())]);
+        add(T::kButton, b, 1);
+        t += 40 + pick.below(120);
+        add(T::kButton, b, 0);
+      }
+      t += 40 + pick.below(100);
+    }
+  };
+
   // Pads are told apart by name (a script's identity): another name is another physical pad.
   add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
@@ -452,6 +487,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 36: jitter(); break;
         case 37:
         case 38: stall(); break;
+        case 21: layer_through_a_release(); break;
         case 39: toggle_through_a_release(); break;
         default: rearm(); break;
       }

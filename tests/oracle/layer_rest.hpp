@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
@@ -63,6 +65,7 @@ class LayerRest {
         break;
       }
     }
+    layer_ = enabled ? layer : -1;
     const std::string name = layer < 0 ? "" : m.layers[static_cast<std::size_t>(layer)].name;
     std::string broken;
     held_at_trim_ = false;
@@ -86,17 +89,51 @@ class LayerRest {
 
   /// The last frame had drive or pivot held at the centre by the rule.
   [[nodiscard]] bool held_at_trim() const { return held_at_trim_; }
+  /// The layer in force at the last frame (its index in the mapping's layers; -1: the base layer, or not enabled).
+  [[nodiscard]] int layer() const { return layer_; }
 
  private:
   static constexpr std::array<protocol::SignalId, 2> kCentred = {protocol::signal_id("drive"),
                                                                  protocol::signal_id("pivot")};
   std::map<input::InputKey, std::uint32_t> presses_;  ///< since the last frame
   int toggled_ = -1;
+  int layer_ = -1;
   bool restart_ = true;
   bool was_enabled_ = false;
   bool held_at_trim_ = false;
   std::int64_t last_t_ = -1;
   std::array<CentreWatch, 2> watch_{};
 };
+
+/// The signals of a frame come from the layer in force (docs/mapping.md,
+/// Layers: one layer is active at a time, its bindings plus the base ones):
+/// a momentary bit (a button's or a pair's, not a toggle's) that is 1 has a
+/// binding in the base layer or in the layer in force (layer, as
+/// LayerRest::layer() says). Lenient: any base binding counts, replaced or
+/// not. Empty, or the rule broken.
+inline std::string layer_signal_errors(const mapping::Mapping& m, int layer, const protocol::ControlState& s) {
+  std::array<bool, protocol::kSignalCount> momentary{};  // bound momentarily anywhere in the mapping
+  std::array<bool, protocol::kSignalCount> in_force{};   // bound so in the base layer or the layer in force
+  const auto mark = [](const std::vector<mapping::Binding>& bindings, std::array<bool, protocol::kSignalCount>& into) {
+    for (const auto& b : bindings) {
+      if (const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule); button != nullptr && !button->toggle)
+        into[button->signal] = true;
+      if (const auto* pair = std::get_if<mapping::PairBinding>(&b.rule); pair != nullptr)
+        for (const auto id : pair->signals) into[id] = true;
+    }
+  };
+  mark(m.bindings, momentary);
+  for (const auto& l : m.layers) mark(l.bindings, momentary);
+  mark(m.bindings, in_force);
+  if (layer >= 0) mark(m.layers[static_cast<std::size_t>(layer)].bindings, in_force);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (s.values[i] == 0 || !momentary[i] || in_force[i]) continue;
+    const std::string name =
+        layer < 0 ? "the base layer" : "layer \"" + m.layers[static_cast<std::size_t>(layer)].name + "\"";
+    return std::string(protocol::kSignals[i].name) + " = 1, bound in no binding of " + name +
+           ", the layer in force (a toggled layer ends with the deadman)";
+  }
+  return {};
+}
 
 }  // namespace andros::test
