@@ -22,8 +22,9 @@
 // pads at once, pressed again and held (through a reset chord and a deadman
 // press); a pad swapped for another (another name) while stopped; a
 // deadman let go and pressed again, or the trigger squeezed past its panic
-// point and back, within one frame; and a toggled layer through a deadman
-// release, its buttons pressed after.
+// point and back, within one frame; a toggled layer through a deadman
+// release, its buttons pressed after; and resets after stops held through a
+// deadman press, the deadman now and then tapped before the gesture.
 
 #include <algorithm>
 #include <array>
@@ -192,6 +193,12 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     settled_for_a_reset();
     const bool by_supervisor = supervised && pick.below(2) == 0;
     if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
+    if (!held && pick.below(3) == 0) {  // now and then tapped while stopped, before the gesture: history after a reset
+      add(T::kButton, deadman, 1);
+      t += 1 + pick.below(60);
+      add(T::kButton, deadman, 0);
+      t += 40 + pick.below(100);
+    }
     on_pad(by_supervisor, "back", 1);
     t += pick.below(2) == 0 ? 0 : pick.below(100);
     on_pad(by_supervisor, "start", 1);
@@ -243,6 +250,17 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     if (supervised) on_pad(!sup_last, "guide", 0);
     t += pick.below(2) == 0 ? 0 : pick.below(400);
     on_pad(sup_last, "guide", 0);
+  };
+  // The stop buttons let go, a reset (the supervisor's on every other
+  // supervised one), and the deadman pressed afresh, the stick pushed.
+  const auto reset_after_stops = [&] {
+    add(T::kButton, button("guide"), 0);
+    if (supervised) supervisor(T::kButton, button("guide"), 0);
+    t += 40 + pick.below(100);
+    reset_hold();
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    stick();
   };
   // While stopped, the operator's pad swapped for another (or the same back),
   // or the supervisor's, then a reset chord and a deadman press on it.
@@ -465,7 +483,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           }
           break;
         case 22: stop_and_press(); break;
-        case 23: stop_held_through_a_press(); break;
+        case 23:  // now and then reset after (the presses made while stopped are history then)
+          stop_held_through_a_press();
+          if (pick.below(2) == 0) reset_after_stops();
+          break;
         case 24: panic_and_back(); break;
         case 25: leave_a_layer_stick_held(); break;
         case 26:  // both of an opposing pair (front articulation on most layouts) held a while
@@ -481,7 +502,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 30: reset_hold(); break;
         case 31: blip_within_a_frame(deadman, 0, 1); break;
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
-        case 33: overlapping_stops(); break;
+        case 33:
+          overlapping_stops();
+          if (pick.below(2) == 0) reset_after_stops();
+          break;
         case 34: swap_while_stopped(); break;
         case 35:
         case 36: jitter(); break;
