@@ -12,6 +12,7 @@
 // engine holds back more (a speed level's change, a stick read by two
 // bindings): it only ever says "must be at centre".
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -65,6 +66,7 @@ class LayerRest {
         break;
       }
     }
+    if (enabled && (restart || layer != layer_)) changed_t_ = t;
     layer_ = enabled ? layer : -1;
     const std::string name = layer < 0 ? "" : m.layers[static_cast<std::size_t>(layer)].name;
     std::string broken;
@@ -91,6 +93,8 @@ class LayerRest {
   [[nodiscard]] bool held_at_trim() const { return held_at_trim_; }
   /// The layer in force at the last frame (its index in the mapping's layers; -1: the base layer, or not enabled).
   [[nodiscard]] int layer() const { return layer_; }
+  /// The tick of the last change of meaning: the bridge enabled, or the layer in force changed.
+  [[nodiscard]] std::int64_t changed_at() const { return changed_t_; }
 
  private:
   static constexpr std::array<protocol::SignalId, 2> kCentred = {protocol::signal_id("drive"),
@@ -98,6 +102,7 @@ class LayerRest {
   std::map<input::InputKey, std::uint32_t> presses_;  ///< since the last frame
   int toggled_ = -1;
   int layer_ = -1;
+  std::int64_t changed_t_ = -1;
   bool restart_ = true;
   bool was_enabled_ = false;
   bool held_at_trim_ = false;
@@ -132,6 +137,43 @@ inline std::string layer_signal_errors(const mapping::Mapping& m, int layer, con
         layer < 0 ? "the base layer" : "layer \"" + m.layers[static_cast<std::size_t>(layer)].name + "\"";
     return std::string(protocol::kSignals[i].name) + " = 1, bound in no binding of " + name +
            ", the layer in force (a toggled layer ends with the deadman)";
+  }
+  return {};
+}
+
+/// Of an opposing pair asked for both, neither is sent (docs/mapping.md,
+/// the safety rules: "when both are asked for, neither is sent"). Asked: a
+/// button binding of the signal active in the layer in force (the layer's
+/// bindings and the base ones whose inputs it does not take), its button held
+/// and pressed after the last change of meaning (changed_at: the rest rule
+/// holds back a button held through one). Lenient: bindings of axes are left
+/// out. Empty, or the rule broken.
+template <typename Held, typename PressedAt>
+std::string pair_neither_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at,
+                                const protocol::ControlState& s, const Held& held, const PressedAt& pressed_at) {
+  std::array<bool, protocol::kSignalCount> asked{};
+  const std::vector<mapping::Binding>* own = layer < 0 ? nullptr : &m.layers[static_cast<std::size_t>(layer)].bindings;
+  const auto taken = [own](input::InputKey key) {
+    return own != nullptr && std::any_of(own->begin(), own->end(), [key](const mapping::Binding& b) {
+             return (b.arm && b.arm->key == key) ||
+                    std::any_of(b.inputs.begin(), b.inputs.end(),
+                                [key](const mapping::InputUse& u) { return u.key == key; });
+           });
+  };
+  const auto ask = [&](const mapping::Binding& b, bool base) {
+    const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule);
+    if (button == nullptr || button->toggle || button->invert || !button->input.is_button()) return;
+    if (base && taken(button->input)) return;
+    if (held(button->input) && pressed_at(button->input) > changed_at) asked[button->signal] = true;
+  };
+  for (const auto& b : m.bindings) ask(b, true);
+  if (own != nullptr)
+    for (const auto& b : *own) ask(b, false);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    const auto partner = protocol::partner_of(static_cast<protocol::SignalId>(i));
+    if (!partner || !asked[i] || !asked[*partner] || (s.values[i] == 0 && s.values[*partner] == 0)) continue;
+    return std::string(protocol::kSignals[i].name) + " and " + std::string(protocol::kSignals[*partner].name) +
+           " both asked for, and one of them sent (an opposing pair: neither)";
   }
   return {};
 }

@@ -107,7 +107,10 @@ class SafetyOracle {
     coverage_.rest_held += rest.held_at_trim() ? 1 : 0;
     if (!broken.empty()) return broken;
     // [rule: layer-in-force]
-    return layer_signal_errors(m, rest.layer(), s);
+    if (auto wrong = layer_signal_errors(m, rest.layer(), s); !wrong.empty()) return wrong;
+    // [rule: pairs-neither]
+    const auto pressed_at = [this](input::InputKey k) { return reading_.pressed_at(k); };
+    return pair_neither_errors(m, rest.layer(), rest.changed_at(), s, held, pressed_at);
   }
 
   /// After the replay: what the end lacks. A stop owes its neutral frames at

@@ -133,6 +133,12 @@ class ScriptReading {
     return !toggled || pressed;
   }
 
+  /// The time of the operator's last press of a button (-1: none yet).
+  [[nodiscard]] std::int64_t pressed_at(input::InputKey key) const {
+    const auto it = pressed_at_.find(key);
+    return it == pressed_at_.end() ? -1 : it->second;
+  }
+
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     take_up(loop_.tick_of(e.t_ms));  // a reload done at an earlier tick
