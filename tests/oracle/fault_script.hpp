@@ -96,9 +96,16 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       t += pick.below(60);
       supervisor(T::kButton, fire_button, 1);
     }
+    const bool early = pick.below(3) == 0;  // fire held before arming: nothing until pressed again
+    if (early) add(T::kButton, fire_button, 1);
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
+    if (early) {
+      t += 40 + pick.below(80);
+      add(T::kButton, fire_button, 0);
+      t += pick.below(80);
+    }
     add(T::kButton, fire_button, 1);
     t += pick.below(120);
     add(T::kButton, fire_button, 0);

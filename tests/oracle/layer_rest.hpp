@@ -178,4 +178,38 @@ std::string pair_neither_errors(const mapping::Mapping& m, int layer, std::int64
   return {};
 }
 
+/// A weapon fires only on a press of its fire button after the weapon became
+/// possible (docs/mapping.md, Weapon: a button already held when the bridge
+/// becomes enabled, when a layer with the weapon is entered, or when `arm` is
+/// pressed does nothing until released and pressed again): a weapon bit that
+/// is 1 has a binding in the base layer or the layer in force whose fire
+/// button was pressed after the last change of meaning (changed_at) and
+/// after its arming input was last pressed or squeezed. Lenient: the press
+/// after the arming's time, not its tick. Empty, or the rule broken.
+template <typename PressedAt>
+std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at,
+                              const protocol::ControlState& s, const PressedAt& pressed_at) {
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (protocol::kSignals[i].kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
+    bool bound = false;
+    bool fresh = false;
+    const auto look = [&](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule);
+        if (w == nullptr || w->signal != i || !w->arm) continue;
+        bound = true;
+        const auto fired = pressed_at(w->input);
+        fresh = fresh || (fired > changed_at && fired > pressed_at(*w->arm));
+      }
+    };
+    look(m.bindings);
+    if (layer >= 0) look(m.layers[static_cast<std::size_t>(layer)].bindings);
+    if (bound && !fresh)
+      return std::string(protocol::kSignals[i].name) +
+             " = 1 with its fire button not pressed after the weapon became possible (enabled, its layer entered, "
+             "armed)";
+  }
+  return {};
+}
+
 }  // namespace andros::test

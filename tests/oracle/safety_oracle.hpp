@@ -110,7 +110,10 @@ class SafetyOracle {
     if (auto wrong = layer_signal_errors(m, rest.layer(), s); !wrong.empty()) return wrong;
     // [rule: pairs-neither]
     const auto pressed_at = [this](input::InputKey k) { return reading_.pressed_at(k); };
-    return pair_neither_errors(m, rest.layer(), rest.changed_at(), s, held, pressed_at);
+    if (auto both = pair_neither_errors(m, rest.layer(), rest.changed_at(), s, held, pressed_at); !both.empty())
+      return both;
+    // [rule: fire-fresh]
+    return fire_fresh_errors(m, rest.layer(), rest.changed_at(), s, pressed_at);
   }
 
   /// After the replay: what the end lacks. A stop owes its neutral frames at
