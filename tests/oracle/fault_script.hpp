@@ -20,9 +20,11 @@
 // (the pad's reset chord, back and start, held about 2 s, by either pad, the
 // deadman or a stop button now and then pressed during it); stops from both
 // pads at once, pressed again and held (through a reset chord and a deadman
-// press); a pad swapped for another (another name) while stopped; and a
+// press); a pad swapped for another (another name) while stopped; a
 // deadman let go and pressed again, or the trigger squeezed past its panic
-// point and back, within one frame.
+// point and back, within one frame; a toggled layer through a deadman
+// release, its buttons pressed after; and resets after stops held through a
+// deadman press, the deadman now and then tapped before the gesture.
 
 #include <algorithm>
 #include <array>
@@ -94,9 +96,16 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       t += pick.below(60);
       supervisor(T::kButton, fire_button, 1);
     }
+    const bool early = pick.below(3) == 0;  // fire held before arming: nothing until pressed again
+    if (early) add(T::kButton, fire_button, 1);
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
+    if (early) {
+      t += 40 + pick.below(80);
+      add(T::kButton, fire_button, 0);
+      t += pick.below(80);
+    }
     add(T::kButton, fire_button, 1);
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
@@ -191,6 +200,12 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     settled_for_a_reset();
     const bool by_supervisor = supervised && pick.below(2) == 0;
     if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
+    if (!held && pick.below(3) == 0) {  // now and then tapped while stopped, before the gesture: history after a reset
+      add(T::kButton, deadman, 1);
+      t += 1 + pick.below(60);
+      add(T::kButton, deadman, 0);
+      t += 40 + pick.below(100);
+    }
     on_pad(by_supervisor, "back", 1);
     t += pick.below(2) == 0 ? 0 : pick.below(100);
     on_pad(by_supervisor, "start", 1);
@@ -242,6 +257,17 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     if (supervised) on_pad(!sup_last, "guide", 0);
     t += pick.below(2) == 0 ? 0 : pick.below(400);
     on_pad(sup_last, "guide", 0);
+  };
+  // The stop buttons let go, a reset (the supervisor's on every other
+  // supervised one), and the deadman pressed afresh, the stick pushed.
+  const auto reset_after_stops = [&] {
+    add(T::kButton, button("guide"), 0);
+    if (supervised) supervisor(T::kButton, button("guide"), 0);
+    t += 40 + pick.below(100);
+    reset_hold();
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 1);
+    stick();
   };
   // While stopped, the operator's pad swapped for another (or the same back),
   // or the supervisor's, then a reset chord and a deadman press on it.
@@ -340,6 +366,40 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 80 + pick.below(200);
   };
 
+  // A toggled layer (the arm's or the camera's) switched on, the deadman let
+  // go (the layer's click now and then made again while not enabled) and
+  // pressed again, then a D-pad button tapped or a stick pushed: the layer
+  // ended with the deadman, so they mean what the base layer says.
+  const auto layer_through_a_release = [&] {
+    if (!held) add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    const input::InputKey toggle = layer_buttons[1 + pick.below(2)];
+    for (const int v : {1, 0}) add(T::kButton, toggle, v);
+    t += 40 + pick.below(100);
+    add(T::kButton, deadman, 0);
+    t += 40 + pick.below(100);
+    if (pick.below(2) == 0) {  // clicked again while not enabled: ignored, not replayed on enabling
+      for (const int v : {1, 0}) add(T::kButton, toggle, v);
+      t += 80 + pick.below(100);
+    }
+    add(T::kButton, deadman, 1);
+    t += 40 + pick.below(100);
+    static constexpr std::array<std::string_view, 4> kDpad = {"dpup", "dpdown", "dpleft", "dpright"};
+    for (int n = 1 + static_cast<int>(pick.below(3)); n > 0; --n) {
+      if (pick.below(3) == 0) {
+        add(T::kAxis, axis(pick.below(2) == 0 ? "rightx" : "righty"), 0);
+        t += 40 + pick.below(80);
+        add(T::kAxis, axis(pick.below(2) == 0 ? "rightx" : "righty"), pick.below(2) == 0 ? -32768 : 32767);
+      } else {
+        const input::InputKey b = button(kDpad[pick.below(kDpad.size())]);
+        add(T::kButton, b, 1);
+        t += 40 + pick.below(120);
+        add(T::kButton, b, 0);
+      }
+      t += 40 + pick.below(100);
+    }
+  };
+
   // Pads are told apart by name (a script's identity): another name is another physical pad.
   add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
@@ -430,7 +490,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           }
           break;
         case 22: stop_and_press(); break;
-        case 23: stop_held_through_a_press(); break;
+        case 23:  // now and then reset after (the presses made while stopped are history then)
+          stop_held_through_a_press();
+          if (pick.below(2) == 0) reset_after_stops();
+          break;
         case 24: panic_and_back(); break;
         case 25: leave_a_layer_stick_held(); break;
         case 26:  // both of an opposing pair (front articulation on most layouts) held a while
@@ -446,12 +509,16 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 30: reset_hold(); break;
         case 31: blip_within_a_frame(deadman, 0, 1); break;
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
-        case 33: overlapping_stops(); break;
+        case 33:
+          overlapping_stops();
+          if (pick.below(2) == 0) reset_after_stops();
+          break;
         case 34: swap_while_stopped(); break;
         case 35:
         case 36: jitter(); break;
         case 37:
         case 38: stall(); break;
+        case 21: layer_through_a_release(); break;
         case 39: toggle_through_a_release(); break;
         default: rearm(); break;
       }

@@ -12,10 +12,13 @@
 // engine holds back more (a speed level's change, a stick read by two
 // bindings): it only ever says "must be at centre".
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
@@ -63,6 +66,8 @@ class LayerRest {
         break;
       }
     }
+    if (enabled && (restart || layer != layer_)) changed_t_ = t;
+    layer_ = enabled ? layer : -1;
     const std::string name = layer < 0 ? "" : m.layers[static_cast<std::size_t>(layer)].name;
     std::string broken;
     held_at_trim_ = false;
@@ -86,17 +91,125 @@ class LayerRest {
 
   /// The last frame had drive or pivot held at the centre by the rule.
   [[nodiscard]] bool held_at_trim() const { return held_at_trim_; }
+  /// The layer in force at the last frame (its index in the mapping's layers; -1: the base layer, or not enabled).
+  [[nodiscard]] int layer() const { return layer_; }
+  /// The tick of the last change of meaning: the bridge enabled, or the layer in force changed.
+  [[nodiscard]] std::int64_t changed_at() const { return changed_t_; }
 
  private:
   static constexpr std::array<protocol::SignalId, 2> kCentred = {protocol::signal_id("drive"),
                                                                  protocol::signal_id("pivot")};
   std::map<input::InputKey, std::uint32_t> presses_;  ///< since the last frame
   int toggled_ = -1;
+  int layer_ = -1;
+  std::int64_t changed_t_ = -1;
   bool restart_ = true;
   bool was_enabled_ = false;
   bool held_at_trim_ = false;
   std::int64_t last_t_ = -1;
   std::array<CentreWatch, 2> watch_{};
 };
+
+/// The signals of a frame come from the layer in force (docs/mapping.md,
+/// Layers: one layer is active at a time, its bindings plus the base ones):
+/// a momentary bit (a button's or a pair's, not a toggle's) that is 1 has a
+/// binding in the base layer or in the layer in force (layer, as
+/// LayerRest::layer() says). Lenient: any base binding counts, replaced or
+/// not. Empty, or the rule broken.
+inline std::string layer_signal_errors(const mapping::Mapping& m, int layer, const protocol::ControlState& s) {
+  std::array<bool, protocol::kSignalCount> momentary{};  // bound momentarily anywhere in the mapping
+  std::array<bool, protocol::kSignalCount> in_force{};   // bound so in the base layer or the layer in force
+  const auto mark = [](const std::vector<mapping::Binding>& bindings, std::array<bool, protocol::kSignalCount>& into) {
+    for (const auto& b : bindings) {
+      if (const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule); button != nullptr && !button->toggle)
+        into[button->signal] = true;
+      if (const auto* pair = std::get_if<mapping::PairBinding>(&b.rule); pair != nullptr)
+        for (const auto id : pair->signals) into[id] = true;
+    }
+  };
+  mark(m.bindings, momentary);
+  for (const auto& l : m.layers) mark(l.bindings, momentary);
+  mark(m.bindings, in_force);
+  if (layer >= 0) mark(m.layers[static_cast<std::size_t>(layer)].bindings, in_force);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (s.values[i] == 0 || !momentary[i] || in_force[i]) continue;
+    const std::string name =
+        layer < 0 ? "the base layer" : "layer \"" + m.layers[static_cast<std::size_t>(layer)].name + "\"";
+    return std::string(protocol::kSignals[i].name) + " = 1, bound in no binding of " + name +
+           ", the layer in force (a toggled layer ends with the deadman)";
+  }
+  return {};
+}
+
+/// Of an opposing pair asked for both, neither is sent (docs/mapping.md,
+/// the safety rules: "when both are asked for, neither is sent"). Asked: a
+/// button binding of the signal active in the layer in force (the layer's
+/// bindings and the base ones whose inputs it does not take), its button held
+/// and pressed after the last change of meaning (changed_at: the rest rule
+/// holds back a button held through one). Lenient: bindings of axes are left
+/// out. Empty, or the rule broken.
+template <typename Held, typename PressedAt>
+std::string pair_neither_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at,
+                                const protocol::ControlState& s, const Held& held, const PressedAt& pressed_at) {
+  std::array<bool, protocol::kSignalCount> asked{};
+  const std::vector<mapping::Binding>* own = layer < 0 ? nullptr : &m.layers[static_cast<std::size_t>(layer)].bindings;
+  const auto taken = [own](input::InputKey key) {
+    return own != nullptr && std::any_of(own->begin(), own->end(), [key](const mapping::Binding& b) {
+             return (b.arm && b.arm->key == key) ||
+                    std::any_of(b.inputs.begin(), b.inputs.end(),
+                                [key](const mapping::InputUse& u) { return u.key == key; });
+           });
+  };
+  const auto ask = [&](const mapping::Binding& b, bool base) {
+    const auto* button = std::get_if<mapping::ButtonBinding>(&b.rule);
+    if (button == nullptr || button->toggle || button->invert || !button->input.is_button()) return;
+    if (base && taken(button->input)) return;
+    if (held(button->input) && pressed_at(button->input) > changed_at) asked[button->signal] = true;
+  };
+  for (const auto& b : m.bindings) ask(b, true);
+  if (own != nullptr)
+    for (const auto& b : *own) ask(b, false);
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    const auto partner = protocol::partner_of(static_cast<protocol::SignalId>(i));
+    if (!partner || !asked[i] || !asked[*partner] || (s.values[i] == 0 && s.values[*partner] == 0)) continue;
+    return std::string(protocol::kSignals[i].name) + " and " + std::string(protocol::kSignals[*partner].name) +
+           " both asked for, and one of them sent (an opposing pair: neither)";
+  }
+  return {};
+}
+
+/// A weapon fires only on a press of its fire button after the weapon became
+/// possible (docs/mapping.md, Weapon: a button already held when the bridge
+/// becomes enabled, when a layer with the weapon is entered, or when `arm` is
+/// pressed does nothing until released and pressed again): a weapon bit that
+/// is 1 has a binding in the base layer or the layer in force whose fire
+/// button was pressed after the last change of meaning (changed_at) and
+/// after its arming input was last pressed or squeezed. Lenient: the press
+/// after the arming's time, not its tick. Empty, or the rule broken.
+template <typename PressedAt>
+std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at,
+                              const protocol::ControlState& s, const PressedAt& pressed_at) {
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (protocol::kSignals[i].kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
+    bool bound = false;
+    bool fresh = false;
+    const auto look = [&](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule);
+        if (w == nullptr || w->signal != i || !w->arm) continue;
+        bound = true;
+        const auto fired = pressed_at(w->input);
+        fresh = fresh || (fired > changed_at && fired > pressed_at(*w->arm));
+      }
+    };
+    look(m.bindings);
+    if (layer >= 0) look(m.layers[static_cast<std::size_t>(layer)].bindings);
+    if (bound && !fresh)
+      return std::string(protocol::kSignals[i].name) +
+             " = 1 with its fire button not pressed after the weapon became possible (enabled, its layer entered, "
+             "armed)";
+  }
+  return {};
+}
 
 }  // namespace andros::test

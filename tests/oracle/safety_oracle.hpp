@@ -101,10 +101,19 @@ class SafetyOracle {
     const auto held = [&pads](input::InputKey k) { return pads.held(k); };
     const auto axis = [&pads](input::InputKey k) { return pads.axis(k); };
     auto& rest = reading_.rest();
+    const auto& m = *reading_.mappings().current;
     // [rule: rest]
-    auto broken = rest.frame(t, period, *reading_.mappings().current, s, held, axis);
+    auto broken = rest.frame(t, period, m, s, held, axis);
     coverage_.rest_held += rest.held_at_trim() ? 1 : 0;
-    return broken;
+    if (!broken.empty()) return broken;
+    // [rule: layer-in-force]
+    if (auto wrong = layer_signal_errors(m, rest.layer(), s); !wrong.empty()) return wrong;
+    // [rule: pairs-neither]
+    const auto pressed_at = [this](input::InputKey k) { return reading_.pressed_at(k); };
+    if (auto both = pair_neither_errors(m, rest.layer(), rest.changed_at(), s, held, pressed_at); !both.empty())
+      return both;
+    // [rule: fire-fresh]
+    return fire_fresh_errors(m, rest.layer(), rest.changed_at(), s, pressed_at);
   }
 
   /// After the replay: what the end lacks. A stop owes its neutral frames at

@@ -133,6 +133,12 @@ class ScriptReading {
     return !toggled || pressed;
   }
 
+  /// The time of the operator's last press of a button, or squeeze of an axis past half way (-1: none yet).
+  [[nodiscard]] std::int64_t pressed_at(input::InputKey key) const {
+    const auto it = pressed_at_.find(key);
+    return it == pressed_at_.end() ? -1 : it->second;
+  }
+
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     take_up(loop_.tick_of(e.t_ms));  // a reload done at an earlier tick
@@ -183,7 +189,9 @@ class ScriptReading {
       case T::kAxis: {
         if (!pads_.connected) break;
         const bool was = pads_.down(e.key);
+        const bool was_held = pads_.held(e.key);
         pads_.axes[e.key] = e.value;
+        if (!was_held && pads_.held(e.key)) pressed_at_[e.key] = e.t_ms;  // an arming trigger squeezed
         if (activity_.moved(e.key, e.value)) last_change_ = e.t_ms;
         if (!mappings_.deadmen.contains(e.key)) break;
         deadman_moved(e.key, was, pads_.down(e.key), e.t_ms);
@@ -341,15 +349,16 @@ class ScriptReading {
   bool supervised_ = false;
   StopLatch stop_;
   DeadmanTicks deadman_;
-  bool resumed_this_tick_ = false;                      ///< a resume since the last tick (its rebase takes the presses)
-  AxisActivity activity_;                               ///< which axis moves are changes for the timeout
-  std::int64_t last_change_ = 0;                        ///< the last event that changed an input
-  bool squeezed_since_tick_ = false;                    ///< a trigger deadman past the panic point since the last tick
-  bool was_enabled_ = false;                            ///< at the last tick
-  std::int64_t enabled_at_ = 0;                         ///< the tick that enabled, the last time
-  std::int64_t enabled_since_ = 0;                      ///< the first tick of the last stretch the oracle found enabled
-  std::map<input::InputKey, std::int64_t> pressed_at_;  ///< the operator's last press of each button
-  std::set<input::InputKey> fresh_;                     ///< deadmen pressed since the last ending event
+  bool resumed_this_tick_ = false;    ///< a resume since the last tick (its rebase takes the presses)
+  AxisActivity activity_;             ///< which axis moves are changes for the timeout
+  std::int64_t last_change_ = 0;      ///< the last event that changed an input
+  bool squeezed_since_tick_ = false;  ///< a trigger deadman past the panic point since the last tick
+  bool was_enabled_ = false;          ///< at the last tick
+  std::int64_t enabled_at_ = 0;       ///< the tick that enabled, the last time
+  std::int64_t enabled_since_ = 0;    ///< the first tick of the last stretch the oracle found enabled
+  std::map<input::InputKey, std::int64_t>
+      pressed_at_;  ///< the operator's last press of each button, or squeeze of each axis past half way
+  std::set<input::InputKey> fresh_;  ///< deadmen pressed since the last ending event
   Ending last_ending_ = Ending::kStart;
   Ending last_interruption_ = Ending::kStart;
   Ending pressed_after_ = Ending::kStart;

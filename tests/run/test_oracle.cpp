@@ -126,6 +126,55 @@ TEST_F(OracleTest, RefusesBothOfAnOpposingPair) {
   EXPECT_EQ(o.frame(40, both), "zoom_down and zoom_up both 1 (an opposing pair)");
 }
 
+// Of a pair asked for both (dpup and dpdown pressed while enabled), neither is sent, not one of them.
+TEST_F(OracleTest, RefusesOneOfAPairAskedForBoth) {
+  auto o = oracle(std::string(kDriving) + "60 button dpup 1\n60 button dpdown 1\n400 end\n");
+  ASSERT_EQ(o.frame(0, frame()), "");
+  ASSERT_EQ(o.frame(40, frame({{protocol::signal_id("safety"), 1}})), "");
+  const auto up = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("front_art_up"), 1}});
+  EXPECT_EQ(o.frame(80, up),
+            "front_art_up and front_art_down both asked for, and one of them sent (an opposing pair: neither)");
+  auto neither = oracle(std::string(kDriving) + "60 button dpup 1\n60 button dpdown 1\n400 end\n");
+  ASSERT_EQ(neither.frame(0, frame()), "");
+  ASSERT_EQ(neither.frame(40, frame({{protocol::signal_id("safety"), 1}})), "");
+  EXPECT_EQ(neither.frame(80, frame({{protocol::signal_id("safety"), 1}})), "");
+}
+
+// A toggled layer (the arm's, right stick click) ends with the deadman: after a
+// fresh press its signals (A: gripper_close) are bound in no layer in force.
+TEST_F(OracleTest, RefusesALayersSignalOnceItsToggledLayerEndedWithTheDeadman) {
+  auto o = oracle(std::string(kDriving) +
+                  "60 button rightstick 1\n61 button rightstick 0\n100 button leftshoulder 0\n"
+                  "150 button leftshoulder 1\n400 end\n");
+  const auto gripper = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("gripper_close"), 1}});
+  ASSERT_EQ(o.frame(0, frame()), "");
+  ASSERT_EQ(o.frame(40, frame({{protocol::signal_id("safety"), 1}})), "");
+  EXPECT_EQ(o.frame(80, gripper), "");  // in the arm layer
+  ASSERT_EQ(o.frame(120, frame()), "");
+  EXPECT_EQ(o.frame(160, gripper),
+            "gripper_close = 1, bound in no binding of the base layer, the layer in force (a toggled layer ends with "
+            "the deadman)");
+}
+
+// A fire button held when its weapon is armed fires nothing until pressed again.
+TEST_F(OracleTest, RefusesAFireButtonHeldWhenItsWeaponWasArmed) {
+  const std::string script = std::string(kDriving) +
+                             "60 button rightshoulder 1\n70 button a 1\n100 axis lefttrigger 32767\n"
+                             "130 button a 0\n150 button a 1\n400 end\n";
+  const auto fire = frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("weapon_1"), 1}});
+  const auto idle = frame({{protocol::signal_id("safety"), 1}});
+  auto held = oracle(script, true);
+  ASSERT_EQ(held.frame(0, frame()), "");
+  ASSERT_EQ(held.frame(40, idle), "");
+  ASSERT_EQ(held.frame(80, idle), "");
+  EXPECT_EQ(held.frame(120, fire),
+            "weapon_1 = 1 with its fire button not pressed after the weapon became possible (enabled, its layer "
+            "entered, armed)");
+  auto again = oracle(script, true);
+  for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(again.frame(t, t == 0 ? frame() : idle), "") << t;
+  EXPECT_EQ(again.frame(160, fire), "");
+}
+
 const std::string kTrim = ANDROS_TEST_DATA_DIR "/mappings/trim.yaml";  // center: 124
 
 TEST_F(OracleTest, RefusesANeutralFrameAtTheTrim) {
