@@ -56,7 +56,7 @@ namespace {
 #ifdef ANDROS_SIM_SCRIPTS
 constexpr std::uint64_t kScripts = ANDROS_SIM_SCRIPTS;
 #else
-constexpr std::uint64_t kScripts = test::sweep_size(10'000, 1'000);
+constexpr std::uint64_t kScripts = test::sweep_size(10'000, 500);
 #endif
 
 constexpr std::uint8_t kCode = 0x5A;
