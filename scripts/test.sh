@@ -165,12 +165,9 @@ if [[ $quick != 1 ]]; then
   # machine as ccache's is) makes a run over unchanged files take seconds.
   # The sanitizer build begins here too, beside the plain tests (which leave
   # the cores idle while they wait on the frame clock), and is waited for
-  # before the sanitizer tests: it is the first run's longest path (ran 342 s
-  # of a 620 s quiet first run at nice 5), so not niced: it shares the cores
-  # with the plain tests, whose real-time tests keep their margins on a
-  # machine whose cores are both busy; the package and clang-tidy, niced,
-  # take what these leave, clang-tidy awaited last.
-  background build-asan 0 bash -c build_asan
+  # before the sanitizer tests: niced less than the other two, which it goes
+  # before; clang-tidy, awaited last, takes what the others leave.
+  background build-asan 5 bash -c build_asan
   background package bash -c package_and_check
   background clang-tidy 19 scripts/lint.sh --tidy
 fi
