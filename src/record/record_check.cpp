@@ -41,16 +41,7 @@ RecordCheck::Recorded RecordCheck::recorded(Kind kind, std::size_t i) const {
               r.line};
     }
     case kLayer: return {payload::layer(s_.layers[i].t_ms, s_.layers[i].text), s_.layers[i].t_ms, s_.layers[i].line};
-    case kFrame: {
-      const auto& f = s_.frames[i];
-      run::TickReport r;
-      r.tick = f.tick;
-      r.t_ms = f.t_ms;
-      r.sent = f.offered;
-      r.result = f.result;
-      r.data = f.data;
-      return {payload::frame(r, f.gap), f.t_ms, f.line};
-    }
+    case kFrame: return {payload::frame(s_.frames[i]), s_.frames[i].t_ms, s_.frames[i].line};
     case kKinds: break;
   }
   return {};

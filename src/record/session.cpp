@@ -109,10 +109,13 @@ std::string pause(std::int64_t t_ms) { return "pause " + std::to_string(t_ms); }
 std::string reload(std::int64_t t_ms, const run::ReloadOutcome& o) {
   return "reload " + std::to_string(t_ms) + (o.ok ? " ok " : " failed ") + text_json(o.message).dump();
 }
+std::string frame(const FrameRecord& f) {
+  return "frame " + std::to_string(f.tick) + " " + std::to_string(f.t_ms) + " " + std::string(result_name(f)) + " " +
+         protocol::to_hex(f.data) + " gap=" + std::to_string(f.gap);
+}
 std::string frame(const run::TickReport& r, std::int64_t gap) {
-  FrameRecord f{.offered = r.sent, .result = r.result};
-  return "frame " + std::to_string(r.tick) + " " + std::to_string(r.t_ms) + " " + std::string(result_name(f)) + " " +
-         protocol::to_hex(r.data) + " gap=" + std::to_string(gap);
+  return frame(FrameRecord{
+      .tick = r.tick, .t_ms = r.t_ms, .offered = r.sent, .result = r.result, .data = r.data, .gap = gap, .line = 0});
 }
 std::string state(std::int64_t t_ms, run::OpState s) {
   return "state " + std::to_string(t_ms) + " " + std::string(run::to_string(s));

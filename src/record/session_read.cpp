@@ -106,14 +106,15 @@ std::int64_t time(Fields& f) {
   return t;
 }
 
+/// ": they were dropped (WHY)" when the settings are missing and a `dropped`
+/// record says why (a file-size limit under the settings' size); "" otherwise.
+std::string settings_dropped(const Session& s) {
+  return s.dropped_why.empty() ? std::string() : ": they were dropped (" + printable_text(s.dropped_why) + ")";
+}
+
 /// A tick and its time: the tick falls at that time at the session's rate, within kMaxSessionMs.
 void check_tick(const Session& s, std::int64_t tick, std::int64_t t_ms, const SourcePos& pos) {
-  if (s.settings.sources.empty()) {
-    // The settings dropped (a file-size limit under their size): said so.
-    throw InputError(pos, "a tick before the settings" +
-                              (s.dropped_why.empty() ? std::string()
-                                                     : ": they were dropped (" + printable_text(s.dropped_why) + ")"));
-  }
+  if (s.settings.sources.empty()) throw InputError(pos, "a tick before the settings" + settings_dropped(s));
   const std::int64_t rate = s.settings.rate_millihertz;
   const timing::FrameClock clock(rate);
   const std::int64_t last = kMaxSessionMs * rate / (kMsPerSecond * timing::kMillihertzPerHz);
@@ -385,12 +386,7 @@ void RecordReader::forget() {
 
 Session RecordReader::finish() && {
   if (s_.settings.sources.empty()) {
-    // Its settings dropped (a file-size limit under the settings' size): said so.
-    if (!s_.dropped_why.empty()) {
-      throw InputError(SourcePos{s_.path},
-                       "a session without its settings: they were dropped (" + printable_text(s_.dropped_why) + ")");
-    }
-    throw InputError(SourcePos{s_.path}, "a session without its settings");
+    throw InputError(SourcePos{s_.path}, "a session without its settings" + settings_dropped(s_));
   }
   if (keep_ == Keep::kVerdict && spacing_ && (s_.format >= kSpacedFormat && s_.dropped == 0)) throw *spacing_;
   check_record_spacing(s_, false, keep_ == Keep::kVerdict);

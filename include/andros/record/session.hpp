@@ -117,6 +117,8 @@ struct SessionSettings {
   std::vector<MappingSource> sources;  ///< the mapping's file first, then each it extends
 };
 
+struct FrameRecord;
+
 /// The payloads of the records, one a function (no SEQ, no hash).
 namespace payload {
 std::string header();
@@ -131,6 +133,8 @@ std::string reload(std::int64_t t_ms, const run::ReloadOutcome& outcome);
 /// `frame TICK T RESULT DATA gap=N`: written when the frame, its result or
 /// the tick's place changes; the ticks between repeat the last one.
 std::string frame(const run::TickReport& report, std::int64_t gap);
+/// The same line from a frame record as read (replay's comparison makes the recorded one again).
+std::string frame(const FrameRecord& record);
 std::string state(std::int64_t t_ms, run::OpState state);
 /// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
 std::string gate(std::int64_t t_ms, std::string_view fault);
