@@ -367,7 +367,7 @@ TEST(Properties, ReusedStepsAreTheStepsComputedAfresh) {
   mappings.push_back(mapping::load_mapping(std::string(ANDROS_TEST_DATA_DIR) + "/mappings/safety.yaml"));
   test::Random rng(20261123);
   int quiet = 0;  // ticks with no event since the one before last: there a step is reused
-  const int scripts = test::sweep_size(kScripts / 4, kScripts / 20);
+  const int scripts = test::sweep_size(kScripts / 4, kScripts / 40);
   for (int i = 0; i < scripts; ++i) {
     // Slowed down four times: the hands rest between events, as they mostly do.
     auto script = random_script(rng);
