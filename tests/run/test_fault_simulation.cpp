@@ -405,6 +405,22 @@ TEST(FaultSimulation, AStopDuringAReloadLatches) {
   expect_driving_only_before(p, 120);
 }
 
+// The operator's pad back while stopped, the supervisor's reset chord made
+// at the same instant and the deadman tapped on the new pad within that
+// frame: the deadman was touched during the hold, so it is no reset
+// (docs/safety-states.md: every stop button and the deadman released
+// throughout); the new session's presses count from its connect. Stopped to
+// the end, whatever the deadman does after.
+TEST(FaultSimulation, ADeadmanTapOnAPadBackWithinTheResetsFirstFrameIsNoReset) {
+  const auto p = play(
+      "0 connect Pad A\n0 supervisor connect Sup A\n20 button leftshoulder 1\n60 axis lefty -32768\n"
+      "100 button guide 1\n110 button guide 0\n200 disconnect\n1085 connect Pad A\n"
+      "1085 supervisor button back 1\n1085 supervisor button start 1\n1091 button leftshoulder 1\n"
+      "1101 button leftshoulder 0\n3201 supervisor button back 0\n3201 supervisor button start 0\n"
+      "3258 button leftshoulder 1\n3500 end\n");
+  expect_driving_only_before(p, 100);
+}
+
 // Scripts the simulation found (tests/data/simulation/): each broke a rule
 // once, and each header says what the frames must be.
 TEST(FaultSimulation, FoundScripts) {
