@@ -196,9 +196,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       }
     }
   };
-  const auto reset_hold = [&] {
+  // supervisor_often: the supervisor's reset three times in four (after stops from both pads).
+  const auto reset_hold = [&](bool supervisor_often) {
     settled_for_a_reset();
-    const bool by_supervisor = supervised && pick.below(2) == 0;
+    const bool by_supervisor = supervised && pick.below(supervisor_often ? 4 : 2) != 0;
     if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
     if (!held && pick.below(3) == 0) {  // now and then tapped while stopped, before the gesture: history after a reset
       add(T::kButton, deadman, 1);
@@ -243,7 +244,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(80);
     if (supervised) on_pad(!first_sup, "guide", 1);
     t += 40 + pick.below(2600);
-    if (pick.below(2) == 0) {  // the other let go and pressed again
+    if (pick.below(3) != 0) {  // the first let go and pressed again
       on_pad(first_sup, "guide", 0);
       t += 1 + pick.below(40);
       on_pad(first_sup, "guide", 1);
@@ -258,13 +259,14 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(2) == 0 ? 0 : pick.below(400);
     on_pad(sup_last, "guide", 0);
   };
-  // The stop buttons let go, a reset (the supervisor's on every other
-  // supervised one), and the deadman pressed afresh, the stick pushed.
+  // The stop buttons let go, a reset (the supervisor's on three supervised
+  // ones in four: a stop pressed again while stopped is history after it), and
+  // the deadman pressed afresh, the stick pushed.
   const auto reset_after_stops = [&] {
     add(T::kButton, button("guide"), 0);
     if (supervised) supervisor(T::kButton, button("guide"), 0);
     t += 40 + pick.below(100);
-    reset_hold();
+    reset_hold(true);
     t += 40 + pick.below(100);
     add(T::kButton, deadman, 1);
     stick();
@@ -289,7 +291,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       pair_gap();
       add(T::kConnect, {}, 0, "Pad " + other);
     }
-    reset_hold();
+    reset_hold(false);
     t += 40 + pick.below(100);
     add(T::kButton, deadman, 1);
     stick();
@@ -506,12 +508,12 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 27: fire(); break;
         case 28:
         case 29:
-        case 30: reset_hold(); break;
+        case 30: reset_hold(false); break;
         case 31: blip_within_a_frame(deadman, 0, 1); break;
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
         case 33:
           overlapping_stops();
-          if (pick.below(2) == 0) reset_after_stops();
+          if (pick.below(3) != 0) reset_after_stops();
           break;
         case 34: swap_while_stopped(); break;
         case 35:
