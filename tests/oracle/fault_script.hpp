@@ -87,12 +87,21 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
   // The weapons layer held (RB), armed (LT) or not, fire (A); in a supervised
-  // script the supervisor's consent (its A) given now and then, let go after or held on.
+  // script the supervisor's consent (its A): given in the layer, let go after
+  // or held on (held since before the next: no consent); given before the
+  // layer is entered (no consent either, now and then let go and given again
+  // once armed); or given only once the fire button is held (it waits until
+  // pressed again), or not at all.
   const auto fire = [&] {
+    enum class Consent { kNone, kInLayer, kBefore, kLate };
+    const auto consent = supervised ? static_cast<Consent>(pick.below(4)) : Consent::kNone;
     add(T::kAxis, arm, 0);
+    if (consent == Consent::kBefore) {
+      supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+    }
     add(T::kButton, weapons_layer, 1);
-    const bool consent = supervised && pick.below(3) != 0;
-    if (consent) {
+    if (consent == Consent::kInLayer) {
       t += pick.below(60);
       supervisor(T::kButton, fire_button, 1);
     }
@@ -101,16 +110,32 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
+    if (consent == Consent::kBefore && pick.below(2) == 0) {  // given afresh
+      supervisor(T::kButton, fire_button, 0);
+      t += 1 + pick.below(60);
+      supervisor(T::kButton, fire_button, 1);
+      t += 1 + pick.below(40);
+    }
     if (early) {
       t += 40 + pick.below(80);
       add(T::kButton, fire_button, 0);
       t += pick.below(80);
     }
     add(T::kButton, fire_button, 1);
+    if (consent == Consent::kLate) {
+      t += 1 + pick.below(80);
+      supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+      if (pick.below(2) == 0) {
+        add(T::kButton, fire_button, 0);
+        t += 1 + pick.below(60);
+        add(T::kButton, fire_button, 1);
+      }
+    }
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
     add(T::kButton, weapons_layer, 0);
-    if (consent && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
+    if (consent != Consent::kNone && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
 
   const auto stick = [&] {
@@ -436,7 +461,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(40)) {
+      switch (pick.below(42)) {
         case 0:
         case 1:
         case 2:
@@ -505,7 +530,9 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           add(T::kButton, button("dpup"), 0);
           add(T::kButton, button("dpdown"), 0);
           break;
-        case 27: fire(); break;
+        case 27:
+        case 40:
+        case 41: fire(); break;
         case 28:
         case 29:
         case 30: reset_hold(false); break;
