@@ -8,7 +8,7 @@
 # how many seeds of how many caught it. The simulation alone should catch
 # every one, each by many seeds.
 #
-# Not part of scripts/test.sh: 41 rebuilds and 42 runs of 10,000 seeds.
+# Not part of scripts/test.sh: 43 rebuilds and 44 runs of 10,000 seeds.
 # ANDROS_SIM_SCRIPTS=N runs N seeds instead; MUTATIONS="1 5" only those.
 # Exit 1 when a mutation is caught by no seed, when the unmutated code fails
 # a seed, or when a mutation's text is no longer in its file (the code moved:
@@ -63,6 +63,8 @@ mutations=(
   "the frame gate keeps no selector in a neutral frame|src/run/frame_gate.cpp|s/return sig.kind == SignalKind::kSelector; \}/return sig.kind == SignalKind::kSelector \&\& false; }/"
   "the frame gate refuses a weapon while enabled|src/run/frame_gate.cpp|s/if \(!enabled\) return named\(i\) \+/if (enabled) return named(i) +/"
   "a fire button held when its weapon is armed fires|src/mapping/safety.cpp|s/  hold_back_fire_inputs\(input, layer, seen\);\n//"
+  "a consent held since before the weapon became possible counts|src/mapping/safety.cpp|s/held_back = now.down \&\& !pressed_now;/held_back = !now.down \&\& !pressed_now;/"
+  "a fire button held when the consent comes fires|src/mapping/safety.cpp|s/if \(!consent\(\) \|\| held_.contains\(arm\)/if (held_.contains(arm)/"
 )
 
 [[ -f $build_dir/CMakeCache.txt ]] || { echo "no build in $build_dir: run scripts/build.sh first" >&2; exit 1; }

@@ -38,6 +38,7 @@ void Deadman::start(const input::InputState& input, bool at_start_up) {
     // Presses and releases made before it are history; a trigger released now may be squeezed afresh.
     base_ = input.button(*key_).presses;
     presses_seen_ = base_;
+    connection_seen_ = input.connection();
     releases_seen_ = input.button(*key_).releases;
     released_seen_ = !held(input);
     // (held_at_read_ stays false: what the trigger did in this tick before the restart is history.)
@@ -53,6 +54,9 @@ bool Deadman::touched(const input::InputState& input) {
   if (!key_ || !input.connected()) return false;
   if (!key_->is_button()) return past(input.axis_span(*key_).high, kDefaultThreshold);
   const auto now = input.button(*key_);
+  // Another controller session (a pad back while stopped) counts its presses from 0.
+  if (input.connection() != connection_seen_) presses_seen_ = 0;
+  connection_seen_ = input.connection();
   const bool pressed_between = now.presses > presses_seen_;  // pressed (and let go) since
   presses_seen_ = now.presses;
   return now.down || pressed_between;
@@ -89,6 +93,7 @@ EnableState Deadman::read(const input::InputState& input) {
   if (key_->is_button()) {
     releases_seen_ = input.button(*key_).releases;
     presses_seen_ = input.button(*key_).presses;
+    connection_seen_ = input.connection();
   }
   if (panic(input)) return EnableState::kPanic;
   if (!held(input) || let_go) {

@@ -87,12 +87,21 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 0);
   };
   // The weapons layer held (RB), armed (LT) or not, fire (A); in a supervised
-  // script the supervisor's consent (its A) given now and then, let go after or held on.
+  // script the supervisor's consent (its A): given in the layer, let go after
+  // or held on (held since before the next: no consent); given before the
+  // layer is entered (no consent either, now and then let go and given again
+  // once armed); or given only once the fire button is held (it waits until
+  // pressed again), or not at all.
   const auto fire = [&] {
+    enum class Consent { kNone, kInLayer, kBefore, kLate };
+    const auto consent = supervised ? static_cast<Consent>(pick.below(4)) : Consent::kNone;
     add(T::kAxis, arm, 0);
+    if (consent == Consent::kBefore) {
+      supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+    }
     add(T::kButton, weapons_layer, 1);
-    const bool consent = supervised && pick.below(3) != 0;
-    if (consent) {
+    if (consent == Consent::kInLayer) {
       t += pick.below(60);
       supervisor(T::kButton, fire_button, 1);
     }
@@ -101,16 +110,32 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += 1 + pick.below(80);
     add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
+    if (consent == Consent::kBefore && pick.below(2) == 0) {  // given afresh
+      supervisor(T::kButton, fire_button, 0);
+      t += 1 + pick.below(60);
+      supervisor(T::kButton, fire_button, 1);
+      t += 1 + pick.below(40);
+    }
     if (early) {
       t += 40 + pick.below(80);
       add(T::kButton, fire_button, 0);
       t += pick.below(80);
     }
     add(T::kButton, fire_button, 1);
+    if (consent == Consent::kLate) {
+      t += 1 + pick.below(80);
+      supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+      if (pick.below(2) == 0) {
+        add(T::kButton, fire_button, 0);
+        t += 1 + pick.below(60);
+        add(T::kButton, fire_button, 1);
+      }
+    }
     t += pick.below(120);
     add(T::kButton, fire_button, 0);
     add(T::kButton, weapons_layer, 0);
-    if (consent && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
+    if (consent != Consent::kNone && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
 
   const auto stick = [&] {
@@ -196,9 +221,10 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       }
     }
   };
-  const auto reset_hold = [&] {
+  // supervisor_often: the supervisor's reset three times in four (after stops from both pads).
+  const auto reset_hold = [&](bool supervisor_often) {
     settled_for_a_reset();
-    const bool by_supervisor = supervised && pick.below(2) == 0;
+    const bool by_supervisor = supervised && pick.below(supervisor_often ? 4 : 2) != 0;
     if (held && pick.below(4) != 0) add(T::kButton, deadman, 0);  // most often the deadman released first
     if (!held && pick.below(3) == 0) {  // now and then tapped while stopped, before the gesture: history after a reset
       add(T::kButton, deadman, 1);
@@ -243,7 +269,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(80);
     if (supervised) on_pad(!first_sup, "guide", 1);
     t += 40 + pick.below(2600);
-    if (pick.below(2) == 0) {  // the other let go and pressed again
+    if (pick.below(3) != 0) {  // the first let go and pressed again
       on_pad(first_sup, "guide", 0);
       t += 1 + pick.below(40);
       on_pad(first_sup, "guide", 1);
@@ -258,13 +284,14 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     t += pick.below(2) == 0 ? 0 : pick.below(400);
     on_pad(sup_last, "guide", 0);
   };
-  // The stop buttons let go, a reset (the supervisor's on every other
-  // supervised one), and the deadman pressed afresh, the stick pushed.
+  // The stop buttons let go, a reset (the supervisor's on three supervised
+  // ones in four: a stop pressed again while stopped is history after it), and
+  // the deadman pressed afresh, the stick pushed.
   const auto reset_after_stops = [&] {
     add(T::kButton, button("guide"), 0);
     if (supervised) supervisor(T::kButton, button("guide"), 0);
     t += 40 + pick.below(100);
-    reset_hold();
+    reset_hold(true);
     t += 40 + pick.below(100);
     add(T::kButton, deadman, 1);
     stick();
@@ -289,7 +316,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       pair_gap();
       add(T::kConnect, {}, 0, "Pad " + other);
     }
-    reset_hold();
+    reset_hold(false);
     t += 40 + pick.below(100);
     add(T::kButton, deadman, 1);
     stick();
@@ -434,7 +461,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(40)) {
+      switch (pick.below(42)) {
         case 0:
         case 1:
         case 2:
@@ -503,15 +530,17 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           add(T::kButton, button("dpup"), 0);
           add(T::kButton, button("dpdown"), 0);
           break;
-        case 27: fire(); break;
+        case 27:
+        case 40:
+        case 41: fire(); break;
         case 28:
         case 29:
-        case 30: reset_hold(); break;
+        case 30: reset_hold(false); break;
         case 31: blip_within_a_frame(deadman, 0, 1); break;
         case 32: blip_within_a_frame(arm, 32767, pick.below(2) == 0 ? 20000 : 0); break;
         case 33:
           overlapping_stops();
-          if (pick.below(2) == 0) reset_after_stops();
+          if (pick.below(3) != 0) reset_after_stops();
           break;
         case 34: swap_while_stopped(); break;
         case 35:

@@ -184,11 +184,14 @@ std::string pair_neither_errors(const mapping::Mapping& m, int layer, std::int64
 /// pressed does nothing until released and pressed again): a weapon bit that
 /// is 1 has a binding in the base layer or the layer in force whose fire
 /// button was pressed after the last change of meaning (changed_at) and
-/// after its arming input was last pressed or squeezed. Lenient: the press
-/// after the arming's time, not its tick. Empty, or the rule broken.
+/// after its arming input was last pressed or squeezed. Lenient: a press in
+/// the same frame as the arming's counts whichever came first (the engine
+/// reads the arming input at the tick: an arming trigger let go and squeezed
+/// again within one frame is no new arming to it). Empty, or the rule broken.
 template <typename PressedAt>
-std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at,
+std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at, std::int64_t period,
                               const protocol::ControlState& s, const PressedAt& pressed_at) {
+  const auto tick_of = [period](std::int64_t t) { return (t + period - 1) / period; };
   for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
     if (protocol::kSignals[i].kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
     bool bound = false;
@@ -199,7 +202,8 @@ std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t
         if (w == nullptr || w->signal != i || !w->arm) continue;
         bound = true;
         const auto fired = pressed_at(w->input);
-        fresh = fresh || (fired > changed_at && fired > pressed_at(*w->arm));
+        const auto armed = pressed_at(*w->arm);
+        fresh = fresh || (fired > changed_at && (fired > armed || tick_of(fired) == tick_of(armed)));
       }
     };
     look(m.bindings);
@@ -208,6 +212,43 @@ std::string fire_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t
       return std::string(protocol::kSignals[i].name) +
              " = 1 with its fire button not pressed after the weapon became possible (enabled, its layer entered, "
              "armed)";
+  }
+  return {};
+}
+
+/// The supervisor's consent is fresh and held, never latched (docs/mapping.md,
+/// The supervisor's controller: a consent held since before the bridge
+/// became enabled in a layer with weapons, such a layer was entered or either
+/// controller came counts only once released and pressed again; pressed in
+/// the frame of that change it counts; consent is part of arming, so a fire
+/// button held when the consent comes waits until released): with the
+/// mapping's `weapons_consent`, a weapon bit that is 1 has the consent last
+/// pressed after the tick before the last change of meaning (changed_at,
+/// which a controller's coming precedes), and a binding in the base layer or
+/// the layer in force whose fire button was pressed at or after that press.
+/// Empty, or the rule broken.
+template <typename PressedAt>
+std::string consent_fresh_errors(const mapping::Mapping& m, int layer, std::int64_t changed_at, std::int64_t period,
+                                 const protocol::ControlState& s, const PressedAt& pressed_at,
+                                 std::int64_t consent_at) {
+  if (!m.supervisor || !m.supervisor->weapons_consent) return {};
+  for (std::size_t i = 0; i < protocol::kSignalCount; ++i) {
+    if (protocol::kSignals[i].kind != protocol::SignalKind::kWeapon || s.values[i] == 0) continue;
+    const std::string name(protocol::kSignals[i].name);
+    if (consent_at <= changed_at - period)
+      return name +
+             " = 1 with the supervisor's consent held since before the weapon became possible (not pressed "
+             "afresh)";
+    bool fresh = false;
+    const auto look = [&](const std::vector<mapping::Binding>& bindings) {
+      for (const auto& b : bindings) {
+        const auto* w = std::get_if<mapping::WeaponBinding>(&b.rule);
+        if (w != nullptr && w->signal == i && pressed_at(w->input) >= consent_at) fresh = true;
+      }
+    };
+    look(m.bindings);
+    if (layer >= 0) look(m.layers[static_cast<std::size_t>(layer)].bindings);
+    if (!fresh) return name + " = 1 with its fire button held when the supervisor's consent came";
   }
   return {};
 }

@@ -113,7 +113,13 @@ class SafetyOracle {
     if (auto both = pair_neither_errors(m, rest.layer(), rest.changed_at(), s, held, pressed_at); !both.empty())
       return both;
     // [rule: fire-fresh]
-    return fire_fresh_errors(m, rest.layer(), rest.changed_at(), s, pressed_at);
+    if (auto early = fire_fresh_errors(m, rest.layer(), rest.changed_at(), period, s, pressed_at); !early.empty())
+      return early;
+    // [rule: consent-fresh]
+    const auto consent_at = m.supervisor && m.supervisor->weapons_consent
+                                ? reading_.sup_pressed_at(m.supervisor->weapons_consent->key)
+                                : std::int64_t{-1};
+    return consent_fresh_errors(m, rest.layer(), rest.changed_at(), period, s, pressed_at, consent_at);
   }
 
   /// After the replay: what the end lacks. A stop owes its neutral frames at

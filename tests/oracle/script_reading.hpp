@@ -139,6 +139,12 @@ class ScriptReading {
     return it == pressed_at_.end() ? -1 : it->second;
   }
 
+  /// The time of the supervisor's last press of a button on its pad (-1: none yet).
+  [[nodiscard]] std::int64_t sup_pressed_at(input::InputKey key) const {
+    const auto it = sup_pressed_at_.find(key);
+    return it == sup_pressed_at_.end() ? -1 : it->second;
+  }
+
   void apply(const input::InputEvent& e) {
     using T = input::InputEvent::Type;
     take_up(loop_.tick_of(e.t_ms));  // a reload done at an earlier tick
@@ -318,6 +324,7 @@ class ScriptReading {
       const bool now = e.value != 0;
       pads_.sup_buttons[e.key] = now;
       const bool initial = e.t_ms == pads_.sup_connect_t;
+      if (now && !was && !initial) sup_pressed_at_[e.key] = e.t_ms;
       counts_.supervisor_stops += e.key == mappings_.sup_stop && now && !was && !initial ? 1 : 0;
       const auto& sup = mappings_.current->supervisor;
       if (sup && e.key == sup->stop.key) stop_.sup.moved(now, was, initial);
@@ -358,7 +365,8 @@ class ScriptReading {
   std::int64_t enabled_since_ = 0;    ///< the first tick of the last stretch the oracle found enabled
   std::map<input::InputKey, std::int64_t>
       pressed_at_;  ///< the operator's last press of each button, or squeeze of each axis past half way
-  std::set<input::InputKey> fresh_;  ///< deadmen pressed since the last ending event
+  std::map<input::InputKey, std::int64_t> sup_pressed_at_;  ///< the supervisor's last press of each button
+  std::set<input::InputKey> fresh_;                         ///< deadmen pressed since the last ending event
   Ending last_ending_ = Ending::kStart;
   Ending last_interruption_ = Ending::kStart;
   Ending pressed_after_ = Ending::kStart;

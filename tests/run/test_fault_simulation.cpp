@@ -267,11 +267,12 @@ struct Played {
   std::vector<std::int64_t> enabled;                      ///< the ticks whose frame the link took with safety = 1
   std::map<std::int64_t, protocol::ControlState> frames;  ///< each frame the link took, by its tick
 };
-Played play(const std::string& text, std::uint8_t code = kCode, const std::string& mapping_file = kSimulationHd1) {
+Played play(const std::string& text, std::uint8_t code = kCode, const std::string& mapping_file = kSimulationHd1,
+            bool weapons = false) {
   Library library;
   Played p;
   const auto script = input::parse_event_script(text, "issue35.events");
-  const auto out = test::simulate(library, mapping_file, script, false, code, [&p](const TickReport& r) {
+  const auto out = test::simulate(library, mapping_file, script, weapons, code, [&p](const TickReport& r) {
     if (!r.sent || r.result != link::SendResult::kSent) return;
     if (r.enabled()) p.enabled.push_back(r.t_ms);
     p.frames[r.t_ms] = protocol::read_signals(r.data);
@@ -403,6 +404,43 @@ TEST(FaultSimulation, AStopDuringAReloadLatches) {
       "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n100 reload\n130 button guide 1\n"
       "140 button guide 0\n300 button leftshoulder 0\n340 button leftshoulder 1\n600 end\n");
   expect_driving_only_before(p, 120);
+}
+
+// The operator's pad back while stopped, the supervisor's reset chord made
+// at the same instant and the deadman tapped on the new pad within that
+// frame: the deadman was touched during the hold, so it is no reset
+// (docs/safety-states.md: every stop button and the deadman released
+// throughout); the new session's presses count from its connect. Stopped to
+// the end, whatever the deadman does after.
+TEST(FaultSimulation, ADeadmanTapOnAPadBackWithinTheResetsFirstFrameIsNoReset) {
+  const auto p = play(
+      "0 connect Pad A\n0 supervisor connect Sup A\n20 button leftshoulder 1\n60 axis lefty -32768\n"
+      "100 button guide 1\n110 button guide 0\n200 disconnect\n1085 connect Pad A\n"
+      "1085 supervisor button back 1\n1085 supervisor button start 1\n1091 button leftshoulder 1\n"
+      "1101 button leftshoulder 0\n3201 supervisor button back 0\n3201 supervisor button start 0\n"
+      "3258 button leftshoulder 1\n3500 end\n");
+  expect_driving_only_before(p, 100);
+}
+
+// The supervisor's consent is fresh and held, never latched (docs/mapping.md):
+// held since before the weapons layer is entered it counts only once released
+// and pressed again, and a fire button held when it comes waits until pressed
+// again. Weapon 1 (the weapons layer RB, LT armed, A) fires only from the
+// fresh press after each.
+TEST(FaultSimulation, TheSupervisorsConsentIsFreshNeverLatched) {
+  const auto p = play(
+      "0 connect Pad A\n0 supervisor connect Sup A\n20 button leftshoulder 1\n100 supervisor button a 1\n"
+      "200 button rightshoulder 1\n240 axis lefttrigger 32767\n300 button a 1\n400 button a 0\n"
+      "500 supervisor button a 0\n540 supervisor button a 1\n600 button a 1\n700 button a 0\n"
+      "800 supervisor button a 0\n900 button a 1\n1000 supervisor button a 1\n1200 button a 0\n"
+      "1240 button a 1\n1300 end\n",
+      kCode, ANDROS_TEST_DATA_DIR "/simulation/mappings/consent.yaml", true);
+  EXPECT_EQ(p.violation, "");
+  std::vector<std::int64_t> fired;
+  for (const auto& [t, s] : p.frames) {
+    if (s[protocol::signal_id("weapon_1")] != 0) fired.push_back(t);
+  }
+  EXPECT_EQ(fired, (std::vector<std::int64_t>{600, 640, 680, 1240, 1280, 1320}));
 }
 
 // Scripts the simulation found (tests/data/simulation/): each broke a rule

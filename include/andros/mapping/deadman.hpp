@@ -44,13 +44,14 @@ class Deadman {
 
   std::optional<input::InputKey> key_;
   std::optional<double> panic_;
-  std::uint32_t base_ = 0;           ///< presses that are not fresh
-  std::uint32_t releases_seen_ = 0;  ///< a button deadman's releases already read
-  std::uint32_t presses_seen_ = 0;   ///< its presses already seen (read(), touched())
-  bool released_seen_ = false;       ///< a trigger deadman was seen released this session
-  bool held_at_read_ = false;        ///< held at the last read (a trigger let go since is a release)
-  bool panic_latched_ = false;       ///< squeezed past the panic point, not yet fully released
-  bool timed_out_ = false;           ///< the enable timeout ran out, the deadman not yet released
+  std::uint32_t base_ = 0;             ///< presses that are not fresh
+  std::uint32_t releases_seen_ = 0;    ///< a button deadman's releases already read
+  std::uint32_t presses_seen_ = 0;     ///< its presses already seen (read(), touched())
+  std::uint32_t connection_seen_ = 0;  ///< the controller session presses_seen_ counts in
+  bool released_seen_ = false;         ///< a trigger deadman was seen released this session
+  bool held_at_read_ = false;          ///< held at the last read (a trigger let go since is a release)
+  bool panic_latched_ = false;         ///< squeezed past the panic point, not yet fully released
+  bool timed_out_ = false;             ///< the enable timeout ran out, the deadman not yet released
 };
 
 }  // namespace andros::mapping
