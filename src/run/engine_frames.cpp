@@ -9,22 +9,13 @@ class EngineFrames final : public FrameSource {
  public:
   explicit EngineFrames(mapping::Engine engine) : engine_(std::move(engine)) {}
 
-  mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) override {
-    return engine_.facts(input, now_ms, enabled);
-  }
+  [[nodiscard]] const mapping::Mapping& mapping() const override { return engine_.mapping(); }
   Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
     auto data = engine_.step(input, now_ms, motion_allowed);
     return Step{data, engine_.status()};
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return engine_.neutral(); }
-  void restart(const input::InputState& now) override { engine_.restart(now); }
-  mapping::StopPresses take_stop(const input::InputState& input) override { return engine_.take_stop(input); }
-  mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) override {
-    return engine_.stopped(input, now_ms);
-  }
-  void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
-    engine_.held_stops(input, status);
-  }
+  void rebase(const input::InputState& now) override { engine_.restart(now); }
 
  private:
   mapping::Engine engine_;

@@ -209,14 +209,11 @@ TEST_F(ReloadRead, RefusesWhatNeedsARestartAndABadFile) {
 class Marked final : public testing::WithoutStops {
  public:
   explicit Marked(std::uint8_t mark) { neutral_[0] = mark; }
-  mapping::InputFacts facts(const input::InputState& /*input*/, std::int64_t /*now_ms*/, bool /*enabled*/) override {
-    return {};
-  }
   run::Step step(const input::InputState& /*input*/, std::int64_t /*now_ms*/, bool /*motion_allowed*/) override {
     return {neutral_, {}};
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return neutral_; }
-  void restart(const input::InputState&) override {}
+  void rebase(const input::InputState& /*now*/) override {}
 
  private:
   protocol::DataBytes neutral_{};

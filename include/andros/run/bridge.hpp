@@ -19,8 +19,9 @@
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
-#include "andros/mapping/stop_buttons.hpp"
+#include "andros/mapping/model.hpp"
 #include "andros/protocol/frame.hpp"
+#include "andros/run/drive_guard.hpp"
 #include "andros/run/frame_gate.hpp"
 #include "andros/run/operating_state.hpp"
 #include "andros/timing/tick_schedule.hpp"
@@ -33,37 +34,25 @@ struct Step {
   mapping::EngineStatus status;
 };
 
-/// What computes the frames: the mapping engine in `run` and replay, a fixed
-/// frame in the benchmarks and tests. It reports facts (what the deadman and
-/// the stop buttons did) and maps; it never decides whether the vehicle may
-/// move: the loop's operating-state machine does, and tells step(). Every
-/// method is pure virtual: a source that forgot one must not compile (the
-/// tests' doubles with no stop buttons are in tests/support/frame_doubles.hpp).
+/// What computes the frames, the loop's one seam to the mapping stage: the
+/// mapping engine in `run` and replay, a fixed frame in the benchmarks and
+/// tests. It maps; it never decides whether the vehicle may move: the loop's
+/// guards (drive_guard.hpp) read the inputs its mapping names for them, the
+/// operating-state machine decides, and the step is told.
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
-  /// The tick's facts at now_ms, before its step (a driving state: no link,
-  /// no controller, not enabled, enabled). enabled: the state is enabled
-  /// now (the enable timeout runs only then).
-  virtual mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) = 0;
+  /// The mapping: which inputs are the deadman, the stop buttons and the
+  /// reset gestures, and which it reads (the guards' inputs).
+  [[nodiscard]] virtual const mapping::Mapping& mapping() const = 0;
   /// The frame for the tick at now_ms (ms since start) from this input,
   /// the bindings applied only when motion_allowed (the neutral frame otherwise).
   virtual Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) = 0;
-  /// The neutral frame (stop, suspend, reload).
+  /// The neutral frame (shutdown, suspend, reload, stopped).
   [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
   /// Starts afresh from the input as it is now: every press it has counted
-  /// is history, and the deadman needs a fresh press after it.
-  virtual void restart(const input::InputState& now) = 0;
-  /// The stop buttons pressed since the last step (or the last call) or
-  /// held; the presses are taken (for the ticks that do not step: a
-  /// reload's and a suspend's frames; and before a rebase makes them history).
-  virtual mapping::StopPresses take_stop(const input::InputState& input) = 0;
-  /// Stopped (the engine is not stepped), once per tick at now_ms: the stop
-  /// buttons pressed since the last call, and a reset hold completed.
-  virtual mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) = 0;
-  /// Stopped: which stop buttons are held now, into status (stop_held,
-  /// supervisor_stop), for the screen.
-  virtual void held_stops(const input::InputState& input, mapping::EngineStatus& status) const = 0;
+  /// is history (the loop's rebase).
+  virtual void rebase(const input::InputState& now) = 0;
 };
 
 /// What one tick did, for the status view and the log. Values only, copied by
@@ -234,6 +223,7 @@ class Bridge {
   BridgeOptions options_;
   timing::TickSchedule schedule_;
   OperatingState machine_;  ///< every decision whether the vehicle may move, and every deferral
+  DriveGuard guard_;        ///< the machine's guards with memory and time: its facts each driving tick
   FrameGate gate_;          ///< the second channel: every frame offered to the link passes it
   input::InputState input_;
   mapping::EngineStatus engine_status_;  ///< the last step's

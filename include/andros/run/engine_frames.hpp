@@ -20,21 +20,12 @@ class ReloadableFrames : public FrameSource {
   explicit ReloadableFrames(std::unique_ptr<FrameSource> inner) : inner_(std::move(inner)) {}
   void replace(std::unique_ptr<FrameSource> inner) { inner_ = std::move(inner); }
 
-  mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) override {
-    return inner_->facts(input, now_ms, enabled);
-  }
+  [[nodiscard]] const mapping::Mapping& mapping() const override { return inner_->mapping(); }
   Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
     return inner_->step(input, now_ms, motion_allowed);
   }
   [[nodiscard]] protocol::DataBytes neutral() const override { return inner_->neutral(); }
-  void restart(const input::InputState& now) override { inner_->restart(now); }
-  mapping::StopPresses take_stop(const input::InputState& input) override { return inner_->take_stop(input); }
-  mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) override {
-    return inner_->stopped(input, now_ms);
-  }
-  void held_stops(const input::InputState& input, mapping::EngineStatus& status) const override {
-    inner_->held_stops(input, status);
-  }
+  void rebase(const input::InputState& now) override { inner_->rebase(now); }
 
  private:
   std::unique_ptr<FrameSource> inner_;

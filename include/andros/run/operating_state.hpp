@@ -67,7 +67,7 @@ enum class StopBy : std::uint8_t { kOperator, kSupervisor, kGate };
 struct Effect {
   bool changed = false;  ///< the state changed
   /// The engine starts afresh from the input as it is now: every press so
-  /// far is history, the deadman needs a fresh press (FrameSource::restart).
+  /// far is history, the deadman needs a fresh press (FrameSource::rebase, DriveGuard::rebase).
   bool rebase = false;
   /// Neutral frames begin (again): a suspend, a reload or the shutdown
   /// began, or a second reload restarted the first; the loop counts them
