@@ -111,7 +111,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto facts = guard.facts(input, next_frame, motion);
       motion = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
       guard.decided(motion, next_frame);
-      const auto frame = engine.step(input, next_frame, motion);
+      const auto frame = engine.step(input, next_frame, motion).data;
       const auto s = protocol::read_signals(frame);
       check(protocol::validation_errors(frame).empty());
       check(frame[protocol::kCodeByte] == code);

@@ -51,7 +51,7 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
   c_.seen_presses.clear();
   c_.toggled_layer = -1;
   clear_toggles();
-  // A new pad (another operator, perhaps) and a restart begin at the initial
+  // A new pad (another operator, perhaps) and a rebase begin at the initial
   // level, never at one chosen before; a deadman release keeps it.
   set_speed(mapping_->scale.initial);
   if (at_start_up) {
@@ -60,7 +60,7 @@ void Engine::start_session(const input::InputState& input, bool at_start_up) {
   }
 }
 
-void Engine::restart(const input::InputState& now) {
+void Engine::rebase(const input::InputState& now) {
   settled_ = false;
   neutral_.reset();
   c_.started = true;
@@ -104,16 +104,16 @@ void Engine::follow_sessions(const input::InputState& input, std::int64_t now_ms
 // step from an unchanged input (and a later time) has left c_ as it found
 // it, each further step from that input would do the same and give the same
 // frame and status: it is skipped until the input or motion_allowed change,
-// or restart() changes the state. tests/mapping/test_engine_settled.cpp and
+// or rebase() changes the state. tests/mapping/test_engine_settled.cpp and
 // tests/run/test_properties.cpp hold the frames and statuses to those of
 // steps computed afresh.
-protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) {
+Step Engine::step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) {
   follow_sessions(input, now_ms);
   const bool same_input = stepped_ && motion_allowed == stepped_motion_ && input.operator_pad() == stepped_operator_ &&
                           input.supervisor() == stepped_supervisor_;
   if (same_input && settled_) {
     last_ms_ = now_ms;
-    return stepped_frame_;
+    return Step{stepped_frame_, c_.status};
   }
   std::optional<Carried> before;
   if (same_input && options_.reuse_settled && now_ms > last_ms_) before = c_;
@@ -125,7 +125,7 @@ protocol::DataBytes Engine::step(const input::InputState& input, std::int64_t no
     stepped_motion_ = motion_allowed;
     stepped_ = true;
   }
-  return stepped_frame_;
+  return Step{stepped_frame_, c_.status};
 }
 
 protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t now_ms, bool enabled) {

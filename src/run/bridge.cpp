@@ -8,7 +8,7 @@ namespace andros::run {
 Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options)
     : clock_(clock),
       source_(input),
-      frames_(frames),
+      frames_(&frames),
       link_(link),
       options_(options),
       schedule_(options.rate_millihertz),
@@ -83,7 +83,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     case OpState::kSuspended:
       if (!machine_.neutral_due()) {
         // Its frames are out: nothing is sent until the resume (a script's suspend; job control pauses below).
-        observe(report(frames_.neutral(), link::SendResult::kDown, false));
+        observe(report(frames_->neutral(), link::SendResult::kDown, false));
       } else if (neutral_frame(observe)) {
         close();
         apply(OpEvent::kNeutralSent);  // a resume that waited for the frames is answered now: no pause
@@ -106,16 +106,18 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       }
       guard_.report_held(input_, engine_status_);  // what the screen says is held, now
       if (machine_.state() == OpState::kStopped) engine_status_.reset_hold = stops.hold;
-      send(frames_.neutral(), observe);
+      send(frames_->neutral(), observe);
       break;
     }
     case OpState::kReloading:
       if (neutral_frame(observe)) {
         if (machine_.neutral_due()) apply(OpEvent::kNeutralSent);
         if (const auto outcome = control.finish_reload()) {
-          if (outcome->ok) {
-            gate_.set_weapons(outcome->weapons);
-            guard_ = DriveGuard(frames_.mapping());  // the new mapping's inputs, read afresh
+          if (outcome->ok) gate_.set_weapons(outcome->weapons);
+          if (outcome->ok && outcome->frames) {
+            reloaded_ = outcome->frames;
+            frames_ = reloaded_.get();
+            guard_ = DriveGuard(frames_->mapping());  // the new mapping's inputs, read afresh
           }
           reload_refused_ = !outcome->ok;
           apply(OpEvent::kReloadDone);  // a suspend that waited for the outcome begins now
@@ -140,7 +142,7 @@ void Bridge::drive(std::int64_t t_ms, const Observer& observe) {
   act(machine_.on(facts), false);
   // The machine decided; the engine maps what it allows.
   guard_.decided(machine_.motion_allowed(), t_ms);
-  Step step = frames_.step(input_, t_ms, machine_.motion_allowed());
+  Step step = frames_->step(input_, t_ms, machine_.motion_allowed());
   engine_status_ = std::move(step.status);
   guard_.report(input_, engine_status_);
   send(step.data, observe);
@@ -169,7 +171,7 @@ Effect Bridge::act(Effect effect, bool reset) {
       effect.changed = machine_.on(OpEvent::kSupervisorStop).changed || effect.changed;
     }
     guard_.rebase(input_);
-    frames_.rebase(input_);
+    frames_->rebase(input_);
   }
   if (effect.neutral_frames) start_sequence();
   if (effect.begin_reload && control_ != nullptr) control_->begin_reload(reload_mapping_);
@@ -220,7 +222,7 @@ bool Bridge::sequence_done() const {
 }
 
 bool Bridge::neutral_frame(const Observer& observe) {
-  if (send(frames_.neutral(), observe) == link::SendResult::kSent) ++sequence_sent_;
+  if (send(frames_->neutral(), observe) == link::SendResult::kSent) ++sequence_sent_;
   ++sequence_ticks_;
   return sequence_done();
 }

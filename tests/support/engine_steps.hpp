@@ -28,7 +28,7 @@ class DrivenEngine {
     const auto facts = guard_.facts(input, now_ms, enabled_);
     enabled_ = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
     guard_.decided(enabled_, now_ms);
-    const auto data = engine_.step(input, now_ms, enabled_);
+    const auto data = engine_.step(input, now_ms, enabled_).data;
     status_ = engine_.status();
     guard_.report(input, status_);
     return data;
@@ -39,7 +39,7 @@ class DrivenEngine {
   void restart(const input::InputState& now) {
     enabled_ = false;
     guard_.rebase(now);
-    engine_.restart(now);
+    engine_.rebase(now);
     status_ = engine_.status();
     guard_.report(now, status_);
   }

@@ -17,6 +17,7 @@
 
 #include "andros/input/input_state.hpp"
 #include "andros/mapping/engine_status.hpp"
+#include "andros/mapping/frame_source.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/mapping/safety.hpp"
 #include "andros/protocol/frame.hpp"
@@ -32,7 +33,7 @@ struct EngineOptions {
   bool reuse_settled = true;
 };
 
-class Engine {
+class Engine final : public FrameSource {
  public:
   /// Levels (arm_speed, light) are kept in 1/kMilli units.
   static constexpr std::int64_t kMilli = 1000;
@@ -49,22 +50,22 @@ class Engine {
   /// found them as at the one before and changed none of the engine's
   /// state), the last frame is given again without computing it: the same
   /// frame and status that computing would give (see step()).
-  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed);
+  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override;
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
   /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off,
   /// and the speed level is the mapping's initial one.
-  void restart(const input::InputState& now);
+  void rebase(const input::InputState& now) override;
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
   /// 128 (never the mapping's `center:` trim). Kept from one computed step to
   /// the next (the loop asks for it on every tick that is not enabled).
-  [[nodiscard]] protocol::DataBytes neutral() const;
+  [[nodiscard]] protocol::DataBytes neutral() const override;
 
   [[nodiscard]] const EngineStatus& status() const;
-  [[nodiscard]] const Mapping& mapping() const;
+  [[nodiscard]] const Mapping& mapping() const override;
   /// The last step found the controllers as the one before did and changed
   /// nothing: until they (or motion_allowed) change, a step gives its frame again.
   [[nodiscard]] bool settled() const { return settled_; }

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,7 +20,7 @@
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
-#include "andros/mapping/model.hpp"
+#include "andros/mapping/frame_source.hpp"
 #include "andros/protocol/frame.hpp"
 #include "andros/run/drive_guard.hpp"
 #include "andros/run/frame_gate.hpp"
@@ -28,32 +29,8 @@
 
 namespace andros::run {
 
-/// One step's result, by value: the frame and the engine's state after it.
-struct Step {
-  protocol::DataBytes data{};
-  mapping::EngineStatus status;
-};
-
-/// What computes the frames, the loop's one seam to the mapping stage: the
-/// mapping engine in `run` and replay, a fixed frame in the benchmarks and
-/// tests. It maps; it never decides whether the vehicle may move: the loop's
-/// guards (drive_guard.hpp) read the inputs its mapping names for them, the
-/// operating-state machine decides, and the step is told.
-class FrameSource {
- public:
-  virtual ~FrameSource() = default;
-  /// The mapping: which inputs are the deadman, the stop buttons and the
-  /// reset gestures, and which it reads (the guards' inputs).
-  [[nodiscard]] virtual const mapping::Mapping& mapping() const = 0;
-  /// The frame for the tick at now_ms (ms since start) from this input,
-  /// the bindings applied only when motion_allowed (the neutral frame otherwise).
-  virtual Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) = 0;
-  /// The neutral frame (shutdown, suspend, reload, stopped).
-  [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
-  /// Starts afresh from the input as it is now: every press it has counted
-  /// is history (the loop's rebase).
-  virtual void rebase(const input::InputState& now) = 0;
-};
+using mapping::FrameSource;
+using mapping::Step;
 
 /// What one tick did, for the status view and the log. Values only, copied by
 /// the loop: whoever reads a report never reaches back into the loop, the
@@ -135,6 +112,9 @@ struct ReloadOutcome {
   bool ok = false;       ///< the new settings are in place; false: the old ones stay
   std::string message;   ///< why not, when not
   bool weapons = false;  ///< ok: whether the settings now in place enable weapons (the frame gate's rule)
+  /// ok: the frame source the new settings make, which the loop takes (with
+  /// its guards read afresh from its mapping); none: the source stays.
+  std::shared_ptr<FrameSource> frames = nullptr;
 };
 
 struct RunControl {
@@ -218,7 +198,8 @@ class Bridge {
 
   Clock& clock_;
   input::InputSource& source_;
-  FrameSource& frames_;
+  FrameSource* frames_;                    ///< the one given, or a reload's
+  std::shared_ptr<FrameSource> reloaded_;  ///< the last reload's, which frames_ points at
   link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
