@@ -109,7 +109,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       // The loop's decision at its simplest (not enabled and enabled, no
       // latch): motion while the deadman reports a fresh hold and no stop.
       const auto facts = guard.facts(input, next_frame, motion);
-      motion = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
+      motion = facts.deadman == mapping::DeadmanState::kFreshHold && !facts.stops;
       guard.decided(motion, next_frame);
       const auto frame = engine.step(input, next_frame, motion).data;
       const auto s = protocol::read_signals(frame);
@@ -133,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       was_enabled = may_move;
       seen_sessions = sessions;
-      check(s[protocol::signal_id("safety")] == (facts.deadman == mapping::EnableState::kEnabled && !stop ? 1 : 0));
+      check(s[protocol::signal_id("safety")] == (facts.deadman == mapping::DeadmanState::kFreshHold && !stop ? 1 : 0));
       next_frame += 40;
     }
     const auto event = next_event(data + i, t);

@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   connect.type = andros::input::InputEvent::Type::kConnect;
   input.apply(connect);
   for (std::int64_t t = 0; t < 200; t += 40) {
-    const bool motion = guard.facts(input, t, true).deadman == andros::mapping::EnableState::kEnabled;
+    const bool motion = guard.facts(input, t, true).deadman == andros::mapping::DeadmanState::kFreshHold;
     guard.decided(motion, t);
     check(andros::protocol::validation_errors(engine.step(input, t, motion || t == 80).data).empty());
   }

@@ -164,7 +164,7 @@ class PlaybackLink final : public link::Link {
   [[nodiscard]] const std::string& name() const override { return name_; }
   [[nodiscard]] const std::string& detail() const override { return p_.link().detail; }
   [[nodiscard]] const link::LinkCounters& counters() const override { return counters_; }
-  [[nodiscard]] bool motion_allowed() const override { return p_.link().motion_allowed; }
+  [[nodiscard]] bool far_end_reading() const override { return p_.link().far_end_reading; }
 
  private:
   Playback& p_;

@@ -74,7 +74,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     answer_stops(guard_.take_stop(input_));
   }
   switch (machine_.state()) {
-    case OpState::kStopping:
+    case OpState::kShuttingDown:
       if (neutral_frame(observe)) {
         close();
         return false;
@@ -127,7 +127,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     default: drive(t_ms, observe); break;
   }
   advance();
-  if (!input_failed_ && machine_.state() != OpState::kStopping && source_.finished(t_ms)) {
+  if (!input_failed_ && machine_.state() != OpState::kShuttingDown && source_.finished(t_ms)) {
     if (!options_.neutral_tail_at_end) return false;
     apply(OpEvent::kShutdown);
   }
@@ -203,7 +203,7 @@ link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer
   return result;
 }
 
-bool Bridge::link_up() const { return link::carries_motion(link_.state(), link_.motion_allowed()); }
+bool Bridge::link_up() const { return link::carries_motion(link_.state(), link_.far_end_reading()); }
 
 OpEvent Bridge::link_lost_event() const {
   return link_.fault() == link::FaultLink::Fault::kTaken ? OpEvent::kLinkTaken : OpEvent::kLinkDown;

@@ -5,7 +5,7 @@
 namespace andros::run {
 namespace {
 
-using mapping::EnableState;
+using mapping::DeadmanState;
 using mapping::kDefaultThreshold;
 
 bool past(std::int16_t value, double point) { return mapping::normalise_axis(value) >= point; }
@@ -72,24 +72,24 @@ bool Deadman::panic(const input::InputState& input) {
   return panic_latched_;
 }
 
-mapping::EnableState Deadman::read(const input::InputState& input) {
-  if (!input.connected() || !key_) return EnableState::kNoController;
+mapping::DeadmanState Deadman::read(const input::InputState& input) {
+  if (!input.connected() || !key_) return DeadmanState::kNoPad;
   const bool let_go = let_go_between(input);
   held_at_read_ = held(input);
   if (key_->is_button()) {
     releases_seen_ = input.button(*key_).releases;
     presses_seen_ = input.button(*key_).presses;
   }
-  if (panic(input)) return EnableState::kPanic;
+  if (panic(input)) return DeadmanState::kPastPanic;
   if (!held(input) || let_go) {
     released_seen_ = true;
     timed_out_ = false;
-    return EnableState::kDeadmanReleased;
+    return DeadmanState::kReleased;
   }
-  if (timed_out_) return EnableState::kTimedOut;
+  if (timed_out_) return DeadmanState::kTimedOut;
   // A button counts presses itself; a trigger must have been seen released.
   const bool fresh = key_->is_button() ? input.button(*key_).presses > base_ : released_seen_;
-  return fresh ? EnableState::kEnabled : EnableState::kDeadmanNotFresh;
+  return fresh ? DeadmanState::kFreshHold : DeadmanState::kHeldNotFresh;
 }
 
 void Deadman::time_out(const input::InputState& input) {

@@ -52,9 +52,9 @@ mapping::InputFacts DriveGuard::facts(const input::InputState& input, std::int64
   enable_ = deadman_.read(input);
   stop_pressed_ = stops_.take(input);
   note_activity(input, now_ms);
-  if (enabled && enable_ == mapping::EnableState::kEnabled && timed_out(now_ms)) {
+  if (enabled && enable_ == mapping::DeadmanState::kFreshHold && timed_out(now_ms)) {
     deadman_.time_out(input);
-    enable_ = mapping::EnableState::kTimedOut;
+    enable_ = mapping::DeadmanState::kTimedOut;
   }
   return mapping::InputFacts{enable_, stop_pressed_};
 }
@@ -105,7 +105,7 @@ bool DriveGuard::timed_out(std::int64_t now_ms) const {
 }
 
 void DriveGuard::report(const input::InputState& input, mapping::EngineStatus& status) const {
-  status.enable = enable_;
+  status.deadman = enable_;
   status.stop_pressed = stop_pressed_;
   stops_.held(input, status);
 }

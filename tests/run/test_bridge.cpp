@@ -130,9 +130,9 @@ TEST(Bridge, EachReportCarriesTheStepsStatusTheStateAndTheLinksState) {
     EXPECT_TRUE(r.connected) << "tick " << i;
     EXPECT_EQ(r.controller, "pad");
     // Shutting down, the status is the last step's.
-    const auto enable = i == 0 ? mapping::EnableState::kDeadmanReleased : mapping::EnableState::kEnabled;
-    EXPECT_EQ(r.engine.enable, enable) << "tick " << i;
-    const auto state = i == 0 ? OpState::kNotEnabled : i < 4 ? OpState::kEnabled : OpState::kStopping;
+    const auto enable = i == 0 ? mapping::DeadmanState::kReleased : mapping::DeadmanState::kFreshHold;
+    EXPECT_EQ(r.engine.deadman, enable) << "tick " << i;
+    const auto state = i == 0 ? OpState::kNotEnabled : i < 4 ? OpState::kEnabled : OpState::kShuttingDown;
     EXPECT_EQ(r.state, state) << "tick " << i;
     EXPECT_EQ(r.data[7], i == 0 || r.shutting_down() ? 128 : 200) << "tick " << i;
     EXPECT_EQ(r.link.counters.sent, i + 1) << "tick " << i;

@@ -26,7 +26,7 @@ class DrivenEngine {
   /// One tick: the facts, the decision, the step.
   protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms) {
     const auto facts = guard_.facts(input, now_ms, enabled_);
-    enabled_ = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
+    enabled_ = facts.deadman == mapping::DeadmanState::kFreshHold && !facts.stops;
     guard_.decided(enabled_, now_ms);
     const auto data = engine_.step(input, now_ms, enabled_).data;
     status_ = engine_.status();

@@ -80,7 +80,7 @@ struct TickReport {
   std::string gate_fault;
   std::int64_t gate_trips = 0;  ///< frames the gate replaced since the start
 
-  [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
+  [[nodiscard]] bool shutting_down() const { return state == OpState::kShuttingDown; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
 };

@@ -2,7 +2,7 @@
 /// The deadman, as facts: whether it is held, and whether the press that
 /// holds it is fresh (made after the session began, after the last release,
 /// a panic or a timeout). It decides nothing about the frame: the engine
-/// reads its EnableState. Every change between two frames counts: a button
+/// reads its DeadmanState. Every change between two frames counts: a button
 /// released and pressed again since the last read (its `releases` count), or
 /// a trigger let go below its press point (its span), is a release at this
 /// read, and the press after it is fresh; a trigger squeezed past
@@ -25,7 +25,7 @@ class Deadman {
   /// every press so far is history).
   void start(const input::InputState& input, bool at_start_up);
   /// Once per computed step: the deadman's state, taking the releases seen.
-  [[nodiscard]] mapping::EnableState read(const input::InputState& input);
+  [[nodiscard]] mapping::DeadmanState read(const input::InputState& input);
   /// The enable timeout ran out: not enabled until released and pressed again.
   void time_out(const input::InputState& input);
   /// Held now (a controller there, the button down or the trigger past its press point).

@@ -72,8 +72,8 @@ class DriveGuard {
   std::int64_t last_activity_ms_ = 0;                               ///< the last tick that saw an input change
   std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that tick
   std::map<input::InputKey, std::int16_t> activity_axes_;
-  mapping::EnableState enable_ = mapping::EnableState::kNoController;  ///< the last driving tick's
-  mapping::StopPresses stop_pressed_;                                  ///< and its stop buttons
+  mapping::DeadmanState enable_ = mapping::DeadmanState::kNoPad;  ///< the last driving tick's
+  mapping::StopPresses stop_pressed_;                             ///< and its stop buttons
 };
 
 }  // namespace andros::run
