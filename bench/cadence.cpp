@@ -33,16 +33,16 @@ protocol::DataBytes neutral_frame() {
   return protocol::FrameBuilder(0x01).build(s);
 }
 
+/// Its mapping names no deadman and no stop button: never enabled, nothing stops.
 class FixedFrames final : public run::FrameSource {
  public:
-  mapping::InputFacts facts(const input::InputState&, std::int64_t, bool) override { return {}; }
+  const mapping::Mapping& mapping() const override { return mapping_; }
   run::Step step(const input::InputState&, std::int64_t, bool) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
-  void restart(const input::InputState&) override {}
-  // No stop buttons: nothing stops, nothing resets.
-  mapping::StopPresses take_stop(const input::InputState&) override { return {}; }
-  mapping::StoppedTick stopped(const input::InputState&, std::int64_t) override { return {}; }
-  void held_stops(const input::InputState&, mapping::EngineStatus&) const override {}
+  void rebase(const input::InputState&) override {}
+
+ private:
+  mapping::Mapping mapping_;
 };
 
 class Idle final : public input::InputSource {

@@ -17,6 +17,7 @@
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
+#include "andros/run/drive_guard.hpp"
 #include "fuzz_check.hpp"
 #include "oracle/centre_watch.hpp"
 
@@ -87,6 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool weapons = (data[1] & 1) != 0;
   const std::uint8_t code = data[1];
   mapping::Engine engine(valid, mapping::EngineOptions{weapons, code});
+  run::DriveGuard guard(engine.mapping());
   const input::InputKey deadman = mapping.deadman->key;
 
   input::InputState input;
@@ -106,9 +108,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     while (next_frame <= t) {
       // The loop's decision at its simplest (not enabled and enabled, no
       // latch): motion while the deadman reports a fresh hold and no stop.
-      const auto facts = engine.facts(input, next_frame, motion);
-      motion = facts.deadman == mapping::EnableState::kEnabled && !facts.stops;
-      const auto frame = engine.step(input, next_frame, motion);
+      const auto facts = guard.facts(input, next_frame, motion);
+      motion = facts.deadman == mapping::DeadmanState::kFreshHold && !facts.stops;
+      guard.decided(motion, next_frame);
+      const auto frame = engine.step(input, next_frame, motion).data;
       const auto s = protocol::read_signals(frame);
       check(protocol::validation_errors(frame).empty());
       check(frame[protocol::kCodeByte] == code);
@@ -130,8 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       was_enabled = may_move;
       seen_sessions = sessions;
-      check(s[protocol::signal_id("safety")] ==
-            (engine.status().enable == mapping::EnableState::kEnabled && !stop ? 1 : 0));
+      check(s[protocol::signal_id("safety")] == (facts.deadman == mapping::DeadmanState::kFreshHold && !stop ? 1 : 0));
       next_frame += 40;
     }
     const auto event = next_event(data + i, t);

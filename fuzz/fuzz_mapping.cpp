@@ -18,6 +18,7 @@
 #include "andros/base/error.hpp"
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
+#include "andros/run/drive_guard.hpp"
 #include "fuzz_check.hpp"
 #include "scratch_dir.hpp"
 
@@ -61,13 +62,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (!(*mapping)->robot) return 0;
   andros::mapping::Engine engine(std::move(*mapping), andros::mapping::EngineOptions{});
+  andros::run::DriveGuard guard(engine.mapping());
   andros::input::InputState input;
   andros::input::InputEvent connect;
   connect.type = andros::input::InputEvent::Type::kConnect;
   input.apply(connect);
   for (std::int64_t t = 0; t < 200; t += 40) {
-    const bool motion = engine.facts(input, t, true).deadman == andros::mapping::EnableState::kEnabled;
-    check(andros::protocol::validation_errors(engine.step(input, t, motion || t == 80)).empty());
+    const bool motion = guard.facts(input, t, true).deadman == andros::mapping::DeadmanState::kFreshHold;
+    guard.decided(motion, t);
+    check(andros::protocol::validation_errors(engine.step(input, t, motion || t == 80).data).empty());
   }
   return 0;
 }

@@ -110,7 +110,6 @@ int run_bridge(const RunOptions& opt) {
   ShutdownRequest stop(kRunShutdownSignals);
   JobControlSignals job;
   EngineSetup engine = load_engine(config);
-  ReloadableFrames frames(std::move(engine.frames));
   input::SdlInputOptions sdl = opt.sdl;
   sdl.supervisor = config.supervisor;
   sdl.supervisor_pos = config.supervisor_pos;
@@ -168,7 +167,7 @@ int run_bridge(const RunOptions& opt) {
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
   RealClock clock;
-  run::Bridge bridge(clock, loop_input, frames, *link,
+  run::Bridge bridge(clock, loop_input, *engine.frames, *link,
                      run::BridgeOptions{.rate_millihertz = rate_millihertz, .rules = {config.weapons, config.code}});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
@@ -177,7 +176,7 @@ int run_bridge(const RunOptions& opt) {
   // SIGHUP (or a script's `reload [MAPPING]`, MAPPING relative to the script's
   // folder): the files read on a worker while the loop sends neutral frames;
   // swapped in on the loop's thread.
-  RunReload reload(opt.settings->given_flags(), ReloadTargets{config, frames, feedback, board, service});
+  RunReload reload(opt.settings->given_flags(), ReloadTargets{config, feedback, board, service});
   run::RunControl control;
   control.poll = [&] { return poll_requests(stop, job); };
   control.pause = [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); };

@@ -10,7 +10,6 @@
 
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
-#include "andros/run/engine_frames.hpp"
 
 namespace andros::cli {
 
@@ -44,8 +43,8 @@ EngineSetup load_engine(const Settings& settings) {
   setup.supervisor_buttons = mapping->supervisor.has_value();
   setup.pad_names = reads_pad_names(*mapping);
   setup.sources = record::read_mapping_sources(mapping->chain);
-  setup.frames = run::make_engine_frames(
-      mapping::Engine(std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
+  setup.frames = std::make_shared<mapping::Engine>(
+      std::move(mapping), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code});
   return setup;
 }
 
@@ -169,7 +168,6 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
     return out;
   }
   EngineSetup& setup = result.setup;
-  to.frames.replace(std::move(setup.frames));
   to.feedback.set_table(setup.feedback);
   to.settings = std::move(*result.settings);
   to.board.set_mapping(setup.robot, setup.mapping_file, to.settings.weapons, setup.center);
@@ -177,7 +175,7 @@ ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to) {
   ReloadOutcome out{true,
                     fmt::format("reloaded (SIGHUP): mapping {}{}; not enabled until the deadman is pressed again",
                                 setup.mapping_file, to.settings.weapons ? ", WEAPONS ENABLED" : ""),
-                    to.settings.weapons};
+                    to.settings.weapons, std::move(setup.frames)};
   spdlog::info("{}", out.message);
   to.service.reloaded("");
   return out;

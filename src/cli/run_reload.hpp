@@ -16,7 +16,6 @@
 #include "andros/mapping/feedback.hpp"
 #include "andros/record/session.hpp"
 #include "andros/run/bridge.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "andros/run/feedback.hpp"
 #include "andros/view/status_board.hpp"
 #include "run_service.hpp"
@@ -26,7 +25,7 @@ namespace andros::cli {
 /// What the settings' mapping gives the run: the frame source and what the
 /// view and the rumble need from the mapping.
 struct EngineSetup {
-  std::unique_ptr<run::FrameSource> frames;
+  std::shared_ptr<mapping::FrameSource> frames;
   std::string robot;                     ///< its robot type (the settings' when the mapping names none)
   std::string mapping_file;              ///< the file loaded
   int center = mapping::kDefaultCenter;  ///< drive and pivot's rest value (for the gauges)
@@ -39,8 +38,6 @@ struct EngineSetup {
 /// Loads the mapping the settings name and builds its engine. Throws
 /// InputError for a bad mapping.
 EngineSetup load_engine(const Settings& settings);
-
-using run::ReloadableFrames;
 
 /// A reload changes the mapping (robot, mapping) and weapons. The port, baud,
 /// code, rate, input and supervisor are the link's, the clock's and the
@@ -110,19 +107,19 @@ class ReloadWorker {
 /// message is the line logged.
 using ReloadOutcome = run::ReloadOutcome;
 
-/// What a reload swaps, all owned by `run` and used on the loop's thread.
+/// What a reload swaps besides the frame source (the loop takes that from
+/// the outcome), all owned by `run` and used on the loop's thread.
 struct ReloadTargets {
   Settings& settings;
-  ReloadableFrames& frames;
   run::FeedbackNotifier& feedback;
   view::RunStatusBoard& board;
   ServiceReporter& service;
 };
 
-/// On the loop's thread: swaps in what an ok result read (frames, rumble
+/// On the loop's thread: swaps in what an ok result read (rumble
 /// table, settings, the board's robot and mapping) or keeps the old settings;
 /// logs the outcome, tells the service manager (READY=1, or the failure in
-/// STATUS=) and returns it.
+/// STATUS=) and returns it (with the new frame source, for the loop).
 ReloadOutcome apply_reload(ReloadResult result, const ReloadTargets& to);
 
 /// `run`'s reload as the loop calls it, on the loop's thread: begin() when a

@@ -13,7 +13,7 @@ std::string service_status_line(const view::RunStatus& s) {
   else if (s.enabled()) state = s.enable_text;
   else state = std::string(run::to_string(s.state)) + ": " + s.enable_text;
   std::string link = fmt::format("link {}: {}", s.link_name, link::to_string(s.link_state));
-  if (!s.motion_allowed) link += " (neutral frames only: the server stalled)";
+  if (!s.far_end_reading) link += " (neutral frames only: the server stalled)";
   else if (!s.link_detail.empty() && s.link_state != link::LinkState::kUp) link += " (" + s.link_detail + ")";
   return fmt::format("{}; {}; {}; {:g} Hz", s.robot, state, link, s.rate_hz);
 }

@@ -32,6 +32,30 @@ std::vector<BindingRef> all_bindings(const Mapping& mapping) {
   return refs;
 }
 
+ReadInputs read_inputs(const Mapping& mapping) {
+  ReadInputs out;
+  const auto note_button = [&out](input::InputKey key) {
+    if (key.is_button() && std::find(out.buttons.begin(), out.buttons.end(), key) == out.buttons.end()) {
+      out.buttons.push_back(key);
+    }
+  };
+  const auto note = [&](input::InputKey key) {
+    note_button(key);
+    if (!key.is_button() && std::find(out.axes.begin(), out.axes.end(), key) == out.axes.end()) out.axes.push_back(key);
+  };
+  if (mapping.deadman) note(mapping.deadman->key);
+  if (mapping.estop) note_button(mapping.estop->key);
+  for (const auto& layer : mapping.layers) note(layer.input.key);
+  if (mapping.scale.up) note_button(mapping.scale.up->key);
+  if (mapping.scale.down) note_button(mapping.scale.down->key);
+  for (const auto ref : all_bindings(mapping)) {
+    const auto& b = binding_at(mapping, ref);
+    for (const auto& u : b.inputs) note(u.key);
+    if (b.arm) note(b.arm->key);
+  }
+  return out;
+}
+
 std::optional<protocol::SignalId> analog_target(const Binding& binding) {
   if (const auto* a = std::get_if<AxisBinding>(&binding.rule)) return a->analog;
   if (const auto* k = std::get_if<KnobBinding>(&binding.rule)) return k->analog;

@@ -244,7 +244,7 @@ void Recorder::header(std::string_view version, std::string_view local_time, lon
     record([&] { return payload::settings(settings); });
     record([&] { return payload::link(-1, link_before); });
     link_state_ = link_before.state;
-    link_motion_ = link_before.motion_allowed;
+    link_motion_ = link_before.far_end_reading;
     link_detail_ = link_before.detail;
   });
 }
@@ -306,9 +306,9 @@ void Recorder::observe(const run::TickReport& r) noexcept {
       layer_ = r.engine.layer;
       record([&] { return payload::layer(r.t_ms, layer_); });
     }
-    if (r.link.state != link_state_ || r.link.motion_allowed != link_motion_ || r.link.detail != link_detail_) {
+    if (r.link.state != link_state_ || r.link.far_end_reading != link_motion_ || r.link.detail != link_detail_) {
       link_state_ = r.link.state;
-      link_motion_ = r.link.motion_allowed;
+      link_motion_ = r.link.far_end_reading;
       link_detail_ = r.link.detail;
       record([&] { return payload::link(r.t_ms, r.link); });
     }

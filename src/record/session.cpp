@@ -144,7 +144,7 @@ std::string layer(std::int64_t t_ms, std::string_view layer) {
 }
 std::string link(std::int64_t t_ms, const link::LinkStatus& s) {
   return "link " + std::to_string(t_ms) + " " + std::string(link::to_string(s.state)) +
-         (s.motion_allowed ? " motion " : " neutral-only ") + text_json(s.detail).dump();
+         (s.far_end_reading ? " motion " : " neutral-only ") + text_json(s.detail).dump();
 }
 std::string input_end(std::int64_t t_ms) { return "input-end " + std::to_string(t_ms); }
 std::string dropped(std::uint64_t count, std::string_view why) {
@@ -209,7 +209,7 @@ std::optional<run::Request> parse_request(std::string_view name) {
 }
 
 std::optional<run::OpState> parse_op_state(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(run::OpState::kStopping); ++i) {
+  for (int i = 0; i <= static_cast<int>(run::OpState::kShuttingDown); ++i) {
     const auto s = static_cast<run::OpState>(i);
     if (run::to_string(s) == name) return s;
   }

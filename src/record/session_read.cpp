@@ -289,7 +289,7 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     LinkRecord l;
     l.t_ms = time(f);
     l.state = f.word() == "up" ? link::LinkState::kUp : link::LinkState::kConnecting;
-    l.motion_allowed = f.word() == "motion";
+    l.far_end_reading = f.word() == "motion";
     l.detail = f.text(s.format);
     s.links.push_back(std::move(l));
   } else if (kind == "input-end") {

@@ -3,10 +3,10 @@
 #include <optional>
 
 #include "andros/base/error.hpp"
+#include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/record/recorded_loop.hpp"
 #include "andros/record/recorder.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "record_check.hpp"
 
 namespace andros::record {
@@ -16,8 +16,7 @@ namespace {
 /// with where the replay is now.
 class Playback {
  public:
-  Playback(const Session& s, const SourcesLoader& load, run::ReloadableFrames& frames)
-      : s_(s), load_(load), frames_(frames), schedule_(s.settings.rate_millihertz) {
+  Playback(const Session& s, const SourcesLoader& load) : s_(s), load_(load), schedule_(s.settings.rate_millihertz) {
     last_tick_ = s.end ? s.end->last_tick : (s.frames.empty() ? 0 : s.frames.back().tick);
   }
 
@@ -70,7 +69,7 @@ class Playback {
     const ReloadRecord& r = s_.reloads[next_reload_++];
     run::ReloadOutcome outcome = r.outcome;
     if (outcome.ok && r.settings) {
-      frames_.replace(engine_frames(*r.settings));
+      outcome.frames = engine_frames(*r.settings);
       outcome.weapons = r.settings->weapons;  // the frame gate's rule, from the settings put in place
     }
     return outcome;
@@ -86,9 +85,9 @@ class Playback {
     if (!paused) move_clock_to(ns_due(*jump));  // pause() moves it for a pause
   }
 
-  std::unique_ptr<run::FrameSource> engine_frames(const SessionSettings& settings) {
-    return run::make_engine_frames(mapping::Engine(
-        load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code}));
+  std::shared_ptr<mapping::Engine> engine_frames(const SessionSettings& settings) {
+    return std::make_shared<mapping::Engine>(
+        load_(settings.sources), mapping::EngineOptions{.weapons = settings.weapons, .code = settings.code});
   }
 
  private:
@@ -118,7 +117,6 @@ class Playback {
 
   const Session& s_;
   const SourcesLoader& load_;
-  run::ReloadableFrames& frames_;
   timing::TickSchedule schedule_;
   VirtualClock clock_;
   std::int64_t now_ms_ = -1;
@@ -166,7 +164,7 @@ class PlaybackLink final : public link::Link {
   [[nodiscard]] const std::string& name() const override { return name_; }
   [[nodiscard]] const std::string& detail() const override { return p_.link().detail; }
   [[nodiscard]] const link::LinkCounters& counters() const override { return counters_; }
-  [[nodiscard]] bool motion_allowed() const override { return p_.link().motion_allowed; }
+  [[nodiscard]] bool far_end_reading() const override { return p_.link().far_end_reading; }
 
  private:
   Playback& p_;
@@ -206,14 +204,13 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   RecordCheck check(s);
   Recorder recorder([&check](const std::string& payload) { check.made(payload); },
                     s.format >= kSpacedFormat ? kFrameRecordPeriodMs : 0);
-  run::ReloadableFrames frames(nullptr);
-  Playback playback(s, load, frames);
-  frames.replace(playback.engine_frames(s.settings));
+  Playback playback(s, load);
+  const auto engine = playback.engine_frames(s.settings);
   playback.start();
   PlaybackInput playback_input(playback, s.settings.supervised);
   RecordingInput input(playback_input, recorder);  // the request records' time is the pump's
   PlaybackLink link(playback);
-  run::Bridge bridge(playback.clock(), input, frames, link,
+  run::Bridge bridge(playback.clock(), input, *engine, link,
                      run::BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
                                         .neutral_tail_at_end = true,
                                         .rules = {s.settings.weapons, s.settings.code}});

@@ -8,11 +8,12 @@ namespace andros::run {
 Bridge::Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options)
     : clock_(clock),
       source_(input),
-      frames_(frames),
+      frames_(&frames),
       link_(link),
       options_(options),
       schedule_(options.rate_millihertz),
       machine_(link_up()),
+      guard_(frames.mapping()),
       gate_(options.rules) {}
 
 void Bridge::run(const ShutdownCheck& shutdown, const Observer& observe) {
@@ -70,10 +71,10 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
   // A suspend's and a reload's ticks do not step the engine: a stop button
   // pressed in them latches for when they end (the latch only: no row there).
   if (machine_.state() == OpState::kSuspended || machine_.state() == OpState::kReloading) {
-    answer_stops(frames_.take_stop(input_));
+    answer_stops(guard_.take_stop(input_));
   }
   switch (machine_.state()) {
-    case OpState::kStopping:
+    case OpState::kShuttingDown:
       if (neutral_frame(observe)) {
         close();
         return false;
@@ -82,7 +83,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     case OpState::kSuspended:
       if (!machine_.neutral_due()) {
         // Its frames are out: nothing is sent until the resume (a script's suspend; job control pauses below).
-        observe(report(frames_.neutral(), link::SendResult::kDown, false));
+        observe(report(frames_->neutral(), link::SendResult::kDown, false));
       } else if (neutral_frame(observe)) {
         close();
         apply(OpEvent::kNeutralSent);  // a resume that waited for the frames is answered now: no pause
@@ -98,14 +99,14 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
       // is recorded and keeps the latch (the supervisor's makes it the
       // supervisor's); reset by a reset gesture on the pad that stopped (or
       // the supervisor's), never while a stop button is held.
-      const auto stops = frames_.stopped(input_, t_ms);
+      const auto stops = guard_.stopped(input_, t_ms);
       answer_stops(stops.pressed);
       if (stops.reset) {
         apply(*stops.reset == input::Pad::kSupervisor ? OpEvent::kSupervisorReset : OpEvent::kOperatorReset);
       }
-      frames_.held_stops(input_, engine_status_);  // what the screen says is held, now
+      guard_.report_held(input_, engine_status_);  // what the screen says is held, now
       if (machine_.state() == OpState::kStopped) engine_status_.reset_hold = stops.hold;
-      send(frames_.neutral(), observe);
+      send(frames_->neutral(), observe);
       break;
     }
     case OpState::kReloading:
@@ -113,6 +114,11 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
         if (machine_.neutral_due()) apply(OpEvent::kNeutralSent);
         if (const auto outcome = control.finish_reload()) {
           if (outcome->ok) gate_.set_weapons(outcome->weapons);
+          if (outcome->ok && outcome->frames) {
+            reloaded_ = outcome->frames;
+            frames_ = reloaded_.get();
+            guard_ = DriveGuard(frames_->mapping());  // the new mapping's inputs, read afresh
+          }
           reload_refused_ = !outcome->ok;
           apply(OpEvent::kReloadDone);  // a suspend that waited for the outcome begins now
         }
@@ -121,7 +127,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     default: drive(t_ms, observe); break;
   }
   advance();
-  if (!input_failed_ && machine_.state() != OpState::kStopping && source_.finished(t_ms)) {
+  if (!input_failed_ && machine_.state() != OpState::kShuttingDown && source_.finished(t_ms)) {
     if (!options_.neutral_tail_at_end) return false;
     apply(OpEvent::kShutdown);
   }
@@ -130,13 +136,15 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
 
 void Bridge::drive(std::int64_t t_ms, const Observer& observe) {
   // The facts first: a stop button, the deadman, the panic, the timeout.
-  const mapping::InputFacts facts = frames_.facts(input_, t_ms, machine_.motion_allowed());
+  const mapping::InputFacts facts = guard_.facts(input_, t_ms, machine_.motion_allowed());
   // A link known to be down (a fault, a stalled server) is so before the frame is chosen.
   if (machine_.link_up() && !link_up()) link_changed(false);
   act(machine_.on(facts), false);
   // The machine decided; the engine maps what it allows.
-  Step step = frames_.step(input_, t_ms, machine_.motion_allowed());
+  guard_.decided(machine_.motion_allowed(), t_ms);
+  Step step = frames_->step(input_, t_ms, machine_.motion_allowed());
   engine_status_ = std::move(step.status);
+  guard_.report(input_, engine_status_);
   send(step.data, observe);
 }
 
@@ -154,7 +162,7 @@ Effect Bridge::act(Effect effect, bool reset) {
     // A stop button pressed and not yet answered is answered before the
     // rebase makes its press history (a reset takes the presses made while stopped).
     // Stopped already, a button held through it changes nothing but whose the stop is.
-    const auto pressed = frames_.take_stop(input_);
+    const auto pressed = guard_.take_stop(input_);
     const bool stopped = machine_.state() == OpState::kStopped;
     if (!reset && !stopped && pressed.by_operator) {
       effect.changed = machine_.on(OpEvent::kOperatorStop).changed || effect.changed;
@@ -162,7 +170,8 @@ Effect Bridge::act(Effect effect, bool reset) {
     if (!reset && pressed.by_supervisor && (!stopped || machine_.stopped_by() != StopBy::kSupervisor)) {
       effect.changed = machine_.on(OpEvent::kSupervisorStop).changed || effect.changed;
     }
-    frames_.restart(input_);
+    guard_.rebase(input_);
+    frames_->rebase(input_);
   }
   if (effect.neutral_frames) start_sequence();
   if (effect.begin_reload && control_ != nullptr) control_->begin_reload(reload_mapping_);
@@ -194,7 +203,7 @@ link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer
   return result;
 }
 
-bool Bridge::link_up() const { return link::carries_motion(link_.state(), link_.motion_allowed()); }
+bool Bridge::link_up() const { return link::carries_motion(link_.state(), link_.far_end_reading()); }
 
 OpEvent Bridge::link_lost_event() const {
   return link_.fault() == link::FaultLink::Fault::kTaken ? OpEvent::kLinkTaken : OpEvent::kLinkDown;
@@ -213,7 +222,7 @@ bool Bridge::sequence_done() const {
 }
 
 bool Bridge::neutral_frame(const Observer& observe) {
-  if (send(frames_.neutral(), observe) == link::SendResult::kSent) ++sequence_sent_;
+  if (send(frames_->neutral(), observe) == link::SendResult::kSent) ++sequence_sent_;
   ++sequence_ticks_;
   return sequence_done();
 }

@@ -3,53 +3,67 @@
 // operating-state machine, which orders them (suspend, resume and reload:
 // docs/safety-states.md, "Orderings"). The loop keeps only what a request
 // carries: whether a suspend stops the process, which mapping a reload reads.
+#include <array>
+
 #include "andros/run/bridge.hpp"
 
 namespace andros::run {
+namespace {
+
+using T = input::InputEvent::Type;
+
+/// The one table of the words for the machine's events from around the
+/// loop: a request (a signal, job control) and an event script's word for
+/// the same thing each become the machine's event. (The script's `stop` is
+/// the shutdown, T::kShutdown; the link's fault events act on the link, whose
+/// change the loop then tells the machine.)
+struct Word {
+  Request request;
+  T script;
+  OpEvent event;
+};
+constexpr std::array<Word, 4> kWords{{
+    {Request::kShutdown, T::kShutdown, OpEvent::kShutdown},
+    {Request::kSuspend, T::kSuspend, OpEvent::kSuspend},
+    {Request::kResumed, T::kResume, OpEvent::kResume},
+    {Request::kReload, T::kReload, OpEvent::kReloadBegin},
+}};
+
+}  // namespace
 
 void Bridge::on_request(Request request) {
-  switch (request) {
-    case Request::kNone: break;
-    case Request::kShutdown: apply(OpEvent::kShutdown); break;
-    case Request::kSuspend:
-      suspend_pauses_ = true;
-      apply(OpEvent::kSuspend);
-      break;
-    case Request::kResumed: apply(OpEvent::kResume); break;
-    case Request::kReload:
-      reload_mapping_.clear();
-      apply(OpEvent::kReloadBegin);
-      break;
+  for (const auto& w : kWords) {
+    if (w.request != request) continue;
+    // What a request carries: job control's suspend stops the process, a SIGHUP reads the configured mapping.
+    if (w.event == OpEvent::kSuspend) suspend_pauses_ = true;
+    if (w.event == OpEvent::kReloadBegin) reload_mapping_.clear();
+    apply(w.event);
   }
 }
 
 void Bridge::on_fault(const input::InputEvent& fault) {
-  using T = input::InputEvent::Type;
   switch (fault.type) {
     case T::kLinkDown:
     case T::kLinkTaken:
       link_.set_fault(fault.type == T::kLinkTaken ? link::FaultLink::Fault::kTaken : link::FaultLink::Fault::kDown);
       // Answered now: a link back before the next frame is still a new link.
       link_changed(false);
-      break;
-    case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); break;
+      return;
+    case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); return;
     case T::kLinkStalled:
       // A stalled server gets neutral frames only: the loop sees the link as lost (docs/event-scripts.md).
       link_.set_stalled(true);
       if (machine_.link_up()) link_changed(false);
-      break;
-    case T::kLinkReading: link_.set_stalled(false); break;  // back like `link up`: a new link
-    case T::kSuspend:
-      suspend_pauses_ = false;
-      apply(OpEvent::kSuspend);
-      break;
-    case T::kResume: apply(OpEvent::kResume); break;
-    case T::kReload:
-      reload_mapping_ = fault.name;
-      apply(OpEvent::kReloadBegin);
-      break;
-    case T::kShutdown: apply(OpEvent::kShutdown); break;
+      return;
+    case T::kLinkReading: link_.set_stalled(false); return;  // back like `link up`: a new link
     default: break;
+  }
+  for (const auto& w : kWords) {
+    if (w.script != fault.type) continue;
+    // What a script's event carries: its suspend does not stop the process, its reload names a mapping.
+    if (w.event == OpEvent::kSuspend) suspend_pauses_ = false;
+    if (w.event == OpEvent::kReloadBegin) reload_mapping_ = fault.name;
+    apply(w.event);
   }
 }
 

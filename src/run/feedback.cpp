@@ -4,7 +4,7 @@
 
 namespace andros::run {
 
-using mapping::EnableState;
+using mapping::DeadmanState;
 using mapping::FeedbackEvent;
 
 FeedbackStatus feedback_status(const TickReport& report) {
@@ -12,7 +12,7 @@ FeedbackStatus feedback_status(const TickReport& report) {
   // pad's light cannot say "enabled" while nothing reaches the vehicle.
   // A weapons mode only while enabled, too.
   return {report.connected,
-          report.engine.enable,
+          report.engine.deadman,
           report.enabled(),
           report.link.carries_motion(),
           report.enabled() && report.engine.weapons_mode,
@@ -25,11 +25,11 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
   std::vector<FeedbackEvent> events;
   if (after.stopped && !before.stopped) events.push_back(FeedbackEvent::kStopped);
   if (after.reset && !before.reset) events.push_back(FeedbackEvent::kStopReset);
-  if (after.enable == EnableState::kDeadmanNotFresh && before.enable != EnableState::kDeadmanNotFresh) {
+  if (after.deadman == DeadmanState::kHeldNotFresh && before.deadman != DeadmanState::kHeldNotFresh) {
     events.push_back(FeedbackEvent::kDeadmanRefused);
   }
   if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
-  if (before.enabled && !after.enabled && after.enable == EnableState::kTimedOut) {
+  if (before.enabled && !after.enabled && after.deadman == DeadmanState::kTimedOut) {
     events.push_back(FeedbackEvent::kTimedOut);
   }
   // A lost controller cannot be told anything: no "disabled" with it.

@@ -91,13 +91,13 @@ constexpr auto kTable = std::to_array<Transition>({
     settle(S::kNotEnabled, E::kResume, true),
     settle(S::kEnabled, E::kResume, true),
     settle(S::kStopped, E::kResume, true),
-    row(S::kNoLink, E::kShutdown, S::kStopping),
-    row(S::kNoController, E::kShutdown, S::kStopping),
-    row(S::kNotEnabled, E::kShutdown, S::kStopping),
-    row(S::kEnabled, E::kShutdown, S::kStopping),
-    row(S::kStopped, E::kShutdown, S::kStopping),
-    row(S::kSuspended, E::kShutdown, S::kStopping),
-    row(S::kReloading, E::kShutdown, S::kStopping),
+    row(S::kNoLink, E::kShutdown, S::kShuttingDown),
+    row(S::kNoController, E::kShutdown, S::kShuttingDown),
+    row(S::kNotEnabled, E::kShutdown, S::kShuttingDown),
+    row(S::kEnabled, E::kShutdown, S::kShuttingDown),
+    row(S::kStopped, E::kShutdown, S::kShuttingDown),
+    row(S::kSuspended, E::kShutdown, S::kShuttingDown),
+    row(S::kReloading, E::kShutdown, S::kShuttingDown),
 });
 
 }  // namespace
@@ -140,17 +140,17 @@ Effect OperatingState::on(OpEvent event) {
 }
 
 Effect OperatingState::on(const mapping::InputFacts& facts) {
-  using mapping::EnableState;
+  using mapping::DeadmanState;
   Effect effect;
   if (facts.stops.by_operator) effect |= on(E::kOperatorStop);
   if (facts.stops.by_supervisor) effect |= on(E::kSupervisorStop);
-  const bool fresh = facts.deadman == EnableState::kEnabled;
+  const bool fresh = facts.deadman == DeadmanState::kFreshHold;
   if (state_ == S::kNotEnabled && fresh) {
     effect |= on(E::kFreshPress);
   } else if (state_ == S::kEnabled && !fresh) {
-    effect |= on(facts.deadman == EnableState::kPanic      ? E::kPanic
-                 : facts.deadman == EnableState::kTimedOut ? E::kEnableTimeout
-                                                           : E::kRelease);
+    effect |= on(facts.deadman == DeadmanState::kPastPanic  ? E::kPanic
+                 : facts.deadman == DeadmanState::kTimedOut ? E::kEnableTimeout
+                                                            : E::kRelease);
   }
   return effect;
 }
@@ -209,7 +209,7 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
   state_ = to;
   effect.changed = effect.changed || changed;
   effect.rebase = effect.rebase || t->rebase;
-  if (changed && (to == S::kSuspended || to == S::kReloading || to == S::kStopping)) {
+  if (changed && (to == S::kSuspended || to == S::kReloading || to == S::kShuttingDown)) {
     // Each of these begins with its own neutral frames.
     neutral_due_ = effect.neutral_frames = true;
     effect.begin_reload = effect.begin_reload || to == S::kReloading;
@@ -219,7 +219,7 @@ bool OperatingState::apply(OpEvent event, Effect& effect) {
 
 void OperatingState::note_stop(StopBy by, input::PadId pad) {
   reset_by_.reset();
-  if (state_ == S::kStopping) return;  // the run ends on neutral frames anyway
+  if (state_ == S::kShuttingDown) return;  // the run ends on neutral frames anyway
   const bool latches = !stopped_by_;
   // A stop by both is the supervisor's: only the supervisor resets it.
   const bool taken = by == StopBy::kSupervisor && stopped_by_ != StopBy::kSupervisor;
@@ -266,7 +266,7 @@ std::string_view to_string(OpState state) {
     case S::kStopped: return "stopped";
     case S::kSuspended: return "suspended";
     case S::kReloading: return "reloading";
-    case S::kStopping: return "stopping";
+    case S::kShuttingDown: return "stopping";  // the word sessions record and the screen says since the first format
   }
   return "?";
 }

@@ -3,7 +3,6 @@
 #include <optional>
 
 #include "andros/link/fault_link.hpp"
-#include "andros/run/engine_frames.hpp"
 
 namespace andros::run {
 namespace {
@@ -27,10 +26,9 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   VirtualClock clock;
   PlayerInput input(player);
   std::string mapping_file = engine.mapping().file;
-  ReloadableFrames frames(make_engine_frames(std::move(engine)));
   link::SinkLink link(
       [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
-  Bridge bridge(clock, input, frames, link,
+  Bridge bridge(clock, input, engine, link,
                 BridgeOptions{.rate_millihertz = options.rate_millihertz,
                               .neutral_tail_at_end = false,
                               .rules = {options.engine.weapons, options.engine.code}});
@@ -54,7 +52,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   };
   control.finish_reload = [&] {
     if (outcome && outcome->ok) {
-      frames.replace(make_engine_frames(mapping::Engine(std::move(*loaded), options.engine)));
+      outcome->frames = std::make_shared<mapping::Engine>(std::move(*loaded), options.engine);
       mapping_file = loaded_file;
       loaded.reset();
     }

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "andros/mapping/axis.hpp"
-#include "andros/mapping/deadman.hpp"
+#include "andros/run/deadman.hpp"
 
 namespace andros::view {
 namespace {
@@ -42,7 +42,7 @@ HeldInputs held_inputs(const input::InputState& input, const mapping::Mapping& m
   HeldInputs out;
   out.operator_pad = op.connected();
   out.supervisor_pad = sup.connected();
-  out.deadman = mapping::Deadman(m).held(input);
+  out.deadman = run::Deadman(m).held(input);
   out.operator_stop = m.estop && held(op, *m.estop);
   out.operator_reset = chord_held(op, m.stop_reset);
   if (m.supervisor) {

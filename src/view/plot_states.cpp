@@ -48,7 +48,7 @@ std::size_t state_of(const PlotSample& p) {
                                                              : 7;
     case S::kSuspended: return 8;
     case S::kReloading: return 9;
-    case S::kStopping: return 10;
+    case S::kShuttingDown: return 10;
   }
   return 2;
 }

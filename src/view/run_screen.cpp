@@ -95,7 +95,7 @@ Line link_line(const RunStatus& s, std::size_t width) {
   Line line(std::string(kLabel) + cut_middle(s.link_name, width > fixed ? width - fixed : 0) + ": ");
   line.hang(kLabelWidth);
   line.add(std::string(to_string(s.link_state)), s.link_state == link::LinkState::kUp ? Style::kGood : Style::kAlert);
-  if (!s.motion_allowed) return line.add(" - " + s.link_detail, Style::kAlert);
+  if (!s.far_end_reading) return line.add(" - " + s.link_detail, Style::kAlert);
   return s.link_detail.empty() ? line : line.add(" - " + s.link_detail);
 }
 

@@ -163,7 +163,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
                pad_text(records.stop),
                std::string(stopper_text(records.reset)),
                pad_text(records.reset),
-               std::int64_t{t >= shutdown && records.state == run::OpState::kStopping},
+               std::int64_t{t >= shutdown && records.state == run::OpState::kShuttingDown},
                printable_text(records.layer),
                std::string(record::result_name(f))};
       const auto since = inputs ? std::optional(inputs->since_last(t)) : std::nullopt;

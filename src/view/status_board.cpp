@@ -18,7 +18,7 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.refusal, r.state,
                   r.stopped_by, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
-                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.motion_allowed, r.link.detail);
+                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.far_end_reading, r.link.detail);
 }
 
 }  // namespace
@@ -62,8 +62,8 @@ void RunStatusBoard::observe(const run::TickReport& r) {
       s.speed = r.engine.speed;
       s.armed = s.weapons_mode && r.engine.armed;
       s.link_state = r.link.state;
-      s.motion_allowed = r.link.motion_allowed;
-      s.link_detail = s.motion_allowed ? r.link.detail : kNeutralOnly;
+      s.far_end_reading = r.link.far_end_reading;
+      s.link_detail = s.far_end_reading ? r.link.detail : kNeutralOnly;
       said_ = r;
     }
   }
@@ -93,8 +93,8 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     if (!before.shutting_down()) spdlog::info("stopping: sending neutral frames");
     return;
   }
-  if (before.motion_allowed != after.motion_allowed) {
-    if (after.motion_allowed)
+  if (before.far_end_reading != after.far_end_reading) {
+    if (after.far_end_reading)
       spdlog::info("link {}: the server is reading again: frames follow the controller", after.link_name);
     else spdlog::warn("link {}: {}", after.link_name, kNeutralOnly);
   }
@@ -186,17 +186,17 @@ std::string state_text(const run::TickReport& r) {
       if (r.entered_by == run::OpEvent::kResume) return afresh("resumed");
       if (r.supervisor_back) return afresh("supervisor's controller back");
       // At start-up, or a controller just connected, released is no cause: what enables is.
-      if (r.engine.enable == mapping::EnableState::kDeadmanReleased) {
+      if (r.engine.deadman == mapping::DeadmanState::kReleased) {
         if (!r.entered_by) return "press the deadman to enable";
         if (r.entered_by == run::OpEvent::kControllerUp) return "controller connected: press the deadman to enable";
       }
-      return std::string(describe(r.engine.enable));
+      return std::string(describe(r.engine.deadman));
     }
     case OpState::kEnabled: return enable_text(r.engine);
     case OpState::kStopped: return stopped_by_text(r) + ": " + stopped_text(r);
     case OpState::kSuspended: return "neutral frames sent, link closed until resumed";
     case OpState::kReloading: return "neutral frames while the settings are read";
-    case OpState::kStopping: return "sending neutral frames";
+    case OpState::kShuttingDown: return "sending neutral frames";
   }
   return "?";
 }
@@ -267,8 +267,8 @@ std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {
 }
 
 std::string enable_text(const mapping::EngineStatus& status) {
-  std::string text(describe(status.enable));
-  if (status.enable != mapping::EnableState::kEnabled || status.held_back.empty()) return text;
+  std::string text(describe(status.deadman));
+  if (status.deadman != mapping::DeadmanState::kFreshHold || status.held_back.empty()) return text;
   text += "; at rest first:";
   for (const auto key : status.held_back) text += " " + input::input_name(key);
   return text;

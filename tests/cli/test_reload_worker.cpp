@@ -17,7 +17,6 @@
 
 #include "andros/cli/command_line.hpp"
 #include "cli/run_reload.hpp"
-#include "support/frame_doubles.hpp"
 #include "support/temp_dir.hpp"
 
 namespace andros::cli {
@@ -205,23 +204,6 @@ TEST_F(ReloadRead, RefusesWhatNeedsARestartAndABadFile) {
   EXPECT_EQ(read_reload(flags, running).error, conf_ + ":3:1: error: key 'weapons' given twice (first at line 1)");
 }
 
-/// A frame source that says which one it is in its neutral frame.
-class Marked final : public testing::WithoutStops {
- public:
-  explicit Marked(std::uint8_t mark) { neutral_[0] = mark; }
-  mapping::InputFacts facts(const input::InputState& /*input*/, std::int64_t /*now_ms*/, bool /*enabled*/) override {
-    return {};
-  }
-  run::Step step(const input::InputState& /*input*/, std::int64_t /*now_ms*/, bool /*motion_allowed*/) override {
-    return {neutral_, {}};
-  }
-  [[nodiscard]] protocol::DataBytes neutral() const override { return neutral_; }
-  void restart(const input::InputState&) override {}
-
- private:
-  protocol::DataBytes neutral_{};
-};
-
 class NoInput final : public input::InputSource {
  public:
   void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
@@ -240,28 +222,27 @@ TEST_F(ReloadRead, RunReloadSwapsOnTheCallersThreadOnlyWhenFinishGivesTheOutcome
   dir_.write("bridge.conf", "mapping=plain.yaml\n");
   const auto flags = run_flags("--config " + conf_);
   Settings settings = resolve_settings(flags, ConfigRead::kStart);
-  ReloadableFrames frames(std::make_unique<Marked>(0xAA));
   NoInput input;
   run::FeedbackNotifier feedback({}, input);
   view::RunStatusBoard board(view::RunStatus{});
   ServiceReporter service{ServiceNotifier{}};
-  RunReload reload(flags, ReloadTargets{settings, frames, feedback, board, service});
+  RunReload reload(flags, ReloadTargets{settings, feedback, board, service});
 
   dir_.write("bridge.conf", "mapping=plain.yaml\nweapons=enabled\n");
   reload.begin();
-  EXPECT_EQ(frames.neutral()[0], 0xAA) << "swapped before finish()";
+  EXPECT_FALSE(settings.weapons) << "swapped before finish()";
   const auto ok = wait_for(reload);
   ASSERT_TRUE(ok);
   EXPECT_TRUE(ok->ok) << ok->message;
   EXPECT_EQ(ok->message, "reloaded (SIGHUP): mapping " + mapping_ +
                              ", WEAPONS ENABLED; not enabled until the deadman is pressed again");
-  EXPECT_NE(frames.neutral()[0], 0xAA);
+  ASSERT_TRUE(ok->frames) << "the new frame source, for the loop to take";
+  EXPECT_EQ(ok->frames->mapping().file, mapping_);
   EXPECT_TRUE(settings.weapons);
   EXPECT_TRUE(board.status().weapons);
   EXPECT_EQ(board.status().mapping_file, mapping_);
   EXPECT_FALSE(reload.finish()) << "the outcome is given once";
 
-  frames.replace(std::make_unique<Marked>(0xBB));
   dir_.write("bridge.conf", "mapping=plain.yaml\nrobot=R2D2\n");
   reload.begin();
   const auto bad = wait_for(reload);
@@ -270,7 +251,7 @@ TEST_F(ReloadRead, RunReloadSwapsOnTheCallersThreadOnlyWhenFinishGivesTheOutcome
   EXPECT_NE(bad->message.find("reload (SIGHUP) failed, the old settings stay: " + conf_ + ":2:7: error: unknown robot"),
             std::string::npos)
       << bad->message;
-  EXPECT_EQ(frames.neutral()[0], 0xBB);
+  EXPECT_FALSE(bad->frames) << "the old frame source stays";
   EXPECT_TRUE(settings.weapons);
 }
 

@@ -94,7 +94,7 @@ TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
   TcpLink link(TcpAddress{"127.0.0.1", std::to_string(server.port)});
   auto conn = server.accept_while_sending(link, frame_with_drive(200));
   ASSERT_TRUE(conn);
-  EXPECT_TRUE(link.motion_allowed());
+  EXPECT_TRUE(link.far_end_reading());
   // 25 Hz, never read: at most 5 s for the link to give up on the server.
   int ticks = 0;
   for (; ticks < 125 && link.counters().losses == 0; ++ticks) {
@@ -107,7 +107,7 @@ TEST(TcpLink, AServerThatStopsReadingIsDroppedWithFewFramesWaiting) {
   EXPECT_GT(link.counters().busy, 0u);
   EXPECT_LE(frames_waiting(conn.get()), 32u);  // docs/running.md
   // Until it is seen reading, it is sent nothing that moves (the run loop asks).
-  EXPECT_FALSE(link.motion_allowed());
+  EXPECT_FALSE(link.far_end_reading());
   // The link comes back on its own, but the server that stalled has not been
   // seen reading since: what it acknowledges does not count as delivered.
   auto again = server.accept_while_sending(link, frame_with_drive(128));

@@ -17,22 +17,22 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
   DrivenEngine engine(hd1_mapping(), EngineOptions{});
   input::InputState in;
   auto f = protocol::read_signals(engine.step(in, 0));
-  EXPECT_EQ(engine.status().enable, EnableState::kNoController);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kNoPad);
   EXPECT_EQ(f[protocol::signal_id("safety")], 0);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
   EXPECT_TRUE(protocol::validation_errors(engine.step(in, 40)).empty());
 
   apply_script(in, "80 connect pad\n80 button leftshoulder 1\n80 axis lefty -32768\n");
   f = protocol::read_signals(engine.step(in, 80));
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kHeldNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
 
   apply_script(in, "90 button leftshoulder 0\n");
   engine.step(in, 100);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("safety")], 1);
   EXPECT_EQ(f[protocol::signal_id("drive_brake")], 1);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);  // pushed since before the press: at rest first
@@ -48,7 +48,7 @@ TEST(Engine, NeutralUntilFreshDeadmanThenDrives) {
 
   apply_script(in, "210 disconnect\n");
   f = protocol::read_signals(engine.step(in, 240));
-  EXPECT_EQ(engine.status().enable, EnableState::kNoController);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kNoPad);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
   EXPECT_EQ(f[protocol::signal_id("safety")], 0);
   EXPECT_EQ(protocol::read_signals(engine.neutral())[protocol::signal_id("drive")], 128);
@@ -74,14 +74,14 @@ TEST(Engine, PressesBeforeStartUpAreNotFresh) {
   input::InputState in;
   apply_script(in, "0 connect\n5 button leftshoulder 1\n");  // pressed before the engine's first tick
   engine.step(in, 10);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
-  EXPECT_NE(describe(engine.status().enable).find("press it again"), std::string_view::npos);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kHeldNotFresh);
+  EXPECT_NE(describe(engine.status().deadman).find("press it again"), std::string_view::npos);
   apply_script(in, "20 button leftshoulder 0\n");
   engine.step(in, 30);
   apply_script(in, "40 button leftshoulder 1\n");
   engine.step(in, 50);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
-  EXPECT_EQ(describe(EnableState::kEnabled), "enabled");
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
+  EXPECT_EQ(describe(DeadmanState::kFreshHold), "enabled");
 }
 
 TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
@@ -92,20 +92,20 @@ TEST(Engine, AfterARestartTheHeldDeadmanIsNotFreshAndTogglesAreOff) {
   engine.step(in, 20);  // enabled; the stick and x act from the next frame (the rest rule)
   apply_script(in, "30 axis lefty -32768\n30 button x 1\n35 button x 0\n");
   auto f = protocol::read_signals(engine.step(in, 40));
-  ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
+  ASSERT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   ASSERT_EQ(f[protocol::signal_id("drive")], 255);
   ASSERT_EQ(f[protocol::signal_id("tool_on")], 1);
   apply_script(in, "50 button y 1\n");  // a press while stopped is history too
   engine.restart(in);                   // the process was stopped (Ctrl-Z) and continued, the deadman held throughout
   f = protocol::read_signals(engine.step(in, 80));
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kHeldNotFresh);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 0);
   apply_script(in, "90 button leftshoulder 0\n95 axis lefty 0\n");
   engine.step(in, 100);
   apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 0);  // the toggle did not come back
   apply_script(in, "130 axis lefty -32768\n");
   EXPECT_EQ(protocol::read_signals(engine.step(in, 160))[protocol::signal_id("drive")], 255);
@@ -119,13 +119,13 @@ TEST(Engine, TriggerDeadmanMustBeSeenReleased) {
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 axis lefttrigger 32767\n0 button a 1\n");
   EXPECT_EQ(protocol::read_signals(engine.step(in, 40))[protocol::signal_id("tool_on")], 0);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kHeldNotFresh);
   apply_script(in, "50 axis lefttrigger 16383\n");  // below half way: released
   engine.step(in, 80);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   apply_script(in, "90 axis lefttrigger 16384\n");
   auto f = protocol::read_signals(engine.step(in, 120));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("tool_on")], 0);  // a held since the connect: released first
   apply_script(in, "130 button a 0\n140 button a 1\n");
   f = protocol::read_signals(engine.step(in, 160));
@@ -143,11 +143,11 @@ TEST(Engine, ADeadmanLetGoAndPressedWithinOneTickIsARelease) {
   EXPECT_EQ(protocol::read_signals(engine.step(in, 80))[protocol::signal_id("drive")], 255);
   apply_script(in, "90 button leftshoulder 0\n110 button leftshoulder 1\n");
   auto f = protocol::read_signals(engine.step(in, 120));
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   EXPECT_EQ(f[protocol::signal_id("safety")], 0);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
   f = protocol::read_signals(engine.step(in, 160));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);                // held through the press: at rest first
   apply_script(in, "170 axis lefty 0\n180 axis lefty -32768\n");  // at rest and back between two ticks: not seen
   EXPECT_EQ(protocol::read_signals(engine.step(in, 200))[protocol::signal_id("drive")], 128);
@@ -163,33 +163,33 @@ TEST(Engine, APanicSqueezeWithinOneTickLatches) {
   engine.step(in, 20);  // the trigger seen released
   apply_script(in, "30 axis lefttrigger 24000\n");
   engine.step(in, 40);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   apply_script(in, "90 axis lefttrigger 32767\n110 axis lefttrigger 24000\n");
   engine.step(in, 120);
-  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kPastPanic);
   in.begin_tick();
   engine.step(in, 160);
-  EXPECT_EQ(engine.status().enable, EnableState::kPanic);  // latched until fully released
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kPastPanic);  // latched until fully released
   // Fully released and squeezed again within one tick: the latch ends, and the squeeze after it is fresh.
   apply_script(in, "170 axis lefttrigger 0\n180 axis lefttrigger 24000\n");
   engine.step(in, 200);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   in.begin_tick();
   engine.step(in, 240);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   apply_script(in, "250 axis lefttrigger 32767\n260 axis lefttrigger 0\n");  // past it and fully back: released
   engine.step(in, 280);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   // Which came first within a tick is not known: a squeeze with a full release and back keeps the latch.
   apply_script(in, "290 axis lefttrigger 24000\n");
   engine.step(in, 320);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   apply_script(in, "330 axis lefttrigger 0\n340 axis lefttrigger 32767\n350 axis lefttrigger 24000\n");
   engine.step(in, 360);
-  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kPastPanic);
   in.begin_tick();
   engine.step(in, 400);
-  EXPECT_EQ(engine.status().enable, EnableState::kPanic);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kPastPanic);
 }
 
 TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
@@ -199,7 +199,7 @@ TEST(Engine, ANewPadBetweenTwoEnabledFramesIsAChangeOfMeaning) {
   // Lost, back with the stick pushed, and the deadman pressed afresh, all in one frame.
   apply_script(in, "50 disconnect\n60 connect\n60 axis lefty -32768\n70 button leftshoulder 1\n");
   const auto f = protocol::read_signals(engine.step(in, 80));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("drive")], 128);
 }
 
@@ -228,7 +228,7 @@ TEST(Engine, ACenterTrimMovesOnlyTheEnabledRest) {
 
   apply_script(in, "90 button leftshoulder 1\n90 axis lefty -32768\n");
   auto f = protocol::read_signals(engine.step(in, 120));
-  ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
+  ASSERT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[drive], 124) << "enabled, the stick held back until at rest: the trimmed rest";
   apply_script(in, "130 axis lefty 0\n");
   f = protocol::read_signals(engine.step(in, 160));

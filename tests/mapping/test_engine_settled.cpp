@@ -67,7 +67,7 @@ TEST(EngineSettled, AStepFromUnchangedControllersReusesTheFrameComputingWouldGiv
   EXPECT_TRUE(twin.step(80));
   apply_script(twin.in, "100 connect\n110 button leftshoulder 1\n120 axis lefty -16384\n");
   EXPECT_FALSE(twin.step(120));  // the controller changed
-  EXPECT_EQ(twin.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kFreshHold);
   EXPECT_TRUE(twin.step(160));  // the same controller: computed once more, and nothing changed
   EXPECT_EQ(twin.steps(200, 600), 10);
   EXPECT_EQ(twin.last[protocol::signal_id("drive")], 128);  // pushed through the deadman press: held back
@@ -92,7 +92,7 @@ TEST(EngineSettled, AStepFromUnchangedControllersReusesTheFrameComputingWouldGiv
   twin.restart();  // the loop's rebase: every press history, the deadman pressed afresh
   EXPECT_FALSE(twin.settled());
   EXPECT_FALSE(twin.step(1200));
-  EXPECT_EQ(twin.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kHeldNotFresh);
   EXPECT_EQ(twin.last[protocol::signal_id("tool_on")], 0);
 }
 
@@ -116,14 +116,14 @@ TEST(EngineSettled, TheEnableTimeoutEndsASettledStretchOnItsTick) {
   twin.step(0);
   apply_script(twin.in, "0 connect\n10 button leftshoulder 1\n");
   twin.step(40);  // enabled at 40: the timeout runs from there
-  EXPECT_EQ(twin.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(twin.steps(80, 1040), 24);
-  EXPECT_EQ(twin.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kFreshHold);
   EXPECT_FALSE(twin.step(1040));  // 1 s with no input change: computed, and timed out
-  EXPECT_EQ(twin.status().enable, EnableState::kTimedOut);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kTimedOut);
   EXPECT_EQ(twin.last[protocol::signal_id("safety")], 0);
   EXPECT_EQ(twin.steps(1080, 1400), 8);
-  EXPECT_EQ(twin.status().enable, EnableState::kTimedOut);
+  EXPECT_EQ(twin.status().deadman, DeadmanState::kTimedOut);
 }
 
 TEST(EngineSettled, TheNeutralFrameKeepsUpWithTheLevels) {

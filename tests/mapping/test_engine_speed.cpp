@@ -167,7 +167,7 @@ TEST(EngineSpeed, PressesWhileNotEnabledOrInTheEnablingFrameDoNothing) {
   EXPECT_EQ(engine.status().speed.index, 0U);
   apply_script(in, "50 button y 1\n55 button y 0\n60 button leftshoulder 1\n");
   engine.step(in, 80);  // the enabling frame: its presses meant nothing yet
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(engine.status().speed.index, 0U);
   apply_script(in, "90 button y 1\n");
   engine.step(in, 120);
@@ -198,7 +198,7 @@ TEST(EngineSpeed, KeptAcrossADeadmanReleaseBackToInitialOnANewPadAndARestart) {
 
   apply_script(in, "90 button leftshoulder 0\n");  // released: not enabled, the level kept
   engine.step(in, 120);
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanReleased);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kReleased);
   EXPECT_EQ(engine.status().speed.index, 2U);
   apply_script(in, "130 button leftshoulder 1\n140 axis lefty -32768\n");
   engine.step(in, 160);  // enabled again: the stick pushed in the enabling frame waits

@@ -27,7 +27,7 @@ DrivenEngine stopped_at_80(input::InputState& in, const std::string& mapping = k
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n");
   engine.step(in, 40);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   apply_script(in, "50 button guide 1\n60 button guide 0\n");
   engine.step(in, 80);
   EXPECT_TRUE(engine.status().stop_pressed.by_operator);

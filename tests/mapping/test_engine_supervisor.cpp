@@ -34,7 +34,7 @@ void start_both(DrivenEngine& engine, input::InputState& in, const std::string& 
   engine.step(in, 0);
   apply_script(in, "0 connect\n0 supervisor connect\n10 button leftshoulder 1\n" + also);
   engine.step(in, 40);
-  ASSERT_EQ(engine.status().enable, EnableState::kEnabled);
+  ASSERT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
 }
 
 TEST(EngineSupervisor, TheSupervisorsStopIsReportedPressedAndWhileHeld) {
@@ -120,7 +120,7 @@ TEST(EngineSupervisor, AConsentHeldSinceBeforeCountsOnlyOnceReleasedAndPressedAg
   engine.step(in, 40);  // not enabled: consent means nothing yet
   apply_script(in, "50 button leftshoulder 1\n60 button rightshoulder 1\n");
   EXPECT_EQ(weapon_1(engine.step(in, 80)), 0);
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(engine.status().consent, ConsentState::kHeldBack);
   apply_script(in, "90 button b 1\n");
   EXPECT_EQ(weapon_1(engine.step(in, 120)), 0);  // armed and fired, but the consent is stale
@@ -192,13 +192,13 @@ TEST(EngineSupervisor, TheSupervisorsControllerBackNeedsAFreshDeadmanPress) {
   start_both(engine, in, "20 button dpup 1\n");
   apply_script(in, "50 supervisor disconnect\n60 supervisor connect\n");
   auto f = protocol::read_signals(engine.step(in, 80));
-  EXPECT_EQ(engine.status().enable, EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kHeldNotFresh);
   EXPECT_EQ(f[protocol::signal_id("front_art_up")], 0);
   apply_script(in, "90 button leftshoulder 0\n");
   engine.step(in, 100);
   apply_script(in, "110 button leftshoulder 1\n");
   f = protocol::read_signals(engine.step(in, 120));
-  EXPECT_EQ(engine.status().enable, EnableState::kEnabled);
+  EXPECT_EQ(engine.status().deadman, DeadmanState::kFreshHold);
   EXPECT_EQ(f[protocol::signal_id("front_art_up")], 0);  // dpup, held across, waits for a release
   EXPECT_EQ(engine.status().held_back, std::vector{*input::parse_button_name("dpup")});
 }

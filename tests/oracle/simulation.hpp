@@ -72,7 +72,7 @@ inline std::string script_text(const std::vector<input::InputEvent>& script) {
 // [rule: loop-says-stop]
 inline std::string stop_said(run::OpState state, bool latched) {
   using S = run::OpState;
-  if (state == S::kSuspended || state == S::kReloading || state == S::kStopping) return {};
+  if (state == S::kSuspended || state == S::kReloading || state == S::kShuttingDown) return {};
   if (latched == (state == S::kStopped)) return {};
   return "the loop said \"" + std::string(run::to_string(state)) + "\" where the stop is " +
          (latched ? "latched, not reset" : "reset (or none was latched)");

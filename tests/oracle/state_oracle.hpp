@@ -84,8 +84,8 @@ class StateOracle {
     }
 
     const bool enabled = after == S::kEnabled;
-    if (was_shut && after != S::kStopping) return "left stopping: a shutdown is for good";
-    if (shutdown_ && after != S::kStopping) return "a shutdown did not lead to stopping";
+    if (was_shut && after != S::kShuttingDown) return "left stopping: a shutdown is for good";
+    if (shutdown_ && after != S::kShuttingDown) return "a shutdown did not lead to stopping";
     if (was_shut && effect.changed) return "a change after the shutdown";
     if (enabled && before != S::kEnabled && !(event == E::kFreshPress && before == S::kNotEnabled)) {
       return "enabled other than by a fresh deadman press in not enabled";
@@ -98,7 +98,8 @@ class StateOracle {
     if (!shutdown_ && latched != stop_) return stop_ ? "a stop not latched" : "a stop latched with none pressed";
     // A latched stop outlives everything but its reset: while it holds, the
     // machine shows it, or is suspended, reloading or shutting down.
-    if (stop_ && after != S::kStopped && after != S::kSuspended && after != S::kReloading && after != S::kStopping) {
+    if (stop_ && after != S::kStopped && after != S::kSuspended && after != S::kReloading &&
+        after != S::kShuttingDown) {
       return "a latched stop left other than by its reset";
     }
     return "";

@@ -14,12 +14,12 @@
 
 #include "andros/input/script_input.hpp"
 #include "andros/link/fault_link.hpp"
+#include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/signals.hpp"
 #include "andros/record/recorded_loop.hpp"
 #include "andros/record/recorder.hpp"
 #include "andros/record/session_replay.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "andros/timing/rate.hpp"
 #include "support/temp_dir.hpp"
 
@@ -84,8 +84,7 @@ std::string busy_script(int seconds) {
 /// clock; with the recorder writing to writer when given.
 std::vector<protocol::Frame> run_loop(const std::string& script_path, SessionWriter* writer) {
   input::ScriptInput script(script_path);
-  run::ReloadableFrames frames(run::make_engine_frames(
-      mapping::Engine(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{})));
+  mapping::Engine frames(mapping::load_mapping(kMappings + "/hd1.yaml"), mapping::EngineOptions{});
   std::vector<protocol::Frame> got;
   link::SinkLink link([&got](std::int64_t, const protocol::Frame& f) { got.push_back(f); });
   VirtualClock clock;
@@ -222,11 +221,11 @@ struct RecordedRun {
                         .input = input_name,
                         .config = "",
                         .sources = read_mapping_sources(m->chain)};
-      return std::make_pair(
-          run::make_engine_frames(mapping::Engine(std::move(m), mapping::EngineOptions{.weapons = weapons})), s);
+      return std::make_pair(std::make_shared<mapping::Engine>(std::move(m), mapping::EngineOptions{.weapons = weapons}),
+                            s);
     };
     auto [first, settings] = engine_for(kMappings + "/hd1.yaml", false);
-    run::ReloadableFrames frames(std::move(first));
+    mapping::Engine& frames = *first;
     VirtualClock clock;
     link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
     SessionWriter writer(std::make_unique<FileRecordSink>(session.string()));
@@ -246,9 +245,8 @@ struct RecordedRun {
     control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
       if (++reload_ticks < 4) return std::nullopt;  // the worker still reads
       auto [next, s] = engine_for(reload_file, true);
-      frames.replace(std::move(next));
       reloaded = s;
-      return run::ReloadOutcome{true, "reloaded", true};
+      return run::ReloadOutcome{true, "reloaded", true, std::move(next)};
     };
     bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const run::TickReport& r) {
       recorder.observe(r);

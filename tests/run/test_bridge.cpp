@@ -21,23 +21,17 @@ namespace {
 /// What the frame gate holds the stand-in's frames to: its code, no weapons.
 const FrameRules kRules{false, 0x3C};
 
-/// A stand-in for the mapping engine: drive 200 while button a is held,
-/// pressed after the last restart.
+/// A stand-in for the mapping engine: drive 200 while motion is allowed,
+/// its deadman button a (the loop's guard decides when a press is fresh).
 class PressToDrive final : public testing::WithoutStops {
  public:
-  mapping::InputFacts facts(const input::InputState& input, std::int64_t, bool) override {
-    const auto a = input.button(*input::parse_button_name("a"));
-    const bool fresh = input.connected() && a.down && a.presses > base_;
-    return {fresh ? mapping::EnableState::kEnabled : mapping::EnableState::kDeadmanReleased, {}};
-  }
-  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
+  PressToDrive() : WithoutStops(input::parse_button_name("a")) {}
+  Step step(const input::InputState& /*input*/, std::int64_t /*now_ms*/, bool motion_allowed) override {
     protocol::ControlState s;
     s[protocol::signal_id("drive")] = motion_allowed ? 200 : 128;
     s[protocol::signal_id("pivot")] = 128;
     s[protocol::signal_id("safety")] = motion_allowed ? 1 : 0;
-    mapping::EngineStatus status;
-    status.enable = facts(input, now_ms, motion_allowed).deadman;
-    return Step{protocol::FrameBuilder(0x3C).build(s), status};
+    return Step{protocol::FrameBuilder(0x3C).build(s), {}};
   }
   protocol::DataBytes neutral() const override {
     protocol::ControlState s;
@@ -45,14 +39,8 @@ class PressToDrive final : public testing::WithoutStops {
     s[protocol::signal_id("pivot")] = 128;
     return protocol::FrameBuilder(0x3C).build(s);
   }
-  void restart(const input::InputState& now) override {
-    ++restarts;
-    base_ = now.button(*input::parse_button_name("a")).presses;
-  }
+  void rebase(const input::InputState& /*now*/) override { ++restarts; }
   int restarts = 0;
-
- private:
-  std::uint32_t base_ = 0;
 };
 
 /// An input that never ends.
@@ -142,9 +130,9 @@ TEST(Bridge, EachReportCarriesTheStepsStatusTheStateAndTheLinksState) {
     EXPECT_TRUE(r.connected) << "tick " << i;
     EXPECT_EQ(r.controller, "pad");
     // Shutting down, the status is the last step's.
-    const auto enable = i == 0 ? mapping::EnableState::kDeadmanReleased : mapping::EnableState::kEnabled;
-    EXPECT_EQ(r.engine.enable, enable) << "tick " << i;
-    const auto state = i == 0 ? OpState::kNotEnabled : i < 4 ? OpState::kEnabled : OpState::kStopping;
+    const auto enable = i == 0 ? mapping::DeadmanState::kReleased : mapping::DeadmanState::kFreshHold;
+    EXPECT_EQ(r.engine.deadman, enable) << "tick " << i;
+    const auto state = i == 0 ? OpState::kNotEnabled : i < 4 ? OpState::kEnabled : OpState::kShuttingDown;
     EXPECT_EQ(r.state, state) << "tick " << i;
     EXPECT_EQ(r.data[7], i == 0 || r.shutting_down() ? 128 : 200) << "tick " << i;
     EXPECT_EQ(r.link.counters.sent, i + 1) << "tick " << i;
@@ -364,16 +352,13 @@ TEST(Bridge, KeepsTicksWhileTheLinkIsDownAndSaysNoLink) {
 /// Stalls once, at tick 2, for 130 ms (more than three periods at 25 Hz).
 class StallOnce final : public testing::WithoutStops {
  public:
-  explicit StallOnce(VirtualClock& clock) : clock_(clock) {}
-  mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) override {
-    return inner_.facts(input, now_ms, enabled);
-  }
+  explicit StallOnce(VirtualClock& clock) : WithoutStops(input::parse_button_name("a")), clock_(clock) {}
   Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
     if (now_ms == 80) clock_.advance(std::chrono::milliseconds(130));
     return inner_.step(input, now_ms, motion_allowed);
   }
   protocol::DataBytes neutral() const override { return inner_.neutral(); }
-  void restart(const input::InputState&) override {}
+  void rebase(const input::InputState& /*now*/) override {}
 
  private:
   VirtualClock& clock_;

@@ -6,14 +6,14 @@
 namespace andros::run {
 namespace {
 
-using mapping::EnableState;
+using mapping::DeadmanState;
 using E = mapping::FeedbackEvent;
 using Events = std::vector<E>;
 
-constexpr FeedbackStatus kIdle{false, EnableState::kNoController, false, true};
-constexpr FeedbackStatus kConnected{true, EnableState::kDeadmanReleased, false, true};
-constexpr FeedbackStatus kRefused{true, EnableState::kDeadmanNotFresh, false, true};
-constexpr FeedbackStatus kEnabled{true, EnableState::kEnabled, true, true};
+constexpr FeedbackStatus kIdle{false, DeadmanState::kNoPad, false, true};
+constexpr FeedbackStatus kConnected{true, DeadmanState::kReleased, false, true};
+constexpr FeedbackStatus kRefused{true, DeadmanState::kHeldNotFresh, false, true};
+constexpr FeedbackStatus kEnabled{true, DeadmanState::kFreshHold, true, true};
 
 FeedbackStatus link_down(FeedbackStatus s) {
   s.link_up = false;
@@ -43,8 +43,8 @@ TEST(FeedbackEvents, AStopAndATimeoutHaveTheirOwn) {
   TickReport r;
   r.connected = true;
   r.link.state = link::LinkState::kUp;
-  r.link.motion_allowed = true;
-  r.engine.enable = EnableState::kEnabled;
+  r.link.far_end_reading = true;
+  r.engine.deadman = DeadmanState::kFreshHold;
   r.state = OpState::kStopped;
   const auto stopped = feedback_status(r);
   EXPECT_TRUE(stopped.stopped);
@@ -52,12 +52,12 @@ TEST(FeedbackEvents, AStopAndATimeoutHaveTheirOwn) {
   EXPECT_TRUE(feedback_events(stopped, stopped).empty());
   // The timeout: its own event, before "disabled".
   r.state = OpState::kNotEnabled;
-  r.engine.enable = EnableState::kTimedOut;
+  r.engine.deadman = DeadmanState::kTimedOut;
   EXPECT_EQ(feedback_events(kEnabled, feedback_status(r)), (Events{E::kTimedOut, E::kDisabled}));
   // Their patterns are the stop's red and a light of their own.
   EXPECT_EQ(mapping::default_feedback_pattern(E::kStopped).led, (std::array<std::uint8_t, 3>{255, 0, 0}));
   // A reset: a rumble of its own, once, when the stop ends by it (not by a suspend).
-  r.engine.enable = EnableState::kDeadmanReleased;
+  r.engine.deadman = DeadmanState::kReleased;
   r.reset_by = StopBy::kSupervisor;
   const auto reset = feedback_status(r);
   EXPECT_EQ(feedback_events(stopped, reset), Events{E::kStopReset});
@@ -71,7 +71,7 @@ TEST(FeedbackStatus, EnabledIsTheOperatingStatesNotTheEngines) {
   // The engine saw a fresh press, but nothing reaches the vehicle: the light stays off.
   TickReport r;
   r.connected = true;
-  r.engine.enable = EnableState::kEnabled;
+  r.engine.deadman = DeadmanState::kFreshHold;
   r.state = OpState::kNoLink;
   EXPECT_FALSE(feedback_status(r).enabled);
   EXPECT_EQ(feedback_events(kConnected, feedback_status(r)), Events{E::kLinkLost});  // no kEnabled

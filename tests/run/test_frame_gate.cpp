@@ -12,10 +12,10 @@
 
 #include "andros/base/text_file.hpp"
 #include "andros/input/script_player.hpp"
+#include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/record/recorder.hpp"
 #include "andros/record/session.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "andros/run/frame_gate.hpp"
 #include "support/faulty_frames.hpp"
 #include "support/temp_dir.hpp"
@@ -105,8 +105,9 @@ struct GateRun {
 GateRun run_gated(const std::string& script, bool weapons, std::optional<test::EngineFault> fault,
                   const RunControl& control = {}) {
   TextInput input(script);
-  auto engine = make_engine_frames(mapping::Engine(mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"),
-                                                   mapping::EngineOptions{.weapons = weapons, .code = kCode}));
+  std::unique_ptr<FrameSource> engine =
+      std::make_unique<mapping::Engine>(mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"),
+                                        mapping::EngineOptions{.weapons = weapons, .code = kCode});
   if (fault) engine = std::make_unique<test::FaultyFrames>(std::move(engine), *fault);
   VirtualClock clock;
   GateRun out;

@@ -19,7 +19,7 @@ using S = OpState;
 using E = OpEvent;
 
 constexpr std::array kStates = {S::kNoLink,  S::kNoController, S::kNotEnabled, S::kEnabled,
-                                S::kStopped, S::kSuspended,    S::kReloading,  S::kStopping};
+                                S::kStopped, S::kSuspended,    S::kReloading,  S::kShuttingDown};
 constexpr std::array kEvents = {E::kLinkUp,         E::kLinkDown,        E::kLinkTaken,      E::kControllerUp,
                                 E::kControllerDown, E::kFreshPress,      E::kRelease,        E::kPanic,
                                 E::kEnableTimeout,  E::kOperatorStop,    E::kSupervisorStop, E::kGateTrip,
@@ -52,7 +52,7 @@ OperatingState reach(const Start& start) {
     case S::kStopped: m.on(E::kOperatorStop); break;
     case S::kSuspended: m.on(E::kSuspend); break;
     case S::kReloading: m.on(E::kReloadBegin); break;
-    case S::kStopping: m.on(E::kShutdown); break;
+    case S::kShuttingDown: m.on(E::kShutdown); break;
   }
   if (start.sent) m.on(E::kNeutralSent);
   return m;
@@ -65,7 +65,7 @@ std::vector<Start> starts() {
                             {S::kNoController, true, false},
                             {S::kNotEnabled, true, true},
                             {S::kEnabled, true, true}};
-  for (const auto s : {S::kStopped, S::kSuspended, S::kReloading, S::kStopping}) {
+  for (const auto s : {S::kStopped, S::kSuspended, S::kReloading, S::kShuttingDown}) {
     for (const bool link : {false, true}) {
       for (const bool pad : {false, true}) {
         // Enabled first where it can be, so that the stop, suspend or reload interrupts driving.
@@ -201,7 +201,7 @@ TEST(OperatingState, TheOperatorsStopLatchesThroughEverythingButItsClearing) {
   // of two further events but the clearing and a shutdown leaves it for a
   // state that may send anything: a suspend or a reload comes back to it.
   for (const auto& start : starts()) {
-    if (start.state == S::kStopping) continue;
+    if (start.state == S::kShuttingDown) continue;
     for (const auto first : kEvents) {
       for (const auto second : kEvents) {
         if (is_reset(first) || is_reset(second)) continue;
@@ -336,17 +336,17 @@ TEST(OperatingState, ASecondReloadBeginsItAgainAndAShutdownEndsWhatWaits) {
   EXPECT_TRUE(m.neutral_due());
   m.on(E::kSuspend);
   m.on(E::kShutdown);
-  EXPECT_EQ(m.state(), S::kStopping);
+  EXPECT_EQ(m.state(), S::kShuttingDown);
   EXPECT_FALSE(m.waiting(E::kSuspend));
   m.on(E::kReloadDone);
-  EXPECT_EQ(m.state(), S::kStopping);
+  EXPECT_EQ(m.state(), S::kShuttingDown);
 }
 
 TEST(OperatingState, StoppingIsTheEnd) {
   for (const auto event : kEvents) {
-    auto m = reach({S::kStopping, true, true});
+    auto m = reach({S::kShuttingDown, true, true});
     m.on(event);
-    EXPECT_EQ(m.state(), S::kStopping) << to_string(event);
+    EXPECT_EQ(m.state(), S::kShuttingDown) << to_string(event);
   }
 }
 

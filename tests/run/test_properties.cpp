@@ -351,7 +351,7 @@ std::vector<Tick> replay_ticks(const mapping::ValidMapping& valid, const std::st
   std::int64_t delivered = 0;
   replay(player, mapping::Engine(valid, engine), options,
          [&](std::int64_t, const protocol::DataBytes&) { ++delivered; });
-  ticks.push_back({delivered, {}, OpState::kStopping, {}});  // and how many frames reached the link
+  ticks.push_back({delivered, {}, OpState::kShuttingDown, {}});  // and how many frames reached the link
   return ticks;
 }
 

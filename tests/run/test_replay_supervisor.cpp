@@ -40,7 +40,7 @@ TEST(ReplaySupervisor, EachReportNamesBothControllersAndTheStateWaitsForBoth) {
   EXPECT_EQ(r[3].state, OpState::kNotEnabled);  // 120: both there, the deadman no longer fresh
   EXPECT_TRUE(r[3].supervisor_connected);
   EXPECT_EQ(r[3].supervisor, "Pad B");
-  EXPECT_EQ(r[3].engine.enable, mapping::EnableState::kDeadmanNotFresh);
+  EXPECT_EQ(r[3].engine.deadman, mapping::DeadmanState::kHeldNotFresh);
   EXPECT_EQ(r[4].state, OpState::kNoController);
   EXPECT_FALSE(r[4].supervisor_connected);
 

@@ -11,7 +11,6 @@
 #include <utility>
 
 #include "andros/run/bridge.hpp"
-#include "andros/run/engine_frames.hpp"
 
 namespace andros::test {
 
@@ -52,13 +51,15 @@ inline constexpr std::array kFaultKinds = {
 };
 
 /// The engine, its frames and neutral frame with the fault; the rest passed on as it is.
-class FaultyFrames final : public run::ReloadableFrames {
+class FaultyFrames final : public run::FrameSource {
  public:
-  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault)
-      : run::ReloadableFrames(std::move(inner)), fault_(fault) {}
+  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault) : inner_(std::move(inner)), fault_(fault) {}
+
+  [[nodiscard]] const mapping::Mapping& mapping() const override { return inner_->mapping(); }
+  void rebase(const input::InputState& now) override { inner_->rebase(now); }
 
   run::Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
-    run::Step s = run::ReloadableFrames::step(input, now_ms, motion_allowed);
+    run::Step s = inner_->step(input, now_ms, motion_allowed);
     if (fault_ == EngineFault::kStaleNeutral) {
       // The frames while not enabled are the last driving one's.
       if (motion_allowed) last_ = s.data;
@@ -71,7 +72,7 @@ class FaultyFrames final : public run::ReloadableFrames {
   }
   [[nodiscard]] protocol::DataBytes neutral() const override {
     if (fault_ == EngineFault::kStaleNeutral && last_) return *last_;
-    protocol::DataBytes n = run::ReloadableFrames::neutral();
+    protocol::DataBytes n = inner_->neutral();
     if (in_neutral()) inject(n);
     return n;
   }
@@ -119,6 +120,7 @@ class FaultyFrames final : public run::ReloadableFrames {
     }
   }
 
+  std::unique_ptr<run::FrameSource> inner_;
   EngineFault fault_;
   std::optional<protocol::DataBytes> last_;
 };

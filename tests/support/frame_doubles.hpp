@@ -1,19 +1,26 @@
 #pragma once
-// Test doubles of the run loop's frame source. FrameSource's stop methods
-// have no default (a source that forgot them would clear a stop at once, or
-// never latch one): a double that has no stop buttons says so here, once.
+// Test doubles of the run loop's frame source. The loop's guards read the
+// inputs a source's mapping names (run/drive_guard.hpp): a double's mapping
+// names a deadman at most, said here once.
+
+#include <optional>
 
 #include "andros/run/bridge.hpp"
 
 namespace andros::testing {
 
-/// A frame source with no stop buttons: nothing it reads ever stops, and so
-/// nothing ever resets (for the tests of everything but the stop).
+/// A frame source whose mapping names no stop button and no reset gesture:
+/// nothing it reads ever stops, and so nothing ever resets (for the tests of
+/// everything but the stop). Its deadman, if any, is the loop's own guard's.
 class WithoutStops : public run::FrameSource {
  public:
-  mapping::StopPresses take_stop(const input::InputState& /*input*/) override { return {}; }
-  mapping::StoppedTick stopped(const input::InputState& /*input*/, std::int64_t /*now_ms*/) override { return {}; }
-  void held_stops(const input::InputState& /*input*/, mapping::EngineStatus& /*status*/) const override {}
+  explicit WithoutStops(std::optional<input::InputKey> deadman = std::nullopt) {
+    if (deadman) mapping_.deadman = mapping::InputUse{*deadman, {}};
+  }
+  [[nodiscard]] const mapping::Mapping& mapping() const override { return mapping_; }
+
+ private:
+  mapping::Mapping mapping_;
 };
 
 }  // namespace andros::testing

@@ -52,7 +52,7 @@ TEST(PlotColours, EachStateHasItsOwnColourNamedInTheLegend) {
                                            {S::kStopped, "frame gate"},
                                            {S::kSuspended, ""},
                                            {S::kReloading, ""},
-                                           {S::kStopping, ""}}));
+                                           {S::kShuttingDown, ""}}));
   const std::vector<std::pair<std::string, std::string>> want = {{"no link", "#ffb74d"},
                                                                  {"no controller", "#fdd835"},
                                                                  {"not enabled", "#c9c9c9"},
@@ -87,7 +87,7 @@ TEST(PlotColours, ALostControllerIsNotNotEnabledAndShutdownIsNotAStop) {
   using S = run::OpState;
   const auto lost = render_plot_svg(states({{S::kNoController, ""}, {S::kNoController, ""}}));
   EXPECT_FALSE(has(lost, "#c9c9c9")) << "drawn as not enabled";
-  const auto end = render_plot_svg(states({{S::kStopping, ""}, {S::kStopping, ""}}));
+  const auto end = render_plot_svg(states({{S::kShuttingDown, ""}, {S::kShuttingDown, ""}}));
   EXPECT_FALSE(has(end, "#e57373")) << "drawn as stopped";
   EXPECT_TRUE(has(end, ">shutting down<"));
 }

@@ -266,7 +266,7 @@ TEST(RunScreen, ALongReasonWrapsUnderItsLabelInsteadOfBeingCut) {
 
 TEST(RunScreen, NoEscapesWithoutColour) {
   RunStatus s = driving(true);
-  s.state = run::OpState::kStopping;
+  s.state = run::OpState::kShuttingDown;
   const auto text = render_run_screen(s, {80, 24}).render({80, 24}, false);
   EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
   EXPECT_NE(text.find("SHUTTING DOWN: sending neutral frames"), std::string::npos) << text;

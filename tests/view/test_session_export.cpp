@@ -171,7 +171,7 @@ TEST(SessionExport, AColumnOfAnInputTheMappingHasNoneOfIsThereAndEmpty) {
 TEST(SessionExport, TheShutdownRequestIsNotAStopColumn) {
   auto s = incident();
   s.requests = {{760, "stop"}};
-  s.states.push_back({760, run::OpState::kStopping});
+  s.states.push_back({760, run::OpState::kShuttingDown});
   const auto rows = jsonl(s);
   EXPECT_EQ(column(rows, "shutdown_requested"), runs({{19, "0"}, {2, "1"}}));
   EXPECT_FALSE(rows[0].contains("stop"));

@@ -27,7 +27,7 @@ run::TickReport tick(std::int64_t t_ms) {
   r.connected = true;
   r.controller = "pad";
   r.state = run::OpState::kEnabled;
-  r.engine.enable = mapping::EnableState::kEnabled;
+  r.engine.deadman = mapping::DeadmanState::kFreshHold;
   r.engine.layer = "arm";
   r.link.state = link::LinkState::kUp;
   r.link.counters.sent = 7;
@@ -52,10 +52,10 @@ TEST(StatusBoard, TheRateIsMeasuredSinceTheLinkCameUp) {
 
 TEST(EnableText, NamesWhyNotOrTheInputsHeldBack) {
   mapping::EngineStatus s;
-  s.enable = mapping::EnableState::kDeadmanReleased;
+  s.deadman = mapping::DeadmanState::kReleased;
   s.held_back = {*input::parse_axis_name("lefty")};
   EXPECT_EQ(enable_text(s), "deadman released");  // held-back inputs matter only while enabled
-  s.enable = mapping::EnableState::kEnabled;
+  s.deadman = mapping::DeadmanState::kFreshHold;
   EXPECT_EQ(enable_text(s), "enabled; at rest first: lefty");
   s.held_back.push_back(*input::parse_button_name("a"));
   EXPECT_EQ(enable_text(s), "enabled; at rest first: lefty a");
@@ -81,7 +81,7 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
   EXPECT_EQ(s.enable_text, "enabled");
   EXPECT_EQ(s.layer, "arm");
   EXPECT_EQ(s.link_state, link::LinkState::kUp);
-  EXPECT_TRUE(s.motion_allowed);
+  EXPECT_TRUE(s.far_end_reading);
   EXPECT_EQ(s.link.sent, 7u);
   EXPECT_EQ(s.sent[3], 0x5A);
 
@@ -92,16 +92,16 @@ TEST(RunStatusBoard, TheStatusIsWhatTheReportsSaid) {
 
   auto r = tick(80);
   r.controller.clear();  // a controller without a name
-  r.link.motion_allowed = false;
+  r.link.far_end_reading = false;
   r.link.detail = "the link's own detail";
   board.observe(r);
   s = board.status();
   EXPECT_EQ(s.controller, "controller");
-  EXPECT_FALSE(s.motion_allowed);
+  EXPECT_FALSE(s.far_end_reading);
   EXPECT_EQ(s.link_detail.rfind("neutral frames only", 0), 0u) << s.link_detail;
 
   r = tick(120);
-  r.state = run::OpState::kStopping;  // the last step said enabled; shutting down is never enabled
+  r.state = run::OpState::kShuttingDown;  // the last step said enabled; shutting down is never enabled
   board.observe(r);
   s = board.status();
   EXPECT_TRUE(s.shutting_down());
@@ -115,7 +115,7 @@ TEST(RunStatusBoard, ARepeatedReportMovesTheCountersAndANewKindOfControllerTheWo
   auto r = tick(40);
   r.state = run::OpState::kNotEnabled;
   r.entered_by = run::OpEvent::kRelease;
-  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  r.engine.deadman = mapping::DeadmanState::kReleased;
   board.observe(r);
   EXPECT_EQ(board.status().enable_text, "deadman released");
   r.t_ms = 80;
@@ -162,7 +162,7 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   s = board.status();
   EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "link regained: press the deadman afresh");
-  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;
+  r.engine.deadman = mapping::DeadmanState::kHeldNotFresh;
   board.observe(r);
   EXPECT_EQ(board.status().enable_text, "link regained: press the deadman afresh");
   for (const auto state : {run::OpState::kSuspended, run::OpState::kReloading, run::OpState::kNoController}) {
@@ -177,7 +177,7 @@ TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
   r.connected = true;
   r.state = run::OpState::kNotEnabled;
   r.link.state = link::LinkState::kUp;
-  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;  // the held deadman, after the rebase
+  r.engine.deadman = mapping::DeadmanState::kHeldNotFresh;  // the held deadman, after the rebase
   const auto said = [&r] { return view::state_text(r); };
   r.entered_by = run::OpEvent::kReloadDone;
   EXPECT_EQ(said(), "reloaded: press the deadman afresh");
@@ -194,7 +194,7 @@ TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
   EXPECT_EQ(said(), "deadman held since connect or start-up: release and press it again");
   // Released from enabled: the deadman's own state.
   r.entered_by = run::OpEvent::kRelease;
-  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  r.engine.deadman = mapping::DeadmanState::kReleased;
   EXPECT_EQ(said(), "deadman released");
 }
 
@@ -205,11 +205,11 @@ TEST(RunStatusBoard, AtStartUpNotEnabledSaysWhatEnables) {
   r.connected = true;
   r.state = run::OpState::kNotEnabled;
   r.link.state = link::LinkState::kUp;
-  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  r.engine.deadman = mapping::DeadmanState::kReleased;
   EXPECT_EQ(view::state_text(r), "press the deadman to enable");
   r.entered_by = run::OpEvent::kControllerUp;
   EXPECT_EQ(view::state_text(r), "controller connected: press the deadman to enable");
-  r.engine.enable = mapping::EnableState::kDeadmanNotFresh;  // held at connect: that is what to undo
+  r.engine.deadman = mapping::DeadmanState::kHeldNotFresh;  // held at connect: that is what to undo
   EXPECT_EQ(view::state_text(r), "deadman held since connect or start-up: release and press it again");
 }
 
@@ -271,7 +271,7 @@ TEST(RunStatusBoard, AWeaponsModeIsShownWhileEnabledAndLoggedOnceEachWay) {
   board.observe(r);
   EXPECT_TRUE(board.status().weapons_mode);
   r.t_ms = 200;
-  r.state = run::OpState::kStopping;  // the last step said so; a stop ends every weapons mode
+  r.state = run::OpState::kShuttingDown;  // the last step said so; a stop ends every weapons mode
   board.observe(r);
   EXPECT_FALSE(board.status().weapons_mode);
   const auto text = log.text();
@@ -413,7 +413,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.stopped_by.reset();
   r.stopper_pad = {};
   r.reset_by = run::StopBy::kSupervisor;
-  r.engine.enable = mapping::EnableState::kDeadmanReleased;
+  r.engine.deadman = mapping::DeadmanState::kReleased;
   board.observe(r);
   s = board.status();
   EXPECT_EQ(s.stopped_by, "");

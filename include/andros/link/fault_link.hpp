@@ -12,7 +12,7 @@ namespace andros::link {
 
 /// Forwards to a link, except while held down by a fault: then nothing is
 /// sent (kDown), and the state and detail say why. Stalled (a TCP server
-/// that stopped reading: TcpLink::motion_allowed), it forwards the frames but
+/// that stopped reading: TcpLink::far_end_reading), it forwards the frames but
 /// does not allow motion, held down or not, until the server is seen reading.
 class FaultLink final : public Link {
  public:
@@ -31,7 +31,7 @@ class FaultLink final : public Link {
   [[nodiscard]] const std::string& name() const override { return inner_.name(); }
   [[nodiscard]] const std::string& detail() const override;
   [[nodiscard]] const LinkCounters& counters() const override;
-  [[nodiscard]] bool motion_allowed() const override { return !stalled_ && inner_.motion_allowed(); }
+  [[nodiscard]] bool far_end_reading() const override { return !stalled_ && inner_.far_end_reading(); }
 
  private:
   Link& inner_;

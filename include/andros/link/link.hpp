@@ -37,10 +37,10 @@ class Link {
   /// False while the far end may keep frames to deliver later (a TCP server
   /// that stalled and has not been seen reading since): the run loop then
   /// sends only neutral frames, so that nothing held there can move the vehicle.
-  [[nodiscard]] virtual bool motion_allowed() const { return true; }
+  [[nodiscard]] virtual bool far_end_reading() const { return true; }
 
-  /// Its state, detail, counters and motion_allowed() as one value, for the run loop's report.
-  [[nodiscard]] LinkStatus status() const { return {state(), motion_allowed(), detail(), counters()}; }
+  /// Its state, detail, counters and far_end_reading() as one value, for the run loop's report.
+  [[nodiscard]] LinkStatus status() const { return {state(), far_end_reading(), detail(), counters()}; }
 };
 
 }  // namespace andros::link

@@ -34,18 +34,18 @@ struct LinkCounters {
 
 /// The link carries motion: it is up, and not held to neutral frames (a TCP
 /// server that stalled): the one rule for the loop's state, the pad's light and the view.
-constexpr bool carries_motion(LinkState state, bool motion_allowed) {
-  return state == LinkState::kUp && motion_allowed;
+constexpr bool carries_motion(LinkState state, bool far_end_reading) {
+  return state == LinkState::kUp && far_end_reading;
 }
 
 /// A link at one moment (Link::status()).
 struct LinkStatus {
   LinkState state = LinkState::kConnecting;
-  bool motion_allowed = true;  ///< false: the link gets neutral frames only (Link::motion_allowed)
-  std::string detail;          ///< why it is not up, empty when up
+  bool far_end_reading = true;  ///< false: the link gets neutral frames only (Link::far_end_reading)
+  std::string detail;           ///< why it is not up, empty when up
   LinkCounters counters;
 
-  [[nodiscard]] bool carries_motion() const { return link::carries_motion(state, motion_allowed); }
+  [[nodiscard]] bool carries_motion() const { return link::carries_motion(state, far_end_reading); }
 };
 
 std::string_view to_string(LinkState state);

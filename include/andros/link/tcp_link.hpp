@@ -47,7 +47,7 @@ class TcpLink final : public ReconnectingLink {
   /// host is an InputError.
   explicit TcpLink(const TcpAddress& address);
 
-  [[nodiscard]] bool motion_allowed() const override { return !suspect_; }
+  [[nodiscard]] bool far_end_reading() const override { return !suspect_; }
 
  protected:
   OpenResult open_step(std::string& why) override;

@@ -2,10 +2,9 @@
 /// The mapping engine: a pure function of (input state, its own previous
 /// state, tick time, whether motion is allowed) to the frame's data bytes. No
 /// SDL, no clock reads, no I/O. It decides nothing about whether the vehicle
-/// may move: it reports the facts (facts(): the deadman and the stop
-/// buttons, mapping/deadman.hpp and stop_buttons.hpp), the run loop's
-/// operating-state machine decides, and the engine is told (step()'s
-/// motion_allowed). The safety rules (docs/mapping.md) are applied in one
+/// may move: the run loop's guards read the deadman and the stop buttons the
+/// mapping names (run/drive_guard.hpp), its operating-state machine decides,
+/// and the engine is told (step()'s motion_allowed). The safety rules (docs/mapping.md) are applied in one
 /// place, the rest rule before the bindings and apply_safety() after them,
 /// so that no mapping can bypass them.
 
@@ -17,11 +16,10 @@
 #include <vector>
 
 #include "andros/input/input_state.hpp"
-#include "andros/mapping/deadman.hpp"
 #include "andros/mapping/engine_status.hpp"
+#include "andros/mapping/frame_source.hpp"
 #include "andros/mapping/model.hpp"
 #include "andros/mapping/safety.hpp"
-#include "andros/mapping/stop_buttons.hpp"
 #include "andros/protocol/frame.hpp"
 
 namespace andros::mapping {
@@ -35,24 +33,16 @@ struct EngineOptions {
   bool reuse_settled = true;
 };
 
-class Engine {
+class Engine final : public FrameSource {
  public:
   /// Levels (arm_speed, light) are kept in 1/kMilli units.
   static constexpr std::int64_t kMilli = 1000;
 
-  /// Runs a validated mapping (validate(), load_mapping()); a hand-built one
-  /// without a deadman never reports a fresh press, so it is never enabled.
+  /// Runs a validated mapping (validate(), load_mapping()).
   Engine(ValidMapping mapping, EngineOptions options);
 
-  /// The tick's facts at now_ms, before its step: what the deadman did (a
-  /// fresh press, released, not fresh, the panic, the enable timeout) and
-  /// the stop buttons pressed or held (taking the presses). enabled: the
-  /// loop is enabled now (the enable timeout runs only then). The first
-  /// call is start-up: deadman presses counted before it are not fresh.
-  InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled);
-
-  /// One tick at time now_ms (ms since start, non-decreasing), after its
-  /// facts (facts() follows the controllers' sessions, a step does not):
+  /// One tick at time now_ms (ms since start, non-decreasing; the first
+  /// step is start-up: presses counted before it are history):
   /// the data bytes of the frame to send, the bindings applied only
   /// when motion_allowed (the operating state is enabled); otherwise the
   /// neutral frame. Always a frame that passes validation. While nothing
@@ -60,33 +50,22 @@ class Engine {
   /// found them as at the one before and changed none of the engine's
   /// state), the last frame is given again without computing it: the same
   /// frame and status that computing would give (see step()).
-  protocol::DataBytes step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed);
+  Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override;
 
   /// Starts afresh from the input as it is now (the run loop's rebase: after
   /// a link regained, a reload, a resume): every press it has counted is
   /// history, the deadman needs a fresh press, toggles and a toggled layer (a weapons one above all) are off,
   /// and the speed level is the mapping's initial one.
-  void restart(const input::InputState& now);
-
-  /// The stop buttons pressed since the last step (or the last call) or
-  /// held, taking the presses (for the ticks on which the loop does not
-  /// step: a reload's, a suspend's neutral frames; and before a restart,
-  /// which makes every press history). Ends any reset hold.
-  StopPresses take_stop(const input::InputState& input);
-  /// Stopped (the loop does not step), once per tick: the stop buttons
-  /// pressed since the last call, and a reset hold completed (StopButtons).
-  StoppedTick stopped(const input::InputState& input, std::int64_t now_ms);
-  /// The stop buttons held now into status (stop_held, supervisor_stop), without a step.
-  void held_stops(const input::InputState& input, EngineStatus& status) const;
+  void rebase(const input::InputState& now) override;
 
   /// The neutral frame for the current analog/selector state (shutdown, link
   /// loss): every motion and weapon bit 0, drive and pivot at the protocol's
   /// 128 (never the mapping's `center:` trim). Kept from one computed step to
   /// the next (the loop asks for it on every tick that is not enabled).
-  [[nodiscard]] protocol::DataBytes neutral() const;
+  [[nodiscard]] protocol::DataBytes neutral() const override;
 
   [[nodiscard]] const EngineStatus& status() const;
-  [[nodiscard]] const Mapping& mapping() const;
+  [[nodiscard]] const Mapping& mapping() const override;
   /// The last step found the controllers as the one before did and changed
   /// nothing: until they (or motion_allowed) change, a step gives its frame again.
   [[nodiscard]] bool settled() const { return settled_; }
@@ -101,7 +80,6 @@ class Engine {
     std::uint32_t connection = 0;
     std::uint32_t supervisor_connection = 0;                ///< the supervisor's controller session
     std::map<input::InputKey, std::uint32_t> seen_presses;  ///< presses already acted on (or ignored)
-    bool was_enabled = false;                               ///< motion allowed at the last step
     int layer = -1;                                         ///< active layer, -1 = base
     int toggled_layer = -1;                                 ///< layer switched on by a toggle button
     std::bitset<protocol::kSignalCount> toggled;            ///< one toggle state per signal, whichever input flips it
@@ -118,17 +96,10 @@ class Engine {
   /// Start-up, or a controller's new session (the operator's, the supervisor's): afresh.
   void follow_sessions(const input::InputState& input, std::int64_t now_ms);
   void start_session(const input::InputState& input, bool at_start_up);
-  /// The stop buttons this tick (the operator's `estop`, the supervisor's
-  /// `stop`): EngineStatus::stop_pressed (taking the presses), stop_held, supervisor_stop.
-  void read_stops(const input::InputState& input);
   void clear_toggles();
   [[nodiscard]] bool held(const input::InputState& input, input::InputKey key, bool invert = false,
                           double threshold = kDefaultThreshold) const;
   [[nodiscard]] std::uint32_t new_presses(const input::InputState& input, input::InputKey key) const;
-  /// Notes whether any input the mapping reads changed since the last change (the enable timeout).
-  void note_activity(const input::InputState& input, std::int64_t now_ms);
-  /// Enabled, and no input changed for the mapping's enable_timeout by now_ms.
-  [[nodiscard]] bool timed_out(std::int64_t now_ms) const;
   void update_layer(const input::InputState& input, bool enabled);
   /// The speed buttons' presses (enabled only); a new level holds drive and pivot's sticks back.
   void update_speed(const input::InputState& input);
@@ -149,15 +120,8 @@ class Engine {
   std::vector<std::vector<BindingRef>> effective_;  ///< [layer + 1]
   std::vector<std::size_t> slot_base_;              ///< [layer + 1]: first slot of its bindings
   std::vector<input::InputKey> buttons_;            ///< every button the mapping reads
-  std::vector<input::InputKey> axes_;               ///< every axis the mapping reads
   std::vector<bool> weapons_layer_;                 ///< [layer + 1]: a weapon binding is in effect there
   Carried c_;                                       ///< carried from step to step
-  // The facts' own state (facts()), which a step neither reads nor changes.
-  Deadman deadman_;
-  StopButtons stops_;
-  std::int64_t last_activity_ms_ = 0;                               ///< the last tick that saw an input change
-  std::map<input::InputKey, input::ButtonState> activity_buttons_;  ///< as at that tick
-  std::map<input::InputKey, std::int16_t> activity_axes_;
   std::int64_t last_ms_ = 0;
 
   // The last step, for the next one (step()).

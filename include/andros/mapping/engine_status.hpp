@@ -13,17 +13,20 @@
 
 namespace andros::mapping {
 
-/// Why the engine is (not) enabled, for the operator's status view and logs.
-enum class EnableState : std::uint8_t {
-  kEnabled,
-  kNoController,     ///< no controller connected
-  kDeadmanReleased,  ///< the deadman is not held
-  kDeadmanNotFresh,  ///< held since connect or start-up: release and press again
-  kPanic,            ///< the trigger deadman squeezed past `deadman_panic`: off until fully released
-  kTimedOut,         ///< `enable_timeout` passed with no input change: release and press again
+/// What the deadman is doing, a fact the loop's guard reports
+/// (run/drive_guard.hpp): the operating-state machine decides on it
+/// (OpState::kEnabled is its decision, never this), and the operator's
+/// status view and logs say it (describe()).
+enum class DeadmanState : std::uint8_t {
+  kFreshHold,     ///< held, and pressed afresh (after connect, a rebase, the last release)
+  kNoPad,         ///< no controller connected (or the mapping names no deadman)
+  kReleased,      ///< not held (or let go and pressed again within the tick)
+  kHeldNotFresh,  ///< held since connect or start-up: release and press again
+  kPastPanic,     ///< the trigger deadman squeezed past `deadman_panic`: off until fully released
+  kTimedOut,      ///< `enable_timeout` passed with no input change: release and press again
 };
 
-std::string_view describe(EnableState state);
+std::string_view describe(DeadmanState state);
 
 /// The speed level in force (the mapping's `scale:`): drive and pivot move
 /// `value` times their distance from rest.
@@ -65,19 +68,19 @@ struct ResetHold {
 /// One tick's facts, before its step: what the deadman and the stop buttons
 /// did. They decide nothing: the run loop's operating-state machine does.
 struct InputFacts {
-  /// kEnabled: held, and pressed afresh (a fresh press where not enabled);
+  /// kFreshHold: held, and pressed afresh (a fresh press where not enabled);
   /// otherwise why it is not: released (or let go and pressed again within
   /// the tick), held since connect or a rebase, the panic, the enable timeout.
-  EnableState deadman = EnableState::kNoController;
+  DeadmanState deadman = DeadmanState::kNoPad;
   StopPresses stops;  ///< a stop button pressed since the last tick, or held
 
   bool operator==(const InputFacts&) const = default;
 };
 
 struct EngineStatus {
-  EnableState enable = EnableState::kNoController;
-  std::string layer;                       ///< the active layer's name ("" for the base layer)
-  std::vector<input::InputKey> held_back;  ///< inputs that act again once seen at rest (RestRule)
+  DeadmanState deadman = DeadmanState::kNoPad;  ///< the loop's guard's fact at the last driving tick
+  std::string layer;                            ///< the active layer's name ("" for the base layer)
+  std::vector<input::InputKey> held_back;       ///< inputs that act again once seen at rest (RestRule)
   /// Enabled, weapons enabled for the run, and the active layer has weapon
   /// bindings: an armed fire input fires (what the banner and the pad announce).
   bool weapons_mode = false;

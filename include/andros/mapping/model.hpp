@@ -249,6 +249,14 @@ const Binding& binding_at(const Mapping& mapping, BindingRef ref);
 /// Every binding, base first, then each layer's in order.
 std::vector<BindingRef> all_bindings(const Mapping& mapping);
 
+/// Every input a mapping reads, each once: its buttons and its axes (a
+/// deadman, layer key or binding input given as either counts as both).
+struct ReadInputs {
+  std::vector<input::InputKey> buttons;
+  std::vector<input::InputKey> axes;
+};
+ReadInputs read_inputs(const Mapping& mapping);
+
 /// The analog byte a binding drives, if it drives one.
 std::optional<protocol::SignalId> analog_target(const Binding& binding);
 

@@ -206,7 +206,7 @@ struct ReloadRecord {
 struct LinkRecord {
   std::int64_t t_ms = 0;  ///< -1: before the first tick
   link::LinkState state = link::LinkState::kConnecting;
-  bool motion_allowed = true;
+  bool far_end_reading = true;
   std::string detail;
 };
 

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,52 +20,17 @@
 #include "andros/link/fault_link.hpp"
 #include "andros/link/link.hpp"
 #include "andros/mapping/engine_status.hpp"
-#include "andros/mapping/stop_buttons.hpp"
+#include "andros/mapping/frame_source.hpp"
 #include "andros/protocol/frame.hpp"
+#include "andros/run/drive_guard.hpp"
 #include "andros/run/frame_gate.hpp"
 #include "andros/run/operating_state.hpp"
 #include "andros/timing/tick_schedule.hpp"
 
 namespace andros::run {
 
-/// One step's result, by value: the frame and the engine's state after it.
-struct Step {
-  protocol::DataBytes data{};
-  mapping::EngineStatus status;
-};
-
-/// What computes the frames: the mapping engine in `run` and replay, a fixed
-/// frame in the benchmarks and tests. It reports facts (what the deadman and
-/// the stop buttons did) and maps; it never decides whether the vehicle may
-/// move: the loop's operating-state machine does, and tells step(). Every
-/// method is pure virtual: a source that forgot one must not compile (the
-/// tests' doubles with no stop buttons are in tests/support/frame_doubles.hpp).
-class FrameSource {
- public:
-  virtual ~FrameSource() = default;
-  /// The tick's facts at now_ms, before its step (a driving state: no link,
-  /// no controller, not enabled, enabled). enabled: the state is enabled
-  /// now (the enable timeout runs only then).
-  virtual mapping::InputFacts facts(const input::InputState& input, std::int64_t now_ms, bool enabled) = 0;
-  /// The frame for the tick at now_ms (ms since start) from this input,
-  /// the bindings applied only when motion_allowed (the neutral frame otherwise).
-  virtual Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) = 0;
-  /// The neutral frame (stop, suspend, reload).
-  [[nodiscard]] virtual protocol::DataBytes neutral() const = 0;
-  /// Starts afresh from the input as it is now: every press it has counted
-  /// is history, and the deadman needs a fresh press after it.
-  virtual void restart(const input::InputState& now) = 0;
-  /// The stop buttons pressed since the last step (or the last call) or
-  /// held; the presses are taken (for the ticks that do not step: a
-  /// reload's and a suspend's frames; and before a rebase makes them history).
-  virtual mapping::StopPresses take_stop(const input::InputState& input) = 0;
-  /// Stopped (the engine is not stepped), once per tick at now_ms: the stop
-  /// buttons pressed since the last call, and a reset hold completed.
-  virtual mapping::StoppedTick stopped(const input::InputState& input, std::int64_t now_ms) = 0;
-  /// Stopped: which stop buttons are held now, into status (stop_held,
-  /// supervisor_stop), for the screen.
-  virtual void held_stops(const input::InputState& input, mapping::EngineStatus& status) const = 0;
-};
+using mapping::FrameSource;
+using mapping::Step;
 
 /// What one tick did, for the status view and the log. Values only, copied by
 /// the loop: whoever reads a report never reaches back into the loop, the
@@ -114,7 +80,7 @@ struct TickReport {
   std::string gate_fault;
   std::int64_t gate_trips = 0;  ///< frames the gate replaced since the start
 
-  [[nodiscard]] bool shutting_down() const { return state == OpState::kStopping; }
+  [[nodiscard]] bool shutting_down() const { return state == OpState::kShuttingDown; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
 };
@@ -146,6 +112,9 @@ struct ReloadOutcome {
   bool ok = false;       ///< the new settings are in place; false: the old ones stay
   std::string message;   ///< why not, when not
   bool weapons = false;  ///< ok: whether the settings now in place enable weapons (the frame gate's rule)
+  /// ok: the frame source the new settings make, which the loop takes (with
+  /// its guards read afresh from its mapping); none: the source stays.
+  std::shared_ptr<FrameSource> frames = nullptr;
 };
 
 struct RunControl {
@@ -229,11 +198,13 @@ class Bridge {
 
   Clock& clock_;
   input::InputSource& source_;
-  FrameSource& frames_;
+  FrameSource* frames_;                    ///< the one given, or a reload's
+  std::shared_ptr<FrameSource> reloaded_;  ///< the last reload's, which frames_ points at
   link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
   OperatingState machine_;  ///< every decision whether the vehicle may move, and every deferral
+  DriveGuard guard_;        ///< the machine's guards with memory and time: its facts each driving tick
   FrameGate gate_;          ///< the second channel: every frame offered to the link passes it
   input::InputState input_;
   mapping::EngineStatus engine_status_;  ///< the last step's

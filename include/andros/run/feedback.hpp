@@ -14,8 +14,8 @@ namespace andros::run {
 
 /// What the events are read from, once per tick.
 struct FeedbackStatus {
-  bool connected = false;                                             ///< a controller is connected
-  mapping::EnableState enable = mapping::EnableState::kNoController;  ///< the engine's view of the deadman
+  bool connected = false;                                         ///< a controller is connected
+  mapping::DeadmanState deadman = mapping::DeadmanState::kNoPad;  ///< the guard's fact of the deadman
   bool enabled = false;         ///< the operating state is "enabled": frames follow the controller
   bool link_up = false;         ///< the link is up and frames follow the controller
   bool weapons_mode = false;    ///< EngineStatus::weapons_mode

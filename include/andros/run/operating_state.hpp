@@ -34,7 +34,7 @@ enum class OpState : std::uint8_t {
   kStopped,       ///< stopped by a stop button: latched, neutral until reset
   kSuspended,     ///< job control: neutral frames sent, link closed, waiting to go on
   kReloading,     ///< neutral frames while the settings are read again
-  kStopping,      ///< the run ends: neutral frames, drain, close
+  kShuttingDown,  ///< the run ends: neutral frames, drain, close
 };
 
 enum class OpEvent : std::uint8_t {
@@ -67,7 +67,7 @@ enum class StopBy : std::uint8_t { kOperator, kSupervisor, kGate };
 struct Effect {
   bool changed = false;  ///< the state changed
   /// The engine starts afresh from the input as it is now: every press so
-  /// far is history, the deadman needs a fresh press (FrameSource::restart).
+  /// far is history, the deadman needs a fresh press (FrameSource::rebase, DriveGuard::rebase).
   bool rebase = false;
   /// Neutral frames begin (again): a suspend, a reload or the shutdown
   /// began, or a second reload restarted the first; the loop counts them
@@ -152,7 +152,7 @@ class OperatingState {
   /// through (their effects joined). An event with no row for the current
   /// state changes nothing but the conditions it reports: the link, the
   /// controller, and the stop latch (a stop latches it in every state but
-  /// kStopping, and makes it the supervisor's if the supervisor's; a gate
+  /// kShuttingDown, and makes it the supervisor's if the supervisor's; a gate
   /// trip latches one that is not latched yet). A reset that may not reset
   /// the stop (the operator's of the supervisor's stop) changes nothing.
   Effect on(OpEvent event);

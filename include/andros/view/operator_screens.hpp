@@ -85,7 +85,7 @@ struct RunStatus {
   std::string link_name;
   link::LinkState link_state = link::LinkState::kConnecting;
   std::string link_detail;
-  bool motion_allowed = true;  ///< false: the link gets neutral frames only (Link::motion_allowed)
+  bool far_end_reading = true;  ///< false: the link gets neutral frames only (Link::far_end_reading)
   link::LinkCounters link;
   timing::TimingSummary sent_timing;           ///< frames handed to the link
   protocol::DataBytes sent{};                  ///< the last frame computed
@@ -95,7 +95,7 @@ struct RunStatus {
   std::int64_t gate_trips = 0;                 ///< frames the frame gate replaced (each an internal error)
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
-  [[nodiscard]] bool shutting_down() const { return state == run::OpState::kStopping; }
+  [[nodiscard]] bool shutting_down() const { return state == run::OpState::kShuttingDown; }
 };
 
 /// A speed level as the screen and the log give it: "2/3 (50%)".

@@ -116,8 +116,8 @@ class FeedbackRun {
     input_.pump(state_, t_);
     engine_.step(state_, t_);
     // The loop's state is enabled when the engine is and the link is up (no interruption here).
-    const bool enabled = engine_.status().enable == mapping::EnableState::kEnabled && link_up;
-    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().enable, enabled, link_up});
+    const bool enabled = engine_.status().deadman == mapping::DeadmanState::kFreshHold && link_up;
+    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().deadman, enabled, link_up});
   }
 
  private:

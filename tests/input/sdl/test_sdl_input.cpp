@@ -192,7 +192,7 @@ TEST_F(SdlInputTest, AJoystickUnderAGameControllerMappingIsSaidWithTheHint) {
     r.connected = true;
     r.controller = state_.name();
     r.state = run::OpState::kNotEnabled;
-    r.engine.enable = mapping::EnableState::kDeadmanReleased;
+    r.engine.deadman = mapping::DeadmanState::kReleased;
     board.observe(r, input);
     const auto status = board.status();
     EXPECT_EQ(status.game_controller, std::optional<bool>(pad));

@@ -10,10 +10,10 @@
 
 #include "andros/input/sdl_input.hpp"
 #include "andros/link/fault_link.hpp"
+#include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/record/record_sink.hpp"
 #include "andros/record/recorded_loop.hpp"
-#include "andros/run/engine_frames.hpp"
 #include "andros/view/status_board.hpp"
 #include "support/log_capture.hpp"
 #include "support/temp_dir.hpp"
@@ -162,12 +162,10 @@ TEST_F(PadRolesTest, ARefusalIsSaidOnTheStateLineWhileItHolds) {
   record::SessionWriter writer(std::make_unique<record::FileRecordSink>((dir.path() / "run.session").string()));
   record::Recorder recorder(writer);
   record::RecordingInput input(sdl, recorder);
-  const auto frames = run::make_engine_frames(
-      mapping::Engine(mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"), mapping::EngineOptions{}));
+  mapping::Engine frames(mapping::load_mapping(ANDROS_MAPPINGS_DIR "/hd1.yaml"), mapping::EngineOptions{});
   link::SinkLink link([](std::int64_t, const protocol::Frame&) {});
   VirtualClock clock;
-  run::Bridge bridge(clock, input, *frames, link,
-                     run::BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
+  run::Bridge bridge(clock, input, frames, link, run::BridgeOptions{.rate_millihertz = 25'000, .rules = {false, 0x01}});
   view::RunStatusBoard board(view::RunStatus{});
   std::vector<view::RunStatus> seen;
   bridge.run([&] { return seen.size() >= 6; },

@@ -1,28 +1,18 @@
-#include "andros/mapping/deadman.hpp"
+#include "andros/run/deadman.hpp"
 
 #include "andros/mapping/axis.hpp"
 
-namespace andros::mapping {
+namespace andros::run {
 namespace {
 
-bool past(std::int16_t value, double point) { return normalise_axis(value) >= point; }
+using mapping::DeadmanState;
+using mapping::kDefaultThreshold;
+
+bool past(std::int16_t value, double point) { return mapping::normalise_axis(value) >= point; }
 
 }  // namespace
 
-std::string_view describe(EnableState state) {
-  switch (state) {
-    case EnableState::kEnabled: return "enabled";
-    case EnableState::kNoController: return "no controller";
-    case EnableState::kDeadmanReleased: return "deadman released";
-    case EnableState::kDeadmanNotFresh: return "deadman held since connect or start-up: release and press it again";
-    case EnableState::kPanic:
-      return "deadman squeezed past its panic point: release the trigger fully, then press it again";
-    case EnableState::kTimedOut: return "enable timeout (no input changed): release the deadman and press it again";
-  }
-  return "?";
-}
-
-Deadman::Deadman(const Mapping& mapping)
+Deadman::Deadman(const mapping::Mapping& mapping)
     : key_(mapping.deadman ? std::optional(mapping.deadman->key) : std::nullopt),
       panic_(key_ && !key_->is_button() ? mapping.deadman_panic : std::nullopt) {}
 
@@ -79,15 +69,15 @@ bool Deadman::panic(const input::InputState& input) {
   // Fully released since: within the same tick as a squeeze only if it is so now
   // (which came first is not known: the latch is kept).
   const std::int16_t lowest = squeezed ? input.axis(*key_) : span.low;
-  if (panic_latched_ && !past(lowest, kDeadmanFullyReleased)) {
+  if (panic_latched_ && !past(lowest, mapping::kDeadmanFullyReleased)) {
     panic_latched_ = false;  // fully released: the next squeeze to the middle is fresh
     released_seen_ = true;
   }
   return panic_latched_;
 }
 
-EnableState Deadman::read(const input::InputState& input) {
-  if (!input.connected() || !key_) return EnableState::kNoController;
+mapping::DeadmanState Deadman::read(const input::InputState& input) {
+  if (!input.connected() || !key_) return DeadmanState::kNoPad;
   const bool let_go = let_go_between(input);
   held_at_read_ = held(input);
   if (key_->is_button()) {
@@ -95,16 +85,16 @@ EnableState Deadman::read(const input::InputState& input) {
     presses_seen_ = input.button(*key_).presses;
     connection_seen_ = input.connection();
   }
-  if (panic(input)) return EnableState::kPanic;
+  if (panic(input)) return DeadmanState::kPastPanic;
   if (!held(input) || let_go) {
     released_seen_ = true;
     timed_out_ = false;
-    return EnableState::kDeadmanReleased;
+    return DeadmanState::kReleased;
   }
-  if (timed_out_) return EnableState::kTimedOut;
+  if (timed_out_) return DeadmanState::kTimedOut;
   // A button counts presses itself; a trigger must have been seen released.
   const bool fresh = key_->is_button() ? input.button(*key_).presses > base_ : released_seen_;
-  return fresh ? EnableState::kEnabled : EnableState::kDeadmanNotFresh;
+  return fresh ? DeadmanState::kFreshHold : DeadmanState::kHeldNotFresh;
 }
 
 void Deadman::time_out(const input::InputState& input) {
@@ -114,4 +104,4 @@ void Deadman::time_out(const input::InputState& input) {
   released_seen_ = false;
 }
 
-}  // namespace andros::mapping
+}  // namespace andros::run

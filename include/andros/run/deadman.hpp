@@ -2,7 +2,7 @@
 /// The deadman, as facts: whether it is held, and whether the press that
 /// holds it is fresh (made after the session began, after the last release,
 /// a panic or a timeout). It decides nothing about the frame: the engine
-/// reads its EnableState. Every change between two frames counts: a button
+/// reads its DeadmanState. Every change between two frames counts: a button
 /// released and pressed again since the last read (its `releases` count), or
 /// a trigger let go below its press point (its span), is a release at this
 /// read, and the press after it is fresh; a trigger squeezed past
@@ -15,17 +15,17 @@
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 
-namespace andros::mapping {
+namespace andros::run {
 
 class Deadman {
  public:
-  explicit Deadman(const Mapping& mapping);
+  explicit Deadman(const mapping::Mapping& mapping);
 
   /// A new controller session (at_start_up: or the start, or a restart:
   /// every press so far is history).
   void start(const input::InputState& input, bool at_start_up);
   /// Once per computed step: the deadman's state, taking the releases seen.
-  [[nodiscard]] EnableState read(const input::InputState& input);
+  [[nodiscard]] mapping::DeadmanState read(const input::InputState& input);
   /// The enable timeout ran out: not enabled until released and pressed again.
   void time_out(const input::InputState& input);
   /// Held now (a controller there, the button down or the trigger past its press point).
@@ -54,4 +54,4 @@ class Deadman {
   bool timed_out_ = false;             ///< the enable timeout ran out, the deadman not yet released
 };
 
-}  // namespace andros::mapping
+}  // namespace andros::run

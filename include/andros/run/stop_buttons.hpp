@@ -19,13 +19,13 @@
 #include "andros/mapping/engine_status.hpp"
 #include "andros/mapping/model.hpp"
 
-namespace andros::mapping {
+namespace andros::run {
 
 /// While stopped, one tick of the stop buttons and the reset gestures.
 struct StoppedTick {
-  StopPresses pressed;              ///< stop buttons pressed since the last read (not merely held)
-  std::optional<input::Pad> reset;  ///< the pad whose reset gesture completed at this tick
-  std::optional<ResetHold> hold;    ///< a reset gesture under way (the longest held)
+  mapping::StopPresses pressed;            ///< stop buttons pressed since the last read (not merely held)
+  std::optional<input::Pad> reset;         ///< the pad whose reset gesture completed at this tick
+  std::optional<mapping::ResetHold> hold;  ///< a reset gesture under way (the longest held)
 };
 
 /// A reset gesture as the operator reads it: "back+start" ("" for none).
@@ -33,7 +33,7 @@ std::string gesture_text(const std::vector<input::InputKey>& keys);
 
 class StopButtons {
  public:
-  explicit StopButtons(const Mapping& mapping);
+  explicit StopButtons(const mapping::Mapping& mapping);
 
   /// A new session of the operator's controller (at_start_up: or the start,
   /// or a restart: the presses so far are history; a button held still stops).
@@ -43,12 +43,12 @@ class StopButtons {
   void forget(const input::InputState& input);
   /// A stop button pressed since the last read, or held now: a stop. Takes
   /// the presses and ends any reset gesture (the loop is not stopped, or starts afresh).
-  StopPresses take(const input::InputState& input);
+  mapping::StopPresses take(const input::InputState& input);
   /// Stopped, once per tick at now_ms: the stop presses since the last read,
   /// and the reset gestures. deadman_touched: held now, or pressed since the last tick.
   StoppedTick stopped(const input::InputState& input, bool deadman_touched, std::int64_t now_ms);
   /// Which are held now, into status (stop_held, supervisor_stop).
-  void held(const input::InputState& input, EngineStatus& status) const;
+  void held(const input::InputState& input, mapping::EngineStatus& status) const;
 
   bool operator==(const StopButtons&) const = default;
 
@@ -87,4 +87,4 @@ class StopButtons {
   std::int64_t hold_ms_;
 };
 
-}  // namespace andros::mapping
+}  // namespace andros::run

@@ -1,12 +1,12 @@
-#include "andros/mapping/stop_buttons.hpp"
+#include "andros/run/stop_buttons.hpp"
 
 #include <algorithm>
 #include <utility>
 
-namespace andros::mapping {
+namespace andros::run {
 namespace {
 
-std::vector<input::InputKey> keys_of(const std::vector<InputUse>& uses) {
+std::vector<input::InputKey> keys_of(const std::vector<mapping::InputUse>& uses) {
   std::vector<input::InputKey> keys;
   keys.reserve(uses.size());
   for (const auto& u : uses) keys.push_back(u.key);
@@ -15,7 +15,7 @@ std::vector<input::InputKey> keys_of(const std::vector<InputUse>& uses) {
 
 }  // namespace
 
-StopButtons::StopButtons(const Mapping& mapping) : hold_ms_(mapping.stop_reset_hold_ms) {
+StopButtons::StopButtons(const mapping::Mapping& mapping) : hold_ms_(mapping.stop_reset_hold_ms) {
   if (mapping.estop) operator_.key = mapping.estop->key;
   operator_reset_.keys = keys_of(mapping.stop_reset);
   if (mapping.supervisor) {
@@ -62,7 +62,7 @@ bool StopButtons::take(const input::PadState& pad, Button& b) {
   return fresh || down(pad, b);
 }
 
-StopPresses StopButtons::take(const input::InputState& input) {
+mapping::StopPresses StopButtons::take(const input::InputState& input) {
   // Both are taken: neither press may wait for a later read.
   const bool by_operator = take(input.operator_pad(), operator_);
   const bool by_supervisor = take(input.supervisor(), supervisor_);
@@ -133,7 +133,7 @@ StoppedTick StopButtons::stopped(const input::InputState& input, bool deadman_to
        {std::pair{input::Pad::kOperator, &operator_reset_}, std::pair{input::Pad::kSupervisor, &supervisor_reset_}}) {
     if (!r->hold_since) continue;
     const std::int64_t held = now_ms - *r->hold_since;
-    if (!out.hold || held > out.hold->held_ms) out.hold = ResetHold{pad, held, hold_ms_};
+    if (!out.hold || held > out.hold->held_ms) out.hold = mapping::ResetHold{pad, held, hold_ms_};
   }
   return out;
 }
@@ -144,7 +144,7 @@ std::string gesture_text(const std::vector<input::InputKey>& keys) {
   return out;
 }
 
-void StopButtons::held(const input::InputState& input, EngineStatus& status) const {
+void StopButtons::held(const input::InputState& input, mapping::EngineStatus& status) const {
   status.operator_reset = operator_gesture_;
   status.supervisor_reset = supervisor_gesture_;
   status.reset_hold_ms = hold_ms_;
@@ -153,4 +153,4 @@ void StopButtons::held(const input::InputState& input, EngineStatus& status) con
   status.stop_held = status.supervisor_stop || down(input.operator_pad(), operator_);
 }
 
-}  // namespace andros::mapping
+}  // namespace andros::run
