@@ -111,7 +111,7 @@ void TrainerFeed::publish_locked() {
 }
 
 void TrainerFeed::observe(LoopFacts facts) {
-  facts.pad = std::move(pad_);
+  facts.pad = pad_;  // copied: after the run, the pad as it was last
   std::unique_lock lock(facts_mutex_, std::try_to_lock);
   if (lock.owns_lock()) facts_ = std::move(facts);
 }

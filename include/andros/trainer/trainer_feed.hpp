@@ -47,7 +47,8 @@ class TrainerFeed {
   void on_frame(const protocol::DecodedFrame& frame, std::int64_t now_ns);
   /// The model advanced to now_ns with no frame (the watchdog), its object published.
   void advance(std::int64_t now_ns);
-  /// The loop's facts after a tick (the loop's thread). Never waits: while
+  /// The loop's facts after a tick (the loop's thread), the pad taken from
+  /// observe_pad() (facts.pad is replaced). Never waits: while
   /// the vehicle's thread reads them, this tick's are left out.
   void observe(LoopFacts facts);
   /// The pad as the loop pumped it (the loop's thread); observe() carries it.
