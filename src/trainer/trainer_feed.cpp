@@ -40,7 +40,8 @@ json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
   return {
       {"tick", facts.tick},
       {"t_ms", facts.t_ms},
-      {"time", r3(static_cast<double>(s.time_ns - s.start_ns) / 1e9)},
+      // Microseconds: the arrival times measure the loop's punctuality (bench/trainer_clients.py).
+      {"time", std::round(static_cast<double>(s.time_ns - s.start_ns) / 1e3) / 1e6},
       {"state", facts.state},
       {"state_name", facts.state_name},
       {"layer", facts.layer},

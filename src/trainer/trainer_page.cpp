@@ -20,8 +20,9 @@ header h1{font-size:16px;margin:0;letter-spacing:.05em}
 #state{font-weight:bold;padding:3px 10px;border-radius:3px;background:#7a1f1f;max-width:640px;white-space:nowrap;overflow:hidden;text-overflow:ellipsis}
 #state.enabled{background:#1f6b2c}
 #state.stopped{background:#b01515}
+#state.ended{background:#555}
 #link{margin-left:auto;color:#aaa}
-main{display:grid;grid-template-columns:430px 1fr 330px;grid-template-rows:340px 1fr;gap:8px;padding:8px;height:calc(100vh - 40px)}
+main{display:grid;grid-template-columns:400px 1fr 320px;grid-template-rows:55fr 45fr;gap:8px;padding:8px;height:calc(100vh - 40px)}
 section{background:#262b30;border:1px solid #3a4047;border-radius:4px;padding:6px;position:relative;min-height:0;overflow:hidden}
 section h2{font-size:12px;margin:0 0 4px;color:#9fb3c8;text-transform:uppercase;letter-spacing:.08em}
 #top{grid-row:1/3}
@@ -34,7 +35,7 @@ section h2{font-size:12px;margin:0 0 4px;color:#9fb3c8;text-transform:uppercase;
 .insetlabel{position:absolute;right:14px;bottom:calc(12px + 27%);background:rgba(0,0,0,.55);padding:1px 5px;font-size:12px}
 #panel{grid-column:3/4;grid-row:1/3;overflow:auto}
 table{border-collapse:collapse;width:100%}
-td{padding:1px 4px;border-bottom:1px solid #333}
+td{padding:0 4px;border-bottom:1px solid #333;font-size:13px}
 td:first-child{color:#9fb3c8;width:45%}
 .bar{height:8px;background:#555;position:relative;border-radius:2px}
 .bar i{position:absolute;top:0;bottom:0;background:#7fb2e5;left:50%}
@@ -209,7 +210,7 @@ function drawCamera(canvas, s, which) {
 function drawPanel(s) {
   const st = $("state");
   text("state", s.state || s.state_name);
-  st.className = s.state_name === "enabled" ? "enabled" : s.state_name === "stopped" ? "stopped" : "";
+  st.className = ["enabled", "stopped", "ended"].includes(s.state_name) ? s.state_name : "";
   text("robot", "simulated " + s.robot + (s.layer ? "  layer: " + s.layer : ""));
   text("words", s.state || "-");
   const pad = $("pad");
