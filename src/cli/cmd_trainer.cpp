@@ -4,9 +4,13 @@
 // web page (docs/trainer.md). It never opens a serial port or a TCP link.
 #include <spdlog/spdlog.h>
 
+#include <chrono>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
@@ -35,6 +39,9 @@ struct TrainerOptions {
 class Trainer {
  public:
   explicit Trainer(const TrainerOptions& opt) : opt_(opt) {}
+  ~Trainer() { stop_watch(); }
+  Trainer(const Trainer&) = delete;
+  Trainer& operator=(const Trainer&) = delete;
 
   RunHooks hooks() {
     RunHooks h;
@@ -80,6 +87,7 @@ class Trainer {
       return "simulated vehicle only; no page: " + why;
     }
     spdlog::info("trainer: the simulated vehicle's page is at {}", listen_.url());
+    watch_ = std::thread([this] { watch(); });
     return "simulated vehicle only; page " + listen_.url();
   }
 
@@ -101,6 +109,25 @@ class Trainer {
                                       .pad = {}});  // the pad: the feed's own, from the input's pump
   }
 
+  /// While no frame comes (a link down, a suspend, after the run), the model
+  /// is advanced now and then, so that the page sees the vehicle's watchdog.
+  void watch() {
+    std::unique_lock lock(watch_mutex_);
+    while (!watch_cv_.wait_for(lock, kWatchEvery, [this] { return watch_stop_; })) {
+      feed_->advance_if_quiet(monotonic_ns(), std::chrono::nanoseconds(kWatchEvery).count());
+    }
+  }
+
+  void stop_watch() {
+    if (!watch_.joinable()) return;
+    {
+      const std::lock_guard lock(watch_mutex_);
+      watch_stop_ = true;
+    }
+    watch_cv_.notify_all();
+    watch_.join();
+  }
+
   void after_run(ShutdownRequest& stop) {
     if (opt_.exit_at_end || !server_ || stop.requested()) return;
     spdlog::info("trainer: the input has ended; the page stays up at {} until Ctrl-C", listen_.url());
@@ -115,6 +142,7 @@ class Trainer {
     stop.sleep_until(kNoDeadline);
   }
 
+  static constexpr std::chrono::milliseconds kWatchEvery{100};
   /// The state's words are formed again at least this often (the enable text's countdowns).
   static constexpr std::int64_t kWordsEveryTicks = 5;
 
@@ -129,6 +157,10 @@ class Trainer {
   std::string layer_;
   std::int64_t last_tick_ = -1;
   std::int64_t last_t_ms_ = 0;
+  std::thread watch_;
+  std::mutex watch_mutex_;
+  std::condition_variable watch_cv_;
+  bool watch_stop_ = false;
 };
 
 }  // namespace

@@ -101,6 +101,13 @@ void TrainerFeed::advance(std::int64_t now_ns) {
   publish_locked();
 }
 
+void TrainerFeed::advance_if_quiet(std::int64_t now_ns, std::int64_t quiet_ns) {
+  const std::lock_guard lock(model_mutex_);
+  if (!model_.state().started || now_ns - model_.state().time_ns < quiet_ns) return;
+  model_.advance(now_ns);
+  publish_locked();
+}
+
 void TrainerFeed::publish_locked() {
   LoopFacts facts;
   {

@@ -14,6 +14,7 @@ namespace {
 /// Threads beyond the event streams: the page and /state, short requests.
 constexpr std::size_t kSpareThreads = 4;
 constexpr int kMaxPort = 65535;
+constexpr int kStartPolls = 2000;  ///< 1 ms each: the server's thread is running within 2 s
 
 /// What every answer carries: nothing of it may be framed, sniffed or cached,
 /// and the page may reach only this server.
@@ -142,6 +143,11 @@ bool TrainerServer::start(std::string* why) {
   }
   impl_->thread = std::thread([this] { impl_->server.listen_after_bind(); });
   pthread_setname_np(impl_->thread.native_handle(), "andros-trainer");
+  // Until its thread runs, httplib's stop() does nothing and the thread would
+  // then listen for ever: a stop() right after start() must find it running.
+  for (int i = 0; i < kStartPolls && !impl_->server.is_running(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
   return true;
 }
 

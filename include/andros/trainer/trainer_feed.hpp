@@ -47,6 +47,10 @@ class TrainerFeed {
   void on_frame(const protocol::DecodedFrame& frame, std::int64_t now_ns);
   /// The model advanced to now_ns with no frame (the watchdog), its object published.
   void advance(std::int64_t now_ns);
+  /// The same when no frame has come for quiet_ns: while the loop sends
+  /// none (a link down, a suspend), the page still sees the vehicle's
+  /// watchdog stop it.
+  void advance_if_quiet(std::int64_t now_ns, std::int64_t quiet_ns);
   /// The loop's facts after a tick (the loop's thread), the pad taken from
   /// observe_pad() (facts.pad is replaced). Never waits: while
   /// the vehicle's thread reads them, this tick's are left out.
