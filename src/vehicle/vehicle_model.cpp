@@ -162,6 +162,36 @@ void VehicleModel::move(double seconds) {
   cam.extender = step(cam.extender, c.extender, 1, f.extender, seconds);
 }
 
+/// A joint's command and the pair of bits that drive it (plus first).
+struct JointBits {
+  int VehicleModel::Command::*direction;
+  protocol::SignalId plus;
+  protocol::SignalId minus;
+};
+
+/// What moves only with the safety bit: the articulation and the arm.
+constexpr std::array<JointBits, 9> kSafetyJoints = {{
+    {&VehicleModel::Command::front_flipper, signal_id("front_art_up"), signal_id("front_art_down")},
+    {&VehicleModel::Command::rear_flipper, signal_id("rear_art_up"), signal_id("rear_art_down")},
+    {&VehicleModel::Command::torso, signal_id("torso_left"), signal_id("torso_right")},
+    {&VehicleModel::Command::shoulder, signal_id("shoulder_ccw"), signal_id("shoulder_cw")},
+    {&VehicleModel::Command::elbow, signal_id("elbow_ccw"), signal_id("elbow_cw")},
+    {&VehicleModel::Command::wrist, signal_id("wrist_ccw"), signal_id("wrist_cw")},
+    {&VehicleModel::Command::wrist_extension, signal_id("wrist_extend_right"), signal_id("wrist_extend_left")},
+    {&VehicleModel::Command::gripper_rotation, signal_id("gripper_rot_ccw"), signal_id("gripper_rot_cw")},
+    {&VehicleModel::Command::gripper, signal_id("gripper_open"), signal_id("gripper_close")},
+}};
+
+/// The cameras: whatever the safety bit.
+constexpr std::array<JointBits, 6> kCameraJoints = {{
+    {&VehicleModel::Command::pan, signal_id("pt_left"), signal_id("pt_right")},
+    {&VehicleModel::Command::tilt, signal_id("pt_up"), signal_id("pt_down")},
+    {&VehicleModel::Command::zoom, signal_id("zoom_up"), signal_id("zoom_down")},
+    {&VehicleModel::Command::focus, signal_id("focus_up"), signal_id("focus_down")},
+    {&VehicleModel::Command::iris, signal_id("iris_up"), signal_id("iris_down")},
+    {&VehicleModel::Command::extender, signal_id("pt_extend_up"), signal_id("pt_extend_down")},
+}};
+
 void VehicleModel::take(const protocol::DataBytes& data) {
   const auto s = protocol::read_signals(data);
   const auto& f = figures_;
@@ -183,23 +213,10 @@ void VehicleModel::take(const protocol::DataBytes& data) {
   }
   // The ICD's note: the safety bit must be on to move the arm and the articulation.
   if (safety) {
-    c.front_flipper = pair(s, signal_id("front_art_up"), signal_id("front_art_down"));
-    c.rear_flipper = pair(s, signal_id("rear_art_up"), signal_id("rear_art_down"));
-    c.torso = pair(s, signal_id("torso_left"), signal_id("torso_right"));
-    c.shoulder = pair(s, signal_id("shoulder_ccw"), signal_id("shoulder_cw"));
-    c.elbow = pair(s, signal_id("elbow_ccw"), signal_id("elbow_cw"));
-    c.wrist = pair(s, signal_id("wrist_ccw"), signal_id("wrist_cw"));
-    c.wrist_extension = pair(s, signal_id("wrist_extend_right"), signal_id("wrist_extend_left"));
-    c.gripper_rotation = pair(s, signal_id("gripper_rot_ccw"), signal_id("gripper_rot_cw"));
-    c.gripper = pair(s, signal_id("gripper_open"), signal_id("gripper_close"));
+    for (const auto& j : kSafetyJoints) c.*j.direction = pair(s, j.plus, j.minus);
     c.arm_rate = s[signal_id("arm_speed")] / kByteMax;
   }
-  c.pan = pair(s, signal_id("pt_left"), signal_id("pt_right"));
-  c.tilt = pair(s, signal_id("pt_up"), signal_id("pt_down"));
-  c.zoom = pair(s, signal_id("zoom_up"), signal_id("zoom_down"));
-  c.focus = pair(s, signal_id("focus_up"), signal_id("focus_down"));
-  c.iris = pair(s, signal_id("iris_up"), signal_id("iris_down"));
-  c.extender = pair(s, signal_id("pt_extend_up"), signal_id("pt_extend_down"));
+  for (const auto& j : kCameraJoints) c.*j.direction = pair(s, j.plus, j.minus);
   command_ = c;
 
   state_.cameras.main = main_camera(s);

@@ -101,7 +101,6 @@ class VehicleModel {
   static constexpr double kTrailStep = 0.05;
   static constexpr std::size_t kTrailPoints = 20000;
 
- private:
   /// What the last valid frame commands, as rates (-1..1 for a joint).
   struct Command {
     double left = 0;  ///< track, -1 .. 1 of the speed level's top speed
@@ -114,6 +113,7 @@ class VehicleModel {
     int pan = 0, tilt = 0, zoom = 0, focus = 0, iris = 0, extender = 0;
   };
 
+ private:
   /// Integrates [state_.time_ns, until_ns] under command_ (none past the watchdog).
   void integrate(std::int64_t until_ns);
   void move(double seconds);
