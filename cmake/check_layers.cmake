@@ -2,7 +2,7 @@
 # Fails when a file of one stage #includes a header of a higher stage
 # (docs/architecture.md). A file's stage is its folder: include/andros/STAGE/
 # or src/STAGE/; input_sdl is input's SDL half (src/input/sdl/).
-set(stages base protocol input mapping timing link run record view cli)
+set(stages base protocol input mapping timing vehicle link run record view trainer cli)
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/include/andros/*.hpp ${ROOT}/src/*.hpp ${ROOT}/src/*.cpp)
 set(violations "")
 foreach(file IN LISTS files)

@@ -24,6 +24,7 @@
 #include "andros/view/status_board.hpp"
 #include "andros/view/terminal_display.hpp"
 #include "commands.hpp"
+#include "run_bridge.hpp"
 #include "run_input.hpp"
 #include "run_recording.hpp"
 #include "run_reload.hpp"
@@ -34,11 +35,6 @@ namespace andros::cli {
 namespace {
 
 constexpr int kRedrawsPerSecond = 5;
-
-struct RunOptions {
-  std::unique_ptr<CommandLine> settings;  ///< every setting's flag (the settings table)
-  input::SdlInputOptions sdl;             ///< --controller, --controller-db
-};
 
 std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<link::SerialLink>(sim->port_path(), config.baud);
@@ -96,8 +92,11 @@ void suspend_process(JobControlSignals& job, std::optional<view::TerminalDisplay
   if (display) display->start();
 }
 
-int run_bridge(const RunOptions& opt) {
+}  // namespace
+
+int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
   Settings config = resolve_settings(*opt.settings);  // refuses a rate the link cannot carry
+  if (hooks.check) hooks.check(config);
   const std::int64_t rate_millihertz = config.rate.millihertz;
 
   // A reader that went away (`2>&1 | head`, a hung-up ssh session) is a
@@ -134,6 +133,7 @@ int run_bridge(const RunOptions& opt) {
   }
   std::unique_ptr<link::SimVehicle> sim;
   if (config.port == kSimPort) sim = std::make_unique<link::SimVehicle>(config.code);
+  if (sim && hooks.frames) sim->observe_frames(hooks.frames);
   const auto link = make_link(config, sim.get());
   // Logged once every setting has been checked, so that an error stays one line.
   spdlog::info("robot {}, mapping {}, port {}, code {:02X}{}", engine.robot, engine.mapping_file, config.port,
@@ -141,7 +141,8 @@ int run_bridge(const RunOptions& opt) {
 
   // The flight recorder (docs/recording.md): a thread of its own, never in the loop's way.
   const auto recording = RunRecording::start(config, engine, *link, *input);
-  input::InputSource& loop_input = recording ? recording->input() : *input;
+  input::InputSource& recorded_input = recording ? recording->input() : *input;
+  input::InputSource& loop_input = hooks.input ? hooks.input(recorded_input) : recorded_input;
 
   view::RunStatus initial;
   initial.robot = engine.robot;
@@ -153,6 +154,7 @@ int run_bridge(const RunOptions& opt) {
   initial.rate_hz = static_cast<double>(rate_millihertz) / timing::kMillihertzPerHz;
   initial.input = config.input == kSdlInput ? "controller" : config.input;
   initial.link_name = sim ? "sim vehicle on " + link->name() : link->name();
+  if (hooks.start) initial.trainer = hooks.start(config);
   view::RunStatusBoard board(initial);  // fed by the loop's reports only
   const auto compose = [&board, &sim, &recording](view::TermSize size) {
     view::RunStatus status = board.status();
@@ -191,9 +193,11 @@ int run_bridge(const RunOptions& opt) {
     feedback.observe(run::feedback_status(r));
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
     if (service.active()) service.observe(r, board.status());
+    if (hooks.observe) hooks.observe(r, board);
   });
   display.reset();
   service.stopping();
+  if (hooks.after_run) hooks.after_run(stop);
 
   const auto end = board.status();
   std::string why = "end of the input";
@@ -218,8 +222,6 @@ int run_bridge(const RunOptions& opt) {
   return kExitOk;
 }
 
-}  // namespace
-
 void add_run_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<RunOptions>();
   auto* cmd =
@@ -233,7 +235,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
                          "With no port, frames go to a built-in simulated vehicle (sim).");
   opt->settings = std::make_unique<CommandLine>(*cmd, kRun);
   add_sdl_options(cmd, opt->sdl);
-  cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt); });
+  cmd->callback([opt, &exit_code] { exit_code = run_bridge(*opt, RunHooks{}); });
 }
 
 }  // namespace andros::cli

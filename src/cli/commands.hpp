@@ -11,6 +11,8 @@ void add_frame_command(CLI::App& app, int& exit_code);
 void add_replay_command(CLI::App& app, int& exit_code);
 void add_check_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
+/// `run` with the simulated vehicle shown on a local web page (docs/trainer.md).
+void add_trainer_command(CLI::App& app, int& exit_code);
 void add_monitor_command(CLI::App& app, int& exit_code);
 void add_controllers_command(CLI::App& app, int& exit_code);
 void add_record_command(CLI::App& app, int& exit_code);

@@ -149,6 +149,7 @@ int andros::cli::program_main(int argc, char** argv) try {
   andros::cli::add_replay_command(app, exit_code);
   andros::cli::add_check_command(app, exit_code);
   andros::cli::add_run_command(app, exit_code);
+  andros::cli::add_trainer_command(app, exit_code);
   andros::cli::add_monitor_command(app, exit_code);
   andros::cli::add_controllers_command(app, exit_code);
   andros::cli::add_record_command(app, exit_code);

@@ -8,6 +8,7 @@ void VehicleView::push(std::span<const std::uint8_t> bytes, std::int64_t now_ns)
     last_ = f.data;
     last_valid_ = f.valid;
     last_errors_ = f.errors;
+    if (observer_) observer_(f, now_ns);
   });
 }
 

@@ -51,6 +51,16 @@ std::string centred(const std::string& text, std::size_t width) {
   return std::string(pad / 2, ' ') + text + std::string(pad - pad / 2, ' ');
 }
 
+}  // namespace
+
+std::string state_words(const RunStatus& s) {
+  if (s.enabled()) return "ENABLED" + held_back_note(s.enable_text);
+  if (s.shutting_down()) return "SHUTTING DOWN: sending neutral frames";
+  return to_upper(run::to_string(s.state)) + ": " + (s.reset_progress.empty() ? s.enable_text : s.reset_progress);
+}
+
+namespace {
+
 /// The state, whole: why the robot is not enabled is what the operator must
 /// read, so it wraps under its label instead of being cut.
 std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
@@ -60,9 +70,7 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
     out.push_back(
         Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
   } else {
-    const auto text = s.shutting_down() ? "SHUTTING DOWN: sending neutral frames"
-                                        : to_upper(run::to_string(s.state)) + ": " +
-                                              (s.reset_progress.empty() ? s.enable_text : s.reset_progress);
+    const auto text = state_words(s);
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);
     const std::string indent(kLabel.size(), ' ');
     for (const auto& part : wrap(text, room)) {
@@ -181,7 +189,8 @@ Screen render_run_screen(const RunStatus& s, TermSize size) {
   if (stopped) {
     screen.pin(Line(centred(std::string(kStopBanner) + ": " + s.stopped_by, width), Style::kBanner).one_row());
   }
-  auto title = Line("andros-bridge run", Style::kBold)
+  // The trainer says so first: a trainee must never take it for the vehicle.
+  auto title = Line(s.trainer.empty() ? "andros-bridge run" : "andros-bridge TRAINER", Style::kBold)
                    .add(fmt("  robot %s  code %02X  ", s.robot.c_str(), unsigned{s.code}))
                    .add(measuring(s) ? std::string("measuring") : fmt("%.1f Hz", s.sent_timing.rate_hz),
                         measuring(s) || s.sent_timing.rate_hz > 0 ? Style::kBold : Style::kAlert)
@@ -189,6 +198,7 @@ Screen render_run_screen(const RunStatus& s, TermSize size) {
   // Without --weapons nothing on the screen would say so: no banner is not the same as "off".
   if (!s.weapons) title.add("  weapons off");
   screen.pin(std::move(title));
+  if (!s.trainer.empty()) screen.pin(Line("trainer     ").hang(kLabelWidth).add(s.trainer, Style::kBold));
   const auto state = state_lines(s, width);
   for (const auto& line : state) screen.pin(line);
   screen.pin(link_line(s, width));

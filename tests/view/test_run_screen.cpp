@@ -77,6 +77,16 @@ TEST(RunScreen, TheHeaderIsFirstAndWholeAt80x24AndSmaller) {
   EXPECT_EQ(lines[4], "mapping     /usr/share/andros-bridge/mappings/hd1.yaml");
 }
 
+TEST(RunScreen, TheTrainerSaysSoInItsTitleAndWhereItsPageIs) {
+  RunStatus s = driving(false);
+  s.trainer = "simulated vehicle only; page http://127.0.0.1:8037/";
+  const auto lines = shown(s, {80, 24});
+  EXPECT_TRUE(lines[0].starts_with("andros-bridge TRAINER  robot HD1")) << lines[0];
+  EXPECT_EQ(lines[1], "trainer     simulated vehicle only; page http://127.0.0.1:8037/");
+  EXPECT_EQ(lines[2], "state       ENABLED   layer: arm");
+  EXPECT_TRUE(shown(driving(false), {80, 24})[0].starts_with("andros-bridge run ")) << "run's title unchanged";
+}
+
 TEST(RunScreen, AtLeastTheBannerAndTheStateOnATinyTerminal) {
   const auto lines = shown(driving(true), {30, 2});
   ASSERT_EQ(lines.size(), 2u);

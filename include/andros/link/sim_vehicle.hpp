@@ -26,6 +26,9 @@ class SimVehicle {
   /// The near end's path, for a SerialLink.
   [[nodiscard]] const std::string& port_path() const { return path_; }
 
+  /// Hands every frame the vehicle decodes to observer, on the vehicle's
+  /// thread, as it arrives (before start()).
+  void observe_frames(VehicleView::FrameObserver observer) { view_.observe_frames(std::move(observer)); }
   /// Starts the vehicle's reading thread (after all other set-up).
   void start();
   /// Reads what is still in flight, then stops the thread (the destructor does too).

@@ -93,10 +93,16 @@ struct RunStatus {
   std::string recorder;                        ///< the flight recorder: its session, or what it dropped; "" when off
   bool recorder_failing = false;               ///< records were dropped: the session is incomplete
   std::int64_t gate_trips = 0;                 ///< frames the frame gate replaced (each an internal error)
+  /// `trainer`: what the page is (its address, or why there is none); empty in `run`.
+  std::string trainer;
 
   [[nodiscard]] bool enabled() const { return state == run::OpState::kEnabled; }
   [[nodiscard]] bool shutting_down() const { return state == run::OpState::kShuttingDown; }
 };
+
+/// The operating state in the screen's words: "ENABLED", "STOPPED: ...",
+/// "SHUTTING DOWN: sending neutral frames" (the trainer's page says the same).
+std::string state_words(const RunStatus& status);
 
 /// A speed level as the screen and the log give it: "2/3 (50%)".
 std::string speed_text(const mapping::SpeedLevel& speed);

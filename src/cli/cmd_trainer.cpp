@@ -1,0 +1,191 @@
+// `andros-bridge trainer`: `run`'s loop (the same pad, mapping, safety rules,
+// state machine, recorder and status view) with the link always the
+// simulated vehicle, whose frames drive a vehicle model shown on a local
+// web page (docs/trainer.md). It never opens a serial port or a TCP link.
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "andros/base/clock.hpp"
+#include "andros/base/error.hpp"
+#include "andros/base/text.hpp"
+#include "andros/cli/command_line.hpp"
+#include "andros/run/operating_state.hpp"
+#include "andros/trainer/trainer_feed.hpp"
+#include "andros/trainer/trainer_page.hpp"
+#include "andros/trainer/trainer_server.hpp"
+#include "andros/vehicle/robot_figures.hpp"
+#include "commands.hpp"
+#include "run_bridge.hpp"
+#include "sdl_options.hpp"
+
+namespace andros::cli {
+namespace {
+
+struct TrainerOptions {
+  RunOptions run;
+  std::string listen;        ///< --listen ADDR:PORT; empty: 127.0.0.1 and the default port
+  bool exit_at_end = false;  ///< --exit-at-end: no page kept up after the script
+  std::size_t clients = trainer::HubLimits{}.max_clients;
+};
+
+/// What the trainer sets up around `run`'s loop, alive for the whole run.
+class Trainer {
+ public:
+  explicit Trainer(const TrainerOptions& opt) : opt_(opt) {}
+  ~Trainer() { stop_watch(); }
+  Trainer(const Trainer&) = delete;
+  Trainer& operator=(const Trainer&) = delete;
+
+  RunHooks hooks() {
+    RunHooks h;
+    h.check = [this](const Settings& config) { check(config); };
+    h.frames = [this](const protocol::DecodedFrame& frame, std::int64_t now_ns) { feed_->on_frame(frame, now_ns); };
+    h.input = [this](input::InputSource& inner) -> input::InputSource& {
+      input_.emplace(inner, *feed_);
+      return *input_;
+    };
+    h.start = [this](const Settings&) { return start(); };
+    h.observe = [this](const run::TickReport& r, const view::RunStatusBoard& board) { observe(r, board); };
+    h.after_run = [this](ShutdownRequest& stop) { after_run(stop); };
+    return h;
+  }
+
+ private:
+  /// A trainee must never move a real vehicle believing it is the simulator:
+  /// any port but the simulated vehicle is refused, whoever set it.
+  void check(const Settings& config) {
+    if (config.port != kSimPort) {
+      throw InputError(config.port_pos, "the trainer drives only its simulated vehicle: port '" +
+                                            printable_text(config.port) +
+                                            "' refused (use 'andros-bridge run' for a real link)");
+    }
+    listen_ = opt_.listen.empty() ? trainer::ListenAddress{} : trainer::parse_listen(opt_.listen, {"--listen"});
+    hub_ = std::make_unique<trainer::StreamHub>(trainer::HubLimits{.max_clients = opt_.clients});
+    feed_ = std::make_unique<trainer::TrainerFeed>(vehicle::figures_for(config.robot), *hub_);
+  }
+
+  /// The server, on a thread of its own; its failure never stops driving.
+  std::string start() {
+    if (!listen_.loopback()) {
+      spdlog::warn("the trainer's page listens on {}, not only this machine: whoever reaches it sees the vehicle",
+                   listen_.host_header());
+    }
+    server_ =
+        std::make_unique<trainer::TrainerServer>(trainer::ServerOptions{.listen = listen_}, *hub_,
+                                                 trainer::trainer_page(), [this] { return feed_->state_with_trail(); });
+    std::string why;
+    if (!server_->start(&why)) {
+      spdlog::error("trainer: {}: no page, driving goes on (--listen ADDR:PORT for another port)", why);
+      server_.reset();
+      return "simulated vehicle only; no page: " + why;
+    }
+    spdlog::info("trainer: the simulated vehicle's page is at {}", listen_.url());
+    watch_ = std::thread([this] { watch(); });
+    return "simulated vehicle only; page " + listen_.url();
+  }
+
+  void observe(const run::TickReport& r, const view::RunStatusBoard& board) {
+    // The state's words change seldom: formed only when the state or its text does.
+    if (r.state != last_state_ || r.tick % kWordsEveryTicks == 0) {
+      const auto status = board.status();
+      words_ = view::state_words(status);
+      layer_ = status.layer;
+      last_state_ = r.state;
+    }
+    last_tick_ = r.tick;
+    last_t_ms_ = r.t_ms;
+    feed_->observe(trainer::LoopFacts{.tick = r.tick,
+                                      .t_ms = r.t_ms,
+                                      .state = words_,
+                                      .state_name = std::string(run::to_string(r.state)),
+                                      .layer = layer_,
+                                      .pad = {}});  // the pad: the feed's own, from the input's pump
+  }
+
+  /// While no frame comes (a link down, a suspend, after the run), the model
+  /// is advanced now and then, so that the page sees the vehicle's watchdog.
+  void watch() {
+    std::unique_lock lock(watch_mutex_);
+    while (!watch_cv_.wait_for(lock, kWatchEvery, [this] { return watch_stop_; })) {
+      feed_->advance_if_quiet(monotonic_ns(), std::chrono::nanoseconds(kWatchEvery).count());
+    }
+  }
+
+  void stop_watch() {
+    if (!watch_.joinable()) return;
+    {
+      const std::lock_guard lock(watch_mutex_);
+      watch_stop_ = true;
+    }
+    watch_cv_.notify_all();
+    watch_.join();
+  }
+
+  void after_run(ShutdownRequest& stop) {
+    if (opt_.exit_at_end || !server_ || stop.requested()) return;
+    spdlog::info("trainer: the input has ended; the page stays up at {} until Ctrl-C", listen_.url());
+    // The page shows where the vehicle ended, and says the run is over (not "shutting down" for ever).
+    feed_->observe(trainer::LoopFacts{.tick = last_tick_,
+                                      .t_ms = last_t_ms_,
+                                      .state = "INPUT ENDED: the page stays up until Ctrl-C",
+                                      .state_name = "ended",
+                                      .layer = "",
+                                      .pad = {}});
+    feed_->advance(monotonic_ns());
+    stop.sleep_until(kNoDeadline);
+  }
+
+  static constexpr std::chrono::milliseconds kWatchEvery{100};
+  /// The state's words are formed again at least this often (the enable text's countdowns).
+  static constexpr std::int64_t kWordsEveryTicks = 5;
+
+  const TrainerOptions& opt_;
+  trainer::ListenAddress listen_;
+  std::unique_ptr<trainer::StreamHub> hub_;
+  std::unique_ptr<trainer::TrainerFeed> feed_;
+  std::optional<trainer::WatchedInput> input_;
+  std::unique_ptr<trainer::TrainerServer> server_;
+  std::optional<run::OpState> last_state_;
+  std::string words_;
+  std::string layer_;
+  std::int64_t last_tick_ = -1;
+  std::int64_t last_t_ms_ = 0;
+  std::thread watch_;
+  std::mutex watch_mutex_;
+  std::condition_variable watch_cv_;
+  bool watch_stop_ = false;
+};
+
+}  // namespace
+
+void add_trainer_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<TrainerOptions>();
+  auto* cmd = app.add_subcommand(
+      "trainer",
+      "The trainer: 'run' with the link always the built-in simulated vehicle, whose frames drive a\n"
+      "model of the robot shown on a local web page (http://127.0.0.1:" +
+          std::to_string(trainer::kDefaultPort) +
+          "/ by default; docs/trainer.md): the same pad,\n"
+          "mapping, safety rules and status view. A port other than sim (flag or config file) is refused.\n"
+          "After an event script ends the page stays up until Ctrl-C (--exit-at-end: not).");
+  opt->run.settings = std::make_unique<CommandLine>(*cmd, kRun);
+  add_sdl_options(cmd, opt->run.sdl);
+  cmd->add_option("--listen", opt->listen,
+                  "Serve the page on ADDR:PORT (default 127.0.0.1:" + std::to_string(trainer::kDefaultPort) +
+                      "); any address but 127.0.0.1 is warned about: whoever reaches it sees the vehicle")
+      ->type_name("ADDR:PORT");
+  cmd->add_flag("--exit-at-end", opt->exit_at_end, "End when the event script ends (no page kept up): for tests");
+  cmd->callback([opt, &exit_code] {
+    Trainer trainer(*opt);
+    exit_code = run_bridge(opt->run, trainer.hooks());
+  });
+}
+
+}  // namespace andros::cli

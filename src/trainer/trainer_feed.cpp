@@ -1,0 +1,154 @@
+#include "andros/trainer/trainer_feed.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace andros::trainer {
+namespace {
+
+using nlohmann::json;
+
+/// Millimetres and hundredths of a degree are all the page draws; shorter lines.
+double r3(double v) { return std::round(v * 1000.0) / 1000.0; }
+
+std::string_view camera_name(vehicle::Camera c) {
+  switch (c) {
+    case vehicle::Camera::kNone: return "none";
+    case vehicle::Camera::kFrontDrive: return "front drive";
+    case vehicle::Camera::kGripper: return "gripper";
+    case vehicle::Camera::kPtz: return "PTZ";
+    case vehicle::Camera::kRearDrive: return "rear drive";
+  }
+  return "none";
+}
+
+json pose_json(const vehicle::Pose& p) { return {{"x", r3(p.x)}, {"y", r3(p.y)}, {"heading", r3(p.heading)}}; }
+
+json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
+  const auto& s = model.state();
+  const auto& a = s.arm;
+  const auto& c = s.cameras;
+  json fired = json::object();
+  json held = json::array();
+  for (std::size_t i = 0; i < vehicle::kWeaponCount; ++i) {
+    fired[std::string(vehicle::weapon_name(i))] = s.fired[i];
+    if (s.fire_bits[i]) held.push_back(vehicle::weapon_name(i));
+  }
+  json axes = json::object();
+  for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i)
+    axes[std::string(input::kPadAxisNames[i])] = facts.pad.axes[i];
+  return {
+      {"tick", facts.tick},
+      {"t_ms", facts.t_ms},
+      // Microseconds: the arrival times measure the loop's punctuality (bench/trainer_clients.py).
+      {"time", std::round(static_cast<double>(s.time_ns - s.start_ns) / 1e3) / 1e6},
+      {"state", facts.state},
+      {"state_name", facts.state_name},
+      {"layer", facts.layer},
+      {"robot", model.figures().robot},
+      {"pose", pose_json(s.pose)},
+      {"speed", r3(s.speed)},
+      {"turn_rate", r3(s.turn_rate)},
+      {"flippers", {{"front", r3(s.front_flipper)}, {"rear", r3(s.rear_flipper)}}},
+      {"arm",
+       {{"torso", r3(a.torso)},
+        {"shoulder", r3(a.shoulder)},
+        {"elbow", r3(a.elbow)},
+        {"wrist", r3(a.wrist)},
+        {"wrist_extension", r3(a.wrist_extension)}}},
+      {"gripper", {{"opening", r3(a.gripper_opening)}, {"rotation", r3(a.gripper_rotation)}}},
+      {"cameras",
+       {{"main", camera_name(c.main)},
+        {"inset", camera_name(c.inset)},
+        {"pan", r3(c.pan)},
+        {"tilt", r3(c.tilt)},
+        {"zoom", r3(c.zoom)},
+        {"focus", r3(c.focus)},
+        {"iris", r3(c.iris)},
+        {"extender", r3(c.extender)}}},
+      {"light", r3(s.light)},
+      {"laser", s.laser},
+      {"fired", fired},
+      {"fire_held", held},
+      {"tool_on", s.tool_on},
+      {"enable_key", s.enable_key},
+      {"safety", s.safety},
+      {"drive", s.drive},
+      {"watchdog", s.watchdog},
+      {"frames", s.frames},
+      {"ignored", s.ignored},
+      {"pad",
+       {{"connected", facts.pad.connected}, {"name", facts.pad.name}, {"buttons", facts.pad.buttons}, {"axes", axes}}},
+  };
+}
+
+}  // namespace
+
+std::string stream_object(const vehicle::VehicleModel& model, const LoopFacts& facts) {
+  // Replacement characters for bytes that are not UTF-8 (a pad's name is hostile text).
+  return stream_json(model, facts).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+void TrainerFeed::on_frame(const protocol::DecodedFrame& frame, std::int64_t now_ns) {
+  const std::lock_guard lock(model_mutex_);
+  model_.on_frame(frame, now_ns);
+  publish_locked();
+}
+
+void TrainerFeed::advance(std::int64_t now_ns) {
+  const std::lock_guard lock(model_mutex_);
+  model_.advance(now_ns);
+  publish_locked();
+}
+
+void TrainerFeed::advance_if_quiet(std::int64_t now_ns, std::int64_t quiet_ns) {
+  const std::lock_guard lock(model_mutex_);
+  if (!model_.state().started || now_ns - model_.state().time_ns < quiet_ns) return;
+  model_.advance(now_ns);
+  publish_locked();
+}
+
+void TrainerFeed::publish_locked() {
+  LoopFacts facts;
+  {
+    const std::lock_guard lock(facts_mutex_);
+    facts = facts_;
+  }
+  latest_ = stream_object(model_, facts);
+  hub_.publish(latest_);
+}
+
+void TrainerFeed::observe(LoopFacts facts) {
+  facts.pad = pad_;  // copied: after the run, the pad as it was last
+  std::unique_lock lock(facts_mutex_, std::try_to_lock);
+  if (lock.owns_lock()) facts_ = std::move(facts);
+}
+
+void TrainerFeed::observe_pad(const input::InputState& input) {
+  const auto& pad = input.operator_pad();
+  pad_.connected = pad.connected();
+  pad_.name = pad.name();
+  pad_.buttons.clear();
+  for (std::size_t i = 0; i < input::kPadButtonNames.size(); ++i) {
+    const input::InputKey key{input::InputKind::kPadButton, static_cast<std::uint16_t>(i)};
+    if (pad.button(key).down) pad_.buttons.emplace_back(input::kPadButtonNames[i]);
+  }
+  for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i) {
+    pad_.axes[i] = pad.axis(input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(i)});
+  }
+}
+
+std::string TrainerFeed::state_with_trail() const {
+  const std::lock_guard lock(model_mutex_);
+  if (latest_.empty()) return "{}";
+  auto out = json::parse(latest_);
+  json trail = json::array();
+  for (const auto& p : model_.trail()) trail.push_back({r3(p.x), r3(p.y)});
+  out["trail"] = std::move(trail);
+  const auto& f = model_.figures();
+  out["figures"] = {{"length", f.length_m.value},       {"width", f.width_m.value},     {"height", f.height_m.value},
+                    {"upper_arm", f.upper_arm_m.value}, {"forearm", f.forearm_m.value}, {"flipper", f.flipper_m.value}};
+  return out.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+}  // namespace andros::trainer

@@ -1,0 +1,175 @@
+"""The trainer's page in a real browser (issue 37): headless Chromium, driven
+through chromedriver and Selenium (Debian's chromium, chromium-driver and
+python3-selenium), opens the page while a scripted drive runs, reads the pose
+of the vehicle it drew (the #vehicle element's data-x, data-y, data-heading,
+data-tick) and checks that it follows GET /state; keeps a screenshot.
+
+  /usr/bin/python3 test_browser.py BIN DATA_DIR SCREENSHOT.png [DOCS_PNG]
+
+DOCS_PNG (docs/trainer.png) must be a 1280x720 screenshot of the page: with
+ANDROS_DOCS_SCREENSHOT=1 this run's screenshot replaces it (how the docs'
+picture is made again after the page changes)."""
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+
+from selenium import webdriver
+from selenium.webdriver.chrome.options import Options
+from selenium.webdriver.chrome.service import Service
+
+binary, data, shot = sys.argv[1:4]
+docs_png = sys.argv[4] if len(sys.argv) > 4 else None
+failures = []
+
+
+def fail(why):
+    print("FAIL:", why, file=sys.stderr)
+    failures.append(why)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def state(port):
+    with urllib.request.urlopen(f"http://127.0.0.1:{port}/state", timeout=2) as r:
+        return json.loads(r.read())
+
+
+def cpu_seconds(pids):
+    """User and system CPU of these processes so far (their own, /proc)."""
+    total = 0
+    for pid in pids:
+        try:
+            with open(f"/proc/{pid}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+            total += int(fields[11]) + int(fields[12])
+        except OSError:
+            pass
+    return total / os.sysconf("SC_CLK_TCK")
+
+
+def descendants(pid):
+    """Every process under pid (chromedriver's browser and its helpers), from /proc."""
+    parent = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as f:
+                    parent[int(entry)] = int(f.read().rsplit(")", 1)[1].split()[1])
+            except OSError:
+                pass
+    out, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        kids = [k for k, v in parent.items() if v == p]
+        out += kids
+        todo += kids
+    return out
+
+
+port = free_port()
+tmp = tempfile.mkdtemp()
+env = dict(os.environ, XDG_STATE_HOME=tmp, XDG_CONFIG_HOME=tmp)
+trainer = subprocess.Popen([binary, "trainer", "--listen", f"127.0.0.1:{port}", "--input",
+                            os.path.join(data, "trainer", "browser_drive.events")],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
+driver = None
+try:
+    deadline = time.monotonic() + 20
+    while True:
+        try:
+            state(port)
+            break
+        except OSError:
+            if time.monotonic() > deadline:
+                raise SystemExit("FAIL: the trainer's page never answered")
+            time.sleep(0.05)
+    started = time.monotonic()
+
+    options = Options()
+    for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                "--window-size=1280,720", "--hide-scrollbars"]:
+        options.add_argument(arg)
+    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    # The page's own 1280x720, whatever the window's frame takes.
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                           {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
+    driver.get(f"http://127.0.0.1:{port}/")
+    time.sleep(1)
+    browser = descendants(driver.service.process.pid)
+    cpu0, wall0 = cpu_seconds(browser), time.monotonic()
+
+    drawn = lambda: driver.execute_script(
+        "const v = document.getElementById('vehicle').dataset;"
+        "return [Number(v.x), Number(v.y), Number(v.heading), Number(v.tick)];")
+    samples = []
+    shot_taken = False
+    # The drive is 12.8 s long: sample the page and /state side by side while it runs.
+    while time.monotonic() - started < 14:
+        page = drawn()
+        s = state(port)
+        samples.append((page, s["pose"], s["tick"]))
+        if not shot_taken and time.monotonic() - started > 12.0:
+            driver.save_screenshot(shot)
+            shot_taken = True
+        time.sleep(0.2)
+    cpu = cpu_seconds(browser) - cpu0
+    wall = time.monotonic() - wall0
+    print(f"chromium: {cpu:.2f} s of CPU in {wall:.1f} s ({100 * cpu / wall:.0f}% of a core) drawing the page")
+
+    # The page follows: while it drove, each drawn pose is /state's of at most a few frames before.
+    moving = [(p, q, t) for p, q, t in samples if p[3] >= 0]
+    if len(moving) < 20:
+        fail(f"the page drew {len(moving)} of {len(samples)} samples")
+    for p, q, tick in moving:
+        lag = tick - p[3]
+        if not 0 <= lag <= 5:
+            fail(f"the page drew tick {p[3]} while /state was at {tick}")
+        # 2.34 m/s at most (HD-1, 8.4 km/h) over the frames between them, and a frame more.
+        if abs(p[0] - q["x"]) > 0.1 * (lag + 1) + 1e-6 or abs(p[1] - q["y"]) > 0.1 * (lag + 1) + 1e-6:
+            fail(f"page pose {p[:3]} at tick {p[3]} far from /state's {q} at tick {tick}")
+    if max(p[0] for p, _, _ in moving) < 3.0:
+        fail("the drawn vehicle never moved 3 m forward")
+    # At rest after the drive: exactly /state's pose.
+    time.sleep(0.5)
+    page, s = drawn(), state(port)
+    if [round(page[0], 3), round(page[1], 3), round(page[2], 3)] != [s["pose"]["x"], s["pose"]["y"], s["pose"]["heading"]]:
+        fail(f"at rest, the page drew {page} and /state says {s['pose']}")
+    if s["state_name"] != "ended":
+        fail(f"after the script: state {s['state_name']!r}, expected 'ended' (the page kept up)")
+    if not shot_taken:
+        driver.save_screenshot(shot)
+    if docs_png and os.environ.get("ANDROS_DOCS_SCREENSHOT") == "1":
+        shutil.copyfile(shot, docs_png)
+finally:
+    if driver:
+        driver.quit()
+    trainer.send_signal(signal.SIGINT)
+    try:
+        _, err = trainer.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        trainer.kill()
+        _, err = trainer.communicate()
+    shutil.rmtree(tmp, ignore_errors=True)
+if trainer.returncode != 0:
+    fail(f"the trainer exited {trainer.returncode}: {err.decode(errors='replace')[-600:]}")
+print(f"screenshot: {shot}")
+for png in [shot] + ([docs_png] if docs_png else []):
+    with open(png, "rb") as f:
+        head = f.read(24)
+    size = (int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big"))
+    if not head.startswith(b"\x89PNG") or size != (1280, 720):
+        fail(f"{png}: not a 1280x720 PNG ({size})")
+if failures:
+    sys.exit(1)
+print("all checks passed")
