@@ -10,7 +10,6 @@ packages=(
   libgtest-dev libgmock-dev python3 groff-base
   fonts-dejavu-core  # the plot's font: tests/cli/check_plot.py measures its labels with it
   ccache  # keeps compiled objects between builds (CMakeLists.txt uses it when installed)
-  chromium chromium-driver python3-selenium  # the trainer's real-browser test (tests/trainer/test_browser.py)
 )
 packages+=("$@")  # callers ask for more: the test command clang, libFuzzer, clang-format and clang-tidy
 

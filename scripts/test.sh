@@ -15,16 +15,20 @@ cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 # Everything installed before any phase starts (two apt-gets at once would
 # fight over dpkg's lock): scripts/setup.sh's own list is what the build needs;
-# the full run adds clang and its libFuzzer, clang-format and clang-tidy, what
+# the full run also adds clang and its libFuzzer, clang-format and clang-tidy, what
 # the package's build and check use (debhelper, lintian, systemd-analyze) and
 # systemd-nspawn (systemd-container).
+# Both add Debian's headless Chromium, its driver and Selenium for the
+# trainer's real-browser test (tests/trainer/test_browser.py): the tests need
+# them, `scripts/run.sh` does not.
+browser=(chromium chromium-driver python3-selenium)
 if [[ ${ANDROS_QUICK:-} == 1 ]]; then
   goal=quick
-  scripts/setup.sh
+  scripts/setup.sh "${browser[@]}"
 else
   goal=all
-  scripts/setup.sh clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev debhelper fakeroot lintian systemd \
-    systemd-container
+  scripts/setup.sh "${browser[@]}" clang libclang-rt-14-dev clang-format clang-tidy dpkg-dev debhelper fakeroot \
+    lintian systemd systemd-container
 fi
 rm -rf "$build/phases"
 export ANDROS_TEST_T0=$EPOCHSECONDS
