@@ -146,7 +146,16 @@ view::PlotInput from_script(const PlotOptions& opt) {
   run::ReplayOptions replay{.rate_millihertz = settings.rate.millihertz,
                             .engine = mapping::EngineOptions{settings.weapons, settings.code}};
   replay.load = [&opt](const std::string& file) { return mapping::load_mapping(beside(opt.source, file)); };
-  replay.observe = [&in](const run::TickReport& r) { in.samples.push_back(view::plot_sample(r)); };
+  replay.observe = [&in](const run::TickReport& r) {
+    auto sample = view::plot_sample(r);
+    // When a reset was: its first report, carried while it stands (a page
+    // that begins after it does not draw it).
+    if (!sample.reset.empty()) {
+      const bool standing = !in.samples.empty() && in.samples.back().reset == sample.reset;
+      sample.reset_ms = standing ? in.samples.back().reset_ms : sample.t_ms;
+    }
+    in.samples.push_back(std::move(sample));
+  };
   run::replay(player, mapping::Engine(std::move(mapping), replay.engine), replay,
               [](std::int64_t, const protocol::DataBytes&) {});
   return in;

@@ -31,6 +31,7 @@ using plot_detail::tick_at_or_after;
 /// Who stopped, as the plot labels it.
 std::string stopper(std::optional<run::StopBy> by) { return by ? std::string(run::to_string(*by)) : std::string(); }
 std::string stopper(const record::StopRecord* r) { return r != nullptr ? stopper(r->by) : std::string(); }
+std::int64_t reset_time(const record::StopRecord* r) { return r != nullptr ? r->t_ms : -1; }
 
 }  // namespace
 
@@ -162,7 +163,7 @@ std::vector<PlotSample> make_samples(const record::Session& session, const PlotA
     const std::int64_t t = clock.time_of(tick);
     records.at(t);
     columns.add(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, records.state, records.layer,
-                           stopper(records.stop), stopper(records.reset), ticks});
+                           stopper(records.stop), stopper(records.reset), ticks, reset_time(records.reset)});
   };
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];
@@ -185,7 +186,8 @@ std::vector<PlotSample> make_samples(const record::Session& session, const PlotA
       const std::int64_t t = clock.time_of(through + 1);
       records.at(t);
       columns.add(
-          PlotSample{t, {}, false, records.state, records.layer, stopper(records.stop), stopper(records.reset), 0});
+          PlotSample{t, {}, false, records.state, records.layer, stopper(records.stop), stopper(records.reset), 0,
+                     reset_time(records.reset)});
     }
   }
   columns.finish();

@@ -159,10 +159,13 @@ void draw_states(Page& page, const std::vector<const PlotSample*>& s, std::int64
   runs(
       s, end, [](const PlotSample& p) { return p.reset; },
       [&](const PlotSample& first, std::int64_t, const std::string& by) {
-        if (by.empty() || first.t_ms < page.from()) return;
-        const double x = page.x(first.t_ms);
+        // Where the reset was: the run's first sample is the page's first
+        // when a sample falls on the page's start, whenever the reset was.
+        const std::int64_t at = first.reset_ms >= 0 ? first.reset_ms : first.t_ms;
+        if (by.empty() || at < page.from()) return;
+        const double x = page.x(at);
         page.line(x, kBandTop - 3, x, kBandTop + kBandHeight, "#212121", 1.2,
-                  fmt::format("reset by the {} at {} s", by, exact_seconds(first.t_ms)));
+                  fmt::format("reset by the {} at {} s", by, exact_seconds(at)));
         for (const auto& label : {"reset by the " + by, std::string("reset")}) {
           const double w = text_width(label, kResetFont);
           if (resets.place(x + 2, x + 2 + w)) {

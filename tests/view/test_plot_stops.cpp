@@ -43,6 +43,40 @@ TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
   EXPECT_EQ(samples[3].stop, "");
 }
 
+// A reset is drawn where it happened, and not at all on a page that begins
+// after it, even when the page's first instant is a tick and the reset still
+// stands there (nothing enabled between): under load, a run put the reset
+// close before such a page, and the page drew a reset at its left edge.
+TEST(PlotStops, AResetBeforeThePageIsNotDrawnAtItsStart) {
+  record::Session s;
+  s.settings.rate_millihertz = 25'000;
+  for (std::int64_t tick = 0; tick <= 10; ++tick) {  // a frame of its own every tick: a sample at each
+    s.frames.push_back({.tick = tick, .t_ms = tick * 40, .data = {static_cast<std::uint8_t>(tick)}});
+  }
+  s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};
+  s.stops = {{.t_ms = 40, .reset = false, .by = run::StopBy::kOperator, .name = "Pad A"},
+             {.t_ms = 120, .reset = true, .by = run::StopBy::kOperator, .name = ""}};
+  s.end.emplace();
+  s.end->t_ms = 400;
+  s.end->last_tick = 10;
+  for (const std::int64_t from : {160, 200}) {
+    PlotInput in;
+    in.rate_millihertz = s.settings.rate_millihertz;
+    in.from_ms = from;
+    in.to_ms = 400;
+    in.samples = plot_samples(s, PlotAxis{.from_ms = in.from_ms, .to_ms = in.to_ms});
+    EXPECT_EQ(render_plot_svg(in).find("reset by the"), std::string::npos) << "from " << from << " ms";
+  }
+  for (const std::int64_t from : {0, 80, 120}) {
+    PlotInput in;
+    in.rate_millihertz = s.settings.rate_millihertz;
+    in.from_ms = from;
+    in.to_ms = 400;
+    in.samples = plot_samples(s, PlotAxis{.from_ms = in.from_ms, .to_ms = in.to_ms});
+    EXPECT_NE(render_plot_svg(in).find("reset by the operator at 0.12 s"), std::string::npos) << "from " << from << " ms";
+  }
+}
+
 TEST(ServiceStatus, SaysWhoStoppedAndWhoReset) {
   RunStatus s;
   s.robot = "HD1";
