@@ -185,9 +185,15 @@ std::vector<PlotSample> make_samples(const record::Session& session, const PlotA
       // The ticks the loop did not run: nothing went out, the line breaks.
       const std::int64_t t = clock.time_of(through + 1);
       records.at(t);
-      columns.add(
-          PlotSample{t, {}, false, records.state, records.layer, stopper(records.stop), stopper(records.reset), 0,
-                     reset_time(records.reset)});
+      columns.add(PlotSample{t,
+                             {},
+                             false,
+                             records.state,
+                             records.layer,
+                             stopper(records.stop),
+                             stopper(records.reset),
+                             0,
+                             reset_time(records.reset)});
     }
   }
   columns.finish();

@@ -73,7 +73,8 @@ TEST(PlotStops, AResetBeforeThePageIsNotDrawnAtItsStart) {
     in.from_ms = from;
     in.to_ms = 400;
     in.samples = plot_samples(s, PlotAxis{.from_ms = in.from_ms, .to_ms = in.to_ms});
-    EXPECT_NE(render_plot_svg(in).find("reset by the operator at 0.12 s"), std::string::npos) << "from " << from << " ms";
+    EXPECT_NE(render_plot_svg(in).find("reset by the operator at 0.12 s"), std::string::npos)
+        << "from " << from << " ms";
   }
 }
 

@@ -27,10 +27,10 @@ struct PlotSample {
   protocol::DataBytes data{};
   bool sent = false;  ///< the link took the frame
   run::OpState state = run::OpState::kNoLink;
-  std::string layer;       ///< "" for the base layer
-  std::string stop;        ///< a stop latched: whose ("operator", "supervisor", "frame gate"); "" when none
-  std::string reset;       ///< who reset the last stop, until the next stop or enabled; "" when none
-  std::int64_t ticks = 1;  ///< the ticks it stands for: itself and those after it that repeat it (0: ticks not run)
+  std::string layer;           ///< "" for the base layer
+  std::string stop;            ///< a stop latched: whose ("operator", "supervisor", "frame gate"); "" when none
+  std::string reset;           ///< who reset the last stop, until the next stop or enabled; "" when none
+  std::int64_t ticks = 1;      ///< the ticks it stands for: itself and those after it that repeat it (0: ticks not run)
   std::int64_t reset_ms = -1;  ///< when that reset was: where it is drawn (-1: not known, at the run's first sample)
 };
 
