@@ -91,13 +91,25 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   // or held on (held since before the next: no consent); given before the
   // layer is entered (no consent either, now and then let go and given again
   // once armed); or given only once the fire button is held (it waits until
-  // pressed again), or not at all.
+  // pressed again), or not at all. Now and then the deadman (LB) pressed
+  // first; and one time in three for the trigger deadmen (the even seeds'
+  // mappings, whose weapons arm with RB and fire with A or B): LT let go and
+  // squeezed to the middle afresh (enabled there, armed on the others) and
+  // kept there, the fire button A or B.
   const auto fire = [&] {
     enum class Consent { kNone, kInLayer, kBefore, kLate };
     const auto consent = supervised ? static_cast<Consent>(pick.below(4)) : Consent::kNone;
+    const bool trigger = pick.below(3) == 0;
+    const input::InputKey fire_with = trigger && pick.below(2) == 0 ? button("b") : fire_button;
+    if (!held && pick.below(2) == 0) add(T::kButton, deadman, 1);
     add(T::kAxis, arm, 0);
     if (consent == Consent::kBefore) {
       supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+    }
+    if (trigger) {
+      t += 40 + pick.below(40);  // seen released at a frame
+      add(T::kAxis, arm, 20000);
       t += 40 + pick.below(80);
     }
     add(T::kButton, weapons_layer, 1);
@@ -106,9 +118,9 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       supervisor(T::kButton, fire_button, 1);
     }
     const bool early = pick.below(3) == 0;  // fire held before arming: nothing until pressed again
-    if (early) add(T::kButton, fire_button, 1);
+    if (early) add(T::kButton, fire_with, 1);
     t += 1 + pick.below(80);
-    add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
+    if (!trigger) add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
     if (consent == Consent::kBefore && pick.below(2) == 0) {  // given afresh
       supervisor(T::kButton, fire_button, 0);
@@ -118,22 +130,22 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     }
     if (early) {
       t += 40 + pick.below(80);
-      add(T::kButton, fire_button, 0);
+      add(T::kButton, fire_with, 0);
       t += pick.below(80);
     }
-    add(T::kButton, fire_button, 1);
+    add(T::kButton, fire_with, 1);
     if (consent == Consent::kLate) {
       t += 1 + pick.below(80);
       supervisor(T::kButton, fire_button, 1);
       t += 40 + pick.below(80);
       if (pick.below(2) == 0) {
-        add(T::kButton, fire_button, 0);
+        add(T::kButton, fire_with, 0);
         t += 1 + pick.below(60);
-        add(T::kButton, fire_button, 1);
+        add(T::kButton, fire_with, 1);
       }
     }
     t += pick.below(120);
-    add(T::kButton, fire_button, 0);
+    add(T::kButton, fire_with, 0);
     add(T::kButton, weapons_layer, 0);
     if (consent != Consent::kNone && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
