@@ -443,6 +443,30 @@ TEST(FaultSimulation, TheSupervisorsConsentIsFreshNeverLatched) {
   EXPECT_EQ(fired, (std::vector<std::int64_t>{600, 640, 680, 1240, 1280, 1320}));
 }
 
+// Speed levels (docs/mapping.md, `scale`; the simulated consent.yaml: misc1
+// up, paddle1 down, 25%, 50%, 100% from the slowest, the trim 124): full
+// forward drives 157, 190 or 255; a change of level holds the stick back at
+// the trim until seen at rest; down at the slowest stays there (no change, it
+// drives on); two presses within one frame count each; presses while not
+// enabled do nothing, and a pad back starts at the slowest.
+TEST(FaultSimulation, SpeedLevelsWaitForTheStickAtRestAndStopAtTheSlowest) {
+  const auto p = play(
+      "0 connect Pad A\n20 button leftshoulder 1\n60 axis lefty -32768\n200 button misc1 1\n210 button misc1 0\n"
+      "300 axis lefty 0\n400 axis lefty -32768\n500 button paddle1 1\n510 button paddle1 0\n600 axis lefty 0\n"
+      "700 axis lefty -32768\n800 button paddle1 1\n810 button paddle1 0\n900 button misc1 1\n905 button misc1 0\n"
+      "910 button misc1 1\n915 button misc1 0\n1000 axis lefty 0\n1100 axis lefty -32768\n1200 disconnect\n"
+      "1300 connect Pad A\n1320 button misc1 1\n1330 button misc1 0\n1340 button leftshoulder 1\n"
+      "1400 axis lefty -32768\n1500 end\n",
+      kCode, ANDROS_TEST_DATA_DIR "/simulation/mappings/consent.yaml");
+  EXPECT_EQ(p.violation, "");
+  const std::map<std::int64_t, int> drive = {{80, 157},  {240, 124}, {320, 124}, {440, 190},  {520, 124},
+                                             {720, 157}, {840, 157}, {920, 124}, {1120, 255}, {1440, 157}};
+  for (const auto& [t, want] : drive) {
+    ASSERT_TRUE(p.frames.contains(t)) << t;
+    EXPECT_EQ(p.frames.at(t)[protocol::signal_id("drive")], want) << "at " << t;
+  }
+}
+
 // Scripts the simulation found (tests/data/simulation/): each broke a rule
 // once, and each header says what the frames must be.
 TEST(FaultSimulation, FoundScripts) {
