@@ -27,7 +27,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   VirtualClock clock;
   PlayerInput input(player);
   std::string mapping_file = engine.mapping().file;
-  ReloadableFrames frames(make_engine_frames(std::move(engine)));
+  ReloadableFrames frames(options.frames(make_engine_frames(std::move(engine))));
   link::SinkLink link(
       [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
   Bridge bridge(clock, input, frames, link,
@@ -54,7 +54,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   };
   control.finish_reload = [&] {
     if (outcome && outcome->ok) {
-      frames.replace(make_engine_frames(mapping::Engine(std::move(*loaded), options.engine)));
+      frames.replace(options.frames(make_engine_frames(mapping::Engine(std::move(*loaded), options.engine))));
       mapping_file = loaded_file;
       loaded.reset();
     }

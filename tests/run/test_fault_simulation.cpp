@@ -35,6 +35,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -63,6 +64,15 @@ constexpr std::uint8_t kCode = 0x5A;
 
 /// A seed's dip-switch code, over the whole byte (0x00..0xFF), apart from its mapping (a Fibonacci hash's top byte).
 std::uint8_t code_of(std::uint64_t seed) { return static_cast<std::uint8_t>((seed * 0x9E3779B97F4A7C15ULL) >> 56U); }
+
+/// A seed's engine fault (tests/support/faulty_frames.hpp), on one seed in
+/// eight, apart from its mapping and code: one of the faults the frame gate
+/// refuses, from the middle of the script on, in the run with weapons as the
+/// fault asks (the other run as it is).
+std::optional<test::FaultKind> fault_of(std::uint64_t seed) {
+  if (((seed * 0xBF58476D1CE4E5B9ULL) >> 61U) != 0) return std::nullopt;
+  return test::kFaultKinds[((seed * 0x94D049BB133111EBULL) >> 40U) % test::kFaultKinds.size()];
+}
 
 std::uint64_t from_environment(const char* name, std::uint64_t fallback) {
   const char* text = std::getenv(name);
@@ -167,13 +177,21 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       test::Random rng(seed);
       const auto script = test::fault_script(rng, library.targets());
       const std::string& mapping_file = library.mapping_for(seed);
+      const auto fault = fault_of(seed);
       for (const bool weapons : {false, true}) {
-        const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe);
+        std::optional<test::InjectedFault> injected;
+        if (fault && fault->weapons == weapons) injected = test::InjectedFault{fault->fault, script.back().t_ms / 2};
+        const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe, injected);
         w.coverage += out.coverage;
         if (!out.violation.empty()) {
           ++w.failed;
           if (w.failures.size() < max_reported) {
-            w.failures.emplace_back(seed, describe_failure(seed, mapping_file, weapons, script, out.violation));
+            const std::string at_fault = injected ? "the engine at fault (" + std::string(fault->name) +
+                                                        ") from t=" + std::to_string(injected->from_ms) +
+                                                        " (not in replay), "
+                                                  : "";
+            w.failures.emplace_back(seed,
+                                    describe_failure(seed, mapping_file, weapons, script, at_fault + out.violation));
           }
           break;
         }
@@ -211,14 +229,16 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
       "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link\n",
+      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link and "
+      "refused an engine at fault in %lld runs\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
       static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
       static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated));
+      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated),
+      static_cast<long long>(coverage.gate_refused));
   std::printf(
       "fault simulation: %lld frames of a mapping with a centre trim, %lld enabled frames with drive or pivot "
       "held at it by the rest rule\n",
@@ -246,6 +266,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
   EXPECT_GT(coverage.gated, coverage.frames);  // the gate saw every frame, those the link refused too
+  EXPECT_GT(coverage.gate_refused, 0);
   EXPECT_GT(coverage.trimmed, coverage.frames / 2);
   EXPECT_GT(coverage.rest_held, 0);
   EXPECT_GT(coverage.operator_resets, 0);
@@ -464,6 +485,25 @@ TEST(FaultSimulation, SpeedLevelsWaitForTheStickAtRestAndStopAtTheSlowest) {
   for (const auto& [t, want] : drive) {
     ASSERT_TRUE(p.frames.contains(t)) << t;
     EXPECT_EQ(p.frames.at(t)[protocol::signal_id("drive")], want) << "at " << t;
+  }
+}
+
+// The engine at fault from t=200 on, each fault of faulty_frames.hpp in
+// turn, while driving (to 400) and while not (from 440): the frame gate
+// refuses its frames, so that every frame on the wire keeps the oracle's
+// rules up to the gate's first trip, and it trips.
+TEST(FaultSimulation, TheFrameGateRefusesAnEngineAtFault) {
+  Library library;
+  const auto script = input::parse_event_script(
+      "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n400 button leftshoulder 0\n"
+      "600 button leftshoulder 1\n800 end\n",
+      "gate.events");
+  for (const auto& kind : test::kFaultKinds) {
+    const auto out = test::simulate(
+        library, kSimulationHd1, script, kind.weapons, kCode, [](const TickReport&) {},
+        test::InjectedFault{kind.fault, 200});
+    EXPECT_EQ(out.violation, "") << kind.name;
+    EXPECT_EQ(out.coverage.gate_refused, 1) << kind.name;
   }
 }
 
