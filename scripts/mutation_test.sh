@@ -8,7 +8,7 @@
 # how many seeds of how many caught it. The simulation alone should catch
 # every one, each by many seeds.
 #
-# Not part of scripts/test.sh: 43 rebuilds and 44 runs of 10,000 seeds.
+# Not part of scripts/test.sh: 53 rebuilds and 54 runs of 10,000 seeds.
 # ANDROS_SIM_SCRIPTS=N runs N seeds instead; MUTATIONS="1 5" only those.
 # Exit 1 when a mutation is caught by no seed, when the unmutated code fails
 # a seed, or when a mutation's text is no longer in its file (the code moved:
@@ -65,6 +65,16 @@ mutations=(
   "a fire button held when its weapon is armed fires|src/mapping/safety.cpp|s/  hold_back_fire_inputs\(input, layer, seen\);\n//"
   "a consent held since before the weapon became possible counts|src/mapping/safety.cpp|s/held_back = now.down \&\& !pressed_now;/held_back = !now.down \&\& !pressed_now;/"
   "a fire button held when the consent comes fires|src/mapping/safety.cpp|s/if \(!consent\(\) \|\| held_.contains\(arm\)/if (held_.contains(arm)/"
+  "a speed level's change without the rest rule|src/mapping/engine_bindings.cpp|s/  c_.rest.rescale\(input, c_.layer\);\n//"
+  "the speed level down from the slowest wraps to the fastest|src/mapping/engine_bindings.cpp|s/level -= std::min<std::size_t>\(level, new_presses\(input, scale.down->key\)\);/level = (level + count - new_presses(input, scale.down->key) % count) % count;/"
+  "a new controller or a restart keeps the speed level|src/mapping/engine.cpp|s/  set_speed\(mapping_->scale.initial\);\n  if \(at_start_up\)/  if (at_start_up)/"
+  "speed presses while not enabled step the level|src/mapping/engine.cpp|s/if \(enabled\) update_speed\(input\);/update_speed(input);/"
+  "the frame gate lets an opposing pair through|src/run/frame_gate.cpp|s/if \(partner && \*partner > i && s.values\[i\] != 0 && s.values\[\*partner\] != 0\) \{/if (false) {/"
+  "the frame gate lets drive or pivot off 128 through, not enabled|src/run/frame_gate.cpp|s/if \(sig.kind == SignalKind::kCentred && s.values\[i\] != protocol::kNeutralCentre\) \{/if (false) {/"
+  "the frame gate lets a motion bit through, not enabled|src/run/frame_gate.cpp|s/&& !kept_in_neutral\(sig\) && s.values\[i\] != 0\) return/\&\& false) return/"
+  "the frame gate lets a weapon through without --weapons|src/run/frame_gate.cpp|s/if \(!rules_.weapons\) return/if (false) return/"
+  "the frame gate does not check the code|src/run/frame_gate.cpp|s/if \(data\[protocol::kCodeByte\] != rules_.code\) \{/if (false) {/"
+  "the frame gate does not check the validation table|src/run/frame_gate.cpp|s/validation_errors\(data\); !errors.empty\(\)\)/validation_errors(data); false \&\& !errors.empty())/"
 )
 
 [[ -f $build_dir/CMakeCache.txt ]] || { echo "no build in $build_dir: run scripts/build.sh first" >&2; exit 1; }

@@ -26,9 +26,10 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   VirtualClock clock;
   PlayerInput input(player);
   std::string mapping_file = engine.mapping().file;
+  const std::unique_ptr<FrameSource> frames = options.frames(std::make_unique<mapping::Engine>(std::move(engine)));
   link::SinkLink link(
       [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
-  Bridge bridge(clock, input, engine, link,
+  Bridge bridge(clock, input, *frames, link,
                 BridgeOptions{.rate_millihertz = options.rate_millihertz,
                               .neutral_tail_at_end = false,
                               .rules = {options.engine.weapons, options.engine.code}});
@@ -52,7 +53,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   };
   control.finish_reload = [&] {
     if (outcome && outcome->ok) {
-      outcome->frames = std::make_shared<mapping::Engine>(std::move(*loaded), options.engine);
+      outcome->frames = options.frames(std::make_unique<mapping::Engine>(std::move(*loaded), options.engine));
       mapping_file = loaded_file;
       loaded.reset();
     }

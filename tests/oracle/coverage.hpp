@@ -60,6 +60,7 @@ struct OracleCoverage {
   std::int64_t refused_resets = 0;  ///< resets made and refused: the operator's of the supervisor's stop, another pad's
   std::int64_t supervised_frames = 0;  ///< frames of scripts with a supervisor's controller
   std::int64_t gated = 0;              ///< frames offered to the link, each checked by the frame gate
+  std::int64_t gate_refused = 0;       ///< runs with an engine at fault whose frame the gate refused
   std::int64_t rest_held = 0;          ///< enabled frames where the rest rule held drive or pivot at the trim
   std::int64_t trimmed = 0;            ///< frames of a mapping whose centre is not 128
 
@@ -68,7 +69,7 @@ struct OracleCoverage {
     for (const auto count :
          {&C::frames, &C::motion, &C::weapons, &C::stops_with_frames, &C::suspend_frames, &C::reload_frames,
           &C::stop_latches, &C::panics, &C::timeouts, &C::supervisor_stops, &C::operator_resets, &C::supervisor_resets,
-          &C::refused_resets, &C::supervised_frames, &C::gated, &C::rest_held, &C::trimmed}) {
+          &C::refused_resets, &C::supervised_frames, &C::gated, &C::gate_refused, &C::rest_held, &C::trimmed}) {
       this->*count += o.*count;
     }
     for (std::size_t i = 0; i < motion_after.size(); ++i) motion_after[i] += o.motion_after[i];

@@ -23,8 +23,9 @@
 // press); a pad swapped for another (another name) while stopped; a
 // deadman let go and pressed again, or the trigger squeezed past its panic
 // point and back, within one frame; a toggled layer through a deadman
-// release, its buttons pressed after; and resets after stops held through a
-// deadman press, the deadman now and then tapped before the gesture.
+// release, its buttons pressed after; resets after stops held through a
+// deadman press, the deadman now and then tapped before the gesture; and
+// speed levels stepped up and down with a stick pushed.
 
 #include <algorithm>
 #include <array>
@@ -91,13 +92,25 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
   // or held on (held since before the next: no consent); given before the
   // layer is entered (no consent either, now and then let go and given again
   // once armed); or given only once the fire button is held (it waits until
-  // pressed again), or not at all.
+  // pressed again), or not at all. Now and then the deadman (LB) pressed
+  // first; and one time in three for the trigger deadmen (the even seeds'
+  // mappings, whose weapons arm with RB and fire with A or B): LT let go and
+  // squeezed to the middle afresh (enabled there, armed on the others) and
+  // kept there, the fire button A or B.
   const auto fire = [&] {
     enum class Consent { kNone, kInLayer, kBefore, kLate };
     const auto consent = supervised ? static_cast<Consent>(pick.below(4)) : Consent::kNone;
+    const bool trigger = pick.below(3) == 0;
+    const input::InputKey fire_with = trigger && pick.below(2) == 0 ? button("b") : fire_button;
+    if (!held && pick.below(2) == 0) add(T::kButton, deadman, 1);
     add(T::kAxis, arm, 0);
     if (consent == Consent::kBefore) {
       supervisor(T::kButton, fire_button, 1);
+      t += 40 + pick.below(80);
+    }
+    if (trigger) {
+      t += 40 + pick.below(40);  // seen released at a frame
+      add(T::kAxis, arm, 20000);
       t += 40 + pick.below(80);
     }
     add(T::kButton, weapons_layer, 1);
@@ -106,9 +119,9 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
       supervisor(T::kButton, fire_button, 1);
     }
     const bool early = pick.below(3) == 0;  // fire held before arming: nothing until pressed again
-    if (early) add(T::kButton, fire_button, 1);
+    if (early) add(T::kButton, fire_with, 1);
     t += 1 + pick.below(80);
-    add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
+    if (!trigger) add(T::kAxis, arm, pick.below(3) == 0 ? 0 : 32767);
     t += pick.below(80);
     if (consent == Consent::kBefore && pick.below(2) == 0) {  // given afresh
       supervisor(T::kButton, fire_button, 0);
@@ -118,22 +131,22 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     }
     if (early) {
       t += 40 + pick.below(80);
-      add(T::kButton, fire_button, 0);
+      add(T::kButton, fire_with, 0);
       t += pick.below(80);
     }
-    add(T::kButton, fire_button, 1);
+    add(T::kButton, fire_with, 1);
     if (consent == Consent::kLate) {
       t += 1 + pick.below(80);
       supervisor(T::kButton, fire_button, 1);
       t += 40 + pick.below(80);
       if (pick.below(2) == 0) {
-        add(T::kButton, fire_button, 0);
+        add(T::kButton, fire_with, 0);
         t += 1 + pick.below(60);
-        add(T::kButton, fire_button, 1);
+        add(T::kButton, fire_with, 1);
       }
     }
     t += pick.below(120);
-    add(T::kButton, fire_button, 0);
+    add(T::kButton, fire_with, 0);
     add(T::kButton, weapons_layer, 0);
     if (consent != Consent::kNone && pick.below(2) == 0) supervisor(T::kButton, fire_button, 0);
   };
@@ -427,6 +440,64 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
     }
   };
 
+  // Speed levels (misc1 steps up, paddle1 down, on the simulated mappings
+  // that have them): enabled, a stick pushed, the level stepped one to three
+  // times (now and then within one frame), the stick let go and pushed again
+  // (at the new level); now and then the pad or the link lost and back, then
+  // the deadman pressed afresh and the stick pushed again (the initial level);
+  // now and then stepped up while not enabled first (nothing).
+  const auto speed = [&] {
+    const input::InputKey up = button("misc1");
+    const input::InputKey down = button("paddle1");
+    const auto push_again = [&] {
+      add(T::kAxis, drive, 0);
+      t += 40 + pick.below(80);
+      add(T::kAxis, drive, pick.below(2) == 0 ? -32768 : 32767);
+      t += 40 + pick.below(200);
+    };
+    const auto step = [&](input::InputKey key) {
+      add(T::kButton, key, 1);
+      t += 1 + pick.below(pick.below(2) == 0 ? 30 : 200);
+      add(T::kButton, key, 0);
+    };
+    if (pick.below(3) == 0) {  // stepped while not enabled: nothing
+      if (held) add(T::kButton, deadman, 0);
+      t += 40 + pick.below(80);
+      step(up);
+      t += 1 + pick.below(100);
+    }
+    if (!held || pick.below(3) == 0) rearm();
+    t += 40 + pick.below(100);
+    add(T::kAxis, pick.below(3) == 0 ? axis("leftx") : drive, pick.below(2) == 0 ? -32768 : 32767);
+    for (int n = 1 + static_cast<int>(pick.below(3)); n > 0; --n) {
+      t += pick.below(2) == 0 ? 1 + pick.below(30) : 40 + pick.below(120);
+      step(pick.below(2) == 0 ? up : down);
+    }
+    t += 40 + pick.below(100);
+    if (pick.below(3) != 0) push_again();
+    const auto lost = pick.below(3);
+    if (lost == 2) return;
+    if (pick.below(2) == 0) step(up);  // a level above the initial one, most often, to be left behind
+    t += 40 + pick.below(100);
+    switch (lost) {
+      case 0:
+        add(T::kDisconnect);
+        pair_gap();
+        add(T::kConnect, {}, 0, "Pad A");
+        break;
+      default:
+        add(T::kLinkDown);
+        pair_gap();
+        add(T::kLinkUp);
+        break;
+    }
+    t += 40 + pick.below(100);
+    if (pick.below(2) == 0) step(up);  // while not enabled: nothing
+    rearm();
+    t += 40 + pick.below(100);
+    push_again();
+  };
+
   // Pads are told apart by name (a script's identity): another name is another physical pad.
   add(T::kConnect, {}, 0, "Pad A");
   if (pick.below(4) == 0) add(T::kButton, deadman, 1);  // held at connect: not a press
@@ -461,7 +532,7 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
           pick.below(2) == 0 ? values[pick.below(values.size())] : static_cast<int>(pick.below(65536)) - 32768;
       add(T::kAxis, input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(pick.below(6))}, v);
     } else {
-      switch (pick.below(42)) {
+      switch (pick.below(45)) {
         case 0:
         case 1:
         case 2:
@@ -549,6 +620,9 @@ std::vector<input::InputEvent> fault_script(Choices& pick, const ReloadTargets& 
         case 38: stall(); break;
         case 21: layer_through_a_release(); break;
         case 39: toggle_through_a_release(); break;
+        case 42:
+        case 43: speed(); break;
+        case 44: fire(); break;
         default: rearm(); break;
       }
     }

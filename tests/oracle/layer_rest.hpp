@@ -8,14 +8,21 @@
 // ends whenever the bridge is not. When the binding that drives drive or
 // pivot changes (a layer entered or left), or the bridge becomes enabled, the
 // byte stays at the mapping's centre (its trim) until that binding's stick is
-// seen inside its deadzone at a frame (centre_watch.hpp). Lenient where the
-// engine holds back more (a speed level's change, a stick read by two
-// bindings): it only ever says "must be at centre".
+// seen inside its deadzone at a frame (centre_watch.hpp). The speed level
+// (the mapping's `scale:`) likewise: the oracle keeps the levels it may be at
+// (SpeedLevels), and where a frame's presses surely changed it, drive and
+// pivot wait for their sticks at rest too; at every enabled frame they stay
+// within the fastest possible level's range. Lenient where the engine holds
+// back more (a stick read by two bindings, a press whose count is in doubt):
+// it only ever says "must be at centre" or "no further than that level".
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,6 +32,68 @@
 #include "oracle/centre_watch.hpp"
 
 namespace andros::test {
+
+/// The speed levels the engine may be at (docs/mapping.md, `scale`: speed
+/// levels), as indices into the mapping's `scale.levels`, from the script's
+/// presses: only presses while enabled count, not in the frame of the
+/// enabling press, nor of a button held since before it until seen released;
+/// `button` steps up and wraps from the fastest to the slowest, `down` steps
+/// down and stops at the slowest; a new controller or engine starts at
+/// `initial`. Lenient where a count is in doubt (frames missed, a button held
+/// through the enabling press): every level it could have reached.
+class SpeedLevels {
+ public:
+  /// At the frame on mapping m: a new engine or controller since the last one starts at the initial level.
+  void follow(const mapping::Mapping& m) {
+    if (m_ == &m && !afresh_) return;
+    m_ = &m;
+    afresh_ = false;
+    levels_ = 1U << m.scale.initial;
+  }
+  /// A new controller (either pad) or the mapping read afresh: the initial level at the next frame.
+  void afresh() { afresh_ = true; }
+  /// A frame while not enabled: the engine may have started afresh (a stop's reset); a release keeps the level.
+  void not_enabled(const mapping::Mapping& m) {
+    follow(m);
+    levels_ |= 1U << m.scale.initial;
+  }
+  /// An enabled frame: `up` and `down` presses since the last one (in_doubt: whether they counted).
+  /// True when the level surely changed.
+  bool step(std::uint32_t up, std::uint32_t down, bool in_doubt) {
+    const std::size_t n = m_->scale.levels.size();
+    const auto next = [n](std::size_t l, std::uint32_t u, std::uint32_t d) {
+      l = (l + u) % n;
+      return l - std::min<std::size_t>(l, d);
+    };
+    std::uint32_t after = 0;
+    bool changed = true;
+    for (std::size_t l = 0; l < n; ++l) {
+      if ((levels_ & (1U << l)) == 0) continue;
+      if (!in_doubt) {
+        const auto to = next(l, up, down);
+        after |= 1U << to;
+        changed = changed && to != l;
+        continue;
+      }
+      for (std::uint32_t u = 0; u <= up; ++u)
+        for (std::uint32_t d = 0; d <= down; ++d) after |= 1U << next(l, u, d);
+    }
+    levels_ = after;
+    return !in_doubt && changed && (up != 0 || down != 0);
+  }
+  /// The fastest level it may be at, as a fraction of full speed.
+  [[nodiscard]] double fastest() const {
+    double s = 0.0;
+    for (std::size_t l = 0; l < m_->scale.levels.size(); ++l)
+      if ((levels_ & (1U << l)) != 0) s = m_->scale.levels[l];
+    return s;
+  }
+
+ private:
+  const mapping::Mapping* m_ = nullptr;
+  bool afresh_ = false;
+  std::uint32_t levels_ = 0;  ///< bit l: level l possible
+};
 
 class LayerRest {
  public:
@@ -40,13 +109,19 @@ class LayerRest {
     toggled_ = -1;
     restart_ = true;
   }
+  /// A new controller on either pad, or a reload's engine: the initial speed level.
+  void new_session() { speed_.afresh(); }
 
   /// One delivered frame at tick t of a script on mapping m: empty, or the rule it breaks.
   template <typename Held, typename AxisValue>
   std::string frame(std::int64_t t, std::int64_t period, const mapping::Mapping& m, const protocol::ControlState& s,
                     const Held& held, const AxisValue& axis_value) {
     const bool enabled = s[protocol::signal_id("safety")] != 0;
-    const bool restart = restart_ || !was_enabled_ || t != last_t_ + period;
+    const bool enabling = restart_ || !was_enabled_;
+    const bool restart = enabling || t != last_t_ + period;
+    // [rule: speed-rest] a change of level is a change of meaning: drive and pivot wait for their sticks at rest
+    const bool new_level = enabled && speed_levels(m, enabling, restart, held);
+    if (!enabled) speed_.not_enabled(m);
     if (enabled) {
       for (std::size_t i = 0; i < m.layers.size(); ++i) {
         const auto& layer = m.layers[i];
@@ -74,13 +149,14 @@ class LayerRest {
     for (std::size_t k = 0; k < kCentred.size(); ++k) {
       const auto id = kCentred[k];
       const mapping::Binding* driver = enabled ? centre_driver(m, name, id) : nullptr;
-      const bool must = watch_[k].must_centre(driver, restart, axis_value);
+      const bool must = watch_[k].must_centre(driver, restart || new_level, axis_value);
+      if (enabled && broken.empty()) broken = within_level(m, id, s[id]);
       if (!enabled || !must) continue;
       if (driver != nullptr) held_at_trim_ = true;
       if (s[id] != m.center && broken.empty()) {
         broken = std::string(protocol::info(id).name) + " = " + std::to_string(s[id]) + ", not the centre " +
                  std::to_string(m.center) + ", before its stick was seen at rest (layer \"" + name +
-                 "\", or just enabled)";
+                 "\", just enabled, or a new speed level)";
       }
     }
     was_enabled_ = enabled;
@@ -99,6 +175,43 @@ class LayerRest {
  private:
   static constexpr std::array<protocol::SignalId, 2> kCentred = {protocol::signal_id("drive"),
                                                                  protocol::signal_id("pivot")};
+
+  // The speed level at an enabled frame: the presses of its buttons since the
+  // last frame count unless this frame enables (enabling) or a button was held
+  // since the enabling press; restart: frames missed, the counts in doubt.
+  // True when the level surely changed.
+  template <typename Held>
+  bool speed_levels(const mapping::Mapping& m, bool enabling, bool restart, const Held& held) {
+    speed_.follow(m);
+    const std::array<std::optional<mapping::InputUse>, 2> keys = {m.scale.up, m.scale.down};
+    std::array<std::uint32_t, 2> n{};
+    bool in_doubt = restart && !enabling;
+    if (enabling) speed_held_.clear();
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      if (!keys[i]) continue;
+      const auto key = keys[i]->key;
+      if (enabling && held(key)) speed_held_.insert(key);
+      if (!held(key) && speed_held_.erase(key) != 0 && presses_[key] != 0) in_doubt = true;
+      if (speed_held_.contains(key) && presses_[key] != 0) in_doubt = true;
+      n[i] = enabling ? 0 : presses_[key];
+    }
+    return speed_.step(n[0], n[1], in_doubt);
+  }
+  // [rule: speed-levels] drive or pivot no further from the trim than the fastest level the engine may be at
+  // (c + round(s (255 - c)) forward, c - round(s c) back: docs/mapping.md, `scale`).
+  std::string within_level(const mapping::Mapping& m, protocol::SignalId id, std::uint8_t value) const {
+    const double s = speed_.fastest();
+    const int c = m.center;
+    const int high = c + static_cast<int>(std::round(s * (255 - c)));
+    const int low = c - static_cast<int>(std::round(s * c));
+    if (value <= high && value >= low) return {};
+    return std::string(protocol::info(id).name) + " = " + std::to_string(value) + ", beyond the speed level " +
+           std::to_string(s) + "'s range " + std::to_string(low) + ".." + std::to_string(high) +
+           " (up wraps to the slowest, down stops there, a new controller or engine starts at the initial level)";
+  }
+
+  SpeedLevels speed_;
+  std::set<input::InputKey> speed_held_;  ///< speed buttons held since the enabling press, not yet seen released
   std::map<input::InputKey, std::uint32_t> presses_;  ///< since the last frame
   int toggled_ = -1;
   int layer_ = -1;

@@ -152,6 +152,7 @@ class ScriptReading {
         e.type == T::kLinkReading) {
       // A link that comes back is a new link.
       if (loop_.link(e.type)) {
+        if (loop_.carries_motion()) rest_.new_session();  // driving afresh: the initial speed level
         end_enabled(loop_.carries_motion() ? Ending::kLinkUp
                     : loop_.stalled()      ? Ending::kLinkStalled
                                            : Ending::kLinkDown);
@@ -170,7 +171,10 @@ class ScriptReading {
         stop_.op_name = e.type == T::kConnect ? e.name : std::string();
         set_gesture(stop_.op_reset, mappings_.current->stop_reset, {});
         stop_.op_reset.new_session = true;
-        if (e.type == T::kConnect) deadman_.new_session();
+        if (e.type == T::kConnect) {
+          deadman_.new_session();
+          rest_.new_session();
+        }
         squeezed_since_tick_ = false;  // what the old session did is gone
         last_change_ = e.t_ms;
         break;
@@ -211,7 +215,10 @@ class ScriptReading {
       case T::kResume:
         end_enabled(Ending::kResume);
         resumed_this_tick_ = true;
-        if (loop_.suspended()) mappings_.resumed();
+        if (loop_.suspended()) {
+          mappings_.resumed();
+          rest_.new_session();  // driving afresh: the initial speed level
+        }
         loop_.resume(e.t_ms);
         break;
       case T::kReload: {
@@ -276,6 +283,7 @@ class ScriptReading {
   // are read as they are held now, by a new engine (nothing held on from a reset).
   void take_up(std::int64_t tick) {
     if (loop_.reload_under_way(tick) || !mappings_.take_up()) return;
+    rest_.new_session();  // a new engine
     const auto& m = *mappings_.current;
     stop_.op.down = m.estop && pads_.held(m.estop->key);
     stop_.sup.down = pads_.sup_held(m.supervisor ? std::optional(m.supervisor->stop.key) : std::nullopt);
@@ -314,6 +322,7 @@ class ScriptReading {
     if (e.type == T::kConnect || e.type == T::kDisconnect) {
       end_enabled(e.type == T::kConnect ? Ending::kConnect : Ending::kDisconnect);
       pads_.connect_supervisor(e.type == T::kConnect, e.t_ms);
+      if (e.type == T::kConnect) rest_.new_session();
       stop_.sup = StopInput{};
       stop_.sup_name = e.type == T::kConnect ? e.name : std::string();
       const auto& sup = mappings_.current->supervisor;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,6 +23,7 @@
 #include "andros/run/replay.hpp"
 #include "oracle/safety_oracle.hpp"
 #include "oracle/wire_frame.hpp"
+#include "support/faulty_frames.hpp"
 
 namespace andros::test {
 
@@ -95,12 +97,23 @@ inline std::string code_text(std::uint8_t code) {
   return text;
 }
 
+/// An engine at fault from a tick on (tests/support/faulty_frames.hpp): frames the frame gate must refuse.
+struct InjectedFault {
+  EngineFault fault;
+  std::int64_t from_ms = 0;
+};
+
 /// Replays script (as its text: what `andros-bridge replay` would read)
 /// through mapping_file, with `--code` given as text, and checks every frame
-/// the link took, read off its bytes on the wire, and the end.
+/// the link took, read off its bytes on the wire, and the end. With an
+/// injected fault, the engine is at fault from its time on: every frame is
+/// checked up to the gate's first trip (none before that time), which ends
+/// the checks (the loop is stopped by the gate from there, which the oracle
+/// does not follow).
 inline SimulationOutcome simulate(
     MappingCache& mappings, const std::string& mapping_file, const std::vector<input::InputEvent>& script, bool weapons,
-    std::uint8_t code, const run::Bridge::Observer& observe = [](const run::TickReport&) {}) {
+    std::uint8_t code, const run::Bridge::Observer& observe = [](const run::TickReport&) {},
+    std::optional<InjectedFault> injected = std::nullopt) {
   const std::string text = script_text(script);
   TextReader in(text, "simulation.events", kEventScriptLimits);
   input::ScriptPlayer player(in);
@@ -111,6 +124,11 @@ inline SimulationOutcome simulate(
   // The code as `replay --code` reads it; the oracle holds the frames to the byte meant.
   run::ReplayOptions options{.engine = {weapons, parse_code(code_text(code), SourcePos{"--code"})}};
   options.load = [&mappings](const std::string& file) { return mappings.load(file); };
+  if (injected) {
+    options.frames = [injected](std::unique_ptr<run::FrameSource> engine) -> std::unique_ptr<run::FrameSource> {
+      return std::make_unique<FaultyFrames>(std::move(engine), injected->fault, injected->from_ms);
+    };
+  }
   // [rule: gate] The frame gate is in the loop replay runs: a trip here is a false alarm (or an engine fault the oracle
   // missed).
   std::int64_t gated = 0;
@@ -119,10 +137,18 @@ inline SimulationOutcome simulate(
   // when the state after its tick is "enabled" (the screen, the pad's light and the status read that state).
   std::string said;
   run::OpState state = run::OpState::kNoLink;  ///< the loop's, at the frame it just sent
+  // [rule: gate-refuses] An engine at fault: the gate refuses its frames (each rule it holds frames to, the
+  // oracle's rules check on the wire until its first trip).
+  std::optional<std::int64_t> tripped;  ///< the injected fault's first trip
   options.observe = [&](const run::TickReport& r) {
     observe(r);
+    if (tripped) return;
     state = r.state;
     if (r.sent) ++gated;
+    if (!r.gate_fault.empty() && injected && r.t_ms >= injected->from_ms) {
+      tripped = r.t_ms;
+      return;
+    }
     if (!r.gate_fault.empty() && gate_fault.empty())
       gate_fault = "the frame gate tripped at t=" + std::to_string(r.t_ms) + ": " + r.gate_fault;
     const bool safety = protocol::read_signals(r.data)[protocol::signal_id("safety")] != 0;
@@ -138,13 +164,13 @@ inline SimulationOutcome simulate(
   try {
     run::replay(player, mapping::Engine(valid, options.engine), options,
                 [&](std::int64_t t, const protocol::DataBytes&) {
-                  if (!out.violation.empty()) return;
+                  if (!out.violation.empty() || (tripped && t > *tripped)) return;
                   protocol::DataBytes data{};
                   std::string v = !on_wire || on_wire->first != t ? "a frame delivered with no bytes on the wire"
                                                                   : read_wire_frame(on_wire->second, data);
                   on_wire.reset();
                   if (v.empty()) v = oracle.frame(t, data);
-                  if (v.empty()) v = stop_said(state, oracle.stop_latched());
+                  if (v.empty() && !tripped) v = stop_said(state, oracle.stop_latched());
                   if (!v.empty()) out.violation = "frame at t=" + std::to_string(t) + ": " + v;
                 });
   } catch (const std::exception& e) {
@@ -152,9 +178,10 @@ inline SimulationOutcome simulate(
   }
   if (out.violation.empty()) out.violation = gate_fault;
   if (out.violation.empty()) out.violation = said;
-  if (out.violation.empty()) out.violation = oracle.finish();
+  if (out.violation.empty() && !tripped) out.violation = oracle.finish();
   out.coverage = oracle.coverage();
   out.coverage.gated = gated;
+  out.coverage.gate_refused = tripped ? 1 : 0;
   return out;
 }
 

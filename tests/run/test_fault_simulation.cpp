@@ -12,7 +12,9 @@
 // The mappings are the simulation's own (tests/data/simulation/mappings/):
 // every shipped robot's with a centre trim, an enable timeout and a
 // supervisor's stop, and on every other seed a three-position trigger deadman
-// with a panic point; the oracle's own tests are in test_oracle.cpp.
+// with a panic point; on one seed in eight the engine is at fault from the
+// middle of the script (the frame gate must refuse it); the oracle's own
+// tests are in test_oracle.cpp.
 //
 // Seeds 1..10,000 (1,000 under the sanitizers: support/sweep.hpp; a build
 // configured with -DANDROS_SIM_SCRIPTS=N runs N); the
@@ -35,6 +37,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -63,6 +66,15 @@ constexpr std::uint8_t kCode = 0x5A;
 
 /// A seed's dip-switch code, over the whole byte (0x00..0xFF), apart from its mapping (a Fibonacci hash's top byte).
 std::uint8_t code_of(std::uint64_t seed) { return static_cast<std::uint8_t>((seed * 0x9E3779B97F4A7C15ULL) >> 56U); }
+
+/// A seed's engine fault (tests/support/faulty_frames.hpp), on one seed in
+/// eight, apart from its mapping and code: one of the faults the frame gate
+/// refuses, from the middle of the script on, in the run with weapons as the
+/// fault asks (the other run as it is).
+std::optional<test::FaultKind> fault_of(std::uint64_t seed) {
+  if (((seed * 0xBF58476D1CE4E5B9ULL) >> 61U) != 0) return std::nullopt;
+  return test::kFaultKinds[((seed * 0x94D049BB133111EBULL) >> 40U) % test::kFaultKinds.size()];
+}
 
 std::uint64_t from_environment(const char* name, std::uint64_t fallback) {
   const char* text = std::getenv(name);
@@ -167,13 +179,21 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       test::Random rng(seed);
       const auto script = test::fault_script(rng, library.targets());
       const std::string& mapping_file = library.mapping_for(seed);
+      const auto fault = fault_of(seed);
       for (const bool weapons : {false, true}) {
-        const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe);
+        std::optional<test::InjectedFault> injected;
+        if (fault && fault->weapons == weapons) injected = test::InjectedFault{fault->fault, script.back().t_ms / 2};
+        const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe, injected);
         w.coverage += out.coverage;
         if (!out.violation.empty()) {
           ++w.failed;
           if (w.failures.size() < max_reported) {
-            w.failures.emplace_back(seed, describe_failure(seed, mapping_file, weapons, script, out.violation));
+            const std::string at_fault = injected ? "the engine at fault (" + std::string(fault->name) +
+                                                        ") from t=" + std::to_string(injected->from_ms) +
+                                                        " (not in replay), "
+                                                  : "";
+            w.failures.emplace_back(seed,
+                                    describe_failure(seed, mapping_file, weapons, script, at_fault + out.violation));
           }
           break;
         }
@@ -211,14 +231,16 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "fault simulation: seeds %llu..%llu, %lld frames, %lld with motion (a fresh press after: %s), "
       "%lld with a weapon, %lld stops owed 3 frames, %lld suspend and %lld reload neutral frames, "
       "%lld stop-button latches (%lld supervisor's stop presses), %lld panic squeezes, %lld enable timeouts, "
-      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link\n",
+      "%lld frames with a supervisor's controller; the frame gate checked %lld frames offered to the link and "
+      "refused an engine at fault in %lld runs\n",
       static_cast<unsigned long long>(first), static_cast<unsigned long long>(seed - 1),
       static_cast<long long>(coverage.frames), static_cast<long long>(coverage.motion), endings.c_str(),
       static_cast<long long>(coverage.weapons), static_cast<long long>(coverage.stops_with_frames),
       static_cast<long long>(coverage.suspend_frames), static_cast<long long>(coverage.reload_frames),
       static_cast<long long>(coverage.stop_latches), static_cast<long long>(coverage.supervisor_stops),
       static_cast<long long>(coverage.panics), static_cast<long long>(coverage.timeouts),
-      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated));
+      static_cast<long long>(coverage.supervised_frames), static_cast<long long>(coverage.gated),
+      static_cast<long long>(coverage.gate_refused));
   std::printf(
       "fault simulation: %lld frames of a mapping with a centre trim, %lld enabled frames with drive or pivot "
       "held at it by the rest rule\n",
@@ -246,6 +268,7 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   EXPECT_GT(coverage.supervisor_stops, 0);
   EXPECT_GT(coverage.supervised_frames, 0);
   EXPECT_GT(coverage.gated, coverage.frames);  // the gate saw every frame, those the link refused too
+  EXPECT_GT(coverage.gate_refused, 0);
   EXPECT_GT(coverage.trimmed, coverage.frames / 2);
   EXPECT_GT(coverage.rest_held, 0);
   EXPECT_GT(coverage.operator_resets, 0);
@@ -441,6 +464,49 @@ TEST(FaultSimulation, TheSupervisorsConsentIsFreshNeverLatched) {
     if (s[protocol::signal_id("weapon_1")] != 0) fired.push_back(t);
   }
   EXPECT_EQ(fired, (std::vector<std::int64_t>{600, 640, 680, 1240, 1280, 1320}));
+}
+
+// Speed levels (docs/mapping.md, `scale`; the simulated consent.yaml: misc1
+// up, paddle1 down, 25%, 50%, 100% from the slowest, the trim 124): full
+// forward drives 157, 190 or 255; a change of level holds the stick back at
+// the trim until seen at rest; down at the slowest stays there (no change, it
+// drives on); two presses within one frame count each; presses while not
+// enabled do nothing, and a pad back starts at the slowest.
+TEST(FaultSimulation, SpeedLevelsWaitForTheStickAtRestAndStopAtTheSlowest) {
+  const auto p = play(
+      "0 connect Pad A\n20 button leftshoulder 1\n60 axis lefty -32768\n200 button misc1 1\n210 button misc1 0\n"
+      "300 axis lefty 0\n400 axis lefty -32768\n500 button paddle1 1\n510 button paddle1 0\n600 axis lefty 0\n"
+      "700 axis lefty -32768\n800 button paddle1 1\n810 button paddle1 0\n900 button misc1 1\n905 button misc1 0\n"
+      "910 button misc1 1\n915 button misc1 0\n1000 axis lefty 0\n1100 axis lefty -32768\n1200 disconnect\n"
+      "1300 connect Pad A\n1320 button misc1 1\n1330 button misc1 0\n1340 button leftshoulder 1\n"
+      "1400 axis lefty -32768\n1500 end\n",
+      kCode, ANDROS_TEST_DATA_DIR "/simulation/mappings/consent.yaml");
+  EXPECT_EQ(p.violation, "");
+  const std::map<std::int64_t, int> drive = {{80, 157},  {240, 124}, {320, 124}, {440, 190},  {520, 124},
+                                             {720, 157}, {840, 157}, {920, 124}, {1120, 255}, {1440, 157}};
+  for (const auto& [t, want] : drive) {
+    ASSERT_TRUE(p.frames.contains(t)) << t;
+    EXPECT_EQ(p.frames.at(t)[protocol::signal_id("drive")], want) << "at " << t;
+  }
+}
+
+// The engine at fault from t=200 on, each fault of faulty_frames.hpp in
+// turn, while driving (to 400) and while not (from 440): the frame gate
+// refuses its frames, so that every frame on the wire keeps the oracle's
+// rules up to the gate's first trip, and it trips.
+TEST(FaultSimulation, TheFrameGateRefusesAnEngineAtFault) {
+  Library library;
+  const auto script = input::parse_event_script(
+      "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n400 button leftshoulder 0\n"
+      "600 button leftshoulder 1\n800 end\n",
+      "gate.events");
+  for (const auto& kind : test::kFaultKinds) {
+    const auto out = test::simulate(
+        library, kSimulationHd1, script, kind.weapons, kCode, [](const TickReport&) {},
+        test::InjectedFault{kind.fault, 200});
+    EXPECT_EQ(out.violation, "") << kind.name;
+    EXPECT_EQ(out.coverage.gate_refused, 1) << kind.name;
+  }
 }
 
 // Scripts the simulation found (tests/data/simulation/): each broke a rule

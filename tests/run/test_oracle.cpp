@@ -197,13 +197,42 @@ TEST_F(OracleTest, HoldsDriveAtTheTrimUntilItsStickIsAtRest) {
   ASSERT_EQ(o.frame(0, frame()), "");
   EXPECT_EQ(o.frame(40, at(124)), "");
   EXPECT_EQ(o.frame(80, at(255)),
-            "drive = 255, not the centre 124, before its stick was seen at rest (layer \"\", or just enabled)");
+            "drive = 255, not the centre 124, before its stick was seen at rest (layer \"\", just enabled, or a new "
+            "speed level)");
   auto later = oracle(
       "0 connect\n10 axis lefty -32768\n20 button leftshoulder 1\n90 axis lefty 0\n"
       "130 axis lefty -32768\n400 end\n",
       false, kTrim);
   for (const std::int64_t t : {0, 40, 80, 120}) ASSERT_EQ(later.frame(t, t == 0 ? frame() : at(124)), "") << t;
   EXPECT_EQ(later.frame(160, at(255)), "");  // seen at rest at 120
+}
+
+TEST_F(OracleTest, HoldsDriveAtANewSpeedLevelAndKeepsItWithinTheLevel) {
+  // consent.yaml: levels 25%, 50%, 100% from the slowest, misc1 up, paddle1
+  // down, the trim 124: full forward 157, 190, 255.
+  const std::string file = ANDROS_TEST_DATA_DIR "/simulation/mappings/consent.yaml";
+  const auto drive = [](int v) {
+    return frame({{protocol::signal_id("safety"), 1}, {protocol::signal_id("drive"), v}});
+  };
+  const std::string script = std::string(kDriving) + "100 button misc1 1\n110 button misc1 0\n400 end\n";
+  auto o = oracle(script, false, file);
+  ASSERT_EQ(o.frame(0, frame()), "");
+  ASSERT_EQ(o.frame(40, drive(124)), "");
+  ASSERT_EQ(o.frame(80, drive(157)), "");
+  EXPECT_EQ(o.frame(120, drive(190)),
+            "drive = 190, not the centre 124, before its stick was seen at rest (layer \"\", just enabled, or a new "
+            "speed level)");
+  auto fast = oracle(kDriving, false, file);
+  ASSERT_EQ(fast.frame(0, frame()), "");
+  ASSERT_EQ(fast.frame(40, drive(124)), "");
+  EXPECT_EQ(fast.frame(80, drive(190)),
+            "drive = 190, beyond the speed level 0.250000's range 93..157 (up wraps to the slowest, down stops "
+            "there, a new controller or engine starts at the initial level)");
+  // Down at the slowest stays there: no change of meaning, and no faster.
+  auto down = oracle(std::string(kDriving) + "100 button paddle1 1\n110 button paddle1 0\n400 end\n", false, file);
+  for (const std::int64_t t : {0, 40, 80}) ASSERT_EQ(down.frame(t, t == 0 ? frame() : drive(t == 40 ? 124 : 157)), "");
+  EXPECT_EQ(down.frame(120, drive(157)), "");
+  EXPECT_NE(down.frame(160, drive(255)), "");
 }
 
 TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
@@ -217,7 +246,8 @@ TEST_F(OracleTest, HoldsDriveWhenALayerIsLeftWithItsStickPushed) {
   ASSERT_EQ(o.frame(0, frame()), "");
   for (const std::int64_t t : {40, 80, 120, 160, 200}) ASSERT_EQ(o.frame(t, drive(t <= 80 ? 255 : 128)), "") << t;
   EXPECT_EQ(o.frame(240, drive(255)),
-            "drive = 255, not the centre 128, before its stick was seen at rest (layer \"\", or just enabled)");
+            "drive = 255, not the centre 128, before its stick was seen at rest (layer \"\", just enabled, or a new "
+            "speed level)");
 }
 
 // Neutral frames from `from` up to `to` (not included): none of them breaks a rule.

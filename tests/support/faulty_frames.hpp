@@ -1,8 +1,10 @@
 #pragma once
 // A frame source that is wrong on purpose: the mapping engine with one fault
 // injected into its frames, for the frame gate's mutation test
-// (tests/run/test_frame_gate.cpp). The seam is this wrapper, in the tests:
-// the production code has no switch for it.
+// (tests/run/test_frame_gate.cpp) and the fault simulation's engine at fault
+// (tests/oracle/simulation.hpp, through replay's ReplayOptions::frames, which
+// `andros-bridge replay` leaves as it is). The seam is this wrapper, in the
+// tests: the production code has no switch for it.
 
 #include <array>
 #include <cstdint>
@@ -50,16 +52,20 @@ inline constexpr std::array kFaultKinds = {
     FaultKind{EngineFault::kFixedBit, "a fixed bit wrong", false},
 };
 
-/// The engine, its frames and neutral frame with the fault; the rest passed on as it is.
+/// The engine, its frames and neutral frame with the fault (from_ms on: the
+/// first tick the loop asks the engine about at or after it); the rest passed on as it is.
 class FaultyFrames final : public run::FrameSource {
  public:
-  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault) : inner_(std::move(inner)), fault_(fault) {}
+  FaultyFrames(std::unique_ptr<run::FrameSource> inner, EngineFault fault, std::int64_t from_ms = 0)
+      : inner_(std::move(inner)), fault_(fault), from_ms_(from_ms), on_(from_ms <= 0) {}
 
   [[nodiscard]] const mapping::Mapping& mapping() const override { return inner_->mapping(); }
   void rebase(const input::InputState& now) override { inner_->rebase(now); }
 
   run::Step step(const input::InputState& input, std::int64_t now_ms, bool motion_allowed) override {
+    on_ = on_ || now_ms >= from_ms_;
     run::Step s = inner_->step(input, now_ms, motion_allowed);
+    if (!on_) return s;
     if (fault_ == EngineFault::kStaleNeutral) {
       // The frames while not enabled are the last driving one's.
       if (motion_allowed) last_ = s.data;
@@ -71,6 +77,7 @@ class FaultyFrames final : public run::FrameSource {
     return s;
   }
   [[nodiscard]] protocol::DataBytes neutral() const override {
+    if (!on_) return inner_->neutral();
     if (fault_ == EngineFault::kStaleNeutral && last_) return *last_;
     protocol::DataBytes n = inner_->neutral();
     if (in_neutral()) inject(n);
@@ -122,6 +129,8 @@ class FaultyFrames final : public run::FrameSource {
 
   std::unique_ptr<run::FrameSource> inner_;
   EngineFault fault_;
+  std::int64_t from_ms_;
+  bool on_;
   std::optional<protocol::DataBytes> last_;
 };
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "andros/base/error.hpp"
@@ -39,6 +40,10 @@ struct ReplayOptions {
   /// the encoding itself (the fault simulation).
   std::function<void(std::int64_t t_ms, const protocol::Frame& frame)> wire = [](std::int64_t, const protocol::Frame&) {
   };
+  /// Each engine as the loop's frame source (the first, and each reload's): for tests that put an engine at fault
+  /// before the frame gate (the fault simulation, tests/support/faulty_frames.hpp).
+  std::function<std::unique_ptr<FrameSource>(std::unique_ptr<FrameSource>)> frames =
+      [](std::unique_ptr<FrameSource> source) { return source; };
 };
 
 /// Runs the loop from t = 0 through the first frame time >= the script's end
