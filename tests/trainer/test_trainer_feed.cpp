@@ -65,7 +65,7 @@ TEST(TrainerFeed, APlainJoysticksNumberedButtonsHatsAndAxesAreShown) {
 TEST(TrainerFeed, AGameControllersInputsAreShownByName) {
   auto input = connected("Pad");
   input.apply(event(InputEvent::Type::kButton, {InputKind::kPadButton, 9}, 1));  // leftshoulder
-  input.apply(event(InputEvent::Type::kAxis, {InputKind::kPadAxis, 1}, 12000));   // lefty
+  input.apply(event(InputEvent::Type::kAxis, {InputKind::kPadAxis, 1}, 12000));  // lefty
   input::DeviceLayout pad_layout;
   pad_layout.game_controller = true;
 

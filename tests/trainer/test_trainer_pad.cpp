@@ -86,8 +86,8 @@ class EventStream {
       seen.push_back(*object);
       if (done(*object)) return seen;
     }
-    ADD_FAILURE() << "not seen in " << seen.size() << " objects; the last: "
-                  << (seen.empty() ? "none" : seen.back().dump());
+    ADD_FAILURE() << "not seen in " << seen.size()
+                  << " objects; the last: " << (seen.empty() ? "none" : seen.back().dump());
     return {};
   }
 
@@ -182,8 +182,7 @@ TEST(TrainerPad, ThePageFollowsThePadWithinOneFrame) {
   setenv("XDG_CONFIG_HOME", (home.path() / "config").c_str(), 1);  // no user config file
   const int port = free_port();
   TrainerRun trainer({"andros-bridge", "trainer", "--input", "sdl", "--port", "sim", "--no-record", "--mapping",
-                      std::string(ANDROS_MAPPINGS_DIR) + "/hd1.yaml", "--listen",
-                      "127.0.0.1:" + std::to_string(port)});
+                      std::string(ANDROS_MAPPINGS_DIR) + "/hd1.yaml", "--listen", "127.0.0.1:" + std::to_string(port)});
   EventStream events(port);
   ASSERT_TRUE(events.connected());
   events.until([](const json& o) { return o["pad"]["connected"] == true && o["frames"] > 5; });
@@ -207,8 +206,7 @@ TEST(TrainerPad, ThePageFollowsThePadWithinOneFrame) {
   const auto release = lag(
       events, [](const json& o) { return !holds(o, "leftshoulder"); },
       [](const json& o) { return o["safety"] == false && o["speed"] == 0.0; });
-  EXPECT_LE(release.ticks(), 1) << "released at tick " << release.pad_tick << ", stopped at "
-                                << release.effect_tick;
+  EXPECT_LE(release.ticks(), 1) << "released at tick " << release.pad_tick << ", stopped at " << release.effect_tick;
 
   EXPECT_EQ(trainer.end(), 0);
 }
