@@ -176,6 +176,14 @@ void add_trainer_command(CLI::App& app, int& exit_code) {
           "mapping, safety rules and status view. A port other than sim (flag or config file) is refused.\n"
           "After an event script ends the page stays up until Ctrl-C (--exit-at-end: not).");
   opt->run.settings = std::make_unique<CommandLine>(*cmd, kRun);
+  // `run`'s row says where frames may go; the trainer takes only one place
+  // (wrapped by hand, as the settings table's help is).
+  cmd->get_option("--port")
+      ->description(
+          "where frames go: only sim, the built-in simulated vehicle (the default); a serial\n"
+          "device or a TCP link, here or in the config file, is refused")
+      ->type_name("sim")
+      ->default_str("");
   add_sdl_options(cmd, opt->run.sdl);
   cmd->add_option("--listen", opt->listen,
                   "Serve the page on ADDR:PORT (default 127.0.0.1:" + std::to_string(trainer::kDefaultPort) +

@@ -35,8 +35,7 @@ json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
     if (s.fire_bits[i]) held.push_back(vehicle::weapon_name(i));
   }
   json axes = json::object();
-  for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i)
-    axes[std::string(input::kPadAxisNames[i])] = facts.pad.axes[i];
+  for (const auto& [name, value] : facts.pad.axes) axes[name] = value;
   return {
       {"tick", facts.tick},
       {"t_ms", facts.t_ms},
@@ -124,18 +123,49 @@ void TrainerFeed::observe(LoopFacts facts) {
   if (lock.owns_lock()) facts_ = std::move(facts);
 }
 
-void TrainerFeed::observe_pad(const input::InputState& input) {
+void TrainerFeed::observe_pad(const input::InputState& input, const input::DeviceLayout* layout) {
+  using input::InputKey;
+  using input::InputKind;
   const auto& pad = input.operator_pad();
   pad_.connected = pad.connected();
   pad_.name = pad.name();
   pad_.buttons.clear();
+  pad_.axes.clear();
+  const auto hold = [&](InputKey key, std::string name) {
+    if (pad.button(key).down) pad_.buttons.push_back(std::move(name));
+  };
+  const auto hat = [&](int h) {
+    for (int d = 0; d < 4; ++d) {
+      const InputKey key{InputKind::kHat, static_cast<std::uint16_t>(h * 4 + d)};
+      hold(key, input::input_name(key));
+    }
+  };
+  if (layout != nullptr && !layout->game_controller) {
+    for (const auto& key : layout->buttons) hold(key, "button " + input::input_name(key));
+    for (int h = 0; h < layout->hats; ++h) hat(h);
+    for (const auto& key : layout->axes) pad_.axes.emplace_back("axis " + input::input_name(key), pad.axis(key));
+    return;
+  }
   for (std::size_t i = 0; i < input::kPadButtonNames.size(); ++i) {
-    const input::InputKey key{input::InputKind::kPadButton, static_cast<std::uint16_t>(i)};
-    if (pad.button(key).down) pad_.buttons.emplace_back(input::kPadButtonNames[i]);
+    hold(InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(i)}, std::string(input::kPadButtonNames[i]));
+  }
+  if (layout != nullptr) {
+    for (const int h : layout->free_hats) hat(h);
   }
   for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i) {
-    pad_.axes[i] = pad.axis(input::InputKey{input::InputKind::kPadAxis, static_cast<std::uint16_t>(i)});
+    pad_.axes.emplace_back(input::kPadAxisNames[i],
+                           pad.axis(InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(i)}));
   }
+}
+
+void WatchedInput::pump(input::InputState& state, std::int64_t now_ms) {
+  inner_.pump(state, now_ms);
+  const auto& pad = state.operator_pad();
+  if (pad.connection() != layout_connection_) {
+    layout_connection_ = pad.connection();
+    layout_ = inner_.device();
+  }
+  feed_.observe_pad(state, pad.connected() && layout_ ? &*layout_ : nullptr);
 }
 
 std::string TrainerFeed::state_with_trail() const {

@@ -2,7 +2,8 @@
 // reads GET /state once (the trail so far, the robot's figures) and then
 // GET /events, and draws each object it gets at the browser's next frame.
 // The drawn vehicle's pose is kept on its element (data-x, data-y,
-// data-heading, data-tick) for the browser test (tests/trainer/).
+// data-heading, data-tick, and data-time: the stream object's own) for the
+// browser test (tests/trainer/).
 #include "andros/trainer/trainer_page.hpp"
 
 namespace andros::trainer {
@@ -51,7 +52,7 @@ td:first-child{color:#9fb3c8;width:45%}
 <section id="top"><h2>Top view (x east, y north; REP 103)</h2>
 <svg id="topsvg" viewBox="0 0 420 640" preserveAspectRatio="xMidYMid meet">
 <g id="grid"></g><polyline id="trail" fill="none" stroke="#ffd75e" stroke-width="2" points=""/>
-<g id="vehicle" data-x="0" data-y="0" data-heading="0" data-tick="-1">
+<g id="vehicle" data-x="0" data-y="0" data-heading="0" data-tick="-1" data-time="-1">
 <rect id="body" fill="#c8ccd0" stroke="#222"/><path id="nose" fill="#e03131"/><line id="armtop" stroke="#2f7de1" stroke-width="4"/>
 </g>
 <g id="scale"><line x1="16" y1="620" x2="16" y2="620" stroke="#fff" stroke-width="3"/><text x="16" y="612" fill="#fff" font-size="13"></text></g>
@@ -113,7 +114,7 @@ function drawTop(s) {
   ta.setAttribute("x2", Math.cos(rad(s.arm.torso)) * reach); ta.setAttribute("y2", -Math.sin(rad(s.arm.torso)) * reach);
   const v = $("vehicle");
   v.setAttribute("transform", `translate(${sx(s.pose.x)},${sy(s.pose.y)}) rotate(${-s.pose.heading})`);
-  v.dataset.x = s.pose.x; v.dataset.y = s.pose.y; v.dataset.heading = s.pose.heading; v.dataset.tick = s.tick;
+  v.dataset.x = s.pose.x; v.dataset.y = s.pose.y; v.dataset.heading = s.pose.heading; v.dataset.tick = s.tick; v.dataset.time = s.time;
   const line = $("scale").firstElementChild;
   line.setAttribute("x2", 16 + 5 * PX);
   $("scale").lastElementChild.textContent = "5 m";

@@ -19,7 +19,12 @@ expect_exit 2 "$BIN" trainer --config "$TMP/legacy.conf" --input "$DRIVE" --exit
 [[ $(grep -c "error" "$TMP/err") -eq 1 ]] || fail "more than one error line: $(cat "$TMP/err")"
 tail -1 "$TMP/err" | grep -q "legacy.conf:5:.*the trainer drives only its simulated vehicle: port '/dev/ttyS0' refused" ||
   fail "config line not refused: $(cat "$TMP/err")"
-# `--port sim` is the trainer's own link: taken.
+# `--port sim` is the trainer's own link: taken. Its help says so, not `run`'s "a serial device".
+expect_exit 0 "$BIN" trainer --help
+tr -s ' \n' ' ' <"$TMP/out" >"$TMP/help"
+grep -q -- "--port sim *where frames go: only sim, the built-in simulated vehicle (the default); a serial device or a TCP link, here or in the config file, is refused" "$TMP/help" ||
+  fail "trainer --help's --port: $(grep -A3 -- --port "$TMP/out")"
+grep -q "refused at start while another program holds it" "$TMP/help" && fail "trainer --help offers run's serial device"
 # A bad --listen: one line, exit 2.
 expect_exit 2 "$BIN" trainer --listen 127.0.0.1 --input "$DRIVE" --exit-at-end
 expect_one_line_stderr

@@ -10,9 +10,13 @@ Keeps a screenshot.
 
   /usr/bin/python3 test_browser.py BIN DATA_DIR SCREENSHOT.png [DOCS_PNG]
 
-DOCS_PNG (docs/trainer.png) must be a 1280x720 screenshot of the page: with
-ANDROS_DOCS_SCREENSHOT=1 this run's screenshot replaces it (how the docs'
-picture is made again after the page changes)."""
+DOCS_PNG (docs/trainer.png) must be a 1280x720 screenshot of the page as the
+binary serves it now, from the drive as committed: it carries (a PNG text
+chunk) the SHA-256 of the page and the drive it was taken from, which must be
+those of this run. With ANDROS_DOCS_SCREENSHOT=1 this run's screenshot, with
+that digest, replaces it (how the docs' picture is made again after the page
+or the drive changes)."""
+import hashlib
 import json
 import os
 import shutil
@@ -25,6 +29,7 @@ import tempfile
 import threading
 import time
 import urllib.request
+import zlib
 
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
@@ -97,11 +102,46 @@ def read_stream(port, poses):
         pass  # the trainer ended, or dropped this reader: the ticks it saw are checked
 
 
+DIGEST_KEY = b"andros-trainer-page-sha256"
+
+
+def png_chunks(blob):
+    """(type, data) of each chunk of a PNG file."""
+    at, out = 8, []
+    while at + 8 <= len(blob):
+        size = int.from_bytes(blob[at:at + 4], "big")
+        out.append((blob[at + 4:at + 8], blob[at + 8:at + 8 + size]))
+        at += 12 + size
+    return out
+
+
+def png_digest(path):
+    """The page digest a screenshot carries (its tEXt chunk), None when none."""
+    with open(path, "rb") as f:
+        for kind, data in png_chunks(f.read()):
+            if kind == b"tEXt" and data.startswith(DIGEST_KEY + b"\0"):
+                return data[len(DIGEST_KEY) + 1:].decode()
+    return None
+
+
+def with_digest(source, target, digest):
+    """Copies the PNG source to target with the digest as a tEXt chunk after its header."""
+    with open(source, "rb") as f:
+        blob = f.read()
+    header_end = 8 + 12 + int.from_bytes(blob[8:12], "big")
+    data = DIGEST_KEY + b"\0" + digest.encode()
+    chunk = len(data).to_bytes(4, "big") + b"tEXt" + data + zlib.crc32(b"tEXt" + data).to_bytes(4, "big")
+    with open(target, "wb") as f:
+        f.write(blob[:header_end] + chunk + blob[header_end:])
+
+
 port = free_port()
+drive_events = os.path.join(data, "trainer", "browser_drive.events")
 tmp = tempfile.mkdtemp()
 env = dict(os.environ, XDG_STATE_HOME=tmp, XDG_CONFIG_HOME=tmp)
 driver = None
 trainer = None
+digest = None
 try:
     # The browser first (its start is the slow part on a busy machine), then
     # the drive, so that the page sees the drive whatever the machine's speed.
@@ -113,8 +153,7 @@ try:
     # The page's own 1280x720, whatever the window's frame takes.
     driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
                            {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
-    trainer = subprocess.Popen([binary, "trainer", "--listen", f"127.0.0.1:{port}", "--input",
-                                os.path.join(data, "trainer", "browser_drive.events")],
+    trainer = subprocess.Popen([binary, "trainer", "--listen", f"127.0.0.1:{port}", "--input", drive_events],
                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
     deadline = time.monotonic() + 60
     while True:
@@ -125,6 +164,9 @@ try:
             if time.monotonic() > deadline:
                 raise SystemExit("FAIL: the trainer's page never answered")
             time.sleep(0.05)
+    # What the screenshot shows: the page as served, the drive as committed.
+    with urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=2) as r, open(drive_events, "rb") as f:
+        digest = hashlib.sha256(r.read() + b"\0" + f.read()).hexdigest()
     stream = {}
     threading.Thread(target=read_stream, args=(port, stream), daemon=True).start()
     driver.get(f"http://127.0.0.1:{port}/")
@@ -180,7 +222,7 @@ try:
     if not shot_taken:
         driver.save_screenshot(shot)
     if docs_png and os.environ.get("ANDROS_DOCS_SCREENSHOT") == "1":
-        shutil.copyfile(shot, docs_png)
+        with_digest(shot, docs_png, digest)
 finally:
     if driver:
         driver.quit()
@@ -194,7 +236,8 @@ finally:
             _, err = trainer.communicate()
     shutil.rmtree(tmp, ignore_errors=True)
 if trainer is None or trainer.returncode != 0:
-    fail(f"the trainer exited {trainer.returncode}: {err.decode(errors='replace')[-600:]}")
+    fail(f"the trainer exited {trainer.returncode if trainer else '(never started)'}: "
+         f"{err.decode(errors='replace')[-600:]}")
 print(f"screenshot: {shot}")
 for png in [shot] + ([docs_png] if docs_png else []):
     with open(png, "rb") as f:
@@ -202,6 +245,9 @@ for png in [shot] + ([docs_png] if docs_png else []):
     size = (int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big"))
     if not head.startswith(b"\x89PNG") or size != (1280, 720):
         fail(f"{png}: not a 1280x720 PNG ({size})")
+if docs_png and png_digest(docs_png) != digest:
+    fail(f"{docs_png} was taken from another page or drive than this run's (its digest {png_digest(docs_png)}, "
+         f"this run's {digest}): ANDROS_DOCS_SCREENSHOT=1 ctest -R trainer.browser makes it again; look at it")
 if failures:
     sys.exit(1)
 print("all checks passed")

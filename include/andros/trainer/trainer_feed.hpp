@@ -4,12 +4,14 @@
 /// the web clients (docs/trainer.md, "The stream"). The run loop only hands
 /// over what it knows at each tick (observe), and never waits to do so.
 
-#include <array>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "andros/input/device_layout.hpp"
 #include "andros/input/input_source.hpp"
 #include "andros/protocol/decoder.hpp"
 #include "andros/trainer/stream_hub.hpp"
@@ -21,8 +23,11 @@ namespace andros::trainer {
 struct PadInputs {
   bool connected = false;
   std::string name;
-  std::vector<std::string> buttons;  ///< the game-controller buttons held ("leftshoulder", "dpup")
-  std::array<std::int16_t, input::kPadAxisNames.size()> axes{};  ///< in kPadAxisNames' order
+  /// The buttons held: a game controller's by name ("leftshoulder", "dpup"),
+  /// a plain joystick's by number ("button 3"), hat directions ("hat0up").
+  std::vector<std::string> buttons;
+  /// Each axis and its value: a game controller's by name ("lefty"), a plain joystick's by number ("axis 2").
+  std::vector<std::pair<std::string, std::int16_t>> axes;
 };
 
 /// What the loop knows at a tick, for the page.
@@ -55,8 +60,10 @@ class TrainerFeed {
   /// observe_pad() (facts.pad is replaced). Never waits: while
   /// the vehicle's thread reads them, this tick's are left out.
   void observe(LoopFacts facts);
-  /// The pad as the loop pumped it (the loop's thread); observe() carries it.
-  void observe_pad(const input::InputState& input);
+  /// The pad as the loop pumped it (the loop's thread); observe() carries
+  /// it. With the open device's layout, a plain joystick's inputs are its
+  /// numbered ones; without (an event script), a game controller's.
+  void observe_pad(const input::InputState& input, const input::DeviceLayout* layout);
   /// For GET /state: the latest object, with the trail so far.
   [[nodiscard]] std::string state_with_trail() const;
 
@@ -77,10 +84,7 @@ class WatchedInput : public input::InputSource {
  public:
   WatchedInput(input::InputSource& inner, TrainerFeed& feed) : inner_(inner), feed_(feed) {}
 
-  void pump(input::InputState& state, std::int64_t now_ms) override {
-    inner_.pump(state, now_ms);
-    feed_.observe_pad(state);
-  }
+  void pump(input::InputState& state, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return inner_.finished(now_ms); }
   [[nodiscard]] bool supervised() const override { return inner_.supervised(); }
   void feedback(const input::FeedbackPattern& pattern) override { inner_.feedback(pattern); }
@@ -90,6 +94,9 @@ class WatchedInput : public input::InputSource {
  private:
   input::InputSource& inner_;
   TrainerFeed& feed_;
+  /// The open device's inputs, asked again only when a controller connects.
+  std::optional<input::DeviceLayout> layout_;
+  std::uint32_t layout_connection_ = 0;
 };
 
 }  // namespace andros::trainer
