@@ -17,6 +17,7 @@
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "bench_util.hpp"
+#include "support/frame_doubles.hpp"
 
 namespace {
 
@@ -33,16 +34,12 @@ protocol::DataBytes neutral_frame() {
   return protocol::FrameBuilder(0x01).build(s);
 }
 
-/// Its mapping names no deadman and no stop button: never enabled, nothing stops.
-class FixedFrames final : public run::FrameSource {
+/// Its mapping names no deadman and no stop button (the tests' double): never enabled, nothing stops.
+class FixedFrames final : public testing::WithoutStops {
  public:
-  const mapping::Mapping& mapping() const override { return mapping_; }
   run::Step step(const input::InputState&, std::int64_t, bool) override { return {neutral_frame(), {}}; }
   protocol::DataBytes neutral() const override { return neutral_frame(); }
   void rebase(const input::InputState&) override {}
-
- private:
-  mapping::Mapping mapping_;
 };
 
 class Idle final : public input::InputSource {

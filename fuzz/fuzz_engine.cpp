@@ -17,9 +17,9 @@
 #include "andros/mapping/engine.hpp"
 #include "andros/mapping/loader.hpp"
 #include "andros/protocol/robots.hpp"
-#include "andros/run/drive_guard.hpp"
 #include "fuzz_check.hpp"
 #include "oracle/centre_watch.hpp"
+#include "support/driven_engine.hpp"
 
 namespace {
 
@@ -87,8 +87,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const mapping::Mapping& mapping = *valid;
   const bool weapons = (data[1] & 1) != 0;
   const std::uint8_t code = data[1];
-  mapping::Engine engine(valid, mapping::EngineOptions{weapons, code});
-  run::DriveGuard guard(engine.mapping());
+  // The engine as the run loop drives it, up to its latch (held to the loop by tests/run/test_driven_engine.cpp).
+  testing::DrivenEngine engine(valid, mapping::EngineOptions{weapons, code});
   const input::InputKey deadman = mapping.deadman->key;
 
   input::InputState input;
@@ -96,7 +96,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::array<protocol::SignalId, 2> centred{protocol::signal_id("drive"), protocol::signal_id("pivot")};
   std::array<test::CentreWatch, 2> centre{};
   bool was_enabled = false;
-  bool motion = false;  // what the engine was told
   int sessions = 0, seen_sessions = 0;
   std::int64_t t = 0, next_frame = 0;
   // The stop button (docs/mapping.md, "Stop"): a frame that sees it pressed
@@ -106,12 +105,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 2; i + 3 <= size; i += 3) {
     t += data[i + 2] % 16;  // events land between frames, sometimes many per frame
     while (next_frame <= t) {
-      // The loop's decision at its simplest (not enabled and enabled, no
-      // latch): motion while the deadman reports a fresh hold and no stop.
-      const auto facts = guard.facts(input, next_frame, motion);
-      motion = facts.deadman == mapping::DeadmanState::kFreshHold && !facts.stops;
-      guard.decided(motion, next_frame);
-      const auto frame = engine.step(input, next_frame, motion).data;
+      const auto frame = engine.step(input, next_frame);
       const auto s = protocol::read_signals(frame);
       check(protocol::validation_errors(frame).empty());
       check(frame[protocol::kCodeByte] == code);
@@ -133,7 +127,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       was_enabled = may_move;
       seen_sessions = sessions;
-      check(s[protocol::signal_id("safety")] == (facts.deadman == mapping::DeadmanState::kFreshHold && !stop ? 1 : 0));
+      check(s[protocol::signal_id("safety")] ==
+            (engine.status().deadman == mapping::DeadmanState::kFreshHold && !stop ? 1 : 0));
       next_frame += 40;
     }
     const auto event = next_event(data + i, t);

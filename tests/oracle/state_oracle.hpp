@@ -1,6 +1,6 @@
 #pragma once
 // The operating-state machine's oracle: the rules of docs/safety-states.md
-// ("The rule the table keeps") and ../shared/contract.md section 5, kept from
+// ("The rule the table keeps") and docs/mapping.md ("Stop"; "What a mapping cannot change"), kept from
 // the events alone. It knows nothing of the machine's table: it follows the
 // conditions each event reports (the link, the controller, a stop latched, a
 // shutdown asked for) and what each interruption owes (a rebase before

@@ -87,7 +87,8 @@ struct EngineStatus {
   /// A stop button was pressed or is held this tick (the operator's `estop`,
   /// the supervisor's `stop`): the run loop latches the stop.
   StopPresses stop_pressed;
-  /// One is held now: the latched stop cannot clear yet.
+  /// One is held now: the latched stop cannot clear yet (the status board
+  /// says so in place of how to reset: view/status_board.cpp, stopped_text).
   bool stop_held = false;
   /// The supervisor's `stop` is held (for the view: whose stop it is).
   bool supervisor_stop = false;
