@@ -10,6 +10,20 @@
 namespace andros::view {
 namespace {
 
+/// A session at 25 Hz: enabled, stopped by the operator at 40 ms, reset at
+/// 120 ms and not enabled from then to its end at last_tick.
+record::Session stopped_and_reset(std::int64_t last_tick) {
+  record::Session s;
+  s.settings.rate_millihertz = 25'000;
+  s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};
+  s.stops = {{.t_ms = 40, .reset = false, .by = run::StopBy::kOperator, .name = "Pad A"},
+             {.t_ms = 120, .reset = true, .by = run::StopBy::kOperator, .name = ""}};
+  s.end.emplace();
+  s.end->t_ms = last_tick * 40;
+  s.end->last_tick = last_tick;
+  return s;
+}
+
 TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
   run::TickReport r;
   r.state = run::OpState::kEnabled;
@@ -26,15 +40,8 @@ TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
   EXPECT_EQ(svg.find("stopped by the operator"), std::string::npos);
 
   // From a session: the stop record names whose, the reset ends it.
-  record::Session s;
-  s.settings.rate_millihertz = 25'000;
+  record::Session s = stopped_and_reset(4);
   s.frames.emplace_back();  // tick 0, repeated to the end
-  s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};
-  s.stops = {{.t_ms = 40, .reset = false, .by = run::StopBy::kOperator, .name = "Pad A"},
-             {.t_ms = 120, .reset = true, .by = run::StopBy::kOperator, .name = ""}};
-  s.end.emplace();
-  s.end->t_ms = 160;
-  s.end->last_tick = 4;
   const auto samples = plot_samples(s);
   ASSERT_EQ(samples.size(), 5U);
   EXPECT_EQ(samples[0].stop, "");
@@ -48,17 +55,10 @@ TEST(PlotStops, EachStopIsLabelledWithWhoseItWas) {
 // stands there (nothing enabled between): under load, a run put the reset
 // close before such a page, and the page drew a reset at its left edge.
 TEST(PlotStops, AResetBeforeThePageIsNotDrawnAtItsStart) {
-  record::Session s;
-  s.settings.rate_millihertz = 25'000;
+  record::Session s = stopped_and_reset(10);
   for (std::int64_t tick = 0; tick <= 10; ++tick) {  // a frame of its own every tick: a sample at each
     s.frames.push_back({.tick = tick, .t_ms = tick * 40, .data = {static_cast<std::uint8_t>(tick)}});
   }
-  s.states = {{0, run::OpState::kEnabled}, {40, run::OpState::kStopped}, {120, run::OpState::kNotEnabled}};
-  s.stops = {{.t_ms = 40, .reset = false, .by = run::StopBy::kOperator, .name = "Pad A"},
-             {.t_ms = 120, .reset = true, .by = run::StopBy::kOperator, .name = ""}};
-  s.end.emplace();
-  s.end->t_ms = 400;
-  s.end->last_tick = 10;
   for (const std::int64_t from : {160, 200}) {
     PlotInput in;
     in.rate_millihertz = s.settings.rate_millihertz;
