@@ -12,7 +12,9 @@ version and arguments, .clang-tidy, the file's compile command, and the text
 of the file and of every header it includes (project and system headers alike,
 as the compiler lists them with -M). Any change to one of them runs the file
 again; nothing else does. Paths inside the source tree are keyed and kept
-relative to it, so that another clone of it finds the same results. The
+relative to it, so that another clone of it finds the same results. Files
+not in the cache go to clang-tidy longest first (by the bytes the compiler
+reads for them), so that the run does not end on one long file alone. The
 cache is ANDROS_TIDY_CACHE (default ~/.cache/andros-bridge/clang-tidy;
 'none': no cache); an entry not used for 30 days is removed. Every file's
 output goes to LOG, in the database's order.
@@ -102,15 +104,16 @@ def main():
     hasher = Hasher(relative)
 
     def key_of(entry):
+        """The entry's cache key (None: no cache for it) and the bytes it reads (its cost)."""
         deps = dependencies(entry)
         if deps is None:
-            return None
+            return None, 0
         h = common.copy()
         h.update(" ".join(UNITY_ARGS if is_unity(entry) else []).encode() + b"\0")
         h.update(relative((entry["directory"] + "\0" + entry.get("command", " ".join(entry.get("arguments", [])))).encode()))
         for d in deps:
             h.update(relative(d.encode()) + b"\0" + hasher.file(d).encode())
-        return h.hexdigest()
+        return h.hexdigest(), sum(os.path.getsize(d) for d in deps)
 
     running = set()
 
@@ -138,15 +141,17 @@ def main():
 
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         keys = list(pool.map(key_of, entries))
-        outputs, checked = [], 0
-        for entry, key in zip(entries, keys):
+        outputs, missed = [None] * len(entries), []
+        for i, (entry, (key, cost)) in enumerate(zip(entries, keys)):
             hit = cache / key if cache and key else None
             if hit and hit.exists():
                 hit.touch()
-                outputs.append(hit.read_bytes().replace(b"@SOURCE@/", prefix))
+                outputs[i] = hit.read_bytes().replace(b"@SOURCE@/", prefix)
             else:
-                outputs.append(pool.submit(tidy, entry, key))
-                checked += 1
+                missed.append((cost, i))
+        for _, i in sorted(missed, reverse=True):
+            outputs[i] = pool.submit(tidy, entries[i], keys[i][0])
+        checked = len(missed)
         with log.open("wb") as f:
             for out in outputs:
                 f.write(out if isinstance(out, bytes) else out.result())
