@@ -44,12 +44,9 @@ record::Session drive() {
   record::Session s;
   s.settings.robot = "HD1";
   s.settings.rate_millihertz = 25'000;
-  s.frames = {frame(0, driving(255, 128)),
-              frame(300, driving(230, 90)),
-              frame(700, driving(200, 170)),
-              frame(900, driving(200, 170), link::SendResult::kDown),
-              frame(975, driving(255, 140)),
-              frame(1400, driving(128, 255), link::SendResult::kSent, 30),
+  s.frames = {frame(0, driving(255, 128)),   frame(300, driving(230, 90)),
+              frame(700, driving(200, 170)), frame(900, driving(200, 170), link::SendResult::kDown),
+              frame(975, driving(255, 140)), frame(1400, driving(128, 255), link::SendResult::kSent, 30),
               frame(1700, driving(60, 128))};
   s.end = record::EndRecord{.t_ms = 1999 * 40, .last_tick = 1999, .frames_sent = 1900, .why = "", .line = 0};
   return s;
@@ -93,8 +90,8 @@ TEST(SessionMotion, SeekingToAnyTimeGivesThePoseOfPlayingToIt) {
   const SessionMotion motion(s, vehicle::figures_for("HD1"));
   // Before the first snapshot's tick, on ticks, between them, on a snapshot's
   // tick (every 250), in the link's down time, in the skipped ticks, at the end.
-  for (const std::int64_t t : {-1, 0, 39, 40, 9'999, 10'000, 10'001, 20'020, 36'500, 38'000, 55'000, 56'000, 57'210,
-                               70'000, 79'960, 90'000}) {
+  for (const std::int64_t t :
+       {-1, 0, 39, 40, 9'999, 10'000, 10'001, 20'020, 36'500, 38'000, 55'000, 56'000, 57'210, 70'000, 79'960, 90'000}) {
     std::int64_t tick = -2;
     const auto seek = motion.at(t, &tick);
     expect_same_bits(seek, played_to(s, t), t);
