@@ -46,21 +46,25 @@ void run_export(const ExportOptions& opt) {
 
 void add_export_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<ExportOptions>();
-  auto* cmd = app.add_subcommand("export",
-                                 "Write a flight recorder session (docs/recording.md) as a table, one row per tick\n"
-                                 "the live loop ran: the time (one strictly increasing column, in seconds), the\n"
-                                 "operating state; who stopped (stopped_by: operator, supervisor or gate) and\n"
-                                 "with which pad (stop_pad), who reset the last stop and with which pad\n"
-                                 "(reset_by, reset_pad); shutdown_requested (a SIGINT, SIGTERM...: not a stop\n"
-                                 "button); the layer; what the link did with the frame; what the hands held,\n"
-                                 "read from the recorded input with the recorded mapping (operator_deadman,\n"
-                                 "operator_estop, operator_reset, supervisor_stop, supervisor_reset,\n"
-                                 "supervisor_consent: 1 when held at any moment since the row before, so that a\n"
-                                 "press shorter than a tick shows; empty when the mapping has no such input);\n"
-                                 "then every signal of the frame by name (drive, pivot...). For a spreadsheet,\n"
-                                 "PlotJuggler or Python's csv module, as it is. Read as verify reads it: a last\n"
-                                 "line cut short is left out, and of a session that is not intact only the records\n"
-                                 "before the break are exported, with a warning.");
+  auto* cmd =
+      app.add_subcommand("export",
+                         "Write a flight recorder session (docs/recording.md) as a table, one row per tick\n"
+                         "the live loop ran: the time (one strictly increasing column, in seconds), the\n"
+                         "operating state; who stopped (stopped_by: operator, supervisor or gate) and\n"
+                         "with which pad (stop_pad), who reset the last stop and with which pad\n"
+                         "(reset_by, reset_pad); shutdown_requested (a SIGINT, SIGTERM...: not a stop\n"
+                         "button); the layer; what the link did with the frame; what the hands held,\n"
+                         "read from the recorded input with the recorded mapping (operator_deadman,\n"
+                         "operator_estop, operator_reset, supervisor_stop, supervisor_reset,\n"
+                         "supervisor_consent: 1 when held at any moment since the row before, so that a\n"
+                         "press shorter than a tick shows; empty when the mapping has no such input);\n"
+                         "then every signal of the frame by name (drive, pivot...); then where the\n"
+                         "trainer's vehicle model is after the tick (vehicle_x, vehicle_y, vehicle_heading,\n"
+                         "front_flipper, rear_flipper, arm_torso, arm_shoulder, arm_elbow, arm_wrist,\n"
+                         "arm_wrist_extension, gripper_opening, gripper_rotation; docs/trainer.md). For a\n"
+                         "spreadsheet, PlotJuggler or Python's csv module, as it is. Read as verify reads it: a last\n"
+                         "line cut short is left out, and of a session that is not intact only the records\n"
+                         "before the break are exported, with a warning.");
   cmd->add_option("SESSION", opt->session,
                   "a session file, or its bare name as 'sessions' prints it (looked up in the\n"
                   "sessions' folder)")

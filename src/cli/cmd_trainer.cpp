@@ -2,28 +2,34 @@
 // state machine, recorder and status view) with the link always the
 // simulated vehicle, whose frames drive a vehicle model shown on a local
 // web page (docs/trainer.md). It never opens a serial port or a TCP link.
+#include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include <atomic>
+#include <charconv>
 #include <chrono>
-#include <condition_variable>
+#include <cmath>
 #include <memory>
-#include <mutex>
 #include <optional>
+#include <semaphore>
 #include <string>
 #include <thread>
 
-#include "andros/base/clock.hpp"
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
 #include "andros/cli/command_line.hpp"
+#include "andros/cli/settings.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/operating_state.hpp"
 #include "andros/trainer/trainer_feed.hpp"
 #include "andros/trainer/trainer_page.hpp"
+#include "andros/trainer/trainer_replay.hpp"
 #include "andros/trainer/trainer_server.hpp"
 #include "andros/vehicle/robot_figures.hpp"
 #include "commands.hpp"
 #include "run_bridge.hpp"
 #include "sdl_options.hpp"
+#include "session_files.hpp"
 
 namespace andros::cli {
 namespace {
@@ -32,6 +38,7 @@ struct TrainerOptions {
   RunOptions run;
   std::string listen;        ///< --listen ADDR:PORT; empty: 127.0.0.1 and the default port
   bool exit_at_end = false;  ///< --exit-at-end: no page kept up after the script
+  std::string session;       ///< --session NAME: a recorded session replayed as motion, no loop at all
   std::size_t clients = trainer::HubLimits{}.max_clients;
 };
 
@@ -39,14 +46,13 @@ struct TrainerOptions {
 class Trainer {
  public:
   explicit Trainer(const TrainerOptions& opt) : opt_(opt) {}
-  ~Trainer() { stop_watch(); }
+  ~Trainer() { stop_motion(); }
   Trainer(const Trainer&) = delete;
   Trainer& operator=(const Trainer&) = delete;
 
   RunHooks hooks() {
     RunHooks h;
     h.check = [this](const Settings& config) { check(config); };
-    h.frames = [this](const protocol::DecodedFrame& frame, std::int64_t now_ns) { feed_->on_frame(frame, now_ns); };
     h.input = [this](input::InputSource& inner) -> input::InputSource& {
       input_.emplace(inner, *feed_);
       return *input_;
@@ -73,6 +79,7 @@ class Trainer {
 
   /// The server, on a thread of its own; its failure never stops driving.
   std::string start() {
+    motion_ = std::thread([this] { move(); });
     if (!listen_.loopback()) {
       spdlog::warn("the trainer's page listens on {}, not only this machine: whoever reaches it sees the vehicle",
                    listen_.host_header());
@@ -87,7 +94,6 @@ class Trainer {
       return "simulated vehicle only; no page: " + why;
     }
     spdlog::info("trainer: the simulated vehicle's page is at {}", listen_.url());
-    watch_ = std::thread([this] { watch(); });
     return "simulated vehicle only; page " + listen_.url();
   }
 
@@ -101,6 +107,9 @@ class Trainer {
     }
     last_tick_ = r.tick;
     last_t_ms_ = r.t_ms;
+    // The vehicle gets what the session records: the frame the link took, at its tick's time.
+    feed_->queue_tick(r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
+    wake_.release();
     feed_->observe(trainer::LoopFacts{.tick = r.tick,
                                       .t_ms = r.t_ms,
                                       .state = words_,
@@ -109,26 +118,32 @@ class Trainer {
                                       .pad = {}});  // the pad: the feed's own, from the input's pump
   }
 
-  /// While no frame comes (a link down, a suspend, after the run), the model
-  /// is advanced now and then, so that the page sees the vehicle's watchdog.
-  void watch() {
-    std::unique_lock lock(watch_mutex_);
-    while (!watch_cv_.wait_for(lock, kWatchEvery, [this] { return watch_stop_; })) {
-      feed_->advance_if_quiet(monotonic_ns(), std::chrono::nanoseconds(kWatchEvery).count());
+  /// The motion thread: the loop's ticks into the model as they come (the
+  /// loop wakes it; at least every kMotionEvery), until stop_motion().
+  void move() {
+    while (!motion_stop_.load()) {
+      (void)wake_.try_acquire_for(kMotionEvery);
+      feed_->take_ticks();
     }
   }
 
-  void stop_watch() {
-    if (!watch_.joinable()) return;
-    {
-      const std::lock_guard lock(watch_mutex_);
-      watch_stop_ = true;
+  /// Ends the motion thread, then takes what the loop queued after its last turn.
+  void stop_motion() {
+    if (motion_.joinable()) {
+      motion_stop_.store(true);
+      wake_.release();
+      motion_.join();
     }
-    watch_cv_.notify_all();
-    watch_.join();
+    if (feed_) feed_->take_ticks();
   }
 
   void after_run(ShutdownRequest& stop) {
+    stop_motion();
+    // Where the vehicle ended, to the bit: a replay of the session says the same (docs/trainer.md).
+    spdlog::info("trainer: the vehicle {}", feed_->summary());
+    if (const auto lost = feed_->lost_ticks(); lost != 0) {
+      spdlog::warn("trainer: {} ticks found the model's queue full: the model is not the session's", lost);
+    }
     if (opt_.exit_at_end || !server_ || stop.requested()) return;
     spdlog::info("trainer: the input has ended; the page stays up at {} until Ctrl-C", listen_.url());
     // The page shows where the vehicle ended, and says the run is over (not "shutting down" for ever).
@@ -138,11 +153,11 @@ class Trainer {
                                       .state_name = "ended",
                                       .layer = "",
                                       .pad = {}});
-    feed_->advance(monotonic_ns());
+    feed_->republish();
     stop.sleep_until(kNoDeadline);
   }
 
-  static constexpr std::chrono::milliseconds kWatchEvery{100};
+  static constexpr std::chrono::milliseconds kMotionEvery{100};
   /// The state's words are formed again at least this often (the enable text's countdowns).
   static constexpr std::int64_t kWordsEveryTicks = 5;
 
@@ -157,11 +172,69 @@ class Trainer {
   std::string layer_;
   std::int64_t last_tick_ = -1;
   std::int64_t last_t_ms_ = 0;
-  std::thread watch_;
-  std::mutex watch_mutex_;
-  std::condition_variable watch_cv_;
-  bool watch_stop_ = false;
+  std::thread motion_;
+  std::counting_semaphore<> wake_{0};
+  std::atomic<bool> motion_stop_{false};
 };
+
+/// `trainer --session NAME`: the session's frames as the vehicle's motion
+/// on the page (docs/trainer.md, "Replaying a session"). No loop, no link,
+/// no mapping or course of this machine: the session alone, read as verify
+/// reads it.
+int replay_session(const TrainerOptions& opt) {
+  for (const auto& row : settings_table()) {
+    if ((row.commands & kRun) != 0 && opt.run.settings->given(flag_name(row))) {
+      throw InputError(SourcePos{std::string(flag_name(row))},
+                       "not with --session: the session is replayed with what it recorded");
+    }
+  }
+  auto checked = record::read_checked_session(opt.session);
+  if (checked.unreadable) throw *checked.unreadable;
+  const auto& verdict = checked.verdict;
+  std::string note;
+  if (!verdict.intact) {
+    note = fmt::format("NOT INTACT: {}: the {} records before it replayed, not evidence (andros-bridge verify)",
+                       verdict.problem, verdict.records);
+  } else if (verdict.cut_short_line != 0) {
+    note = record::cut_short_text(verdict);
+  }
+  if (!note.empty()) spdlog::warn("{}", note);
+  const trainer::SessionReplay replay(std::move(*checked.session), note);
+  spdlog::info("trainer: the session's vehicle {}", trainer::trail_summary(replay.motion().end()));
+  if (opt.exit_at_end) return kExitOk;
+
+  ShutdownRequest stop(kRunShutdownSignals);  // before the server's threads: they inherit the blocked signals
+  const auto listen = opt.listen.empty() ? trainer::ListenAddress{} : trainer::parse_listen(opt.listen, {"--listen"});
+  if (!listen.loopback()) {
+    spdlog::warn("the trainer's page listens on {}, not only this machine: whoever reaches it sees the vehicle",
+                 listen.host_header());
+  }
+  trainer::StreamHub hub(trainer::HubLimits{.max_clients = opt.clients});
+  trainer::TrainerServer server(trainer::ServerOptions{.listen = listen}, hub, trainer::trainer_page(),
+                                [&replay] { return replay.end_state(); });
+  server.add_json("/replay", [&replay](const trainer::TrainerServer::Params&, std::string*) {
+    return std::optional(replay.replay_json());
+  });
+  server.add_json("/motion", [&replay](const trainer::TrainerServer::Params& params, std::string* why) {
+    const auto t = params.find("t");
+    double seconds = -1;
+    if (t != params.end()) {
+      const auto& text = t->second;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+      if (ec != std::errc() || end != text.data() + text.size()) seconds = -1;
+    }
+    if (!std::isfinite(seconds) || seconds < 0 || seconds > static_cast<double>(record::kMaxSessionMs) / 1000) {
+      *why = "/motion?t=SECONDS: the time in the session, 0 or more";
+      return std::optional<std::string>();
+    }
+    return std::optional(replay.state_at(std::llround(seconds * 1000)));
+  });
+  std::string why;
+  if (!server.start(&why)) throw RuntimeError("trainer: " + why + " (--listen ADDR:PORT for another port)");
+  spdlog::info("trainer: the session's replay is at {} until Ctrl-C", server.address().url());
+  stop.sleep_until(kNoDeadline);
+  return kExitOk;
+}
 
 }  // namespace
 
@@ -189,8 +262,20 @@ void add_trainer_command(CLI::App& app, int& exit_code) {
                   "Serve the page on ADDR:PORT (default 127.0.0.1:" + std::to_string(trainer::kDefaultPort) +
                       "); any address but 127.0.0.1 is warned about: whoever reaches it sees the vehicle")
       ->type_name("ADDR:PORT");
-  cmd->add_flag("--exit-at-end", opt->exit_at_end, "End when the event script ends (no page kept up): for tests");
+  cmd->add_flag("--exit-at-end", opt->exit_at_end,
+                "End when the event script ends (no page kept up): for tests; with --session, once\n"
+                "the session's motion is computed (its end printed)");
+  cmd->add_option("--session", opt->session,
+                  "Replay a recorded session (any: a trainer run or a real drive; its bare name as\n"
+                  "'sessions' prints it) as the vehicle's motion, with play, pause, speed and a time\n"
+                  "slider on the page: no link, no loop, nothing read but the session (docs/trainer.md)")
+      ->type_name("NAME");
   cmd->callback([opt, &exit_code] {
+    if (!opt->session.empty()) {
+      opt->session = find_session(opt->session);  // a bare session name, as `sessions` prints it
+      exit_code = replay_session(*opt);
+      return;
+    }
     Trainer trainer(*opt);
     exit_code = run_bridge(opt->run, trainer.hooks());
   });

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "andros/trainer/trainer_replay.hpp"
+#include "andros/view/session_motion.hpp"
+
 namespace andros::trainer {
 namespace {
 
@@ -88,10 +91,28 @@ std::string stream_object(const vehicle::VehicleModel& model, const LoopFacts& f
   return stream_json(model, facts).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-void TrainerFeed::on_frame(const protocol::DecodedFrame& frame, std::int64_t now_ns) {
+void TrainerFeed::queue_tick(std::int64_t t_ms, const protocol::DataBytes& data, bool delivered) {
+  const auto head = queue_head_.load(std::memory_order_relaxed);
+  if (head - queue_tail_.load(std::memory_order_acquire) == kQueueTicks) {
+    lost_.fetch_add(1, std::memory_order_relaxed);
+    return;
+  }
+  queue_[head % kQueueTicks] = Tick{t_ms, data, delivered};
+  queue_head_.store(head + 1, std::memory_order_release);
+}
+
+bool TrainerFeed::take_ticks() {
+  auto tail = queue_tail_.load(std::memory_order_relaxed);
+  const auto head = queue_head_.load(std::memory_order_acquire);
+  if (tail == head) return false;
   const std::lock_guard lock(model_mutex_);
-  model_.on_frame(frame, now_ns);
-  publish_locked();
+  for (; tail != head; ++tail) {
+    const auto& t = queue_[tail % kQueueTicks];
+    view::feed_tick(model_, t.t_ms, t.data, t.delivered);
+    publish_locked();
+    queue_tail_.store(tail + 1, std::memory_order_release);
+  }
+  return true;
 }
 
 void TrainerFeed::advance(std::int64_t now_ns) {
@@ -100,11 +121,14 @@ void TrainerFeed::advance(std::int64_t now_ns) {
   publish_locked();
 }
 
-void TrainerFeed::advance_if_quiet(std::int64_t now_ns, std::int64_t quiet_ns) {
+void TrainerFeed::republish() {
   const std::lock_guard lock(model_mutex_);
-  if (!model_.state().started || now_ns - model_.state().time_ns < quiet_ns) return;
-  model_.advance(now_ns);
   publish_locked();
+}
+
+std::string TrainerFeed::summary() const {
+  const std::lock_guard lock(model_mutex_);
+  return trail_summary(model_);
 }
 
 void TrainerFeed::publish_locked() {

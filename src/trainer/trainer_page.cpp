@@ -1,9 +1,12 @@
 // The trainer's page: plain HTML, SVG and a canvas, its script inline; it
 // reads GET /state once (the trail so far, the robot's figures) and then
 // GET /events, and draws each object it gets at the browser's next frame.
-// The drawn vehicle's pose is kept on its element (data-x, data-y,
-// data-heading, data-tick, and data-time: the stream object's own) for the
-// browser test (tests/trainer/).
+// From `trainer --session`, GET /replay answers, and the page is a session's
+// replay instead (its own section of the script: play, pause, speed, the
+// slider, the state lane; each time shown asked of GET /motion). The drawn
+// vehicle's pose is kept on its element (data-x, data-y, data-heading,
+// data-tick, data-time and data-t-ms: the object's own) for the browser
+// tests (tests/trainer/).
 #include "andros/trainer/trainer_page.hpp"
 
 namespace andros::trainer {
@@ -44,6 +47,15 @@ td:first-child{color:#9fb3c8;width:45%}
 .fired{display:inline-block;padding:1px 6px;margin:1px;border-radius:3px;background:#444}
 .fired.now{background:#e03131;color:#fff}
 .on{color:#ff6b6b;font-weight:bold}
+/* A session's replay (--session): the controls and the state lane under the views. */
+#replay{display:none;align-items:center;gap:10px;padding:4px 12px;background:#2b3035;border-top:2px solid #444}
+body.replay #replay{display:flex}
+body.replay main{height:calc(100vh - 40px - 58px)}
+#replay button{width:70px;font-weight:bold}
+#replay .track{flex:1;display:flex;flex-direction:column;gap:2px}
+#slider{width:100%;margin:0}
+#lane{width:100%;height:14px;display:block;background:#444}
+#rnote{color:#ffb74d;max-width:360px;white-space:nowrap;overflow:hidden;text-overflow:ellipsis}
 </style></head>
 <body>
 <header><h1>andros-bridge TRAINER</h1><span id="robot">simulated vehicle</span>
@@ -70,6 +82,12 @@ td:first-child{color:#9fb3c8;width:45%}
 <h2 style="margin-top:8px">Fired</h2><div id="weapons"></div><div id="laser"></div>
 <h2 style="margin-top:8px">Vehicle</h2><table id="facts"></table></section>
 </main>
+<footer id="replay"><button id="play" type="button">play</button>
+<label>speed <select id="speed"><option>0.25</option><option>0.5</option><option selected>1</option>
+<option>2</option><option>4</option><option>8</option></select>x</label>
+<div class="track"><input id="slider" type="range" min="0" max="0" step="1" value="0" aria-label="time in the session">
+<svg id="lane" preserveAspectRatio="none"></svg></div>
+<span id="rtime" data-t-ms="0">0.00 / 0.00 s</span><span id="rnote"></span></footer>
 <script>
 "use strict";
 const $ = id => document.getElementById(id);
@@ -114,7 +132,7 @@ function drawTop(s) {
   ta.setAttribute("x2", Math.cos(rad(s.arm.torso)) * reach); ta.setAttribute("y2", -Math.sin(rad(s.arm.torso)) * reach);
   const v = $("vehicle");
   v.setAttribute("transform", `translate(${sx(s.pose.x)},${sy(s.pose.y)}) rotate(${-s.pose.heading})`);
-  v.dataset.x = s.pose.x; v.dataset.y = s.pose.y; v.dataset.heading = s.pose.heading; v.dataset.tick = s.tick; v.dataset.time = s.time;
+  v.dataset.x = s.pose.x; v.dataset.y = s.pose.y; v.dataset.heading = s.pose.heading; v.dataset.tick = s.tick; v.dataset.time = s.time; v.dataset.tMs = s.t_ms;
   const line = $("scale").firstElementChild;
   line.setAttribute("x2", 16 + 5 * PX);
   $("scale").lastElementChild.textContent = "5 m";
@@ -268,18 +286,98 @@ function draw() {
 }
 function take(s) {
   if (!s || s.pose === undefined) return;
-  addTrail(s.pose.x, s.pose.y);
+  if (!replay.data) addTrail(s.pose.x, s.pose.y);
   latest = s;
 }
-fetch("/state").then(r => r.json()).then(s => {
-  if (s.figures) fig = s.figures;
-  if (s.trail) trail = s.trail.slice();
-  take(s);
-  const es = new EventSource("/events");
-  es.onopen = () => text("link", "live: /events");
-  es.onerror = () => text("link", "stream lost: reconnecting");
-  es.onmessage = m => take(JSON.parse(m.data));
-}).catch(() => text("link", "no answer from the trainer"));
+function live() {
+  fetch("/state").then(r => r.json()).then(s => {
+    if (s.figures) fig = s.figures;
+    if (s.trail) trail = s.trail.slice();
+    take(s);
+    const es = new EventSource("/events");
+    es.onopen = () => text("link", "live: /events");
+    es.onerror = () => text("link", "stream lost: reconnecting");
+    es.onmessage = m => take(JSON.parse(m.data));
+  }).catch(() => text("link", "no answer from the trainer"));
+}
+
+// ---- A session's replay (trainer --session): play, pause, speed, seek, the state lane ----
+// The server integrated the session once; the page asks for the object at a
+// time (GET /motion?t=SECONDS), one request at a time, and shows the trail's
+// points up to that time (GET /replay gave them all, with their times).
+const replay = {data: null, playing: false, t: 0, shown: -1, asking: false, last: null};
+function replayTrail(t) {
+  const pts = replay.data.trail;
+  let lo = 0, hi = pts.length;  // the points added at or before t
+  while (lo < hi) { const mid = (lo + hi) >> 1; if (pts[mid][0] <= t) lo = mid + 1; else hi = mid; }
+  trail = pts.slice(Math.max(0, lo - 20000), lo).map(p => [p[1], p[2]]);
+}
+function replayAsk() {
+  if (replay.asking || replay.shown === replay.t) return;
+  const t = replay.t;
+  replay.asking = true;
+  fetch("/motion?t=" + (t / 1000).toFixed(3)).then(r => r.json()).then(s => {
+    replay.asking = false;
+    replay.shown = t;
+    replayTrail(t);
+    take(s);
+    const r = $("rtime");
+    r.dataset.tMs = t;
+    r.textContent = (t / 1000).toFixed(2) + " / " + (replay.data.length_ms / 1000).toFixed(2) + " s";
+  }).catch(() => { replay.asking = false; text("link", "no answer from the trainer"); });
+}
+function replaySeek(t) {
+  replay.t = Math.max(0, Math.min(replay.data.length_ms, Math.round(t)));
+  $("slider").value = replay.t;
+  replayAsk();
+}
+function replayPlay(on) {
+  // At the end, play starts again from the beginning.
+  if (on && replay.t >= replay.data.length_ms) replaySeek(0);
+  replay.playing = on;
+  replay.last = null;
+  $("play").textContent = on ? "pause" : "play";
+  $("play").dataset.playing = on;
+}
+function replayFrame(now) {
+  requestAnimationFrame(replayFrame);
+  if (replay.playing) {
+    if (replay.last !== null) {
+      const t = replay.t + (now - replay.last) * Number($("speed").value);
+      replaySeek(t);
+      if (replay.t >= replay.data.length_ms) replayPlay(false);
+    }
+    replay.last = now;
+  }
+  replayAsk();
+}
+function replayLane(lane, length) {
+  const svg = $("lane"), W = 1000;
+  svg.setAttribute("viewBox", `0 0 ${W} 10`);
+  lane.forEach((span, i) => {
+    const to = i + 1 < lane.length ? lane[i + 1].from : length;
+    const x = length > 0 ? span.from / length * W : 0, w = length > 0 ? Math.max(0.5, (to - span.from) / length * W) : W;
+    const r = el("rect", {x: x, y: 0, width: w, height: 10, fill: span.colour, "data-state": span.name}, svg);
+    el("title", {}, r).textContent = `${span.name}: ${(span.from / 1000).toFixed(2)} to ${(to / 1000).toFixed(2)} s`;
+  });
+}
+function startReplay(data) {
+  replay.data = data;
+  document.body.classList.add("replay");
+  if (data.figures) fig = data.figures;
+  text("link", "replay of " + data.session);
+  text("rnote", data.note);
+  $("slider").max = data.length_ms;
+  replayLane(data.lane, data.length_ms);
+  $("play").onclick = () => replayPlay(!replay.playing);
+  $("slider").oninput = () => { replay.last = null; replaySeek(Number($("slider").value)); };
+  replaySeek(0);
+  requestAnimationFrame(replayFrame);
+}
+// ---- end of the replay ----
+
+fetch("/replay").then(r => r.ok ? r.json() : null).then(d => d && d.replay ? startReplay(d) : live())
+  .catch(() => live());
 requestAnimationFrame(draw);
 </script>
 </body></html>

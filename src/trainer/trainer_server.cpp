@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstring>
 #include <thread>
+#include <vector>
 
 namespace andros::trainer {
 namespace {
@@ -57,6 +58,7 @@ ListenAddress parse_listen(std::string_view text, const SourcePos& pos) {
 struct TrainerServer::Impl {
   explicit Impl(StreamHub& h) : hub(h) {}
   StreamHub& hub;
+  std::vector<std::string> paths{"/", "/state", "/events"};  ///< what is served, for a 404's text
   httplib::Server server;
   std::thread thread;
 };
@@ -92,8 +94,11 @@ TrainerServer::TrainerServer(ServerOptions options, StreamHub& hub, std::string_
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
-  s.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-    if (res.status == 404) refuse(res, 404, "not here: /, /state and /events only");
+  s.set_error_handler([this](const httplib::Request&, httplib::Response& res) {
+    if (res.status != 404) return;
+    std::string served;
+    for (const auto& p : impl_->paths) served += (served.empty() ? "" : ", ") + p;
+    refuse(res, 404, "not here: " + served + " only");
   });
   s.Get("/", [page](const httplib::Request&, httplib::Response& res) {
     res.set_content(page.data(), page.size(), "text/html; charset=utf-8");
@@ -120,6 +125,20 @@ TrainerServer::TrainerServer(ServerOptions options, StreamHub& hub, std::string_
       for (const auto& m : *messages) out += "data: " + *m + "\n\n";
       return sink.write(out.data(), out.size());
     });
+  });
+}
+
+void TrainerServer::add_json(const std::string& path, JsonQuery query) {
+  impl_->paths.push_back(path);
+  impl_->server.Get(path, [query = std::move(query)](const httplib::Request& req, httplib::Response& res) {
+    const Params params(req.params.begin(), req.params.end());
+    std::string why;
+    if (auto body = query(params, &why)) {
+      res.set_content(*body, "application/json");
+      common_headers(res);
+    } else {
+      refuse(res, 400, why);
+    }
   });
 }
 

@@ -230,3 +230,12 @@ void draw_lanes(Page& page, const PlotInput& in, std::int64_t end) {
 }
 
 }  // namespace andros::view::plot_detail
+
+namespace andros::view {
+
+StateSwatch state_swatch(const PlotSample& sample) {
+  const auto& s = plot_detail::kStates[plot_detail::state_of(sample)];
+  return {s.name, s.colour};
+}
+
+}  // namespace andros::view

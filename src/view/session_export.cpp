@@ -14,8 +14,9 @@
 #include "andros/base/sink_text.hpp"
 #include "andros/base/text.hpp"
 #include "andros/protocol/signals.hpp"
-#include "andros/timing/rate.hpp"
+#include "andros/vehicle/robot_figures.hpp"
 #include "andros/view/held_inputs.hpp"
+#include "andros/view/session_motion.hpp"
 #include "record_cursor.hpp"
 
 namespace andros::view {
@@ -44,8 +45,41 @@ constexpr std::array<InputColumn, 6> kInputColumns = {{
 constexpr std::array<std::string_view, 9> kRecordColumns = {
     "tick", "state", "stopped_by", "stop_pad", "reset_by", "reset_pad", "shutdown_requested", "layer", "link"};
 
-/// A cell after `t`: empty (JSON null), a number, or text.
-using Cell = std::variant<std::monostate, std::int64_t, std::string>;
+/// A length or an angle, to the millimetre or the thousandth of a degree
+/// (as the trainer's stream gives them): its text, the same in CSV and JSONL.
+struct Millis {
+  std::string text;
+};
+
+Millis millis(double v) {
+  auto text = fmt::format("{:.3f}", v);
+  if (text == "-0.000") text.erase(0, 1);  // a value that rounds to zero is 0, whatever its sign
+  return {std::move(text)};
+}
+
+/// A cell after `t`: empty (JSON null), a number, a fixed-point number, or text.
+using Cell = std::variant<std::monostate, std::int64_t, Millis, std::string>;
+
+/// The vehicle model's columns (docs/trainer.md, "The vehicle model"), after the signals.
+struct MotionColumn {
+  std::string_view name;
+  double (*value)(const vehicle::VehicleState&);
+};
+
+constexpr std::array<MotionColumn, 12> kMotionColumns = {{
+    {"vehicle_x", [](const vehicle::VehicleState& s) { return s.pose.x; }},
+    {"vehicle_y", [](const vehicle::VehicleState& s) { return s.pose.y; }},
+    {"vehicle_heading", [](const vehicle::VehicleState& s) { return s.pose.heading; }},
+    {"front_flipper", [](const vehicle::VehicleState& s) { return s.front_flipper; }},
+    {"rear_flipper", [](const vehicle::VehicleState& s) { return s.rear_flipper; }},
+    {"arm_torso", [](const vehicle::VehicleState& s) { return s.arm.torso; }},
+    {"arm_shoulder", [](const vehicle::VehicleState& s) { return s.arm.shoulder; }},
+    {"arm_elbow", [](const vehicle::VehicleState& s) { return s.arm.elbow; }},
+    {"arm_wrist", [](const vehicle::VehicleState& s) { return s.arm.wrist; }},
+    {"arm_wrist_extension", [](const vehicle::VehicleState& s) { return s.arm.wrist_extension; }},
+    {"gripper_opening", [](const vehicle::VehicleState& s) { return s.arm.gripper_opening; }},
+    {"gripper_rotation", [](const vehicle::VehicleState& s) { return s.arm.gripper_rotation; }},
+}};
 
 /// The pad of a stop or a reset record (PadIdentity::describe()); a session
 /// of an earlier version recorded only a stop's controller name, and no pad.
@@ -132,6 +166,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
   std::vector<std::string_view> names(kRecordColumns.begin(), kRecordColumns.end());
   for (const auto& c : kInputColumns) names.push_back(c.name);
   for (const auto& sig : protocol::kSignals) names.push_back(sig.name);
+  for (const auto& c : kMotionColumns) names.push_back(c.name);
   if (format == ExportFormat::kCsv) {
     out << 't';
     for (const auto name : names) out << ',' << name;
@@ -144,54 +179,53 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
   } catch (const InputError& e) {
     why_no_inputs = std::string("the recorded mapping cannot be read: ") + e.what();
   }
-  const timing::FrameClock clock(s.settings.rate_millihertz);
   RecordCursor records(s);
   const std::int64_t shutdown = shutdown_from(s);
   std::vector<Cell> cells;
-  const std::int64_t last = s.end ? s.end->last_tick : (s.frames.empty() ? -1 : s.frames.back().tick);
-  for (std::size_t i = 0; i < s.frames.size(); ++i) {
-    const auto& f = s.frames[i];
-    const auto values = protocol::read_signals(f.data);
-    // The record holds on every tick to the next record's (less the ticks it skipped).
-    const std::int64_t through = i + 1 < s.frames.size() ? s.frames[i + 1].tick - s.frames[i + 1].gap - 1 : last;
-    for (std::int64_t tick = f.tick; tick <= through; ++tick) {
-      const std::int64_t t = clock.time_of(tick);
-      records.at(t);
-      cells = {tick,
-               std::string(run::to_string(records.state)),
-               std::string(stopper_text(records.stop)),
-               pad_text(records.stop),
-               std::string(stopper_text(records.reset)),
-               pad_text(records.reset),
-               std::int64_t{t >= shutdown && records.state == run::OpState::kShuttingDown},
-               printable_text(records.layer),
-               std::string(record::result_name(f))};
-      const auto since = inputs ? std::optional(inputs->since_last(t)) : std::nullopt;
-      for (const auto& c : kInputColumns) {
-        if (since && c.in_mapping(inputs->mapping())) cells.emplace_back(std::int64_t{(*since).*c.held});
-        else cells.emplace_back();
-      }
-      for (std::size_t k = 0; k < protocol::kSignalCount; ++k) cells.emplace_back(std::int64_t{values.values[k]});
-      const auto seconds = fmt::format("{}.{:03}", t / 1000, t % 1000);
-      if (format == ExportFormat::kCsv) {
-        out << seconds;
-        for (const auto& cell : cells) {
-          out << ',';
-          if (const auto* n = std::get_if<std::int64_t>(&cell)) out << *n;
-          else if (const auto* text = std::get_if<std::string>(&cell)) out << csv_cell(*text);
-        }
-        out << '\n';
-        continue;
-      }
-      nlohmann::ordered_json row{{"t", nlohmann::json::parse(seconds)}};
-      for (std::size_t k = 0; k < cells.size(); ++k) {
-        auto& value = row[std::string(names[k])];
-        if (const auto* n = std::get_if<std::int64_t>(&cells[k])) value = *n;
-        else if (const auto* text = std::get_if<std::string>(&cells[k])) value = *text;
-      }
-      out << row.dump() << '\n';
+  // The vehicle's motion, fed tick by tick as the trainer feeds it (session_motion.hpp).
+  vehicle::VehicleModel model(vehicle::figures_for(s.settings.robot));
+  for_each_tick(s, [&](std::int64_t tick, std::int64_t t, const record::FrameRecord& f) {
+    records.at(t);
+    feed_tick(model, t, f.data, delivered(f));
+    cells = {tick,
+             std::string(run::to_string(records.state)),
+             std::string(stopper_text(records.stop)),
+             pad_text(records.stop),
+             std::string(stopper_text(records.reset)),
+             pad_text(records.reset),
+             std::int64_t{t >= shutdown && records.state == run::OpState::kShuttingDown},
+             printable_text(records.layer),
+             std::string(record::result_name(f))};
+    const auto since = inputs ? std::optional(inputs->since_last(t)) : std::nullopt;
+    for (const auto& c : kInputColumns) {
+      if (since && c.in_mapping(inputs->mapping())) cells.emplace_back(std::int64_t{(*since).*c.held});
+      else cells.emplace_back();
     }
-  }
+    const auto values = protocol::read_signals(f.data);
+    for (std::size_t k = 0; k < protocol::kSignalCount; ++k) cells.emplace_back(std::int64_t{values.values[k]});
+    for (const auto& c : kMotionColumns) cells.emplace_back(millis(c.value(model.state())));
+    const auto seconds = fmt::format("{}.{:03}", t / 1000, t % 1000);
+    if (format == ExportFormat::kCsv) {
+      out << seconds;
+      for (const auto& cell : cells) {
+        out << ',';
+        if (const auto* n = std::get_if<std::int64_t>(&cell)) out << *n;
+        else if (const auto* m = std::get_if<Millis>(&cell)) out << m->text;
+        else if (const auto* text = std::get_if<std::string>(&cell)) out << csv_cell(*text);
+      }
+      out << '\n';
+      return true;
+    }
+    nlohmann::ordered_json row{{"t", nlohmann::json::parse(seconds)}};
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      auto& value = row[std::string(names[k])];
+      if (const auto* n = std::get_if<std::int64_t>(&cells[k])) value = *n;
+      else if (const auto* m = std::get_if<Millis>(&cells[k])) value = nlohmann::json::parse(m->text);
+      else if (const auto* text = std::get_if<std::string>(&cells[k])) value = *text;
+    }
+    out << row.dump() << '\n';
+    return true;
+  });
   return why_no_inputs;
 }
 

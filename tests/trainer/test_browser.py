@@ -21,7 +21,6 @@ import json
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import http.client
 import sys
@@ -31,24 +30,11 @@ import time
 import urllib.request
 import zlib
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from browser_lib import fail, failures, free_port, headless_chrome  # noqa: E402
 
 binary, data, shot = sys.argv[1:4]
 docs_png = sys.argv[4] if len(sys.argv) > 4 else None
-failures = []
-
-
-def fail(why):
-    print("FAIL:", why, file=sys.stderr)
-    failures.append(why)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def state(port):
@@ -145,14 +131,7 @@ digest = None
 try:
     # The browser first (its start is the slow part on a busy machine), then
     # the drive, so that the page sees the drive whatever the machine's speed.
-    options = Options()
-    for arg in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1280,720", "--hide-scrollbars"]:
-        options.add_argument(arg)
-    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-    # The page's own 1280x720, whatever the window's frame takes.
-    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
-                           {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
+    driver = headless_chrome()
     trainer = subprocess.Popen([binary, "trainer", "--listen", f"127.0.0.1:{port}", "--input", drive_events],
                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
     deadline = time.monotonic() + 60

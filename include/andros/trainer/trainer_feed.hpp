@@ -4,6 +4,8 @@
 /// the web clients (docs/trainer.md, "The stream"). The run loop only hands
 /// over what it knows at each tick (observe), and never waits to do so.
 
+#include <array>
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -47,15 +49,20 @@ class TrainerFeed {
  public:
   TrainerFeed(const vehicle::RobotFigures& figures, StreamHub& hub) : model_(figures), hub_(hub) {}
 
-  /// A frame the simulated vehicle decoded at now_ns (its thread): into the
-  /// model, then its object to the clients.
-  void on_frame(const protocol::DecodedFrame& frame, std::int64_t now_ns);
-  /// The model advanced to now_ns with no frame (the watchdog), its object published.
+  /// A tick the loop ran (its thread, after the tick): the frame it offered,
+  /// and whether the link took it, queued for the motion thread
+  /// (take_ticks). Never waits: lock-free, and a full queue (the motion
+  /// thread a whole queue behind) drops the tick, counted in lost_ticks().
+  void queue_tick(std::int64_t t_ms, const protocol::DataBytes& data, bool delivered);
+  /// The ticks queued, into the model as a session's replay feeds them
+  /// (view::feed_tick: a frame the link took at its tick's time, else the
+  /// clock moved on), each one's object published. From one thread (the
+  /// motion thread). Returns whether there was any.
+  bool take_ticks();
+  /// The latest object published again, with the facts observe() last took (the model as it is).
+  void republish();
+  /// The model advanced to now_ns with no frame, its object published (a test's).
   void advance(std::int64_t now_ns);
-  /// The same when no frame has come for quiet_ns: while the loop sends
-  /// none (a link down, a suspend), the page still sees the vehicle's
-  /// watchdog stop it.
-  void advance_if_quiet(std::int64_t now_ns, std::int64_t quiet_ns);
   /// The loop's facts after a tick (the loop's thread), the pad taken from
   /// observe_pad() (facts.pad is replaced). Never waits: while
   /// the vehicle's thread reads them, this tick's are left out.
@@ -66,17 +73,35 @@ class TrainerFeed {
   void observe_pad(const input::InputState& input, const input::DeviceLayout* layout);
   /// For GET /state: the latest object, with the trail so far.
   [[nodiscard]] std::string state_with_trail() const;
+  /// The model's trail and pose to the bit (trail_summary()).
+  [[nodiscard]] std::string summary() const;
+  /// Ticks the queue had no room for: the model then is not the session's.
+  [[nodiscard]] std::uint64_t lost_ticks() const { return lost_.load(); }
 
  private:
   void publish_locked();
 
-  mutable std::mutex model_mutex_;  ///< the vehicle's thread and the server's
+  /// A tick handed from the loop to the motion thread.
+  struct Tick {
+    std::int64_t t_ms = 0;
+    protocol::DataBytes data{};
+    bool delivered = false;
+  };
+  /// 40 s of ticks at 25 Hz: the motion thread takes them every tick or 100 ms.
+  static constexpr std::size_t kQueueTicks = 1024;
+
+  mutable std::mutex model_mutex_;  ///< the motion thread's and the server's
   vehicle::VehicleModel model_;
   std::string latest_;
   std::mutex facts_mutex_;  ///< the loop's hand-off: try_lock only on its side
   LoopFacts facts_;
   PadInputs pad_;  ///< the loop's own, until observe() hands it over
   StreamHub& hub_;
+  // One producer (the loop), one consumer (the motion thread): each index written by one side only.
+  std::array<Tick, kQueueTicks> queue_{};
+  std::atomic<std::size_t> queue_head_{0};  ///< the next to write (the loop's)
+  std::atomic<std::size_t> queue_tail_{0};  ///< the next to read (the motion thread's)
+  std::atomic<std::uint64_t> lost_{0};
 };
 
 /// The loop's input, passed through; after each pump the pad goes to the feed.

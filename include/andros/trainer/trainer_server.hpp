@@ -10,7 +10,9 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -55,6 +57,13 @@ class TrainerServer {
   ~TrainerServer();
   TrainerServer(const TrainerServer&) = delete;
   TrainerServer& operator=(const TrainerServer&) = delete;
+
+  /// A query's parameters (`?t=1.5`), as the request gave them.
+  using Params = std::multimap<std::string, std::string>;
+  /// A JSON answer to a query; nullopt: the query is refused (400, with why in *why).
+  using JsonQuery = std::function<std::optional<std::string>(const Params& params, std::string* why)>;
+  /// One more read-only path answered with JSON (before start(): a session's replay, docs/trainer.md).
+  void add_json(const std::string& path, JsonQuery query);
 
   /// Binds the address and serves on a thread of its own; false (and why
   /// in *why) when it cannot bind (a port taken, an address not here).

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "andros/input/input_state.hpp"
@@ -72,6 +73,15 @@ struct PlotInput {
 
 /// A replay's report as a sample.
 PlotSample plot_sample(const run::TickReport& report);
+
+/// A sample's operating state as the plot's band names and colours it
+/// ("stopped by the operator", "#e57373"): the trainer's replay draws its
+/// state lane with these.
+struct StateSwatch {
+  std::string_view name;
+  std::string_view colour;
+};
+StateSwatch state_swatch(const PlotSample& sample);
 
 /// The ticks the live loop ran, from the session's records: a sample at each
 /// change point and at the last tick each holds to (work and memory as the

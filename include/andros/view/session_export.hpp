@@ -29,7 +29,10 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos);
 /// became of the frame); the input columns, read from the events with the
 /// mapping in effect (load makes it from the recorded files): 1 when the
 /// input was held at any moment since the row before, empty (JSON null) when
-/// the mapping has no such input; then every signal of the frame by name.
+/// the mapping has no such input; then every signal of the frame by name;
+/// then where the vehicle model is after the tick (session_motion.hpp:
+/// vehicle_x, vehicle_y, vehicle_heading, the flippers, the arm's joints,
+/// the gripper), to 3 decimals.
 /// Text from outside (a layer's name, a pad's) is printable_text(); in CSV,
 /// every text cell is csv_cell() (base/sink_text.hpp): never a formula (a
 /// leading apostrophe), quoted as RFC 4180 says. CSV has a header row; JSONL a JSON object a line. Returns why
