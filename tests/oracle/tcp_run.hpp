@@ -1,5 +1,5 @@
 #pragma once
-// One TCP run of the fault simulation (docs/testing.md, "The TCP link"): a
+// One TCP run of the fault simulation (docs/testing.md, "Fault simulation": the TCP runs): a
 // script through replay, the run loop on its virtual clock, whose link is
 // the real TcpLink (and its ReconnectingLink) over the scripted server
 // (tcp_server.hpp) instead of the sink; the server's oracle checks what it

@@ -1,6 +1,6 @@
 #pragma once
-// The fault simulation's scripts for its TCP runs (docs/testing.md, "The TCP
-// link"): an operator driving on the simulated HD1 (deadman LB, the left
+// The fault simulation's scripts for its TCP runs (docs/testing.md, "Fault
+// simulation"): an operator driving on the simulated HD1 (deadman LB, the left
 // stick), and a TCP server (tcp_server.hpp: the script's link events are
 // its own) that stalls for up to 7 s, now and then resets or closes its
 // connection and refuses new ones for up to 4 s (the back-off grows), and

@@ -1,5 +1,5 @@
 #pragma once
-// The fault simulation's TCP server (docs/testing.md, "The TCP link"): a
+// The fault simulation's TCP server (docs/testing.md, "Fault simulation": the TCP runs): a
 // stand-in for the kernel's socket (link::TcpSocket) under the real TcpLink
 // and ReconnectingLink, on the replay's clock, that a script drives, and the
 // oracle of what such a server may be sent, written from docs/running.md

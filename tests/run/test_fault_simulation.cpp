@@ -444,21 +444,30 @@ TEST(FaultSimulation, AStalledTcpServerGetsNoMotionThroughFreshPresses) {
 // A server that resets its connection at 500 and refuses new ones until 5500:
 // the attempts come 250 ms after the link meets the reset (its frame at 520),
 // then 500, 1000, 2000 and 4000 ms after each refusal (docs/running.md): at
-// 800, 1320, 2320 and 4320 refused, at 8320 taken.
+// 800, 1320, 2320 and 4320 refused, at 8320 taken. That connection, reset at
+// 9000 (up for less than 5 s), waits 4 s more: back at 13000; the next, reset
+// at 18500 (up for more than 5 s; its frame at 18520 meets the reset),
+// starts again at 250 ms: back at 18800.
 TEST(FaultSimulation, ATcpServerThatRefusesIsRetriedWithBackOff) {
   Library library;
   std::vector<std::int64_t> taken;
-  const auto out =
-      test::simulate_tcp(library, kSimulationHd1,
-                         input::parse_event_script("0 connect\n500 link down\n5500 link up\n9000 end\n", "tcp.events"),
-                         kCode, [&taken](const TickReport& r) {
-                           if (r.sent && r.result == link::SendResult::kSent) taken.push_back(r.t_ms);
-                         });
+  const auto out = test::simulate_tcp(library, kSimulationHd1,
+                                      input::parse_event_script("0 connect\n500 link down\n5500 link up\n"
+                                                                "9000 link down\n9100 link up\n18500 link down\n"
+                                                                "18600 link up\n19000 end\n",
+                                                                "tcp.events"),
+                                      kCode, [&taken](const TickReport& r) {
+                                        if (r.sent && r.result == link::SendResult::kSent) taken.push_back(r.t_ms);
+                                      });
   EXPECT_EQ(out.violation, "");
   EXPECT_EQ(out.coverage.refused, 4);
-  const auto back = std::find_if(taken.begin(), taken.end(), [](std::int64_t t) { return t > 520; });
-  ASSERT_NE(back, taken.end());
-  EXPECT_EQ(*back, 8320);
+  const auto back_after = [&taken](std::int64_t t) {
+    const auto it = std::find_if(taken.begin(), taken.end(), [t](std::int64_t u) { return u > t; });
+    return it == taken.end() ? -1 : *it;
+  };
+  EXPECT_EQ(back_after(520), 8320);
+  EXPECT_EQ(back_after(9000), 13000);
+  EXPECT_EQ(back_after(18500), 18800);
 }
 
 // Every dip-switch code, 0x00 to 0xFF, given as `--code` text, reaches byte
