@@ -38,14 +38,11 @@ struct TcpCoverage {
   std::int64_t server_ends = 0;     ///< connections the server reset or closed
   std::int64_t backoff_waited = 0;  ///< attempts made after a back-off of 1 s or more
   TcpCoverage& operator+=(const TcpCoverage& o) {
-    frames += o.frames;
-    motion += o.motion;
-    stalls_dropped += o.stalls_dropped;
-    distrusted += o.distrusted;
-    motion_again += o.motion_again;
-    refused += o.refused;
-    server_ends += o.server_ends;
-    backoff_waited += o.backoff_waited;
+    using C = TcpCoverage;
+    for (const auto field : {&C::frames, &C::motion, &C::stalls_dropped, &C::distrusted, &C::motion_again, &C::refused,
+                             &C::server_ends, &C::backoff_waited}) {
+      this->*field += o.*field;
+    }
     return *this;
   }
 };

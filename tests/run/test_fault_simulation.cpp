@@ -304,13 +304,15 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
   // The TCP runs reach the link's own rules: stalls dropped, a distrusted server sent neutral frames, motion once it
   // reads again, the server's resets and refusals, a back-off grown.
-  EXPECT_GT(tcp.motion, 0);
-  EXPECT_GT(tcp.stalls_dropped, 0);
-  EXPECT_GT(tcp.distrusted, 0);
-  EXPECT_GT(tcp.motion_again, 0);
-  EXPECT_GT(tcp.server_ends, 0);
-  EXPECT_GT(tcp.refused, 0);
-  EXPECT_GT(tcp.backoff_waited, 0);
+  for (const auto& [what, reached] : {std::pair{"motion", tcp.motion},
+                                      {"stall dropped", tcp.stalls_dropped},
+                                      {"frame to a distrusted server", tcp.distrusted},
+                                      {"motion after reading again", tcp.motion_again},
+                                      {"connection ended by the server", tcp.server_ends},
+                                      {"attempt refused", tcp.refused},
+                                      {"back-off of 1 s", tcp.backoff_waited}}) {
+    EXPECT_GT(reached, 0) << "TCP runs: no " << what;
+  }
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
   using test::Ending;
