@@ -8,7 +8,7 @@
 # how many seeds of how many caught it. The simulation alone should catch
 # every one, each by many seeds.
 #
-# Not part of scripts/test.sh: 53 rebuilds and 54 runs of 10,000 seeds.
+# Not part of scripts/test.sh: 62 rebuilds and 63 runs of 10,000 seeds.
 # ANDROS_SIM_SCRIPTS=N runs N seeds instead; MUTATIONS="1 5" only those.
 # Exit 1 when a mutation is caught by no seed, when the unmutated code fails
 # a seed, or when a mutation's text is no longer in its file (the code moved:
@@ -75,6 +75,15 @@ mutations=(
   "the frame gate lets a weapon through without --weapons|src/run/frame_gate.cpp|s/if \(!rules_.weapons\) return/if (false) return/"
   "the frame gate does not check the code|src/run/frame_gate.cpp|s/if \(data\[protocol::kCodeByte\] != rules_.code\) \{/if (false) {/"
   "the frame gate does not check the validation table|src/run/frame_gate.cpp|s/validation_errors\(data\); !errors.empty\(\)\)/validation_errors(data); false \&\& !errors.empty())/"
+  "the TCP link's stall detection off|src/link/tcp_link.cpp|s/if \(now_ns - progress_.since_ns >= kTcpStallNs\) \{/if (false) {/"
+  "a stall declared after 1 s, not 2|include/andros/link/tcp_link.hpp|s/kTcpStallNs = 2'000'000'000;/kTcpStallNs = 1'000'000'000;/"
+  "frames never held back for the server's window|src/link/tcp_link.cpp|s/if \(unread > kTcpMaxUnreadBytes && now_ns - progress_.probe_ns < kTcpProbeNs\)/if (false)/"
+  "a server that stalled trusted again on a new connection|src/link/tcp_link.cpp|s/progress_ = Progress\{.since_ns = now_ns\};/progress_ = Progress{.since_ns = now_ns};\n  suspect_ = false;/"
+  "issue 35: the TCP link never says the server stalled|include/andros/link/tcp_link.hpp|s/return !suspect_; \}/return true; }/"
+  "the back-off skipped after a failed attempt|src/link/reconnecting_link.cpp|s/(detail_ = why;\n  next_attempt_ns_ = now_ns)[^;]*;/\$1;/"
+  "the back-off skipped after a loss|src/link/reconnecting_link.cpp|s/(retry_ms_ = min_retry_ms_;\n  next_attempt_ns_ = now_ns)[^;]*;/\$1;/"
+  "the back-off never doubles|src/link/reconnecting_link.cpp|s/retry_ms_ = std::min\(retry_ms_ \* 2, max_retry_ms_\);/retry_ms_ = min_retry_ms_;/g"
+  "the back-off reset by a connection lost within 5 s|src/link/reconnecting_link.cpp|s/if \(now_ns - up_since_ns_ >= kStableNs\) retry_ms_/retry_ms_/"
 )
 
 [[ -f $build_dir/CMakeCache.txt ]] || { echo "no build in $build_dir: run scripts/build.sh first" >&2; exit 1; }

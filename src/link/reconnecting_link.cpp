@@ -1,7 +1,6 @@
 #include "andros/link/reconnecting_link.hpp"
 
 #include <spdlog/spdlog.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,8 +13,12 @@ namespace andros::link {
 
 std::string_view to_string(LinkState state) { return state == LinkState::kUp ? "up" : "connecting"; }
 
-ReconnectingLink::ReconnectingLink(std::string name, int min_retry_ms, int max_retry_ms)
-    : name_(std::move(name)), min_retry_ms_(min_retry_ms), max_retry_ms_(max_retry_ms), retry_ms_(min_retry_ms) {}
+ReconnectingLink::ReconnectingLink(std::string name, int min_retry_ms, int max_retry_ms, Clock* drain_clock)
+    : drain_clock_(drain_clock != nullptr ? *drain_clock : real_clock_),
+      name_(std::move(name)),
+      min_retry_ms_(min_retry_ms),
+      max_retry_ms_(max_retry_ms),
+      retry_ms_(min_retry_ms) {}
 
 long ReconnectingLink::write_bytes(const std::uint8_t* data, std::size_t size) {
   return ::write(fd_.get(), data, size);
@@ -54,7 +57,7 @@ SendResult ReconnectingLink::send(const protocol::Frame& frame, std::int64_t now
       return SendResult::kDown;
     }
     std::string why;
-    const auto result = open_step(why);
+    const auto result = open_step(now_ns, why);
     if (result == OpenResult::kFailed) {
       fail_open(why, now_ns);
       ++counters_.down;
@@ -104,12 +107,11 @@ SendResult ReconnectingLink::send(const protocol::Frame& frame, std::int64_t now
 
 bool ReconnectingLink::drain_and_close(int timeout_ms) {
   bool drained = false;
-  if (state_ == LinkState::kUp && fd_) {
-    const std::int64_t deadline = monotonic_ns() + static_cast<std::int64_t>(timeout_ms) * kNsPerMs;
+  if (state_ == LinkState::kUp) {
+    const Nanos deadline = drain_clock_.now() + Nanos(static_cast<std::int64_t>(timeout_ms) * kNsPerMs);
     // Bounded, unlike a bare tcdrain, which waits for ever on a pty nobody reads.
-    while (undelivered_bytes() > 0 && monotonic_ns() < deadline) {
-      const timespec pause{0, 2'000'000};
-      nanosleep(&pause, nullptr);
+    while (undelivered_bytes() > 0 && drain_clock_.now() < deadline) {
+      drain_clock_.sleep_until(drain_clock_.now() + Nanos(2 * kNsPerMs));
     }
     drained = undelivered_bytes() == 0;
     if (drained) finish_drain();

@@ -91,7 +91,7 @@ SerialLink::SerialLink(std::string path, int baud)
       path_(std::move(path)),
       baud_(baud) {}
 
-ReconnectingLink::OpenResult SerialLink::open_step(std::string& why) {
+ReconnectingLink::OpenResult SerialLink::open_step(std::int64_t /*now_ns*/, std::string& why) {
   UniqueFd fd(::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC));
   if (!fd) {
     why = errno == EBUSY ? "taken by " + held_by(find_port_holder(path_), "opened exclusively") : std::strerror(errno);

@@ -27,9 +27,9 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   PlayerInput input(player);
   std::string mapping_file = engine.mapping().file;
   const std::unique_ptr<FrameSource> frames = options.frames(std::make_unique<mapping::Engine>(std::move(engine)));
-  link::SinkLink link(
+  link::SinkLink sink_link(
       [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
-  Bridge bridge(clock, input, *frames, link,
+  Bridge bridge(clock, input, *frames, options.link != nullptr ? *options.link : sink_link,
                 BridgeOptions{.rate_millihertz = options.rate_millihertz,
                               .neutral_tail_at_end = false,
                               .rules = {options.engine.weapons, options.engine.code}});

@@ -13,8 +13,10 @@
 // every shipped robot's with a centre trim, an enable timeout and a
 // supervisor's stop, and on every other seed a three-position trigger deadman
 // with a panic point; on one seed in eight the engine is at fault from the
-// middle of the script (the frame gate must refuse it); the oracle's own
-// tests are in test_oracle.cpp.
+// middle of the script (the frame gate must refuse it); on one seed in eight
+// a TCP run as well: a script of its own to the real TcpLink over a scripted
+// server that stalls, resets and refuses (tcp_run.hpp, whose oracle checks
+// what the server was sent); the oracle's own tests are in test_oracle.cpp.
 //
 // Seeds 1..10,000 (1,000 under the sanitizers: support/sweep.hpp; a build
 // configured with -DANDROS_SIM_SCRIPTS=N runs N); the
@@ -28,6 +30,7 @@
 // failures gathered at the end, so that what is checked and printed does not
 // depend on T (the sanitizer build's longest test, halved).
 #include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -51,6 +54,8 @@
 #include "oracle/random.hpp"
 #include "oracle/safety_oracle.hpp"
 #include "oracle/simulation.hpp"
+#include "oracle/tcp_run.hpp"
+#include "oracle/tcp_script.hpp"
 #include "support/sweep.hpp"
 
 namespace andros::run {
@@ -66,6 +71,13 @@ constexpr std::uint8_t kCode = 0x5A;
 
 /// A seed's dip-switch code, over the whole byte (0x00..0xFF), apart from its mapping (a Fibonacci hash's top byte).
 std::uint8_t code_of(std::uint64_t seed) { return static_cast<std::uint8_t>((seed * 0x9E3779B97F4A7C15ULL) >> 56U); }
+
+/// The simulated HD1 (an enable timeout of 2 s): the TCP runs' and the replay tests' below.
+const std::string kSimulationHd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";
+
+/// Whether a seed has a TCP run as well (one in eight, apart from its engine fault): its own script
+/// (tcp_script.hpp) to the real TcpLink over the scripted server (tcp_run.hpp).
+bool tcp_run_of(std::uint64_t seed) { return ((seed * 0xD6E8FEB86659FD93ULL) >> 61U) == 0; }
 
 /// A seed's engine fault (tests/support/faulty_frames.hpp), on one seed in
 /// eight, apart from its mapping and code: one of the faults the frame gate
@@ -153,6 +165,15 @@ std::string describe_failure(std::uint64_t seed, const std::string& mapping_file
          test::script_text(script);
 }
 
+/// The same for a TCP run: the simulated HD1, the script's link events the server's (not replay's).
+std::string describe_tcp_failure(std::uint64_t seed, const std::vector<input::InputEvent>& script,
+                                 const std::string& violation) {
+  return "seed " + std::to_string(seed) + ", its TCP run (the simulated HD1, --code " + test::code_text(code_of(seed)) +
+         "; the link events are the scripted server's): " + violation +
+         "\nagain: ANDROS_SIM_SEED_BASE=" + std::to_string(seed) +
+         " ANDROS_SIM_SCRIPTS=1 andros_simulation_tests\nthe script:\n" + test::script_text(script);
+}
+
 TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   const std::uint64_t first = from_environment("ANDROS_SIM_SEED_BASE", 1);
   const std::uint64_t count = from_environment("ANDROS_SIM_SCRIPTS", kScripts);
@@ -167,10 +188,19 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   // failure kept by seed; a worker stops after max_reported failures of its own.
   struct Worker {
     test::OracleCoverage coverage;
+    test::TcpCoverage tcp;
     std::vector<std::pair<std::uint64_t, std::string>> failures;
     std::uint64_t failed = 0;  ///< seeds that broke a rule
   };
   std::vector<Worker> workers(threads);
+  // The TCP runs' link logs each loss and reconnection, as in `run`: thousands of lines here, read by no one.
+  struct Quiet {
+    spdlog::level::level_enum was = spdlog::default_logger()->level();
+    Quiet() { spdlog::default_logger()->set_level(spdlog::level::off); }
+    ~Quiet() { spdlog::default_logger()->set_level(was); }
+    Quiet(const Quiet&) = delete;
+    Quiet& operator=(const Quiet&) = delete;
+  } quiet;
   auto work = [&](std::uint64_t k) {
     Library library;
     Worker& w = workers[k];
@@ -180,12 +210,14 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       const auto script = test::fault_script(rng, library.targets());
       const std::string& mapping_file = library.mapping_for(seed);
       const auto fault = fault_of(seed);
+      bool seed_failed = false;
       for (const bool weapons : {false, true}) {
         std::optional<test::InjectedFault> injected;
         if (fault && fault->weapons == weapons) injected = test::InjectedFault{fault->fault, script.back().t_ms / 2};
         const auto out = test::simulate(library, mapping_file, script, weapons, code_of(seed), observe, injected);
         w.coverage += out.coverage;
         if (!out.violation.empty()) {
+          seed_failed = true;
           ++w.failed;
           if (w.failures.size() < max_reported) {
             const std::string at_fault = injected ? "the engine at fault (" + std::string(fault->name) +
@@ -198,6 +230,15 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
           break;
         }
       }
+      if (seed_failed || !tcp_run_of(seed)) continue;
+      test::Random tcp_rng(~seed);
+      const auto tcp_script = test::tcp_script(tcp_rng);
+      const auto out = test::simulate_tcp(library, kSimulationHd1, tcp_script, code_of(seed), observe);
+      w.tcp += out.coverage;
+      if (out.violation.empty()) continue;
+      ++w.failed;
+      if (w.failures.size() < max_reported)
+        w.failures.emplace_back(seed, describe_tcp_failure(seed, tcp_script, out.violation));
     }
   };
   std::vector<std::thread> running;
@@ -206,10 +247,12 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
   for (auto& t : running) t.join();
 
   test::OracleCoverage coverage;
+  test::TcpCoverage tcp;
   std::vector<std::pair<std::uint64_t, std::string>> failed;
   std::uint64_t seeds_failed = 0;
   for (auto& w : workers) {
     coverage += w.coverage;
+    tcp += w.tcp;
     seeds_failed += w.failed;
     failed.insert(failed.end(), w.failures.begin(), w.failures.end());
   }
@@ -250,7 +293,26 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
       "operator's of the supervisor's stop, or from a pad that did not stop)\n",
       static_cast<long long>(coverage.operator_resets), static_cast<long long>(coverage.supervisor_resets),
       static_cast<long long>(coverage.refused_resets));
+  std::printf(
+      "fault simulation, TCP runs: %lld frames to the scripted server, %lld with motion (%lld after a server that "
+      "stalled read again); %lld connections reset as stalled, %lld neutral frames to a distrusted server; %lld "
+      "connections ended by the server, %lld attempts refused, %lld after a back-off of 1 s or more\n",
+      static_cast<long long>(tcp.frames), static_cast<long long>(tcp.motion), static_cast<long long>(tcp.motion_again),
+      static_cast<long long>(tcp.stalls_dropped), static_cast<long long>(tcp.distrusted),
+      static_cast<long long>(tcp.server_ends), static_cast<long long>(tcp.refused),
+      static_cast<long long>(tcp.backoff_waited));
   if (failures > 0 || count < 1000) return;  // too few scripts to ask for everything below
+  // The TCP runs reach the link's own rules: stalls dropped, a distrusted server sent neutral frames, motion once it
+  // reads again, the server's resets and refusals, a back-off grown.
+  for (const auto& [what, reached] : {std::pair{"motion", tcp.motion},
+                                      {"stall dropped", tcp.stalls_dropped},
+                                      {"frame to a distrusted server", tcp.distrusted},
+                                      {"motion after reading again", tcp.motion_again},
+                                      {"connection ended by the server", tcp.server_ends},
+                                      {"attempt refused", tcp.refused},
+                                      {"back-off of 1 s", tcp.backoff_waited}}) {
+    EXPECT_GT(reached, 0) << "TCP runs: no " << what;
+  }
   // The scripts reach what the rules are about: motion again after each kind
   // of fault (a fresh press after it), weapons, and the neutral frames owed.
   using test::Ending;
@@ -283,7 +345,6 @@ TEST(FaultSimulation, RandomScriptsWithFaultsKeepTheSafetyRules) {
 // What the simulation once missed (issue 35), each a script through the
 // simulation with the simulated mappings' HD1 (an enable timeout of 2 s):
 // frames are checked by the oracle, and what must still drive is asked for.
-const std::string kSimulationHd1 = ANDROS_TEST_DATA_DIR "/simulation/mappings/hd1.yaml";
 
 struct Played {
   std::string violation;
@@ -353,6 +414,62 @@ TEST(FaultSimulation, AStalledLinkGetsNoMotionThroughFreshPressesAndResets) {
   ASSERT_FALSE(p.enabled.empty());
   EXPECT_LT(p.enabled.front(), 200);
   EXPECT_EQ(first_enabled_from(p, 200), 1160);  // the first tick after the fresh press once it reads again
+}
+
+// The same against the real TcpLink over the scripted server (tcp_run.hpp;
+// issue 35's second survivor): a server that stops reading at 1000 is reset
+// as stalled once 19 frames wait unread (from 1680) and its window stays
+// still for 2 s (at 3680); the connection after it (at 3960) gets neutral
+// frames only, through a fresh deadman press every 300 ms, until the server
+// reads again at 5800; then a fresh press drives again.
+TEST(FaultSimulation, AStalledTcpServerGetsNoMotionThroughFreshPresses) {
+  Library library;
+  std::string text = "0 connect\n20 button leftshoulder 1\n60 axis lefty -32768\n1000 link stalled\n";
+  for (int t = 1300; t < 5700; t += 300) {
+    text += std::to_string(t) + " button leftshoulder 0\n" + std::to_string(t + 40) + " button leftshoulder 1\n";
+  }
+  text += "5800 link reading\n6100 button leftshoulder 0\n6140 button leftshoulder 1\n6500 end\n";
+  std::vector<std::int64_t> driving;  // the ticks whose frame the link took with safety = 1
+  const auto out = test::simulate_tcp(library, kSimulationHd1, input::parse_event_script(text, "tcp.events"), kCode,
+                                      [&driving](const TickReport& r) {
+                                        if (r.sent && r.result == link::SendResult::kSent && r.enabled())
+                                          driving.push_back(r.t_ms);
+                                      });
+  EXPECT_EQ(out.violation, "");
+  EXPECT_EQ(out.coverage.stalls_dropped, 1);
+  EXPECT_GT(out.coverage.distrusted, 10);
+  const auto after_drop = std::find_if(driving.begin(), driving.end(), [](std::int64_t t) { return t > 3800; });
+  ASSERT_NE(after_drop, driving.end());
+  EXPECT_EQ(*after_drop, 6160);  // the first tick after the fresh press once it reads again
+}
+
+// A server that resets its connection at 500 and refuses new ones until 5500:
+// the attempts come 250 ms after the link meets the reset (its frame at 520),
+// then 500, 1000, 2000 and 4000 ms after each refusal (docs/running.md): at
+// 800, 1320, 2320 and 4320 refused, at 8320 taken. That connection, reset at
+// 9000 (up for less than 5 s), waits 4 s more: back at 13000; the next, reset
+// at 18500 (up for more than 5 s; its frame at 18520 meets the reset),
+// starts again at 250 ms: back at 18800.
+TEST(FaultSimulation, ATcpServerThatRefusesIsRetriedWithBackOff) {
+  Library library;
+  std::vector<std::int64_t> taken;
+  const auto out = test::simulate_tcp(library, kSimulationHd1,
+                                      input::parse_event_script("0 connect\n500 link down\n5500 link up\n"
+                                                                "9000 link down\n9100 link up\n18500 link down\n"
+                                                                "18600 link up\n19000 end\n",
+                                                                "tcp.events"),
+                                      kCode, [&taken](const TickReport& r) {
+                                        if (r.sent && r.result == link::SendResult::kSent) taken.push_back(r.t_ms);
+                                      });
+  EXPECT_EQ(out.violation, "");
+  EXPECT_EQ(out.coverage.refused, 4);
+  const auto back_after = [&taken](std::int64_t t) {
+    const auto it = std::find_if(taken.begin(), taken.end(), [t](std::int64_t u) { return u > t; });
+    return it == taken.end() ? -1 : *it;
+  };
+  EXPECT_EQ(back_after(520), 8320);
+  EXPECT_EQ(back_after(9000), 13000);
+  EXPECT_EQ(back_after(18500), 18800);
 }
 
 // Every dip-switch code, 0x00 to 0xFF, given as `--code` text, reaches byte

@@ -22,13 +22,15 @@ class ReconnectingLink : public Link {
   [[nodiscard]] const LinkCounters& counters() const final { return counters_; }
 
  protected:
-  /// min_retry_ms doubles after each failed attempt up to max_retry_ms.
-  ReconnectingLink(std::string name, int min_retry_ms, int max_retry_ms);
+  /// min_retry_ms doubles after each failed attempt up to max_retry_ms. The
+  /// drain at shutdown waits on drain_clock (nullptr: the monotonic clock);
+  /// all other timing is the now_ns each send() is given.
+  ReconnectingLink(std::string name, int min_retry_ms, int max_retry_ms, Clock* drain_clock = nullptr);
 
   enum class OpenResult : std::uint8_t { kOpen, kPending, kFailed };
   /// One attempt to open (or to finish opening) the far end into fd_. On
   /// kFailed, sets why (an errno text); kPending is called again next tick.
-  virtual OpenResult open_step(std::string& why) = 0;
+  virtual OpenResult open_step(std::int64_t now_ns, std::string& why) = 0;
   /// Bytes written but still in the driver, or -1 with errno set.
   virtual int queued_bytes() const = 0;
   /// Bytes written that the far end does not have yet, for the drain at
@@ -50,6 +52,8 @@ class ReconnectingLink : public Link {
   void lose(const std::string& why, std::int64_t now_ns);
   void fail_open(const std::string& why, std::int64_t now_ns);
 
+  RealClock real_clock_;
+  Clock& drain_clock_;
   std::string name_;
   std::string detail_ = "not opened yet";
   LinkState state_ = LinkState::kConnecting;

@@ -20,7 +20,7 @@ class SerialLink final : public ReconnectingLink {
   SerialLink& operator=(const SerialLink&) = delete;
 
  protected:
-  OpenResult open_step(std::string& why) override;
+  OpenResult open_step(std::int64_t now_ns, std::string& why) override;
   int queued_bytes() const override;
   void finish_drain() override;
   void close_fd() override;

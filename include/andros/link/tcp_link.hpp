@@ -5,11 +5,11 @@
 /// stalls; bounds what waits unread at the server as far as its window shows
 /// (docs/running.md, "Stale commands on a TCP link").
 
-#include <netdb.h>
-#include <sys/socket.h>
+#include <memory>
 
 #include "andros/base/error.hpp"
 #include "andros/link/reconnecting_link.hpp"
+#include "andros/link/tcp_socket.hpp"
 
 namespace andros::link {
 
@@ -46,15 +46,20 @@ class TcpLink final : public ReconnectingLink {
   /// Resolves the address now (start-up, before the clock runs): an unknown
   /// host is an InputError.
   explicit TcpLink(const TcpAddress& address);
+  /// The same link over another socket (the fault simulation's scripted
+  /// server), its drain at shutdown waiting on drain_clock. Its other timing
+  /// is the now_ns each send() is given.
+  TcpLink(std::string name, std::unique_ptr<TcpSocket> socket, Clock* drain_clock);
 
   [[nodiscard]] bool far_end_reading() const override { return !suspect_; }
 
  protected:
-  OpenResult open_step(std::string& why) override;
+  OpenResult open_step(std::int64_t now_ns, std::string& why) override;
   int queued_bytes() const override;
   int undelivered_bytes() const override;
   int backlog(std::int64_t now_ns, std::string& stalled) override;
   long write_bytes(const std::uint8_t* data, std::size_t size) override;
+  void close_fd() override;
 
  private:
   /// What the server's acknowledgements have shown on this connection.
@@ -66,14 +71,13 @@ class TcpLink final : public ReconnectingLink {
     std::int64_t probe_ns = 0;     ///< when a held-back frame last went anyway
     std::int64_t written = 0;      ///< bytes written on this connection
   };
-  OpenResult opened();
+  OpenResult opened(std::int64_t now_ns);
 
+  std::unique_ptr<TcpSocket> socket_;
   Progress progress_;
   /// The server stalled, and no connection since has shown it reading: what
   /// it acknowledges may never be read, so nothing counts as delivered.
   bool suspect_ = false;
-  sockaddr_storage addr_{};
-  socklen_t addr_len_ = 0;
   bool connecting_ = false;
   std::int64_t connect_started_ns_ = 0;
 };

@@ -40,6 +40,9 @@ struct ReplayOptions {
   /// the encoding itself (the fault simulation).
   std::function<void(std::int64_t t_ms, const protocol::Frame& frame)> wire = [](std::int64_t, const protocol::Frame&) {
   };
+  /// The link the loop sends to, for tests (the fault simulation's TCP link to a scripted server); frames it
+  /// takes reach the sink as the sink link's do. nullptr: the sink link, which takes every frame.
+  link::Link* link = nullptr;
   /// Each engine as the loop's frame source (the first, and each reload's): for tests that put an engine at fault
   /// before the frame gate (the fault simulation, tests/support/faulty_frames.hpp).
   std::function<std::unique_ptr<FrameSource>(std::unique_ptr<FrameSource>)> frames =
