@@ -106,6 +106,7 @@ class Trainer {
                                       .state = words_,
                                       .state_name = std::string(run::to_string(r.state)),
                                       .layer = layer_,
+                                      .sent = r.result == link::SendResult::kSent,
                                       .pad = {}});  // the pad: the feed's own, from the input's pump
   }
 

@@ -77,5 +77,40 @@ TEST(TrainerFeed, AGameControllersInputsAreShownByName) {
   }
 }
 
+// Each frame's object shows the pad the loop read for that frame, however
+// late the vehicle's thread takes the frames: here only after the loop has
+// read the pad for three frames (and once for a tick whose frame the link
+// did not take, read again for the next one).
+TEST(TrainerFeed, EachFramesObjectShowsThePadReadForThatFrame) {
+  StreamHub hub;
+  TrainerFeed feed(vehicle::figures_for("hd1"), hub);
+  const auto stream = hub.subscribe();
+  auto input = connected("Pad");
+  const auto tick = [&](int lefty, bool sent) {
+    input.apply(event(InputEvent::Type::kAxis, {InputKind::kPadAxis, 1}, lefty));
+    feed.observe_pad(input, nullptr);
+    LoopFacts facts;
+    facts.sent = sent;
+    feed.observe(facts);
+  };
+  tick(100, true);
+  tick(200, false);
+  tick(300, true);
+  tick(400, true);
+  for (std::int64_t k = 1; k <= 3; ++k) feed.on_frame(protocol::DecodedFrame{}, k * 40'000'000);
+
+  const auto messages = stream->next(std::chrono::milliseconds(0));
+  ASSERT_TRUE(messages);
+  std::vector<json> shown;
+  for (const auto& m : *messages) shown.push_back(json::parse(*m));
+  ASSERT_EQ(shown.size(), 3u);
+  const int lefty[] = {100, 300, 400};
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    EXPECT_EQ(shown[i]["frame"], i + 1);
+    EXPECT_EQ(shown[i]["pad"]["frame"], i + 1);
+    EXPECT_EQ(shown[i]["pad"]["axes"]["lefty"], lefty[i]) << "frame " << i + 1;
+  }
+}
+
 }  // namespace
 }  // namespace andros::trainer
