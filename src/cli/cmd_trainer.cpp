@@ -108,13 +108,15 @@ class Trainer {
     last_tick_ = r.tick;
     last_t_ms_ = r.t_ms;
     // The vehicle gets what the session records: the frame the link took, at its tick's time.
-    feed_->queue_tick(r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
+    const bool delivered = r.sent && r.result == link::SendResult::kSent;
+    feed_->queue_tick(r.t_ms, r.data, delivered);
     wake_.release();
     feed_->observe(trainer::LoopFacts{.tick = r.tick,
                                       .t_ms = r.t_ms,
                                       .state = words_,
                                       .state_name = std::string(run::to_string(r.state)),
                                       .layer = layer_,
+                                      .sent = delivered,
                                       .pad = {}});  // the pad: the feed's own, from the input's pump
   }
 

@@ -42,6 +42,8 @@ json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
   return {
       {"tick", facts.tick},
       {"t_ms", facts.t_ms},
+      // The frames the vehicle decoded: the number of the frame this object is for.
+      {"frame", s.frames + s.ignored},
       // Microseconds: the arrival times measure the loop's punctuality (bench/trainer_clients.py).
       {"time", std::round(static_cast<double>(s.time_ns - s.start_ns) / 1e3) / 1e6},
       {"state", facts.state},
@@ -80,8 +82,48 @@ json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
       {"frames", s.frames},
       {"ignored", s.ignored},
       {"pad",
-       {{"connected", facts.pad.connected}, {"name", facts.pad.name}, {"buttons", facts.pad.buttons}, {"axes", axes}}},
+       {{"frame", facts.pad.frame},
+        {"connected", facts.pad.connected},
+        {"name", facts.pad.name},
+        {"buttons", facts.pad.buttons},
+        {"axes", axes}}},
   };
+}
+
+/// The pad's inputs into `out` (its lists' room kept).
+void read_pad(const input::InputState& input, const input::DeviceLayout* layout, PadInputs& out) {
+  using input::InputKey;
+  using input::InputKind;
+  const auto& pad = input.operator_pad();
+  out.connected = pad.connected();
+  out.name = pad.name();
+  out.buttons.clear();
+  out.axes.clear();
+  const auto hold = [&](InputKey key, std::string name) {
+    if (pad.button(key).down) out.buttons.push_back(std::move(name));
+  };
+  const auto hat = [&](int h) {
+    for (int d = 0; d < 4; ++d) {
+      const InputKey key{InputKind::kHat, static_cast<std::uint16_t>(h * 4 + d)};
+      hold(key, input::input_name(key));
+    }
+  };
+  if (layout != nullptr && !layout->game_controller) {
+    for (const auto& key : layout->buttons) hold(key, "button " + input::input_name(key));
+    for (int h = 0; h < layout->hats; ++h) hat(h);
+    for (const auto& key : layout->axes) out.axes.emplace_back("axis " + input::input_name(key), pad.axis(key));
+    return;
+  }
+  for (std::size_t i = 0; i < input::kPadButtonNames.size(); ++i) {
+    hold(InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(i)}, std::string(input::kPadButtonNames[i]));
+  }
+  if (layout != nullptr) {
+    for (const int h : layout->free_hats) hat(h);
+  }
+  for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i) {
+    out.axes.emplace_back(input::kPadAxisNames[i],
+                          pad.axis(InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(i)}));
+  }
 }
 
 }  // namespace
@@ -109,6 +151,8 @@ bool TrainerFeed::take_ticks() {
   for (; tail != head; ++tail) {
     const auto& t = queue_[tail % kQueueTicks];
     view::feed_tick(model_, t.t_ms, t.data, t.delivered);
+    // A frame taken: its own pad; none: the pad read for the next one is the newest the vehicle may show.
+    take_pads(model_.state().frames + model_.state().ignored + (t.delivered ? 0 : 1));
     publish_locked();
     queue_tail_.store(tail + 1, std::memory_order_release);
   }
@@ -118,7 +162,16 @@ bool TrainerFeed::take_ticks() {
 void TrainerFeed::advance(std::int64_t now_ns) {
   const std::lock_guard lock(model_mutex_);
   model_.advance(now_ns);
+  take_pads(model_.state().frames + model_.state().ignored + 1);
   publish_locked();
+}
+
+void TrainerFeed::take_pads(std::uint64_t frame) {
+  const auto written = pads_written_.load(std::memory_order_acquire);
+  auto read = pads_read_.load(std::memory_order_relaxed);
+  // Swapped, not copied: the slot's lists keep their room for the loop's next pad.
+  for (; read != written && pads_[read % kPadRing].frame <= frame; ++read) std::swap(pad_, pads_[read % kPadRing]);
+  pads_read_.store(read, std::memory_order_release);
 }
 
 void TrainerFeed::republish() {
@@ -137,49 +190,24 @@ void TrainerFeed::publish_locked() {
     const std::lock_guard lock(facts_mutex_);
     facts = facts_;
   }
+  facts.pad = pad_;
   latest_ = stream_object(model_, facts);
   hub_.publish(latest_);
 }
 
 void TrainerFeed::observe(LoopFacts facts) {
-  facts.pad = pad_;  // copied: after the run, the pad as it was last
+  if (facts.sent) ++sent_;
   std::unique_lock lock(facts_mutex_, std::try_to_lock);
   if (lock.owns_lock()) facts_ = std::move(facts);
 }
 
 void TrainerFeed::observe_pad(const input::InputState& input, const input::DeviceLayout* layout) {
-  using input::InputKey;
-  using input::InputKind;
-  const auto& pad = input.operator_pad();
-  pad_.connected = pad.connected();
-  pad_.name = pad.name();
-  pad_.buttons.clear();
-  pad_.axes.clear();
-  const auto hold = [&](InputKey key, std::string name) {
-    if (pad.button(key).down) pad_.buttons.push_back(std::move(name));
-  };
-  const auto hat = [&](int h) {
-    for (int d = 0; d < 4; ++d) {
-      const InputKey key{InputKind::kHat, static_cast<std::uint16_t>(h * 4 + d)};
-      hold(key, input::input_name(key));
-    }
-  };
-  if (layout != nullptr && !layout->game_controller) {
-    for (const auto& key : layout->buttons) hold(key, "button " + input::input_name(key));
-    for (int h = 0; h < layout->hats; ++h) hat(h);
-    for (const auto& key : layout->axes) pad_.axes.emplace_back("axis " + input::input_name(key), pad.axis(key));
-    return;
-  }
-  for (std::size_t i = 0; i < input::kPadButtonNames.size(); ++i) {
-    hold(InputKey{InputKind::kPadButton, static_cast<std::uint16_t>(i)}, std::string(input::kPadButtonNames[i]));
-  }
-  if (layout != nullptr) {
-    for (const int h : layout->free_hats) hat(h);
-  }
-  for (std::size_t i = 0; i < input::kPadAxisNames.size(); ++i) {
-    pad_.axes.emplace_back(input::kPadAxisNames[i],
-                           pad.axis(InputKey{InputKind::kPadAxis, static_cast<std::uint16_t>(i)}));
-  }
+  const auto written = pads_written_.load(std::memory_order_relaxed);
+  if (written - pads_read_.load(std::memory_order_acquire) == kPadRing) return;  // full: never wait
+  auto& slot = pads_[written % kPadRing];
+  read_pad(input, layout, slot);
+  slot.frame = sent_ + 1;
+  pads_written_.store(written + 1, std::memory_order_release);
 }
 
 void WatchedInput::pump(input::InputState& state, std::int64_t now_ms) {

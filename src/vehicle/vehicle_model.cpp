@@ -119,13 +119,21 @@ void VehicleModel::integrate(std::int64_t until_ns) {
   state_.time_ns = until_ns;
 }
 
+void VehicleModel::commanded_rates() {
+  const auto& c = command_;
+  const auto& f = figures_;
+  // Skid steer.
+  const double top = f.top_speed_kmh.value / kKmhPerMps * c.speed_scale;
+  state_.speed = top * (c.left + c.right) / 2;
+  state_.turn_rate = f.turn_rate_dps.value * c.speed_scale * (c.right - c.left) / 2;
+}
+
 void VehicleModel::move(double seconds) {
   const auto& c = command_;
   const auto& f = figures_;
-  // Skid steer, integrated as an arc (exact for a command held constant).
-  const double top = f.top_speed_kmh.value / kKmhPerMps * c.speed_scale;
-  const double v = top * (c.left + c.right) / 2;
-  const double w = f.turn_rate_dps.value * c.speed_scale * (c.right - c.left) / 2;
+  // Integrated as an arc (exact for a command held constant), at the rates take() set.
+  const double v = state_.speed;
+  const double w = state_.turn_rate;
   auto& p = state_.pose;
   const double h0 = radians(p.heading);
   if (w == 0) {
@@ -138,8 +146,6 @@ void VehicleModel::move(double seconds) {
     p.y -= r * (std::cos(h1) - std::cos(h0));
     p.heading = wrap_degrees(p.heading + w * seconds);
   }
-  state_.speed = v;
-  state_.turn_rate = w;
   add_trail_point();
 
   state_.front_flipper = step(state_.front_flipper, c.front_flipper, 1, f.front_flipper, seconds);
@@ -218,6 +224,8 @@ void VehicleModel::take(const protocol::DataBytes& data) {
   }
   for (const auto& j : kCameraJoints) c.*j.direction = pair(s, j.plus, j.minus);
   command_ = c;
+  // No inertia: the tracks take the new speed as the frame arrives.
+  commanded_rates();
 
   state_.cameras.main = main_camera(s);
   state_.cameras.inset = inset_camera(s);

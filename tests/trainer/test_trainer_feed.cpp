@@ -77,5 +77,45 @@ TEST(TrainerFeed, AGameControllersInputsAreShownByName) {
   }
 }
 
+// Each frame's object shows the pad the loop read for that frame, however
+// late the motion thread takes the ticks: here only after the loop has read
+// the pad for all four (the second tick's frame not taken by the link: its
+// object, sent with no frame, shows the pad read for the next frame).
+TEST(TrainerFeed, EachFramesObjectShowsThePadReadForThatFrame) {
+  StreamHub hub;
+  TrainerFeed feed(vehicle::figures_for("hd1"), hub);
+  const auto stream = hub.subscribe();
+  auto input = connected("Pad");
+  std::int64_t t_ms = 0;
+  const auto tick = [&](int lefty, bool sent) {
+    input.apply(event(InputEvent::Type::kAxis, {InputKind::kPadAxis, 1}, lefty));
+    feed.observe_pad(input, nullptr);
+    feed.queue_tick(t_ms, protocol::DataBytes{}, sent);
+    t_ms += 40;
+    LoopFacts facts;
+    facts.sent = sent;
+    feed.observe(facts);
+  };
+  tick(100, true);
+  tick(200, false);
+  tick(300, true);
+  tick(400, true);
+  ASSERT_TRUE(feed.take_ticks());
+
+  const auto messages = stream->next(std::chrono::milliseconds(0));
+  ASSERT_TRUE(messages);
+  std::vector<json> shown;
+  for (const auto& m : *messages) shown.push_back(json::parse(*m));
+  ASSERT_EQ(shown.size(), 4u);
+  const int frame[] = {1, 1, 2, 3};
+  const int pad_frame[] = {1, 2, 2, 3};
+  const int lefty[] = {100, 300, 300, 400};
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    EXPECT_EQ(shown[i]["frame"], frame[i]) << "tick " << i;
+    EXPECT_EQ(shown[i]["pad"]["frame"], pad_frame[i]) << "tick " << i;
+    EXPECT_EQ(shown[i]["pad"]["axes"]["lefty"], lefty[i]) << "tick " << i;
+  }
+}
+
 }  // namespace
 }  // namespace andros::trainer

@@ -66,6 +66,25 @@ TEST(VehicleModel, FullForwardForTenSecondsMovesTopSpeedTimesTenAlongTheHeading)
   EXPECT_NEAR(model.state().pose.heading, 0.0, 1e-9);
 }
 
+// No inertia: the frame that commands a speed is the one that shows it, as
+// it arrives, before the vehicle has moved (the page shows it with that frame).
+TEST(VehicleModel, TheSpeedIsTheFramesFromTheFrameThatCommandsIt) {
+  VehicleModel model(hd1());
+  send_for(model, neutral(), 0.2);
+  auto s = driving();
+  s[signal_id("drive")] = 255;
+  model.on_frame(decoded(wire(s)).at(0), 6 * kPeriodNs);
+  EXPECT_NEAR(model.state().speed, 8.4 / 3.6, 1e-9);
+  EXPECT_EQ(model.state().pose.x, 0.0);
+  auto pivot = driving();
+  pivot[signal_id("pivot")] = 0;
+  model.on_frame(decoded(wire(pivot)).at(0), 7 * kPeriodNs);
+  EXPECT_EQ(model.state().speed, 0.0);
+  EXPECT_NEAR(model.state().turn_rate, 60.0, 1e-9);  // below 128: counter-clockwise, at the turn rate
+  model.on_frame(decoded(wire(neutral())).at(0), 8 * kPeriodNs);
+  EXPECT_EQ(model.state().turn_rate, 0.0);
+}
+
 TEST(VehicleModel, FullForwardAfterATurnMovesAlongTheNewHeading) {
   VehicleModel model(hd1());
   auto turn = driving();

@@ -23,6 +23,10 @@ namespace andros::trainer {
 
 /// The operator's pad as the loop read it at a tick.
 struct PadInputs {
+  /// The frame the loop read it for: frames counted from 1 in the order the
+  /// link took them (the tick's frame, or the next one sent when the link
+  /// took none that tick).
+  std::uint64_t frame = 0;
   bool connected = false;
   std::string name;
   /// The buttons held: a game controller's by name ("leftshoulder", "dpup"),
@@ -39,6 +43,7 @@ struct LoopFacts {
   std::string state;       ///< in the status view's words ("ENABLED", "STOPPED: ...")
   std::string state_name;  ///< the state's own name ("enabled", "stopped")
   std::string layer;       ///< the mapping layer in use, "" for the base
+  bool sent = false;       ///< the link took the tick's frame
   PadInputs pad;
 };
 
@@ -63,13 +68,14 @@ class TrainerFeed {
   void republish();
   /// The model advanced to now_ns with no frame, its object published (a test's).
   void advance(std::int64_t now_ns);
-  /// The loop's facts after a tick (the loop's thread), the pad taken from
-  /// observe_pad() (facts.pad is replaced). Never waits: while
-  /// the vehicle's thread reads them, this tick's are left out.
+  /// The loop's facts after a tick (the loop's thread); facts.pad is not
+  /// read (observe_pad() hands the pad over). Never waits: while the
+  /// motion thread reads them, this tick's are left out.
   void observe(LoopFacts facts);
-  /// The pad as the loop pumped it (the loop's thread); observe() carries
-  /// it. With the open device's layout, a plain joystick's inputs are its
-  /// numbered ones; without (an event script), a game controller's.
+  /// The pad as the loop pumped it (the loop's thread), before the tick's
+  /// frame is sent: the object for the frame it was read for carries it. With
+  /// the open device's layout, a plain joystick's inputs are its numbered
+  /// ones; without (an event script), a game controller's. Never waits.
   void observe_pad(const input::InputState& input, const input::DeviceLayout* layout);
   /// For GET /state: the latest object, with the trail so far.
   [[nodiscard]] std::string state_with_trail() const;
@@ -79,6 +85,9 @@ class TrainerFeed {
   [[nodiscard]] std::uint64_t lost_ticks() const { return lost_.load(); }
 
  private:
+  /// The pads read for frames up to `frame` taken from the ring, the last
+  /// one kept for the objects (under model_mutex_).
+  void take_pads(std::uint64_t frame);
   void publish_locked();
 
   /// A tick handed from the loop to the motion thread.
@@ -89,13 +98,23 @@ class TrainerFeed {
   };
   /// 40 s of ticks at 25 Hz: the motion thread takes them every tick or 100 ms.
   static constexpr std::size_t kQueueTicks = 1024;
+  /// A frame's pad goes from the loop's thread to the motion thread through a
+  /// ring with one writer and one reader and no lock: the pad read for frame
+  /// N is in it before frame N is sent, so the object for frame N carries
+  /// it whatever the threads' timing. Full (the motion thread 64 frames
+  /// behind), a pad is left out, and the objects show the last one taken.
+  static constexpr std::size_t kPadRing = 64;
 
   mutable std::mutex model_mutex_;  ///< the motion thread's and the server's
   vehicle::VehicleModel model_;
   std::string latest_;
   std::mutex facts_mutex_;  ///< the loop's hand-off: try_lock only on its side
   LoopFacts facts_;
-  PadInputs pad_;  ///< the loop's own, until observe() hands it over
+  PadInputs pad_;           ///< the pad the objects show (under model_mutex_)
+  std::uint64_t sent_ = 0;  ///< the loop's own: frames the link took
+  std::array<PadInputs, kPadRing> pads_;
+  std::atomic<std::uint64_t> pads_written_{0};  ///< by the loop's thread
+  std::atomic<std::uint64_t> pads_read_{0};     ///< by the motion thread (under model_mutex_)
   StreamHub& hub_;
   // One producer (the loop), one consumer (the motion thread): each index written by one side only.
   std::array<Tick, kQueueTicks> queue_{};

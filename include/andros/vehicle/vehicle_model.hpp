@@ -56,8 +56,8 @@ struct VehicleState {
   std::int64_t time_ns = 0;   ///< the time the state is integrated to
   std::int64_t start_ns = 0;  ///< the first frame's arrival
   Pose pose;
-  double speed = 0;      ///< metres per second along the heading, now
-  double turn_rate = 0;  ///< degrees per second, counter-clockwise, now
+  double speed = 0;      ///< metres per second along the heading, now: the last valid frame's (no inertia)
+  double turn_rate = 0;  ///< degrees per second, counter-clockwise, now: the last valid frame's
   double front_flipper = 0;
   double rear_flipper = 0;
   ArmPose arm;
@@ -117,6 +117,8 @@ class VehicleModel {
   /// Integrates [state_.time_ns, until_ns] under command_ (none past the watchdog).
   void integrate(std::int64_t until_ns);
   void move(double seconds);
+  /// state_'s speed and turn rate from command_.
+  void commanded_rates();
   void take(const protocol::DataBytes& data);
   void add_trail_point();
 
