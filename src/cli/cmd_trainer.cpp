@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -16,7 +17,10 @@
 #include "andros/base/error.hpp"
 #include "andros/base/text.hpp"
 #include "andros/cli/command_line.hpp"
+#include "andros/record/session.hpp"
 #include "andros/run/operating_state.hpp"
+#include "andros/trainer/course_file.hpp"
+#include "andros/trainer/course_score.hpp"
 #include "andros/trainer/trainer_feed.hpp"
 #include "andros/trainer/trainer_page.hpp"
 #include "andros/trainer/trainer_server.hpp"
@@ -32,6 +36,7 @@ struct TrainerOptions {
   RunOptions run;
   std::string listen;        ///< --listen ADDR:PORT; empty: 127.0.0.1 and the default port
   bool exit_at_end = false;  ///< --exit-at-end: no page kept up after the script
+  std::string course;        ///< --course NAME|FILE; empty: open ground
   std::size_t clients = trainer::HubLimits{}.max_clients;
 };
 
@@ -54,6 +59,12 @@ class Trainer {
     h.start = [this](const Settings&) { return start(); };
     h.observe = [this](const run::TickReport& r, const view::RunStatusBoard& board) { observe(r, board); };
     h.after_run = [this](ShutdownRequest& stop) { after_run(stop); };
+    if (!opt_.course.empty()) {
+      h.opening_record = [this] {
+        return record::payload::course({course_->course.name, course_->path, course_->text});
+      };
+      h.closing_record = [this] { return record::payload::score(last_t_ms_, trainer::score_json(scorer_->score())); };
+    }
     return h;
   }
 
@@ -68,7 +79,14 @@ class Trainer {
     }
     listen_ = opt_.listen.empty() ? trainer::ListenAddress{} : trainer::parse_listen(opt_.listen, {"--listen"});
     hub_ = std::make_unique<trainer::StreamHub>(trainer::HubLimits{.max_clients = opt_.clients});
-    feed_ = std::make_unique<trainer::TrainerFeed>(vehicle::figures_for(config.robot), *hub_);
+    const auto& figures = vehicle::figures_for(config.robot);
+    std::optional<vehicle::Course> course;
+    if (!opt_.course.empty()) {
+      course_ = trainer::load_course(opt_.course);
+      course = course_->course;
+      scorer_.emplace(figures, course_->course);
+    }
+    feed_ = std::make_unique<trainer::TrainerFeed>(figures, *hub_, course);
   }
 
   /// The server, on a thread of its own; its failure never stops driving.
@@ -101,12 +119,34 @@ class Trainer {
     }
     last_tick_ = r.tick;
     last_t_ms_ = r.t_ms;
+    observe_course(r);
     feed_->observe(trainer::LoopFacts{.tick = r.tick,
                                       .t_ms = r.t_ms,
                                       .state = words_,
                                       .state_name = std::string(run::to_string(r.state)),
                                       .layer = layer_,
-                                      .pad = {}});  // the pad: the feed's own, from the input's pump
+                                      .pad = {},  // the pad: the feed's own, from the input's pump
+                                      .score = score_});
+  }
+
+  // --- The course's score (docs/trainer.md, "The score") ---
+
+  /// Each tick into the scorer, on the loop's thread (the frames at their
+  /// ticks' times: the same session gives the same score); the page's copy of
+  /// the score made again every few ticks.
+  void observe_course(const run::TickReport& r) {
+    if (!scorer_) return;
+    scorer_->on_tick(r);
+    if (r.tick % kWordsEveryTicks == 0) score_ = trainer::score_json(scorer_->score());
+  }
+
+  /// The score on the terminal when the input has ended, and on the page.
+  void print_score() {
+    if (!scorer_) return;
+    const auto score = scorer_->score();
+    score_ = trainer::score_json(score);
+    std::fputs(trainer::score_text(score).c_str(), stdout);
+    std::fflush(stdout);
   }
 
   /// While no frame comes (a link down, a suspend, after the run), the model
@@ -129,6 +169,7 @@ class Trainer {
   }
 
   void after_run(ShutdownRequest& stop) {
+    print_score();
     if (opt_.exit_at_end || !server_ || stop.requested()) return;
     spdlog::info("trainer: the input has ended; the page stays up at {} until Ctrl-C", listen_.url());
     // The page shows where the vehicle ended, and says the run is over (not "shutting down" for ever).
@@ -137,7 +178,8 @@ class Trainer {
                                       .state = "INPUT ENDED: the page stays up until Ctrl-C",
                                       .state_name = "ended",
                                       .layer = "",
-                                      .pad = {}});
+                                      .pad = {},
+                                      .score = score_});
     feed_->advance(monotonic_ns());
     stop.sleep_until(kNoDeadline);
   }
@@ -150,6 +192,9 @@ class Trainer {
   trainer::ListenAddress listen_;
   std::unique_ptr<trainer::StreamHub> hub_;
   std::unique_ptr<trainer::TrainerFeed> feed_;
+  std::optional<trainer::CourseFile> course_;
+  std::optional<trainer::CourseScorer> scorer_;  ///< the loop's thread's
+  std::string score_;                            ///< the latest score, as JSON ("" without a course)
   std::optional<trainer::WatchedInput> input_;
   std::unique_ptr<trainer::TrainerServer> server_;
   std::optional<run::OpState> last_state_;
@@ -190,6 +235,10 @@ void add_trainer_command(CLI::App& app, int& exit_code) {
                       "); any address but 127.0.0.1 is warned about: whoever reaches it sees the vehicle")
       ->type_name("ADDR:PORT");
   cmd->add_flag("--exit-at-end", opt->exit_at_end, "End when the event script ends (no page kept up): for tests");
+  cmd->add_option("--course", opt->course,
+                  "A training course: a shipped one by NAME (basic, ...) or a course FILE (docs/trainer.md,\n"
+                  "\"Courses\"); walls stop the vehicle, the page draws it and the score ends the run")
+      ->type_name("NAME|FILE");
   cmd->callback([opt, &exit_code] {
     Trainer trainer(*opt);
     exit_code = run_bridge(opt->run, trainer.hooks());

@@ -38,6 +38,7 @@ struct LoopFacts {
   std::string state_name;  ///< the state's own name ("enabled", "stopped")
   std::string layer;       ///< the mapping layer in use, "" for the base
   PadInputs pad;
+  std::string score;  ///< on a course: its score so far, a JSON object (course_score.hpp); "" without one
 };
 
 /// The object the stream carries for a frame (one line of JSON).
@@ -45,7 +46,9 @@ std::string stream_object(const vehicle::VehicleModel& model, const LoopFacts& f
 
 class TrainerFeed {
  public:
-  TrainerFeed(const vehicle::RobotFigures& figures, StreamHub& hub) : model_(figures), hub_(hub) {}
+  /// course: the ground the vehicle drives on (open ground without one).
+  TrainerFeed(const vehicle::RobotFigures& figures, StreamHub& hub, std::optional<vehicle::Course> course = {})
+      : model_(figures, std::move(course)), hub_(hub) {}
 
   /// A frame the simulated vehicle decoded at now_ns (its thread): into the
   /// model, then its object to the clients.
