@@ -51,26 +51,29 @@ json course_map_json(const vehicle::Course& c) {
 
 json course_state_json(const vehicle::VehicleModel& model) {
   if (!model.course()) return nullptr;
+  const auto& c = *model.course();
   const auto& s = model.state().course;
-  return {{"elevation", r3(s.elevation)},
-          {"pitch", r3(s.pitch)},
-          {"contacts", s.contacts},
-          {"touching", s.body_touching || s.arm_touching},
-          {"climb_blocked", s.climb_blocked},
-          {"gates", s.gates},
-          {"door_angle", r3(s.door_angle)},
-          {"package",
-           {{"at", point(s.package)},
-            {"z", r3(s.package_z)},
-            {"held", s.package_held},
-            {"lifted", s.package_lifted},
-            {"delivered", s.package_delivered}}},
-          {"tip_margin", r3(s.tip_margin)},
-          {"tip_warning", s.tip_warning},
-          {"tipped", s.tipped},
-          {"laser_on_target", s.laser_on_target},
-          {"in_finish", s.in_finish},
-          {"done", model.course_done()}};
+  json out = {{"elevation", r3(s.elevation)},
+              {"pitch", r3(s.pitch)},
+              {"contacts", s.contacts},
+              {"touching", s.body_touching || s.arm_touching},
+              {"climb_blocked", s.climb_blocked},
+              {"gates", s.gates},
+              {"tip_margin", r3(s.tip_margin)},
+              {"tip_warning", s.tip_warning},
+              {"tipped", s.tipped},
+              {"laser_on_target", s.laser_on_target},
+              {"in_finish", s.in_finish},
+              {"done", model.course_done()}};
+  if (c.door) out["door_angle"] = r3(s.door_angle);
+  if (c.package) {
+    out["package"] = {{"at", point(s.package)},
+                      {"z", r3(s.package_z)},
+                      {"held", s.package_held},
+                      {"lifted", s.package_lifted},
+                      {"delivered", s.package_delivered}};
+  }
+  return out;
 }
 
 }  // namespace andros::trainer

@@ -177,7 +177,7 @@ function cameraEye(s, which) {
 function drawCamera(canvas, s, which) {
   const ctx = canvas.getContext("2d"), W = canvas.width, Hh = canvas.height;
   if (which === "none") { ctx.fillStyle = "#111"; ctx.fillRect(0, 0, W, Hh); return; }
-  const e = cameraEye(s, which), y = rad(e.yaw), p = rad(e.pitch);
+  const e = onCourse(s, cameraEye(s, which)), y = rad(e.yaw), p = rad(e.pitch);
   const f = [Math.cos(y) * Math.cos(p), Math.sin(y) * Math.cos(p), Math.sin(p)];
   const r = [Math.sin(y), -Math.cos(y), 0];
   const u = [-Math.cos(y) * Math.sin(p), -Math.sin(y) * Math.sin(p), Math.cos(p)];
@@ -202,7 +202,8 @@ function drawCamera(canvas, s, which) {
     seg([gx + j, gy + i, 0], [gx + j + 1, gy + i, 0], (gy + i) === 0 ? "#bbb" : "#5b6648", 1);
   }
   for (let k = 1; k < trail.length; k++) seg([trail[k-1][0], trail[k-1][1], 0.01], [trail[k][0], trail[k][1], 0.01], "#ffd75e", 2);
-  for (const [lx, ly] of LANDMARKS) {
+  if (courseMap) drawCourseInCamera(s, seg);
+  else for (const [lx, ly] of LANDMARKS) {
     const base = proj([lx, ly, 0]), top = proj([lx, ly, 0.5]);
     if (!base || !top) continue;
     const w = Math.max(2, (base[1] - top[1]) * 0.5);
@@ -321,25 +322,82 @@ function drawCourse(s, sx, sy) {
     el("rect", {x: sx(p.at[0]) - z / 2, y: sy(p.at[1]) - z / 2, width: z, height: z, fill: "#c98a2b", stroke: p.held ? "#fff" : "#000", "stroke-width": 2}, g);
   }
 }
+// The course in a camera's picture: each block, slope and landing as its edges, the door, the gates' posts, the target.
+function drawCourseInCamera(s, seg) {
+  const m = courseMap, cs = s.course || {};
+  const box = (a, z0, z1, color) => {
+    const h = rad(a.heading), c = Math.cos(h), n = Math.sin(h), l = a.size[0] / 2, w = a.size[1] / 2;
+    const pts = [[l, w], [l, -w], [-l, -w], [-l, w]].map(([u, v]) => [a.at[0] + u * c - v * n, a.at[1] + u * n + v * c]);
+    const lo = k => z0 instanceof Array ? z0[k] : z0, hi = k => z1 instanceof Array ? z1[k] : z1;
+    for (let k = 0; k < 4; k++) {
+      const p = pts[k], q = pts[(k + 1) % 4];
+      seg([p[0], p[1], lo(k)], [q[0], q[1], lo((k + 1) % 4)], color, 2);
+      seg([p[0], p[1], hi(k)], [q[0], q[1], hi((k + 1) % 4)], color, 2);
+      seg([p[0], p[1], lo(k)], [p[0], p[1], hi(k)], color, 2);
+    }
+  };
+  for (const b of m.blocks) box(b.area, 0, b.height, "#d0d2d6");
+  for (const l of m.landings) box(l.area, 0, l.height, "#9fb3c8");
+  for (const sl of m.slopes) {
+    const rise = sl.area.size[0] * Math.tan(rad(sl.angle));
+    box(sl.area, 0, [rise, rise, 0, 0], sl.kind === "stairs" ? "#d9a066" : "#c8c870");
+  }
+  if (m.door) {
+    const h = rad(m.door.closed + (cs.door_angle || 0)), d = m.door, e = [d.hinge[0] + d.width * Math.cos(h), d.hinge[1] + d.width * Math.sin(h)];
+    for (const z of [0, 1.4]) seg([d.hinge[0], d.hinge[1], z], [e[0], e[1], z], "#4fc3f7", 3);
+    seg([e[0], e[1], 0], [e[0], e[1], 1.4], "#4fc3f7", 3);
+  }
+  for (const gt of m.gates) {
+    const h = rad(gt.heading), W = gt.width / 2;
+    for (const sgn of [-1, 1]) {
+      const x = gt.at[0] + sgn * W * Math.sin(h), y = gt.at[1] - sgn * W * Math.cos(h);
+      seg([x, y, 0], [x, y, 1.2], "#e03131", 4);
+    }
+  }
+  if (m.target) {
+    const t = m.target;
+    for (let k = 0; k < 12; k++) {
+      const a0 = k * Math.PI / 6, a1 = (k + 1) * Math.PI / 6, r = t.radius;
+      seg([t.at[0], t.at[1] + r * Math.cos(a0), t.z + r * Math.sin(a0)], [t.at[0], t.at[1] + r * Math.cos(a1), t.z + r * Math.sin(a1)], cs.laser_on_target ? "#ff3b3b" : "#fff", 3);
+    }
+  }
+  if (cs.package && m.package) {
+    const p = cs.package, z = m.package.size;
+    box({at: p.at, size: [z, z], heading: 0}, p.z, p.z + z, "#c98a2b");
+  }
+}
+// A camera on the vehicle raised and pitched with it on a course's slopes and landings.
+function onCourse(s, e) {
+  if (!s.course) return e;
+  e.p[2] += s.course.elevation;
+  e.pitch += s.course.pitch * Math.cos(rad(e.yaw - s.pose.heading));
+  return e;
+}
+// The side view pitched with the slope under the vehicle (nose up: counter-clockwise on the screen).
+function drawPitch(s) {
+  const pitch = s.course ? s.course.pitch : 0;
+  $("sidebody").setAttribute("transform", pitch ? `rotate(${(-pitch).toFixed(2)})` : "");
+}
 function drawScore(s) {
   const box = $("coursebox");
   if (!courseMap) return;
   box.hidden = false;
-  const sc = s.score, cs = s.course || {}, out = $("score");
+  const sc = s.score, cs = s.course || {}, m = courseMap, out = $("score");
   out.textContent = "";
   const line = (t, cls) => { const d = document.createElement("div"); d.textContent = t; if (cls) d.className = cls; out.appendChild(d); };
   line(courseMap.name + (sc ? ": " + sc.result : ""), "result " + (sc && sc.completed ? "done" : ""));
   if (cs.tipped) line("TIPPED OVER: the run has failed", "bad");
   else if (cs.tip_warning) line(`TIPPING: ${cs.tip_margin.toFixed(2)} m from tipping over`, "warn");
+  if (cs.elevation > 0.005 || Math.abs(cs.pitch) > 0.05) line(`height ${cs.elevation.toFixed(2)} m, pitch ${cs.pitch.toFixed(0)}\u00b0`);
   if (cs.climb_blocked) line("too steep, or stairs with the front flippers down: it will not climb", "warn");
   if (cs.touching) line("CONTACT: against a wall", "warn");
   if (!sc) return;
   line(`time ${sc.time_s.toFixed(1)} s` + (sc.time_limit_s > 0 ? ` of ${sc.time_limit_s} s` : "") +
-       `   gates ${sc.gates}/${sc.gates_total}   contacts ${sc.contacts}`);
+       (sc.gates_total > 0 ? `   gates ${sc.gates}/${sc.gates_total}` : "") + `   contacts ${sc.contacts}`);
   line(`stops ${sc.stops.length}` + sc.stops.map(p => `; ${(p.t_ms / 1000).toFixed(1)} s ${p.by} (${p.why})`).join(""));
   line(`enabled with inputs not at rest: ${sc.not_at_rest}`);
   line(`fired ${sc.fired}: on target ${sc.hits}, laser off target ${sc.fired_off_target}, refused (no consent) ${sc.fire_refused}`);
-  if (cs.package) line(`package: ${cs.package.delivered ? "delivered" : cs.package.held ? "held" : cs.package.lifted ? "set down" : "not lifted"}` +
+  if (m.package && cs.package) line(`package: ${cs.package.delivered ? "delivered" : cs.package.held ? "held" : cs.package.lifted ? "set down" : "not lifted"}` +
                        (courseMap.door ? `   door ${cs.door_angle.toFixed(0)}\u00b0 open` : ""));
 }
 function draw() {
@@ -347,7 +405,7 @@ function draw() {
   if (!latest || latest === drawn) return;
   drawn = latest;
   const s = latest;
-  drawTop(s); drawSide(s); drawScore(s);
+  drawTop(s); drawSide(s); drawScore(s); drawPitch(s);
   drawCamera($("cam"), s, s.cameras.main);
   if (s.cameras.inset !== "none") drawCamera($("inset"), s, s.cameras.inset);
   drawPanel(s);
