@@ -188,7 +188,7 @@ class CourseReader {
 }  // namespace
 
 vehicle::Course parse_course(const std::string& file, const std::string& text) {
-  const Reader r(file, &text);
+  const Reader r(file, &text, "course");
   std::size_t budget = mapping::yaml::kMaxNodes;
   const YAML::Node root = r.load_document(budget);
   if (!root.IsMap()) r.fail(root, "a course file is a map of 'key: value' lines (docs/trainer.md, \"Courses\")");

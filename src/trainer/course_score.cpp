@@ -5,20 +5,12 @@
 
 #include "andros/base/text.hpp"
 #include "andros/protocol/decoder.hpp"
+#include "andros/record/session.hpp"
 
 namespace andros::trainer {
 namespace {
 
 using nlohmann::json;
-
-std::string_view stopper(run::StopBy by) {
-  switch (by) {
-    case run::StopBy::kOperator: return "operator";
-    case run::StopBy::kSupervisor: return "supervisor";
-    case run::StopBy::kGate: return "gate";
-  }
-  return "operator";
-}
 
 /// Why a run that is not completed is not.
 std::string not_done(const Score& s, const vehicle::Course& c, const vehicle::CourseState& v) {
@@ -53,7 +45,7 @@ void CourseScorer::on_tick(const run::TickReport& r) {
   if (r.stop_count > stop_count_ && r.last_stop) {
     std::string why = r.last_stop_again ? "stop button again" : "stop button";
     if (*r.last_stop == run::StopBy::kGate) why = "frame gate: " + r.gate_fault;
-    stops_.push_back({r.t_ms, std::string(stopper(*r.last_stop)), why});
+    stops_.push_back({r.t_ms, std::string(record::stopper_word(*r.last_stop)), why});
   }
   stop_count_ = r.stop_count;
   if (r.state == run::OpState::kEnabled && last_state_ != run::OpState::kEnabled && !r.engine.held_back.empty()) {

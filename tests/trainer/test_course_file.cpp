@@ -64,7 +64,8 @@ INSTANTIATE_TEST_SUITE_P(
             "c.yaml:3:8: error: ", "the vehicle would start inside the wall or box at line 5"},
         Bad{"gate_off_ground", kHead + "gates:\n  - {at: [40, 0], width: 3}\n",
             "c.yaml:5:5: error: ", "this gate is off the ground"},
-        Bad{"second_document", kHead + "---\ncourse: u\n", "c.yaml:5:1: error: ", "a second YAML document"},
+        Bad{"second_document", kHead + "---\ncourse: u\n",
+            "c.yaml:5:1: error: ", "a second YAML document ('---'): a course file holds one"},
         Bad{"not_a_map", "- a\n- b\n", "c.yaml:1:1: error: ", "a course file is a map"}),
     [](const auto& p) { return p.param.kind; });
 
