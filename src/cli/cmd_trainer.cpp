@@ -235,9 +235,10 @@ void add_trainer_command(CLI::App& app, int& exit_code) {
                       "); any address but 127.0.0.1 is warned about: whoever reaches it sees the vehicle")
       ->type_name("ADDR:PORT");
   cmd->add_flag("--exit-at-end", opt->exit_at_end, "End when the event script ends (no page kept up): for tests");
-  cmd->add_option("--course", opt->course,
-                  "A training course: a shipped one by NAME (basic, ...) or a course FILE (docs/trainer.md,\n"
-                  "\"Courses\"); walls stop the vehicle, the page draws it and the score ends the run")
+  cmd->add_option(
+         "--course", opt->course,
+         "A training course: a shipped one by NAME (basic, stairs, car, weapons) or a course FILE\n"
+         "(docs/trainer.md, \"Courses\"); walls stop the vehicle, the page draws the course, the score ends the run")
       ->type_name("NAME|FILE");
   cmd->callback([opt, &exit_code] {
     Trainer trainer(*opt);
