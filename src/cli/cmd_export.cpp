@@ -8,6 +8,7 @@
 #include "andros/base/error.hpp"
 #include "andros/base/output_file.hpp"
 #include "andros/record/session.hpp"
+#include "andros/trainer/trainer_replay.hpp"
 #include "andros/view/session_export.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
@@ -37,7 +38,8 @@ void run_export(const ExportOptions& opt) {
   if (verdict.intact && checked.session->stopped_for_room) spdlog::warn("{}", record::room_text(*checked.session));
   // Written as the rows come: a failed write leaves FILE as it was.
   OutputFile out(opt.output.empty() ? "-" : opt.output);
-  const auto why_no_inputs = view::export_session(*checked.session, format, out.stream());
+  const auto why_no_inputs = view::export_session(*checked.session, format, out.stream(), record::load_recorded_mapping,
+                                                  trainer::recorded_course(*checked.session));
   out.commit();
   if (!why_no_inputs.empty()) spdlog::warn("the input columns are empty: {}", why_no_inputs);
 }

@@ -141,6 +141,7 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
 
   // The flight recorder (docs/recording.md): a thread of its own, never in the loop's way.
   const auto recording = RunRecording::start(config, engine, *link, *input);
+  if (recording && hooks.opening_record) recording->add(hooks.opening_record());
   input::InputSource& recorded_input = recording ? recording->input() : *input;
   input::InputSource& loop_input = hooks.input ? hooks.input(recorded_input) : recorded_input;
 
@@ -202,6 +203,7 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
   const auto end = board.status();
   std::string why = "end of the input";
   if (stop.signal_number() != 0) why = std::string("SIG") + sigabbrev_np(stop.signal_number());
+  if (recording && hooks.closing_record) recording->add(hooks.closing_record());
   if (recording) recording->finish(why);
   spdlog::info("stopped ({}): {} frames sent, {} ticks skipped (link busy), {} with the link down", why, end.link.sent,
                end.link.busy, end.link.down);

@@ -18,6 +18,8 @@
 #include "andros/base/sink_text.hpp"
 #include "andros/record/session.hpp"
 #include "andros/record/session_replay.hpp"
+#include "andros/trainer/course_file.hpp"
+#include "andros/trainer/course_score.hpp"
 #include "commands.hpp"
 #include "session_files.hpp"
 #include "session_summary.hpp"
@@ -53,7 +55,28 @@ struct Row {
   /// records say); else why not.
   bool proven = false;
   std::string unproven;
+  std::string course;  ///< a trainer run's course ("" for any other run)
+  std::string score;   ///< and its score, a JSON object ("" when the run recorded none)
+  /// The replay, fed to the course's scorer, gave the recorded score again (the same session, the same score).
+  bool score_proven = false;
 };
+
+/// A trainer run's line under the table: its course and score, as its records say them.
+std::string training_text(const Row& r) {
+  std::string out = "trainer, course " + terminal_text(r.course) + ": ";
+  if (r.score.empty()) return out + "no score recorded (the run did not end)";
+  const auto j = nlohmann::json::parse(r.score);
+  const auto stops = j.at("stops").size();
+  return out + terminal_text(j.at("result").get<std::string>()) +
+         fmt::format(
+             ", {:.1f} s, gates {}/{}, contacts {}, stops {}, inputs not at rest {}, fired {} ({} off target, "
+             "{} refused), tipped over: {}",
+             j.at("time_s").get<double>(), j.at("gates").get<int>(), j.at("gates_total").get<int>(),
+             j.at("contacts").get<int>(), stops, j.at("not_at_rest").get<int>(), j.at("fired").get<int>(),
+             j.at("fired_off_target").get<int>(), j.at("fire_refused").get<int>(),
+             j.at("tipped").get<bool>() ? "yes" : "no") +
+         (r.score_proven ? "; the replay gives the same score" : "; the score NOT proven by replay");
+}
 
 /// Whether the replay proves the session's records: WEAPONS and STOPS are counted from them.
 void prove(Row& row, const record::Session& session) {
@@ -64,7 +87,19 @@ void prove(Row& row, const record::Session& session) {
   try {
     // An earlier format's ticks are bounded by 24 h only: replayed when they are within its records' 60 s each.
     record::check_record_spacing(session, true);
-    const auto result = record::replay_session(session);
+    // A trainer run's course scores the replay's ticks as the live run's were.
+    std::optional<trainer::CourseScorer> scorer;
+    if (session.course) {
+      scorer.emplace(vehicle::figures_for(session.settings.robot),
+                     trainer::parse_course(session.course->path, session.course->text));
+    }
+    const auto result = record::replay_session(session, record::load_recorded_mapping, [&](const run::TickReport& r) {
+      if (scorer) scorer->on_tick(r);
+    });
+    if (scorer && session.score) {
+      row.score_proven =
+          nlohmann::json::parse(trainer::score_json(scorer->score())) == nlohmann::json::parse(session.score->json);
+    }
     row.proven = result.proven();
     if (!result.identical) row.unproven = result.difference;
     else if (!row.proven) row.unproven = std::to_string(result.unproven) + " records after the last frame record";
@@ -113,6 +148,8 @@ Row read_row(const std::filesystem::path& path, std::string name) {
     row.supervised = s.settings.supervised;
     row.dropped = s.dropped;
     row.summary = summarize_session(s);
+    if (s.course) row.course = s.course->name;
+    if (s.score) row.score = s.score->json;
     prove(row, s);
   } catch (const std::exception& e) {
     row.readable = false;
@@ -185,6 +222,9 @@ void print_table(const std::vector<Row>& rows) {
   for (const auto& r : rows) {
     if (!r.note.empty()) std::cout << fmt::format("{}: {}\n", terminal_text(r.name), terminal_line(r.note));
   }
+  for (const auto& r : rows) {
+    if (!r.course.empty()) std::cout << fmt::format("{}: {}\n", terminal_text(r.name), training_text(r));
+  }
 }
 
 nlohmann::json json_row(const Row& r) {
@@ -211,6 +251,11 @@ nlohmann::json json_row(const Row& r) {
   j["controllers_lost"] = {{"operator", m.controllers_lost[0]}, {"supervisor", m.controllers_lost[1]}};
   j["links_lost"] = m.links_lost;
   j["dropped"] = r.dropped;
+  if (!r.course.empty()) {
+    j["course"] = json_text(r.course);
+    j["score"] = r.score.empty() ? nlohmann::json(nullptr) : nlohmann::json::parse(r.score);
+    j["score_proven"] = r.score_proven;
+  }
   return j;
 }
 

@@ -9,6 +9,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <semaphore>
@@ -21,6 +22,8 @@
 #include "andros/cli/settings.hpp"
 #include "andros/record/session.hpp"
 #include "andros/run/operating_state.hpp"
+#include "andros/trainer/course_file.hpp"
+#include "andros/trainer/course_score.hpp"
 #include "andros/trainer/trainer_feed.hpp"
 #include "andros/trainer/trainer_page.hpp"
 #include "andros/trainer/trainer_replay.hpp"
@@ -39,6 +42,7 @@ struct TrainerOptions {
   std::string listen;        ///< --listen ADDR:PORT; empty: 127.0.0.1 and the default port
   bool exit_at_end = false;  ///< --exit-at-end: no page kept up after the script
   std::string session;       ///< --session NAME: a recorded session replayed as motion, no loop at all
+  std::string course;        ///< --course NAME|FILE; empty: open ground
   std::size_t clients = trainer::HubLimits{}.max_clients;
 };
 
@@ -60,6 +64,12 @@ class Trainer {
     h.start = [this](const Settings&) { return start(); };
     h.observe = [this](const run::TickReport& r, const view::RunStatusBoard& board) { observe(r, board); };
     h.after_run = [this](ShutdownRequest& stop) { after_run(stop); };
+    if (!opt_.course.empty()) {
+      h.opening_record = [this] {
+        return record::payload::course({course_->course.name, course_->path, course_->text});
+      };
+      h.closing_record = [this] { return record::payload::score(last_t_ms_, trainer::score_json(scorer_->score())); };
+    }
     return h;
   }
 
@@ -74,7 +84,14 @@ class Trainer {
     }
     listen_ = opt_.listen.empty() ? trainer::ListenAddress{} : trainer::parse_listen(opt_.listen, {"--listen"});
     hub_ = std::make_unique<trainer::StreamHub>(trainer::HubLimits{.max_clients = opt_.clients});
-    feed_ = std::make_unique<trainer::TrainerFeed>(vehicle::figures_for(config.robot), *hub_);
+    const auto& figures = vehicle::figures_for(config.robot);
+    std::optional<vehicle::Course> course;
+    if (!opt_.course.empty()) {
+      course_ = trainer::load_course(opt_.course);
+      course = course_->course;
+      scorer_.emplace(figures, course_->course);
+    }
+    feed_ = std::make_unique<trainer::TrainerFeed>(figures, *hub_, course);
   }
 
   /// The server, on a thread of its own; its failure never stops driving.
@@ -111,13 +128,35 @@ class Trainer {
     const bool delivered = r.sent && r.result == link::SendResult::kSent;
     feed_->queue_tick(r.t_ms, r.data, delivered);
     wake_.release();
+    observe_course(r);
     feed_->observe(trainer::LoopFacts{.tick = r.tick,
                                       .t_ms = r.t_ms,
                                       .state = words_,
                                       .state_name = std::string(run::to_string(r.state)),
                                       .layer = layer_,
                                       .sent = delivered,
-                                      .pad = {}});  // the pad: the feed's own, from the input's pump
+                                      .pad = {},  // the pad: the feed's own, from the input's pump
+                                      .score = score_});
+  }
+
+  // --- The course's score (docs/trainer.md, "The score") ---
+
+  /// Each tick into the scorer, on the loop's thread (the frames at their
+  /// ticks' times: the same session gives the same score); the page's copy of
+  /// the score made again every few ticks.
+  void observe_course(const run::TickReport& r) {
+    if (!scorer_) return;
+    scorer_->on_tick(r);
+    if (r.tick % kWordsEveryTicks == 0) score_ = trainer::score_json(scorer_->score());
+  }
+
+  /// The score on the terminal when the input has ended, and on the page.
+  void print_score() {
+    if (!scorer_) return;
+    const auto score = scorer_->score();
+    score_ = trainer::score_json(score);
+    std::fputs(trainer::score_text(score).c_str(), stdout);
+    std::fflush(stdout);
   }
 
   /// The motion thread: the loop's ticks into the model as they come (the
@@ -146,6 +185,7 @@ class Trainer {
     if (const auto lost = feed_->lost_ticks(); lost != 0) {
       spdlog::warn("trainer: {} ticks found the model's queue full: the model is not the session's", lost);
     }
+    print_score();
     if (opt_.exit_at_end || !server_ || stop.requested()) return;
     spdlog::info("trainer: the input has ended; the page stays up at {} until Ctrl-C", listen_.url());
     // The page shows where the vehicle ended, and says the run is over (not "shutting down" for ever).
@@ -154,7 +194,8 @@ class Trainer {
                                       .state = "INPUT ENDED: the page stays up until Ctrl-C",
                                       .state_name = "ended",
                                       .layer = "",
-                                      .pad = {}});
+                                      .pad = {},
+                                      .score = score_});
     feed_->republish();
     stop.sleep_until(kNoDeadline);
   }
@@ -167,6 +208,9 @@ class Trainer {
   trainer::ListenAddress listen_;
   std::unique_ptr<trainer::StreamHub> hub_;
   std::unique_ptr<trainer::TrainerFeed> feed_;
+  std::optional<trainer::CourseFile> course_;
+  std::optional<trainer::CourseScorer> scorer_;  ///< the loop's thread's
+  std::string score_;                            ///< the latest score, as JSON ("" without a course)
   std::optional<trainer::WatchedInput> input_;
   std::unique_ptr<trainer::TrainerServer> server_;
   std::optional<run::OpState> last_state_;
@@ -189,6 +233,9 @@ int replay_session(const TrainerOptions& opt) {
       throw InputError(SourcePos{std::string(flag_name(row))},
                        "not with --session: the session is replayed with what it recorded");
     }
+  }
+  if (!opt.course.empty()) {
+    throw InputError(SourcePos{"--course"}, "not with --session: a session is replayed on the course it recorded");
   }
   auto checked = record::read_checked_session(opt.session);
   if (checked.unreadable) throw *checked.unreadable;
@@ -272,6 +319,11 @@ void add_trainer_command(CLI::App& app, int& exit_code) {
                   "'sessions' prints it) as the vehicle's motion, with play, pause, speed and a time\n"
                   "slider on the page: no link, no loop, nothing read but the session (docs/trainer.md)")
       ->type_name("NAME");
+  cmd->add_option(
+         "--course", opt->course,
+         "A training course: a shipped one by NAME (basic, stairs, car, weapons) or a course FILE\n"
+         "(docs/trainer.md, \"Courses\"); walls stop the vehicle, the page draws the course, the score ends the run")
+      ->type_name("NAME|FILE");
   cmd->callback([opt, &exit_code] {
     if (!opt->session.empty()) {
       opt->session = find_session(opt->session);  // a bare session name, as `sessions` prints it

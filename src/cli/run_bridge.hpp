@@ -35,6 +35,10 @@ struct RunHooks {
   std::function<void(const run::TickReport&, const view::RunStatusBoard&)> observe;
   /// After the loop's neutral frames, before the closing lines (the trainer keeps its page up).
   std::function<void(ShutdownRequest&)> after_run;
+  /// Records the command adds to the session (their payloads): after its header (the trainer's course), and
+  /// before its end record (the trainer's score).
+  std::function<std::string()> opening_record;
+  std::function<std::string()> closing_record;
 };
 
 int run_bridge(const RunOptions& opt, const RunHooks& hooks);

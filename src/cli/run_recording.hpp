@@ -31,6 +31,8 @@ class RunRecording {
   /// The loop's controls, recorded; reload's settings are asked after an ok reload.
   run::RunControl control(run::RunControl inner, const Settings& config, const RunReload& reload);
   void observe(const run::TickReport& report);
+  /// A record the command adds (the trainer's course after the header, its score before the end).
+  void add(std::string payload) { recorder_.add(std::move(payload)); }
   /// After the run: the end record, the writer closed (a stalled disk is
   /// waited for a second at most), the closing line logged, the folder rotated.
   void finish(const std::string& why);

@@ -142,6 +142,7 @@ protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t
   protocol::ControlState state = resting_state();
   c_.status.consent = c_.rest.consent_state();
   SafetyContext ctx{enabled, options_.weapons, {}, mapping_->center, mapping_->brake, c_.rest.consent()};
+  c_.status.fire_refused = false;
   if (enabled) {
     for (const auto& ref : effective_[static_cast<std::size_t>(c_.layer + 1)]) {
       apply(input, ref, std::max<std::int64_t>(now_ms - last_ms_, 0), state, ctx.armed);
@@ -154,6 +155,7 @@ protocol::DataBytes Engine::compute(const input::InputState& input, std::int64_t
     clear_toggles();  // releasing the deadman stops everything a toggle started
   }
   c_.status.armed = c_.status.weapons_mode && ctx.armed.any();
+  c_.status.fire_refused = c_.status.fire_refused && c_.status.weapons_mode;
   // Presses made while not enabled are consumed here, never replayed later.
   for (const auto key : buttons_) c_.seen_presses[key] = input.button(key).presses;
   last_ms_ = now_ms;

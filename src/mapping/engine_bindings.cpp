@@ -92,6 +92,9 @@ void Engine::apply(const input::InputState& input, BindingRef ref, std::int64_t 
                    // Two people: the operator's arming input and the supervisor's consent, if asked for.
                    const bool arm = b.arm && held(input, *b.arm) && c_.rest.consent();
                    if (arm) armed.set(b.signal);
+                   if (b.arm && held(input, *b.arm) && !c_.rest.consent() && active(b.input)) {
+                     c_.status.fire_refused = true;
+                   }
                    if (arm && active(b.input)) out[b.signal] = 1;
                  },
                  [&](const PairBinding& b) {

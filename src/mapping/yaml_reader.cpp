@@ -36,7 +36,7 @@ std::string catalogue_names() {
 // Walks the document as the loader will, each alias as a copy of what it
 // names, counting nodes as they are found so that the walk itself is bounded.
 // Returns how many it found, at most budget.
-std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t budget) {
+std::size_t count_nodes(const Reader& r, std::string_view kind, const YAML::Node& root, std::size_t budget) {
   std::vector<YAML::Node> todo{root};
   std::size_t found = 1;
   while (!todo.empty()) {
@@ -45,7 +45,7 @@ std::size_t count_nodes(const Reader& r, const YAML::Node& root, std::size_t bud
     if (!node.IsMap() && !node.IsSequence()) continue;
     found += node.IsMap() ? 2 * node.size() : node.size();
     if (found > budget) {
-      r.fail(node, "the mapping is too large: more than " + std::to_string(kMaxNodes) +
+      r.fail(node, "the " + std::string(kind) + " is too large: more than " + std::to_string(kMaxNodes) +
                        " YAML nodes in this file and the files it extends, counting each alias as a copy of what "
                        "it names (docs/mapping.md)");
     }
@@ -128,9 +128,9 @@ YAML::Node Reader::load_document(std::size_t& budget) const {
   }
   if (second) {
     throw InputError(SourcePos{file_, second->line + 1, second->column + 1},
-                     "a second YAML document ('---'): a mapping file holds one");
+                     "a second YAML document ('---'): a " + std::string(kind_) + " file holds one");
   }
-  budget -= count_nodes(*this, document, budget);
+  budget -= count_nodes(*this, kind_, document, budget);
   return document;
 }
 

@@ -24,7 +24,9 @@ class Reader {
   explicit Reader(std::string file) : file_(std::move(file)) {}
   /// Reads text as the contents of file (which need not exist): `learn`
   /// checks what it is about to write under the name it will have.
-  Reader(std::string file, const std::string* text) : file_(std::move(file)), text_(text) {}
+  /// kind: what the file is, as its errors name it ("mapping"; the trainer's "course").
+  Reader(std::string file, const std::string* text, std::string_view kind = "mapping")
+      : file_(std::move(file)), text_(text), kind_(kind) {}
 
   /// The file's one YAML document (a null node for an empty file), its nodes
   /// taken from budget. A second document, or more nodes than budget holds,
@@ -57,6 +59,7 @@ class Reader {
  private:
   std::string file_;
   const std::string* text_ = nullptr;
+  std::string_view kind_ = "mapping";
 };
 
 }  // namespace andros::mapping::yaml

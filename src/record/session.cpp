@@ -117,6 +117,18 @@ std::string frame(const run::TickReport& r, std::int64_t gap) {
   return frame(FrameRecord{
       .tick = r.tick, .t_ms = r.t_ms, .offered = r.sent, .result = r.result, .data = r.data, .gap = gap, .line = 0});
 }
+std::string course(const CourseRecord& c) {
+  const nlohmann::json j{{"name", text_json(c.name)},
+                         {"path", text_json(c.path)},
+                         {"sha256", sha256_hex(c.text)},
+                         {"text", text_json(c.text)}};
+  return "course " + j.dump();
+}
+std::string score(std::int64_t t_ms, std::string_view json) {
+  // Made again from the object: one line whatever was passed.
+  return "score " + std::to_string(t_ms) + " " +
+         nlohmann::json::parse(json).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 std::string state(std::int64_t t_ms, run::OpState s) {
   return "state " + std::to_string(t_ms) + " " + std::string(run::to_string(s));
 }

@@ -302,6 +302,20 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     s.dropped_why = f.rest().empty() ? std::string() : f.text(s.format);
   } else if (kind == "end") {
     s.end = read_end(f, s);
+  } else if (kind == "course") {
+    // A trainer run's course, its text checked against its SHA-256 as a mapping's is.
+    const auto j = f.json();
+    CourseRecord c{f.text(j.at("name"), s.format), f.text(j.at("path"), s.format), f.text(j.at("text"), s.format),
+                   pos.line};
+    if (sha256_hex(c.text) != j.at("sha256").get<std::string>()) {
+      throw InputError(pos, "the course's text does not match its SHA-256");
+    }
+    s.course = std::move(c);
+  } else if (kind == "score") {
+    const auto t = time(f);
+    const auto j = f.json();
+    if (!j.is_object()) throw InputError(pos, "a score must be a JSON object");
+    s.score = ScoreRecord{t, j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), pos.line};
   } else {
     throw InputError(pos, "unknown record " + quote(kind));
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "andros/trainer/course_view.hpp"
 #include "andros/trainer/trainer_replay.hpp"
 #include "andros/view/session_motion.hpp"
 
@@ -87,6 +88,8 @@ json stream_json(const vehicle::VehicleModel& model, const LoopFacts& facts) {
         {"name", facts.pad.name},
         {"buttons", facts.pad.buttons},
         {"axes", axes}}},
+      {"course", course_state_json(model)},
+      {"score", facts.score.empty() ? json(nullptr) : json::parse(facts.score)},
   };
 }
 
@@ -228,6 +231,7 @@ std::string TrainerFeed::state_with_trail() const {
   for (const auto& p : model_.trail()) trail.push_back({r3(p.x), r3(p.y)});
   out["trail"] = std::move(trail);
   const auto& f = model_.figures();
+  if (model_.course()) out["course_map"] = course_map_json(*model_.course());
   out["figures"] = {{"length", f.length_m.value},       {"width", f.width_m.value},     {"height", f.height_m.value},
                     {"upper_arm", f.upper_arm_m.value}, {"forearm", f.forearm_m.value}, {"flipper", f.flipper_m.value}};
   return out.dump(-1, ' ', false, json::error_handler_t::replace);

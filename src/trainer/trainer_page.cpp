@@ -56,6 +56,12 @@ body.replay main{height:calc(100vh - 40px - 58px)}
 #slider{width:100%;margin:0}
 #lane{width:100%;height:14px;display:block;background:#444}
 #rnote{color:#ffb74d;max-width:360px;white-space:nowrap;overflow:hidden;text-overflow:ellipsis}
+#coursebox{margin-bottom:8px;padding:4px;border:1px solid #556;border-radius:3px}
+#score div{font-size:13px}
+#score .result{font-weight:bold}
+#score .done{color:#6fdc7d}
+#score .warn{color:#ffb347;font-weight:bold}
+#score .bad{color:#ff6b6b;font-weight:bold}
 </style></head>
 <body>
 <header><h1>andros-bridge TRAINER</h1><span id="robot">simulated vehicle</span>
@@ -63,7 +69,7 @@ body.replay main{height:calc(100vh - 40px - 58px)}
 <main>
 <section id="top"><h2>Top view (x east, y north; REP 103)</h2>
 <svg id="topsvg" viewBox="0 0 420 640" preserveAspectRatio="xMidYMid meet">
-<g id="grid"></g><polyline id="trail" fill="none" stroke="#ffd75e" stroke-width="2" points=""/>
+<g id="grid"></g><g id="course"></g><polyline id="trail" fill="none" stroke="#ffd75e" stroke-width="2" points=""/>
 <g id="vehicle" data-x="0" data-y="0" data-heading="0" data-tick="-1" data-time="-1">
 <rect id="body" fill="#c8ccd0" stroke="#222"/><path id="nose" fill="#e03131"/><line id="armtop" stroke="#2f7de1" stroke-width="4"/>
 </g>
@@ -77,7 +83,8 @@ body.replay main{height:calc(100vh - 40px - 58px)}
 <svg id="sidesvg" viewBox="-1.9 -2.75 4.6 2.95" preserveAspectRatio="xMidYMid meet">
 <line x1="-1.9" y1="0" x2="2.7" y2="0" stroke="#777" stroke-width="0.01"/>
 <g id="sidebody"></g></svg></section>
-<section id="panel"><h2>Operating state</h2><div id="words">-</div>
+<section id="panel"><div id="coursebox" hidden><h2>Course</h2><div id="score"></div></div>
+<h2>Operating state</h2><div id="words">-</div>
 <h2 style="margin-top:8px">Pad inputs</h2><div id="pad">-</div><table id="axes"></table>
 <h2 style="margin-top:8px">Fired</h2><div id="weapons"></div><div id="laser"></div>
 <h2 style="margin-top:8px">Vehicle</h2><table id="facts"></table></section>
@@ -119,8 +126,9 @@ function drawTop(s) {
   const y0 = Math.floor(cy - H / 2 / PX), y1 = Math.ceil(cy + H / 2 / PX);
   for (let x = x0; x <= x1; x++) el("line", {x1:sx(x),y1:0,x2:sx(x),y2:H,stroke:x===0?"#9aa":"#4b5540","stroke-width":x%5===0?1.5:0.7}, g);
   for (let y = y0; y <= y1; y++) el("line", {x1:0,y1:sy(y),x2:W,y2:sy(y),stroke:y===0?"#9aa":"#4b5540","stroke-width":y%5===0?1.5:0.7}, g);
-  for (const [lx, ly] of LANDMARKS) el("circle", {cx:sx(lx),cy:sy(ly),r:5,fill:"#ff8c1a",stroke:"#000"}, g);
+  if (!courseMap) for (const [lx, ly] of LANDMARKS) el("circle", {cx:sx(lx),cy:sy(ly),r:5,fill:"#ff8c1a",stroke:"#000"}, g);
   el("circle", {cx:sx(0),cy:sy(0),r:4,fill:"none",stroke:"#fff"}, g);
+  drawCourse(s, sx, sy);
   $("trail").setAttribute("points", trail.map(p => sx(p[0]).toFixed(1) + "," + sy(p[1]).toFixed(1)).join(" "));
   const L = fig.length * PX, Wd = fig.width * PX;
   const b = $("body");
@@ -187,7 +195,7 @@ function cameraEye(s, which) {
 function drawCamera(canvas, s, which) {
   const ctx = canvas.getContext("2d"), W = canvas.width, Hh = canvas.height;
   if (which === "none") { ctx.fillStyle = "#111"; ctx.fillRect(0, 0, W, Hh); return; }
-  const e = cameraEye(s, which), y = rad(e.yaw), p = rad(e.pitch);
+  const e = onCourse(s, cameraEye(s, which)), y = rad(e.yaw), p = rad(e.pitch);
   const f = [Math.cos(y) * Math.cos(p), Math.sin(y) * Math.cos(p), Math.sin(p)];
   const r = [Math.sin(y), -Math.cos(y), 0];
   const u = [-Math.cos(y) * Math.sin(p), -Math.sin(y) * Math.sin(p), Math.cos(p)];
@@ -212,7 +220,8 @@ function drawCamera(canvas, s, which) {
     seg([gx + j, gy + i, 0], [gx + j + 1, gy + i, 0], (gy + i) === 0 ? "#bbb" : "#5b6648", 1);
   }
   for (let k = 1; k < trail.length; k++) seg([trail[k-1][0], trail[k-1][1], 0.01], [trail[k][0], trail[k][1], 0.01], "#ffd75e", 2);
-  for (const [lx, ly] of LANDMARKS) {
+  if (courseMap) drawCourseInCamera(s, seg);
+  else for (const [lx, ly] of LANDMARKS) {
     const base = proj([lx, ly, 0]), top = proj([lx, ly, 0.5]);
     if (!base || !top) continue;
     const w = Math.max(2, (base[1] - top[1]) * 0.5);
@@ -274,12 +283,147 @@ function drawPanel(s) {
   text("insetlabel", "inset: " + c.inset);
   $("inset").style.display = c.inset === "none" ? "none" : "block";
 }
+// --- The course (docs/trainer.md, "Courses"): its map in the top view, the score in the panel ---
+let courseMap = null;
+function corners(a, sx, sy) {
+  const h = rad(a.heading), l = a.size[0] / 2, w = a.size[1] / 2;
+  const c = Math.cos(h), n = Math.sin(h);
+  return [[l, w], [l, -w], [-l, -w], [-l, w]].map(([u, v]) =>
+    `${sx(a.at[0] + u * c - v * n).toFixed(1)},${sy(a.at[1] + u * n + v * c).toFixed(1)}`).join(" ");
+}
+function drawCourse(s, sx, sy) {
+  const g = $("course"); g.textContent = "";
+  if (!courseMap) return;
+  const m = courseMap, cs = s.course || {};
+  const poly = (a, attrs) => el("polygon", Object.assign({points: corners(a, sx, sy)}, attrs), g);
+  const gx = m.ground.x, gy = m.ground.y;
+  el("rect", {x: sx(gx[0]), y: sy(gy[1]), width: (gx[1] - gx[0]) * PX, height: (gy[1] - gy[0]) * PX,
+              fill: "none", stroke: "#e8e8e8", "stroke-width": 2, "stroke-dasharray": "6 4"}, g);
+  for (const l of m.landings) poly(l.area, {fill: "#5d6b7a", stroke: "#aab"});
+  for (const sl of m.slopes) {
+    poly(sl.area, {fill: sl.kind === "stairs" ? "#6d5a45" : "#6b6b4a", stroke: "#cc9"});
+    const h = rad(sl.area.heading), L = sl.area.size[0] / 2;
+    // Steps (or the ramp's fall line) across it, and its angle.
+    for (let k = -4; k <= 4; k++) {
+      const u = k * L / 5, W = sl.area.size[1] / 2;
+      el("line", {x1: sx(sl.area.at[0] + u * Math.cos(h) - W * Math.sin(h)), y1: sy(sl.area.at[1] + u * Math.sin(h) + W * Math.cos(h)),
+                  x2: sx(sl.area.at[0] + u * Math.cos(h) + W * Math.sin(h)), y2: sy(sl.area.at[1] + u * Math.sin(h) - W * Math.cos(h)),
+                  stroke: "#000", "stroke-opacity": 0.35}, g);
+    }
+    const t = el("text", {x: sx(sl.area.at[0]), y: sy(sl.area.at[1]), fill: "#fff", "font-size": 12, "text-anchor": "middle"}, g);
+    t.textContent = `${sl.kind} ${sl.angle}\u00b0 \u2191`;
+  }
+  if (m.finish) poly(m.finish, {fill: cs.in_finish ? "#2e7d32" : "none", stroke: "#6fdc7d", "stroke-width": 2, "stroke-dasharray": "4 3"});
+  if (m.package && m.package.drop) poly(m.package.drop, {fill: cs.package && cs.package.delivered ? "#2e7d32" : "none", stroke: "#ffd75e", "stroke-width": 2, "stroke-dasharray": "4 3"});
+  for (const b of m.blocks) poly(b.area, {fill: "#8d8f94", stroke: "#222"});
+  m.gates.forEach((gt, i) => {
+    const h = rad(gt.heading), W = gt.width / 2, passed = cs.gates > i, next = cs.gates === i;
+    const ax = gt.at[0] - W * Math.sin(h), ay = gt.at[1] + W * Math.cos(h), bx = gt.at[0] + W * Math.sin(h), by = gt.at[1] - W * Math.cos(h);
+    el("line", {x1: sx(ax), y1: sy(ay), x2: sx(bx), y2: sy(by), stroke: passed ? "#6fdc7d" : next ? "#ffd75e" : "#ccc",
+                "stroke-width": 3, "stroke-dasharray": passed ? "" : "5 4"}, g);
+    for (const [px, py] of [[ax, ay], [bx, by]]) el("circle", {cx: sx(px), cy: sy(py), r: 4, fill: "#e03131"}, g);
+    const t = el("text", {x: sx(ax) + 6, y: sy(ay) - 4, fill: "#fff", "font-size": 13, "font-weight": "bold"}, g);
+    t.textContent = String(i + 1);
+  });
+  if (m.door) {
+    const h = rad(m.door.closed + (cs.door_angle || 0)), d = m.door;
+    el("line", {x1: sx(d.hinge[0]), y1: sy(d.hinge[1]), x2: sx(d.hinge[0] + d.width * Math.cos(h)), y2: sy(d.hinge[1] + d.width * Math.sin(h)),
+                stroke: "#4fc3f7", "stroke-width": 5}, g);
+  }
+  if (m.target) {
+    el("circle", {cx: sx(m.target.at[0]), cy: sy(m.target.at[1]), r: Math.max(4, m.target.radius * PX), fill: "none",
+                  stroke: cs.laser_on_target ? "#ff3b3b" : "#fff", "stroke-width": 3}, g);
+    el("circle", {cx: sx(m.target.at[0]), cy: sy(m.target.at[1]), r: 3, fill: "#ff3b3b"}, g);
+  }
+  if (m.package && cs.package) {
+    const p = cs.package, z = m.package.size * PX;
+    el("rect", {x: sx(p.at[0]) - z / 2, y: sy(p.at[1]) - z / 2, width: z, height: z, fill: "#c98a2b", stroke: p.held ? "#fff" : "#000", "stroke-width": 2}, g);
+  }
+}
+// The course in a camera's picture: each block, slope and landing as its edges, the door, the gates' posts, the target.
+function drawCourseInCamera(s, seg) {
+  const m = courseMap, cs = s.course || {};
+  const box = (a, z0, z1, color) => {
+    const h = rad(a.heading), c = Math.cos(h), n = Math.sin(h), l = a.size[0] / 2, w = a.size[1] / 2;
+    const pts = [[l, w], [l, -w], [-l, -w], [-l, w]].map(([u, v]) => [a.at[0] + u * c - v * n, a.at[1] + u * n + v * c]);
+    const lo = k => z0 instanceof Array ? z0[k] : z0, hi = k => z1 instanceof Array ? z1[k] : z1;
+    for (let k = 0; k < 4; k++) {
+      const p = pts[k], q = pts[(k + 1) % 4];
+      seg([p[0], p[1], lo(k)], [q[0], q[1], lo((k + 1) % 4)], color, 2);
+      seg([p[0], p[1], hi(k)], [q[0], q[1], hi((k + 1) % 4)], color, 2);
+      seg([p[0], p[1], lo(k)], [p[0], p[1], hi(k)], color, 2);
+    }
+  };
+  for (const b of m.blocks) box(b.area, 0, b.height, "#d0d2d6");
+  for (const l of m.landings) box(l.area, 0, l.height, "#9fb3c8");
+  for (const sl of m.slopes) {
+    const rise = sl.area.size[0] * Math.tan(rad(sl.angle));
+    box(sl.area, 0, [rise, rise, 0, 0], sl.kind === "stairs" ? "#d9a066" : "#c8c870");
+  }
+  if (m.door) {
+    const h = rad(m.door.closed + (cs.door_angle || 0)), d = m.door, e = [d.hinge[0] + d.width * Math.cos(h), d.hinge[1] + d.width * Math.sin(h)];
+    for (const z of [0, 1.4]) seg([d.hinge[0], d.hinge[1], z], [e[0], e[1], z], "#4fc3f7", 3);
+    seg([e[0], e[1], 0], [e[0], e[1], 1.4], "#4fc3f7", 3);
+  }
+  for (const gt of m.gates) {
+    const h = rad(gt.heading), W = gt.width / 2;
+    for (const sgn of [-1, 1]) {
+      const x = gt.at[0] + sgn * W * Math.sin(h), y = gt.at[1] - sgn * W * Math.cos(h);
+      seg([x, y, 0], [x, y, 1.2], "#e03131", 4);
+    }
+  }
+  if (m.target) {
+    const t = m.target;
+    for (let k = 0; k < 12; k++) {
+      const a0 = k * Math.PI / 6, a1 = (k + 1) * Math.PI / 6, r = t.radius;
+      seg([t.at[0], t.at[1] + r * Math.cos(a0), t.z + r * Math.sin(a0)], [t.at[0], t.at[1] + r * Math.cos(a1), t.z + r * Math.sin(a1)], cs.laser_on_target ? "#ff3b3b" : "#fff", 3);
+    }
+  }
+  if (cs.package && m.package) {
+    const p = cs.package, z = m.package.size;
+    box({at: p.at, size: [z, z], heading: 0}, p.z, p.z + z, "#c98a2b");
+  }
+}
+// A camera on the vehicle raised and pitched with it on a course's slopes and landings.
+function onCourse(s, e) {
+  if (!s.course) return e;
+  e.p[2] += s.course.elevation;
+  e.pitch += s.course.pitch * Math.cos(rad(e.yaw - s.pose.heading));
+  return e;
+}
+// The side view pitched with the slope under the vehicle (nose up: counter-clockwise on the screen).
+function drawPitch(s) {
+  const pitch = s.course ? s.course.pitch : 0;
+  $("sidebody").setAttribute("transform", pitch ? `rotate(${(-pitch).toFixed(2)})` : "");
+}
+function drawScore(s) {
+  const box = $("coursebox");
+  if (!courseMap) return;
+  box.hidden = false;
+  const sc = s.score, cs = s.course || {}, m = courseMap, out = $("score");
+  out.textContent = "";
+  const line = (t, cls) => { const d = document.createElement("div"); d.textContent = t; if (cls) d.className = cls; out.appendChild(d); };
+  line(courseMap.name + (sc ? ": " + sc.result : ""), "result " + (sc && sc.completed ? "done" : ""));
+  if (cs.tipped) line("TIPPED OVER: the run has failed", "bad");
+  else if (cs.tip_warning) line(`TIPPING: ${cs.tip_margin.toFixed(2)} m from tipping over`, "warn");
+  if (cs.elevation > 0.005 || Math.abs(cs.pitch) > 0.05) line(`height ${cs.elevation.toFixed(2)} m, pitch ${cs.pitch.toFixed(0)}\u00b0`);
+  if (cs.climb_blocked) line("too steep, or stairs with the front flippers down: it will not climb", "warn");
+  if (cs.touching) line("CONTACT: against a wall", "warn");
+  if (!sc) return;
+  line(`time ${sc.time_s.toFixed(1)} s` + (sc.time_limit_s > 0 ? ` of ${sc.time_limit_s} s` : "") +
+       (sc.gates_total > 0 ? `   gates ${sc.gates}/${sc.gates_total}` : "") + `   contacts ${sc.contacts}`);
+  line(`stops ${sc.stops.length}` + sc.stops.map(p => `; ${(p.t_ms / 1000).toFixed(1)} s ${p.by} (${p.why})`).join(""));
+  line(`enabled with inputs not at rest: ${sc.not_at_rest}`);
+  line(`fired ${sc.fired}: on target ${sc.hits}, laser off target ${sc.fired_off_target}, refused (no consent) ${sc.fire_refused}`);
+  if (m.package && cs.package) line(`package: ${cs.package.delivered ? "delivered" : cs.package.held ? "held" : cs.package.lifted ? "set down" : "not lifted"}` +
+                       (courseMap.door ? `   door ${cs.door_angle.toFixed(0)}\u00b0 open` : ""));
+}
 function draw() {
   requestAnimationFrame(draw);
   if (!latest || latest === drawn) return;
   drawn = latest;
   const s = latest;
-  drawTop(s); drawSide(s);
+  drawTop(s); drawSide(s); drawScore(s); drawPitch(s);
   drawCamera($("cam"), s, s.cameras.main);
   if (s.cameras.inset !== "none") drawCamera($("inset"), s, s.cameras.inset);
   drawPanel(s);
@@ -292,6 +436,7 @@ function take(s) {
 function live() {
   fetch("/state").then(r => r.json()).then(s => {
     if (s.figures) fig = s.figures;
+    if (s.course_map) courseMap = s.course_map;
     if (s.trail) trail = s.trail.slice();
     take(s);
     const es = new EventSource("/events");
@@ -365,6 +510,7 @@ function startReplay(data) {
   replay.data = data;
   document.body.classList.add("replay");
   if (data.figures) fig = data.figures;
+  if (data.course_map) courseMap = data.course_map;
   text("link", "replay of " + data.session);
   text("rnote", data.note);
   $("slider").max = data.length_ms;

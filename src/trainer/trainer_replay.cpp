@@ -9,6 +9,8 @@
 
 #include "andros/base/sha256.hpp"
 #include "andros/base/text.hpp"
+#include "andros/trainer/course_file.hpp"
+#include "andros/trainer/course_view.hpp"
 #include "andros/trainer/trainer_feed.hpp"
 #include "andros/vehicle/robot_figures.hpp"
 
@@ -34,6 +36,11 @@ std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_hand
 
 }  // namespace
 
+std::optional<vehicle::Course> recorded_course(const record::Session& session) {
+  if (!session.course) return std::nullopt;
+  return parse_course(session.course->path.empty() ? session.course->name : session.course->path, session.course->text);
+}
+
 std::string trail_summary(const vehicle::VehicleModel& model) {
   // Hexadecimal floating point: every bit of every point, in the digest.
   std::string bits;
@@ -47,7 +54,7 @@ std::string trail_summary(const vehicle::VehicleModel& model) {
 SessionReplay::SessionReplay(record::Session session, std::string note)
     : session_(std::move(session)),
       note_(std::move(note)),
-      motion_(session_, vehicle::figures_for(session_.settings.robot)),
+      motion_(session_, vehicle::figures_for(session_.settings.robot), recorded_course(session_)),
       samples_(view::plot_samples(session_, view::PlotAxis{0, -1})) {}
 
 const view::PlotSample* SessionReplay::sample_at(std::int64_t t_ms) const {
@@ -58,7 +65,8 @@ const view::PlotSample* SessionReplay::sample_at(std::int64_t t_ms) const {
 }
 
 std::string SessionReplay::object(const vehicle::VehicleModel& model, std::int64_t tick, std::int64_t t_ms) const {
-  LoopFacts facts{.tick = tick, .t_ms = t_ms, .state = "no tick yet", .state_name = "", .layer = "", .pad = {}};
+  LoopFacts facts{
+      .tick = tick, .t_ms = t_ms, .state = "no tick yet", .state_name = "", .layer = "", .pad = {}, .score = {}};
   if (const auto* s = sample_at(t_ms)) {
     facts.state = upper(view::state_swatch(*s).name);
     facts.state_name = std::string(run::to_string(s->state));
@@ -80,6 +88,7 @@ std::string SessionReplay::end_state() const {
   for (const auto& p : model.trail()) trail.push_back({r3(p.x), r3(p.y)});
   out["trail"] = std::move(trail);
   out["figures"] = figures_json(model.figures());
+  if (model.course()) out["course_map"] = course_map_json(*model.course());
   return dump(out);
 }
 
@@ -94,14 +103,17 @@ std::string SessionReplay::replay_json() const {
     if (!lane.empty() && lane.back()["name"] == name) continue;
     lane.push_back({{"from", samples_[i].t_ms}, {"name", name}, {"colour", std::string(swatch.colour)}});
   }
-  return dump({{"replay", true},
-               {"session", printable_text(session_.path)},
-               {"note", printable_text(note_)},
-               {"robot", printable_text(session_.settings.robot)},
-               {"length_ms", motion_.length_ms()},
-               {"trail", std::move(trail)},
-               {"lane", std::move(lane)},
-               {"figures", figures_json(motion_.end().figures())}});
+  json out = {{"replay", true},
+              {"session", printable_text(session_.path)},
+              {"note", printable_text(note_)},
+              {"robot", printable_text(session_.settings.robot)},
+              {"length_ms", motion_.length_ms()},
+              {"trail", std::move(trail)},
+              {"lane", std::move(lane)},
+              {"figures", figures_json(motion_.end().figures())}};
+  // A trainer run's course, drawn as the live page draws it (from the recorded text).
+  if (motion_.end().course()) out["course_map"] = course_map_json(*motion_.end().course());
+  return dump(out);
 }
 
 }  // namespace andros::trainer

@@ -56,6 +56,17 @@ constexpr RobotFigures make(std::string_view robot, bool published) {
   f.extender = joint(0, 0.5, 0.1);
   f.watchdog_ms = assumed(500);
   f.deadband_counts = assumed(2);
+  f.gripper_m = assumed(0.22);
+  // Stair climbing is published; the steepest flight it climbs is not found
+  // (45 degrees: assumed, a steep stair).
+  f.max_climb_deg = assumed(45);
+  f.stairs_flipper_deg = assumed(15);
+  f.max_step_m = assumed(0.15);
+  f.max_drop_m = assumed(0.3);
+  f.body_cog_m = assumed(0.3);
+  f.arm_mass_kg = assumed(25);
+  f.tip_warning_m = assumed(0.15);
+  f.grip_reach_m = assumed(0.12);
   return f;
 }
 

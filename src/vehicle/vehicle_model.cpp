@@ -6,6 +6,7 @@
 
 #include "andros/protocol/frame.hpp"
 #include "andros/protocol/signals.hpp"
+#include "angles.hpp"
 
 namespace andros::vehicle {
 namespace {
@@ -19,16 +20,6 @@ constexpr std::array<protocol::SignalId, kWeaponCount> kWeapons = {
 constexpr double kNsPerSecond = 1e9;
 constexpr double kKmhPerMps = 3.6;
 constexpr double kByteMax = 255.0;
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-/// An angle in (-180, 180].
-double wrap_degrees(double a) {
-  a = std::fmod(a, 360.0);
-  if (a <= -180.0) a += 360.0;
-  if (a > 180.0) a -= 360.0;
-  return a;
-}
 
 /// A centred byte as -1 .. 1 (128 still, within the deadband too).
 double centred(std::uint8_t byte, double deadband) {
@@ -74,8 +65,19 @@ Camera inset_camera(const protocol::ControlState& s) {
 
 std::string_view weapon_name(std::size_t index) { return protocol::info(kWeapons.at(index)).name; }
 
-VehicleModel::VehicleModel(const RobotFigures& figures) : figures_(figures) {
+VehicleModel::VehicleModel(const RobotFigures& figures, std::optional<Course> course)
+    : figures_(figures), course_(std::move(course)) {
   state_.cameras.zoom = figures_.zoom.min.value;
+  if (course_) {
+    state_.pose = {course_->start.x, course_->start.y, wrap_degrees(course_->start_heading)};
+    // Where it starts, it rests level: a course's start is on flat ground or on one slope.
+    // Where it starts, it rests level: a course's start is on flat ground or on one slope.
+    state_.course.elevation = course_->elevation(course_->start);
+    if (course_->package) {
+      state_.course.package = course_->package->at;
+      state_.course.package_z = course_->package->z;
+    }
+  }
   trail_.push_back(state_.pose);
 }
 
@@ -119,22 +121,32 @@ void VehicleModel::integrate(std::int64_t until_ns) {
   state_.time_ns = until_ns;
 }
 
-void VehicleModel::commanded_rates() {
-  const auto& c = command_;
-  const auto& f = figures_;
-  // Skid steer.
-  const double top = f.top_speed_kmh.value / kKmhPerMps * c.speed_scale;
-  state_.speed = top * (c.left + c.right) / 2;
-  state_.turn_rate = f.turn_rate_dps.value * c.speed_scale * (c.right - c.left) / 2;
-}
+void VehicleModel::commanded_rates() { (void)drive(state_.pose, 0, state_.speed, state_.turn_rate); }
 
 void VehicleModel::move(double seconds) {
+  if (course_) {
+    // Each short step checked against the course: a wall stops the vehicle where it meets it.
+    const auto steps = static_cast<int>(std::ceil(seconds / kCourseStep));
+    for (int i = 0; i < steps; ++i) step_on_course(seconds / steps);
+    return;
+  }
+  double v = 0;
+  double w = 0;
+  state_.pose = drive(state_.pose, seconds, v, w);
+  state_.speed = v;
+  state_.turn_rate = w;
+  add_trail_point();
+  move_joints(seconds);
+}
+
+Pose VehicleModel::drive(const Pose& from, double seconds, double& v, double& w) const {
   const auto& c = command_;
   const auto& f = figures_;
-  // Integrated as an arc (exact for a command held constant), at the rates take() set.
-  const double v = state_.speed;
-  const double w = state_.turn_rate;
-  auto& p = state_.pose;
+  // Skid steer, integrated as an arc (exact for a command held constant).
+  const double top = f.top_speed_kmh.value / kKmhPerMps * c.speed_scale;
+  v = top * (c.left + c.right) / 2;
+  w = f.turn_rate_dps.value * c.speed_scale * (c.right - c.left) / 2;
+  Pose p = from;
   const double h0 = radians(p.heading);
   if (w == 0) {
     p.x += v * seconds * std::cos(h0);
@@ -146,8 +158,12 @@ void VehicleModel::move(double seconds) {
     p.y -= r * (std::cos(h1) - std::cos(h0));
     p.heading = wrap_degrees(p.heading + w * seconds);
   }
-  add_trail_point();
+  return p;
+}
 
+void VehicleModel::move_joints(double seconds) {
+  const auto& c = command_;
+  const auto& f = figures_;
   state_.front_flipper = step(state_.front_flipper, c.front_flipper, 1, f.front_flipper, seconds);
   state_.rear_flipper = step(state_.rear_flipper, c.rear_flipper, 1, f.rear_flipper, seconds);
   auto& a = state_.arm;
@@ -224,13 +240,16 @@ void VehicleModel::take(const protocol::DataBytes& data) {
   }
   for (const auto& j : kCameraJoints) c.*j.direction = pair(s, j.plus, j.minus);
   command_ = c;
-  // No inertia: the tracks take the new speed as the frame arrives.
-  commanded_rates();
+  // No inertia: the tracks take the new speed as the frame arrives. On a
+  // course, the speed is what the last step made of it (0 at a wall), so
+  // that a vehicle held by a wall never shows the speed it is refused.
+  if (!course_) commanded_rates();
 
   state_.cameras.main = main_camera(s);
   state_.cameras.inset = inset_camera(s);
   state_.light = s[signal_id("light")] / kByteMax;
   state_.laser = s[signal_id("laser")] != 0;
+  if (course_) course_laser();
   state_.tool_on = s[signal_id("tool_on")] != 0;
   state_.enable_key = s[signal_id("enable_key")] != 0;
   for (std::size_t i = 0; i < kWeaponCount; ++i) {
@@ -238,7 +257,10 @@ void VehicleModel::take(const protocol::DataBytes& data) {
     // A weapon fires on the rise of its bit, and only in a frame that
     // allows motion at all (the safety bit on): the frame a mapping sends
     // only while enabled.
-    if (bit && !state_.fire_bits[i] && safety) ++state_.fired[i];
+    if (bit && !state_.fire_bits[i] && safety) {
+      ++state_.fired[i];
+      if (course_) course_fired();
+    }
     state_.fire_bits[i] = bit;
   }
 }

@@ -162,7 +162,7 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos) {
 }
 
 std::string export_session(const record::Session& s, ExportFormat format, std::ostream& out,
-                           const record::SourcesLoader& load) {
+                           const record::SourcesLoader& load, const std::optional<vehicle::Course>& course) {
   std::vector<std::string_view> names(kRecordColumns.begin(), kRecordColumns.end());
   for (const auto& c : kInputColumns) names.push_back(c.name);
   for (const auto& sig : protocol::kSignals) names.push_back(sig.name);
@@ -183,7 +183,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
   const std::int64_t shutdown = shutdown_from(s);
   std::vector<Cell> cells;
   // The vehicle's motion, fed tick by tick as the trainer feeds it (session_motion.hpp).
-  vehicle::VehicleModel model(vehicle::figures_for(s.settings.robot));
+  vehicle::VehicleModel model(vehicle::figures_for(s.settings.robot), course);
   for_each_tick(s, [&](std::int64_t tick, std::int64_t t, const record::FrameRecord& f) {
     records.at(t);
     feed_tick(model, t, f.data, delivered(f));

@@ -36,8 +36,9 @@ void feed_tick(vehicle::VehicleModel& model, std::int64_t t_ms, const protocol::
   else model.advance(t_ms * kNsPerMs);
 }
 
-SessionMotion::SessionMotion(const record::Session& session, const vehicle::RobotFigures& figures)
-    : session_(session), end_(figures) {
+SessionMotion::SessionMotion(const record::Session& session, const vehicle::RobotFigures& figures,
+                             const std::optional<vehicle::Course>& course)
+    : session_(session), start_(figures, course), end_(start_) {
   const std::int64_t every = std::max(kSnapshotTicks, session.live_ticks() / std::int64_t{kSnapshots} + 1);
   trail_.push_back({0, end_.trail().back().x, end_.trail().back().y});
   std::int64_t fed = 0;
@@ -60,7 +61,7 @@ vehicle::VehicleModel SessionMotion::at(std::int64_t t_ms, std::int64_t* tick) c
   // The last snapshot at or before t (the first is the start, before any tick).
   const auto after = std::upper_bound(snapshots_.begin(), snapshots_.end(), t_ms,
                                       [](std::int64_t t, const Snapshot& s) { return t < s.t_ms; });
-  if (after == snapshots_.begin()) return vehicle::VehicleModel(end_.figures());
+  if (after == snapshots_.begin()) return start_;
   const auto& from = *std::prev(after);
   auto model = from.model;
   for_each_tick(

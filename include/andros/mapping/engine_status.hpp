@@ -102,6 +102,9 @@ struct EngineStatus {
   SpeedLevel speed;
   /// In a weapons mode with an arming input held: a fire button pressed now fires.
   bool armed = false;
+  /// In a weapons mode, a fire input pressed with its arming input held but
+  /// without the supervisor's consent: it did not fire (the trainer's score counts it).
+  bool fire_refused = false;
 
   bool operator==(const EngineStatus&) const = default;
 };

@@ -95,6 +95,10 @@ class Recorder {
   void reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) noexcept;
   void input_end(std::int64_t t_ms) noexcept;
   void observe(const run::TickReport& report) noexcept;
+  /// A record the command adds to the loop's (the trainer's course and score: payload::course, payload::score).
+  void add(std::string payload) noexcept {
+    record([&] { return std::move(payload); });
+  }
   /// The run's last record.
   void end(std::string_view why) noexcept;
   /// A record the caller could not make (its settings could not be read).

@@ -119,6 +119,23 @@ struct SessionSettings {
 
 struct FrameRecord;
 
+/// A trainer run's course (`course {...}`, after the settings): its name,
+/// the file it was read from (a label) and its text, kept as a mapping's is.
+struct CourseRecord {
+  std::string name;
+  std::string path;
+  std::string text;
+  int line = 0;  ///< the record's line in the file
+};
+
+/// A trainer run's score (`score T {...}`, before the end): the JSON object
+/// the trainer made of its frames and its course (docs/trainer.md, "The score").
+struct ScoreRecord {
+  std::int64_t t_ms = 0;
+  std::string json;
+  int line = 0;
+};
+
 /// The payloads of the records, one a function (no SEQ, no hash).
 namespace payload {
 std::string header();
@@ -148,6 +165,10 @@ std::string layer(std::int64_t t_ms, std::string_view layer);
 /// t_ms -1: the link before the first tick.
 std::string link(std::int64_t t_ms, const link::LinkStatus& status);
 std::string input_end(std::int64_t t_ms);
+/// `course {"name":..,"path":..,"sha256":..,"text":..}`: a trainer run's course, its text escaped as a mapping's.
+std::string course(const CourseRecord& course);
+/// `score T {...}`: a trainer run's score (one line of JSON).
+std::string score(std::int64_t t_ms, std::string_view json);
 /// `dropped N "WHY"`: N records went missing here, and why the last of them
 /// did ("No space left on device", "File too large", "the queue was full...").
 std::string dropped(std::uint64_t count, std::string_view why);
@@ -271,8 +292,10 @@ struct Session {
   /// earlier writer's). The last frame record's tick before it (-1: none).
   std::optional<std::int64_t> stopped_for_room;
   std::optional<EndRecord> end;
-  int format = 0;          ///< its header's: how its texts and frame records are written
-  int cut_short_line = 0;  ///< not 0: its last line, half a record, was left out (VerifyResult's)
+  std::optional<CourseRecord> course;  ///< a trainer run's course
+  std::optional<ScoreRecord> score;    ///< and its score
+  int format = 0;                      ///< its header's: how its texts and frame records are written
+  int cut_short_line = 0;              ///< not 0: its last line, half a record, was left out (VerifyResult's)
 
   /// The frame record in effect at tick (the last one at or before it), or null.
   [[nodiscard]] const FrameRecord* frame_at(std::int64_t tick) const;

@@ -45,6 +45,7 @@ struct LoopFacts {
   std::string layer;       ///< the mapping layer in use, "" for the base
   bool sent = false;       ///< the link took the tick's frame
   PadInputs pad;
+  std::string score;  ///< on a course: its score so far, a JSON object (course_score.hpp); "" without one
 };
 
 /// The object the stream carries for a frame (one line of JSON).
@@ -52,7 +53,9 @@ std::string stream_object(const vehicle::VehicleModel& model, const LoopFacts& f
 
 class TrainerFeed {
  public:
-  TrainerFeed(const vehicle::RobotFigures& figures, StreamHub& hub) : model_(figures), hub_(hub) {}
+  /// course: the ground the vehicle drives on (open ground without one).
+  TrainerFeed(const vehicle::RobotFigures& figures, StreamHub& hub, std::optional<vehicle::Course> course = {})
+      : model_(figures, std::move(course)), hub_(hub) {}
 
   /// A tick the loop ran (its thread, after the tick): the frame it offered,
   /// and whether the link took it, queued for the motion thread

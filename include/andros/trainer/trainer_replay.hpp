@@ -6,6 +6,7 @@
 /// and seek. Nothing outside the session is read.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "andros/record/session.hpp"
@@ -14,6 +15,10 @@
 #include "andros/view/session_motion.hpp"
 
 namespace andros::trainer {
+
+/// A trainer run's course as its session recorded it (its text, never the
+/// file), or none. Throws InputError for a text that is not a course.
+std::optional<vehicle::Course> recorded_course(const record::Session& session);
 
 /// The model's trail and pose, to the bit: "ended at x, y, heading; trail N
 /// points, SHA-256 ..." (the live trainer's and a replay's are compared by it).

@@ -66,6 +66,16 @@ struct RobotFigures {
   /// Drive and pivot within this many counts of 128 are still (the ICD's
   /// example carries 0x7F and 0x7E at rest: ADC noise around the centre).
   Figure deadband_counts;
+  // On a course (course.hpp): what the trainee must learn the vehicle cannot do.
+  Figure gripper_m;           ///< the gripper's length past the wrist (its extension adds to it)
+  Figure max_climb_deg;       ///< the steepest slope or flight it climbs
+  Figure stairs_flipper_deg;  ///< the front flippers raised at least this to mount a flight of stairs
+  Figure max_step_m;          ///< the highest edge it drives onto; a higher one stops it as a wall
+  Figure max_drop_m;          ///< an edge it drives off higher than this tips it over
+  Figure body_cog_m;          ///< the height of the body's centre of mass (the arm stowed)
+  Figure arm_mass_kg;         ///< the arm's share of the mass, at the middle of its reach
+  Figure tip_warning_m;       ///< the centre of mass this close to tipping: the warning
+  Figure grip_reach_m;        ///< the gripper closes on what is this close to its tip
 };
 
 /// The figures of a robot type (canonical name); the HD-1's for an unknown one.

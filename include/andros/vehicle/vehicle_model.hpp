@@ -12,8 +12,10 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 
 #include "andros/protocol/decoder.hpp"
+#include "andros/vehicle/course.hpp"
 #include "andros/vehicle/robot_figures.hpp"
 
 namespace andros::vehicle {
@@ -49,6 +51,37 @@ struct Cameras {
   double extender = 0;                ///< metres the PTZ camera's mast is raised
 };
 
+/// What the vehicle met on a course (all zero on open ground).
+struct CourseState {
+  double elevation = 0;  ///< metres: the ground's height under the vehicle's centre
+  double pitch = 0;      ///< degrees, nose up positive: the slope under it along its heading
+  /// Times the body or the arm came against a wall, a box, the door or the ground's edge.
+  std::uint32_t contacts = 0;
+  bool body_touching = false;  ///< pushing against something now
+  bool arm_touching = false;
+  /// Times it stopped at a slope steeper than it climbs, or at stairs with its flippers down.
+  std::uint32_t climbs_refused = 0;
+  bool climb_blocked = false;
+  std::size_t gates = 0;  ///< gates passed, in order
+  double door_angle = 0;  ///< degrees open (0 closed)
+  bool door_held = false;
+  double door_grip_bearing = 0;  ///< held: the gripper's bearing from the hinge, less the door's angle
+  Point package;                 ///< the package's centre on the ground
+  double package_z = 0;
+  bool package_held = false;
+  bool package_lifted = false;     ///< it has been lifted
+  bool package_delivered = false;  ///< set down inside its drop area
+  /// Metres the centre of mass is from the edge it would tip over (the tracks' or the flippers' ends).
+  double tip_margin = 0;
+  bool tip_warning = false;  ///< within the figures' tip_warning_m of tipping
+  std::uint32_t tip_warnings = 0;
+  bool tipped = false;  ///< tipped over (or fell off an edge): nothing moves any more; the run failed
+  bool laser_on_target = false;
+  std::uint32_t hits = 0;              ///< weapons fired with the laser on the target
+  std::uint32_t fired_off_target = 0;  ///< weapons fired without it
+  bool in_finish = false;              ///< inside the finish area, facing as it asks
+};
+
 /// The fire outputs, in this order: weapon_1..6, then shotgun.
 inline constexpr std::size_t kWeaponCount = 7;
 
@@ -76,6 +109,7 @@ struct VehicleState {
   bool started = false;       ///< a frame has arrived
   std::uint64_t frames = 0;   ///< frames taken
   std::uint64_t ignored = 0;  ///< frames ignored (bad checksum, a validation rule broken)
+  CourseState course;
 };
 
 /// Where the weapon outputs' names come from: their canonical signal names.
@@ -83,7 +117,8 @@ std::string_view weapon_name(std::size_t index);
 
 class VehicleModel {
  public:
-  explicit VehicleModel(const RobotFigures& figures);
+  /// On open ground (from 0, 0, 0), or on course: from its start, met by what stands on it.
+  explicit VehicleModel(const RobotFigures& figures, std::optional<Course> course = std::nullopt);
 
   /// A frame that arrived at now_ns (monotonic): the state integrated to
   /// then, and the frame taken when valid (ignored when not).
@@ -94,12 +129,18 @@ class VehicleModel {
 
   [[nodiscard]] const VehicleState& state() const { return state_; }
   [[nodiscard]] const RobotFigures& figures() const { return figures_; }
+  [[nodiscard]] const std::optional<Course>& course() const { return course_; }
+  /// The course is done: every gate passed in order, the package delivered,
+  /// the finish reached, the target hit (what it has of these), not tipped over.
+  [[nodiscard]] bool course_done() const;
   /// The ground track: a point every kTrailStep metres moved, the newest last,
   /// at most kTrailPoints (the oldest dropped).
   [[nodiscard]] const std::deque<Pose>& trail() const { return trail_; }
 
   static constexpr double kTrailStep = 0.05;
   static constexpr std::size_t kTrailPoints = 20000;
+  /// On a course, motion is integrated in steps of at most this (seconds), each checked against it.
+  static constexpr double kCourseStep = 0.01;
 
   /// What the last valid frame commands, as rates (-1..1 for a joint).
   struct Command {
@@ -119,10 +160,22 @@ class VehicleModel {
   void move(double seconds);
   /// state_'s speed and turn rate from command_.
   void commanded_rates();
+  /// The pose the tracks reach from p in seconds under command_; v and w their speed and turn rate.
+  [[nodiscard]] Pose drive(const Pose& p, double seconds, double& v, double& w) const;
+  void move_joints(double seconds);
+  // The course's part (vehicle_course.cpp).
+  void step_on_course(double seconds);
+  void course_pose(const Pose& next);
+  void course_arm(const ArmPose& before);
+  void course_grip(double opening_before);
+  void course_balance();
+  void course_fired();
+  void course_laser();
   void take(const protocol::DataBytes& data);
   void add_trail_point();
 
   RobotFigures figures_;
+  std::optional<Course> course_;
   VehicleState state_;
   Command command_;
   std::int64_t last_valid_ns_ = 0;

@@ -5,6 +5,7 @@
 /// who stopped, who reset, and what the hands held, on each row.
 
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 #include "andros/base/error.hpp"
 #include "andros/record/session.hpp"
 #include "andros/record/session_replay.hpp"
+#include "andros/vehicle/course.hpp"
 
 namespace andros::view {
 
@@ -37,8 +39,10 @@ ExportFormat parse_export_format(std::string_view text, const SourcePos& pos);
 /// every text cell is csv_cell() (base/sink_text.hpp): never a formula (a
 /// leading apostrophe), quoted as RFC 4180 says. CSV has a header row; JSONL a JSON object a line. Returns why
 /// the input columns are empty throughout (the recorded mapping cannot be
-/// read), or "".
+/// read), or "". The vehicle's columns are the model's on `course` (a
+/// trainer run's recorded course, read by the caller) or on open ground.
 std::string export_session(const record::Session& session, ExportFormat format, std::ostream& out,
-                           const record::SourcesLoader& load = record::load_recorded_mapping);
+                           const record::SourcesLoader& load = record::load_recorded_mapping,
+                           const std::optional<vehicle::Course>& course = std::nullopt);
 
 }  // namespace andros::view

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "andros/protocol/decoder.hpp"
@@ -59,7 +60,9 @@ class SessionMotion {
   static constexpr std::size_t kSnapshots = 64;
   static constexpr std::int64_t kSnapshotTicks = 250;
 
-  SessionMotion(const record::Session& session, const vehicle::RobotFigures& figures);
+  /// On `course` (a trainer run's recorded course, read by the caller) or on open ground.
+  SessionMotion(const record::Session& session, const vehicle::RobotFigures& figures,
+                const std::optional<vehicle::Course>& course = std::nullopt);
 
   /// The model after every tick at or before t_ms; *tick: the last of them (-1: none).
   [[nodiscard]] vehicle::VehicleModel at(std::int64_t t_ms, std::int64_t* tick = nullptr) const;
@@ -78,6 +81,7 @@ class SessionMotion {
   };
   const record::Session& session_;
   std::vector<Snapshot> snapshots_;
+  vehicle::VehicleModel start_;  ///< before any tick
   vehicle::VehicleModel end_;
   std::vector<TimedPoint> trail_;
   std::int64_t length_ms_ = 0;
