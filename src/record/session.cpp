@@ -223,6 +223,19 @@ std::optional<run::Request> parse_request(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+
+/// The value of E (an enum counted from 0 to last) whose word is `word`.
+template <class E, class Word>
+std::optional<E> parse_word(std::string_view word, E last, Word word_of) {
+  for (int i = 0; i <= static_cast<int>(last); ++i) {
+    if (word_of(static_cast<E>(i)) == word) return static_cast<E>(i);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::string_view state_word(run::OpState state) {
   using S = run::OpState;
   switch (state) {
@@ -233,17 +246,13 @@ std::string_view state_word(run::OpState state) {
     case S::kStopped: return "stopped";
     case S::kSuspended: return "suspended";
     case S::kReloading: return "reloading";
-    case S::kShuttingDown: return "stopping";  // the shutdown's word since the first format
+    case S::kShuttingDown: return "stopping";  // the shutdown's word since the first format, whatever the screen says
   }
   return "?";
 }
 
 std::optional<run::OpState> parse_op_state(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(run::OpState::kShuttingDown); ++i) {
-    const auto s = static_cast<run::OpState>(i);
-    if (state_word(s) == name) return s;
-  }
-  return std::nullopt;
+  return parse_word(name, run::OpState::kShuttingDown, state_word);
 }
 
 std::string_view event_word(run::OpEvent event) {
@@ -287,19 +296,6 @@ std::string_view who_word(run::Who who) {
   }
   return "?";
 }
-
-namespace {
-
-/// The value of E (an enum counted from 0 to last) whose word is `word`.
-template <class E, class Word>
-std::optional<E> parse_word(std::string_view word, E last, Word word_of) {
-  for (int i = 0; i <= static_cast<int>(last); ++i) {
-    if (word_of(static_cast<E>(i)) == word) return static_cast<E>(i);
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 std::optional<run::Transition> parse_transition(std::string_view fields) {
   std::vector<std::string_view> w;

@@ -302,7 +302,8 @@ std::string_view to_string(OpState state) {
     case S::kStopped: return "stopped";
     case S::kSuspended: return "suspended";
     case S::kReloading: return "reloading";
-    case S::kShuttingDown: return "stopping";  // the word sessions record and the screen says since the first format
+    case S::kShuttingDown:
+      return "stopping";  // what the screen says (sessions have words of their own: record::state_word)
   }
   return "?";
 }
