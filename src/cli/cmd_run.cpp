@@ -191,7 +191,7 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
   bridge.run(control, [&](const run::TickReport& r) {
     if (recording) recording->observe(r);
     board.observe(r, *input);  // on the loop's thread, which owns SDL: it asks what kind a new controller is
-    feedback.observe(run::feedback_status(r));
+    feedback.observe(r);
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
     if (service.active()) service.observe(r, board.status());
     if (hooks.observe) hooks.observe(r, board);

@@ -17,6 +17,7 @@ std::size_t RecordCheck::count(Kind kind) const {
     case kRequest: return s_.requests.size();
     case kGate: return s_.gate_trips.size();
     case kState: return s_.states.size();
+    case kTransition: return s_.transitions.size();
     case kStop: return s_.stops.size();
     case kLayer: return s_.layers.size();
     case kFrame: return s_.frames.size();
@@ -35,6 +36,10 @@ RecordCheck::Recorded RecordCheck::recorded(Kind kind, std::size_t i) const {
       return {payload::gate(s_.gate_trips[i].t_ms, s_.gate_trips[i].text), s_.gate_trips[i].t_ms,
               s_.gate_trips[i].line};
     case kState: return {payload::state(s_.states[i].t_ms, s_.states[i].state), s_.states[i].t_ms, s_.states[i].line};
+    case kTransition: {
+      const auto& r = s_.transitions[i];
+      return {payload::transition(r.t_ms, r.transition), r.t_ms, r.line};
+    }
     case kStop: {
       const auto& r = s_.stops[i];
       return {r.reset ? payload::reset(r.t_ms, r.by, r.pad) : payload::stop(r.t_ms, r.by, r.pad, r.again), r.t_ms,
@@ -73,6 +78,7 @@ void RecordCheck::made(std::string_view payload) {
   if (word == "request") kind = kRequest;
   else if (word == "gate") kind = kGate;
   else if (word == "state") kind = kState;
+  else if (word == "transition") kind = kTransition;
   else if (word == "stop" || word == "reset") kind = kStop;
   else if (word == "layer") kind = kLayer;
   else if (word == "frame") kind = kFrame;

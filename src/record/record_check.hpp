@@ -1,7 +1,7 @@
 #pragma once
 // A replay's records against a session's (docs/recording.md, "Replay"): the
 // replay's Recorder makes every record the loop writes, and each of the kinds
-// the loop decides (request, gate, state, stop, reset, layer, frame) is
+// the loop decides (request, gate, state, transition, stop, reset, layer, frame) is
 // compared with the next the session holds of its kind, as text made by the
 // same payload functions, and in the file's order. The inputs (event, pause,
 // reload, settings, link, input-end) are what the replay was given.
@@ -38,7 +38,7 @@ class RecordCheck {
 
  private:
   /// The decided kinds, each a list of the session's in the order read.
-  enum Kind : std::uint8_t { kRequest, kGate, kState, kStop, kLayer, kFrame, kKinds };
+  enum Kind : std::uint8_t { kRequest, kGate, kState, kTransition, kStop, kLayer, kFrame, kKinds };
   struct Recorded {
     std::string text;  ///< as the payload function writes it
     std::int64_t t_ms = 0;

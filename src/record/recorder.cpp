@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <utility>
 
 namespace andros::record {
@@ -37,6 +38,16 @@ namespace {
 constexpr auto kPollPeriod = std::chrono::milliseconds(250);
 constexpr auto kSyncPeriod = std::chrono::seconds(1);
 constexpr std::size_t kBatchBytes = std::size_t{64} * 1024;
+
+/// Whose stop an event of the machine is (a stop button's, the frame gate's trip); none for any other.
+std::optional<run::StopBy> stop_by(run::OpEvent event) {
+  switch (event) {
+    case run::OpEvent::kOperatorStop: return run::StopBy::kOperator;
+    case run::OpEvent::kSupervisorStop: return run::StopBy::kSupervisor;
+    case run::OpEvent::kGateTrip: return run::StopBy::kGate;
+    default: return std::nullopt;
+  }
+}
 
 }  // namespace
 
@@ -288,19 +299,34 @@ void Recorder::input_end(std::int64_t t_ms) noexcept {
 void Recorder::observe(const run::TickReport& r) noexcept {
   guarded([&] {
     if (!r.gate_fault.empty()) record([&] { return payload::gate(r.t_ms, r.gate_fault); });
+    if (format_ >= kTransitionFormat) {
+      for (const auto& [t, pad] : r.transitions) {
+        if (t.to != t.from) record([&] { return payload::transition(r.t_ms, t); });
+      }
+    }
     if (first_ || r.state != state_) {
       state_ = r.state;
       record([&] { return payload::state(r.t_ms, r.state); });
     }
     // Every stop press (one that latched, made the stop another's, or came
     // again while stopped) and every reset, once, with the pad that made it.
-    if (r.stop_count != stop_count_) {
-      stop_count_ = r.stop_count;
-      if (r.last_stop) record([&] { return payload::stop(r.t_ms, *r.last_stop, r.last_stop_pad, r.last_stop_again); });
+    const run::ReportedTransition* last_stop = nullptr;
+    for (const auto& reported : r.transitions) {
+      const auto& t = reported.transition;
+      if (const auto by = stop_by(t.event)) {
+        if (format_ >= kTransitionFormat) record([&] { return payload::stop(r.t_ms, *by, reported.pad, t.again); });
+        last_stop = &reported;
+      }
     }
-    if (r.reset_count != reset_count_) {
-      reset_count_ = r.reset_count;
-      if (r.reset_by) record([&] { return payload::reset(r.t_ms, *r.reset_by, r.reset_pad); });
+    if (last_stop != nullptr && format_ < kTransitionFormat) {
+      const auto& t = last_stop->transition;
+      record([&] { return payload::stop(r.t_ms, *stop_by(t.event), last_stop->pad, t.again); });
+    }
+    for (const auto& [t, pad] : r.transitions) {
+      if (t.event == run::OpEvent::kOperatorReset || t.event == run::OpEvent::kSupervisorReset) {
+        const auto by = t.event == run::OpEvent::kSupervisorReset ? run::StopBy::kSupervisor : run::StopBy::kOperator;
+        record([&] { return payload::reset(r.t_ms, by, pad); });
+      }
     }
     if (first_ || r.engine.layer != layer_) {
       layer_ = r.engine.layer;
@@ -314,7 +340,7 @@ void Recorder::observe(const run::TickReport& r) noexcept {
     }
     const std::int64_t gap = r.tick - last_tick_ - 1;
     // Written again after a while unchanged, so that a reader can bound the ticks a record stands for.
-    const bool due = repeat_frame_ms_ != 0 && r.t_ms - frame_t_ms_ >= repeat_frame_ms_;
+    const bool due = format_ >= kSpacedFormat && r.t_ms - frame_t_ms_ >= kFrameRecordPeriodMs;
     if (first_ || gap != 0 || r.data != data_ || r.result != result_ || r.sent != sent_ || due) {
       frame_t_ms_ = r.t_ms;
       data_ = r.data;

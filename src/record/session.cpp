@@ -93,6 +93,17 @@ std::optional<run::StopBy> parse_stopper(std::string_view word) {
   return std::nullopt;
 }
 
+namespace {
+
+/// A state's word as a transition record writes it: a space as `-` ("not-enabled").
+std::string hyphened(std::string_view word) {
+  std::string out(word);
+  std::replace(out.begin(), out.end(), ' ', '-');
+  return out;
+}
+
+}  // namespace
+
 namespace payload {
 
 std::string header() { return std::string(kSessionMagic) + " " + std::to_string(kSessionFormat); }
@@ -130,7 +141,11 @@ std::string score(std::int64_t t_ms, std::string_view json) {
          nlohmann::json::parse(json).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 std::string state(std::int64_t t_ms, run::OpState s) {
-  return "state " + std::to_string(t_ms) + " " + std::string(run::to_string(s));
+  return "state " + std::to_string(t_ms) + " " + std::string(state_word(s));
+}
+std::string transition(std::int64_t t_ms, const run::Transition& t) {
+  return "transition " + std::to_string(t_ms) + " " + hyphened(state_word(t.from)) + " " +
+         std::string(event_word(t.event)) + " " + hyphened(state_word(t.to)) + " " + std::string(who_word(t.who));
 }
 std::string gate(std::int64_t t_ms, std::string_view fault) {
   return "gate " + std::to_string(t_ms) + " " + text_json(fault).dump();
@@ -220,12 +235,97 @@ std::optional<run::Request> parse_request(std::string_view name) {
   return std::nullopt;
 }
 
-std::optional<run::OpState> parse_op_state(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(run::OpState::kShuttingDown); ++i) {
-    const auto s = static_cast<run::OpState>(i);
-    if (run::to_string(s) == name) return s;
+namespace {
+
+/// The value of E (an enum counted from 0 to last) whose word is `word`.
+template <class E, class Word>
+std::optional<E> parse_word(std::string_view word, E last, Word word_of) {
+  for (int i = 0; i <= static_cast<int>(last); ++i) {
+    if (word_of(static_cast<E>(i)) == word) return static_cast<E>(i);
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::string_view state_word(run::OpState state) {
+  using S = run::OpState;
+  switch (state) {
+    case S::kNoLink: return "no link";
+    case S::kNoController: return "no controller";
+    case S::kNotEnabled: return "not enabled";
+    case S::kEnabled: return "enabled";
+    case S::kStopped: return "stopped";
+    case S::kSuspended: return "suspended";
+    case S::kReloading: return "reloading";
+    case S::kShuttingDown: return "stopping";  // the shutdown's word since the first format, whatever the screen says
+  }
+  return "?";
+}
+
+std::optional<run::OpState> parse_op_state(std::string_view name) {
+  return parse_word(name, run::OpState::kShuttingDown, state_word);
+}
+
+std::string_view event_word(run::OpEvent event) {
+  using E = run::OpEvent;
+  switch (event) {
+    case E::kLinkUp: return "link-up";
+    case E::kLinkDown: return "link-down";
+    case E::kLinkTaken: return "link-taken";
+    case E::kControllerUp: return "controller-up";
+    case E::kControllerDown: return "controller-down";
+    case E::kFreshPress: return "deadman-fresh-press";
+    case E::kRelease: return "deadman-released";
+    case E::kPanic: return "deadman-panic";
+    case E::kEnableTimeout: return "enable-timeout";
+    case E::kOperatorStop: return "operator-stop";
+    case E::kSupervisorStop: return "supervisor-stop";
+    case E::kGateTrip: return "gate-trip";
+    case E::kOperatorReset: return "operator-reset";
+    case E::kSupervisorReset: return "supervisor-reset";
+    case E::kReloadBegin: return "reload";
+    case E::kReloadDone: return "reload-done";
+    case E::kSuspend: return "suspend";
+    case E::kResume: return "resume";
+    case E::kShutdown: return "shutdown";
+    case E::kNeutralSent: return "neutral-sent";
+  }
+  return "?";
+}
+
+std::string_view who_word(run::Who who) {
+  using W = run::Who;
+  switch (who) {
+    case W::kOperator: return "operator";
+    case W::kSupervisor: return "supervisor";
+    case W::kGate: return "gate";
+    case W::kLink: return "link";
+    case W::kRequest: return "request";
+    case W::kScript: return "script";
+    case W::kTimeout: return "timeout";
+    case W::kLoop: return "loop";
+  }
+  return "?";
+}
+
+std::optional<run::Transition> parse_transition(std::string_view fields) {
+  std::vector<std::string_view> w;
+  for (std::size_t at = 0; at <= fields.size() && w.size() < 5;) {
+    const auto end = std::min(fields.find(' ', at), fields.size());
+    w.push_back(fields.substr(at, end - at));
+    at = end + 1;
+  }
+  if (w.size() != 4) return std::nullopt;
+  const auto state = [](std::string_view word) {
+    return parse_word(word, run::OpState::kShuttingDown, [](run::OpState s) { return hyphened(state_word(s)); });
+  };
+  const auto from = state(w[0]);
+  const auto event = parse_word(w[1], run::OpEvent::kNeutralSent, event_word);
+  const auto to = state(w[2]);
+  const auto who = parse_word(w[3], run::Who::kLoop, who_word);
+  if (!from || !event || !to || !who) return std::nullopt;
+  return run::Transition{.from = *from, .event = *event, .to = *to, .who = *who};
 }
 
 }  // namespace andros::record

@@ -268,6 +268,11 @@ void read_record(std::string_view kind, Fields& f, Session& s, std::optional<Ses
     const auto state = parse_op_state(f.rest());
     if (!state) throw InputError(pos, "unknown state " + quote(f.rest()));
     s.states.push_back({t, *state, pos.line});
+  } else if (kind == "transition" && s.format >= kTransitionFormat) {
+    const auto t = time(f);
+    const auto transition = parse_transition(f.rest());
+    if (!transition) throw InputError(pos, "unknown transition " + quote(f.rest()));
+    s.transitions.push_back({t, *transition, pos.line});
   } else if (kind == "gate") {
     const auto t = time(f);
     s.gate_trips.push_back({t, f.text(s.format), pos.line});
@@ -392,6 +397,7 @@ void RecordReader::forget() {
   s_.pauses.clear();
   s_.reloads.clear();
   s_.states.clear();
+  s_.transitions.clear();
   s_.gate_trips.clear();
   s_.stops.clear();
   s_.layers.clear();

@@ -202,8 +202,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   SessionReplayResult out;
   // The records the loop writes, made again by the recorder the run uses, and compared as they come.
   RecordCheck check(s);
-  Recorder recorder([&check](const std::string& payload) { check.made(payload); },
-                    s.format >= kSpacedFormat ? kFrameRecordPeriodMs : 0);
+  Recorder recorder([&check](const std::string& payload) { check.made(payload); }, s.format);
   Playback playback(s, load);
   const auto engine = playback.engine_frames(s.settings);
   playback.start();

@@ -34,7 +34,7 @@ void Bridge::run(const RunControl& control, const Observer& observe) {
   } catch (...) {
     // A script's bad line: the neutral frames still go first, without the input.
     input_failed_ = true;
-    apply(OpEvent::kShutdown);
+    apply(OpEvent::kShutdown, Who::kScript);
     while (tick(control, observe)) {
     }
     control_ = nullptr;
@@ -55,16 +55,16 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     operator_pad_ = pads_.id_of(input_.operator_pad().identity());
     supervisor_pad_ = pads_.id_of(input_.supervisor().identity());
     machine_.set_pads(operator_pad_, supervisor_pad_);
-    pads_.keep(
-        {operator_pad_, supervisor_pad_, machine_.stopper_pad(), machine_.reset_pad(), machine_.last_stop_pad()});
+    pads_.keep({operator_pad_, supervisor_pad_, machine_.stopper_pad(), machine_.reset_pad()});
     on_request(control.poll());
     for (const auto& fault : input_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
     const bool controllers_up = input_.connected() && (!source_.supervised() || input_.supervisor().connected());
-    if (controllers_up != machine_.controller_up()) {
-      // Both needed and only the supervisor's missing: it is the one that comes back.
-      if (!controllers_up) supervisor_back_ = input_.connected();
-      apply(controllers_up ? OpEvent::kControllerUp : OpEvent::kControllerDown);
+    if (controllers_up) {
+      if (!machine_.controller_up()) apply(OpEvent::kControllerUp);  // the machine knows whose it was
+    } else if (machine_.controller_up()) {
+      // Both needed and only the supervisor's missing: it is the one lost.
+      apply(OpEvent::kControllerDown, input_.connected() ? Who::kSupervisor : Who::kOperator);
     }
   }
 
@@ -119,8 +119,8 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
             frames_ = reloaded_.get();
             guard_ = DriveGuard(frames_->mapping());  // the new mapping's inputs, read afresh
           }
-          reload_refused_ = !outcome->ok;
-          apply(OpEvent::kReloadDone);  // a suspend that waited for the outcome begins now
+          // A suspend that waited for the outcome begins now.
+          apply(OpEvent::kReloadDone, Who::kLoop, !outcome->ok);
         }
       }
       break;
@@ -129,7 +129,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
   advance();
   if (!input_failed_ && machine_.state() != OpState::kShuttingDown && source_.finished(t_ms)) {
     if (!options_.neutral_tail_at_end) return false;
-    apply(OpEvent::kShutdown);
+    apply(OpEvent::kShutdown, Who::kScript);
   }
   return true;
 }
@@ -153,8 +153,8 @@ void Bridge::answer_stops(mapping::StopPresses pressed) {
   if (pressed.by_supervisor) apply(OpEvent::kSupervisorStop);
 }
 
-Effect Bridge::apply(OpEvent event) {
-  return act(machine_.on(event), event == OpEvent::kOperatorReset || event == OpEvent::kSupervisorReset);
+Effect Bridge::apply(OpEvent event, Who who, bool refused) {
+  return act(machine_.on(event, who, refused), event == OpEvent::kOperatorReset || event == OpEvent::kSupervisorReset);
 }
 
 Effect Bridge::act(Effect effect, bool reset) {
@@ -175,21 +175,11 @@ Effect Bridge::act(Effect effect, bool reset) {
   }
   if (effect.neutral_frames) start_sequence();
   if (effect.begin_reload && control_ != nullptr) control_->begin_reload(reload_mapping_);
+  for (const auto& t : machine_.take_transitions()) transitions_.push_back({t, pads_.identity(t.pad)});
   return effect;
 }
 
-void Bridge::link_changed(bool up) {
-  if (!up) {
-    link_lost_ = true;
-    apply(link_lost_event());
-    return;
-  }
-  // Only a link that was lost is regained; one that opened leaves the cause
-  // what it was (none at start-up, the resume after a suspend's close).
-  link_up_cause_ = link_lost_ ? std::optional(OpEvent::kLinkUp) : machine_.entered_by();
-  link_lost_ = false;
-  apply(OpEvent::kLinkUp);
-}
+void Bridge::link_changed(bool up, Who who) { apply(up ? OpEvent::kLinkUp : link_lost_event(), who); }
 
 link::SendResult Bridge::send(const protocol::DataBytes& offered, const Observer& observe) {
   // The last gate (docs/safety-states.md): a frame breaking a rule never reaches the link, and the loop stops.
@@ -231,7 +221,7 @@ void Bridge::close() {
   shutdown_report_.neutral_sent = sequence_sent_;
   shutdown_report_.neutral_wanted = options_.shutdown_frames;
   shutdown_report_.drained = link_.drain_and_close(options_.drain_timeout_ms);
-  apply(OpEvent::kLinkDown);  // closed (in these states, only the condition changes)
+  apply(OpEvent::kLinkDown, Who::kLoop);  // closed (in these states, only the condition changes)
 }
 
 void Bridge::pause(const RunControl& control) {
@@ -243,7 +233,7 @@ void Bridge::pause(const RunControl& control) {
   // What happened while the process was stopped is history too.
   input_.begin_tick();
   source_.pump(input_, elapsed / kNsPerMs);
-  apply(OpEvent::kResume);
+  apply(OpEvent::kResume, Who::kRequest);
 }
 
 void Bridge::advance() {
@@ -252,7 +242,7 @@ void Bridge::advance() {
   tick_ = next;
 }
 
-TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult result, bool sent) const {
+TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult result, bool sent) {
   TickReport r;
   r.tick = tick_;
   r.t_ms = schedule_.tick_ms(tick_);
@@ -265,16 +255,9 @@ TickReport Bridge::report(const protocol::DataBytes& data, link::SendResult resu
   r.reset_by = machine_.reset_by();
   r.stopper_pad = pads_.identity(machine_.stopper_pad());
   r.reset_pad = pads_.identity(machine_.reset_pad());
-  r.stop_count = machine_.stop_count();
-  r.last_stop = machine_.last_stop();
-  r.last_stop_pad = pads_.identity(machine_.last_stop_pad());
-  r.last_stop_again = machine_.last_stop_again();
-  r.reset_count = machine_.reset_count();
   r.operator_may_reset = machine_.may_reset(StopBy::kOperator, operator_pad_);
   r.supervisor_may_reset = source_.supervised() && machine_.may_reset(StopBy::kSupervisor, supervisor_pad_);
-  r.entered_by = machine_.entered_by() == OpEvent::kLinkUp ? link_up_cause_ : machine_.entered_by();
-  r.supervisor_back = r.entered_by == OpEvent::kControllerUp && supervisor_back_;
-  r.reload_refused = r.entered_by == OpEvent::kReloadDone && reload_refused_;
+  r.transitions = std::exchange(transitions_, {});
   r.connected = input_.connected();
   r.controller = input_.name();
   r.supervised = source_.supervised();

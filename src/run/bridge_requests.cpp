@@ -37,7 +37,7 @@ void Bridge::on_request(Request request) {
     // What a request carries: job control's suspend stops the process, a SIGHUP reads the configured mapping.
     if (w.event == OpEvent::kSuspend) suspend_pauses_ = true;
     if (w.event == OpEvent::kReloadBegin) reload_mapping_.clear();
-    apply(w.event);
+    apply(w.event, Who::kRequest);
   }
 }
 
@@ -47,13 +47,13 @@ void Bridge::on_fault(const input::InputEvent& fault) {
     case T::kLinkTaken:
       link_.set_fault(fault.type == T::kLinkTaken ? link::FaultLink::Fault::kTaken : link::FaultLink::Fault::kDown);
       // Answered now: a link back before the next frame is still a new link.
-      link_changed(false);
+      link_changed(false, Who::kScript);
       return;
     case T::kLinkUp: link_.set_fault(link::FaultLink::Fault::kNone); return;
     case T::kLinkStalled:
       // A stalled server gets neutral frames only: the loop sees the link as lost (docs/event-scripts.md).
       link_.set_stalled(true);
-      if (machine_.link_up()) link_changed(false);
+      if (machine_.link_up()) link_changed(false, Who::kScript);
       return;
     case T::kLinkReading: link_.set_stalled(false); return;  // back like `link up`: a new link
     default: break;
@@ -63,7 +63,7 @@ void Bridge::on_fault(const input::InputEvent& fault) {
     // What a script's event carries: its suspend does not stop the process, its reload names a mapping.
     if (w.event == OpEvent::kSuspend) suspend_pauses_ = false;
     if (w.event == OpEvent::kReloadBegin) reload_mapping_ = fault.name;
-    apply(w.event);
+    apply(w.event, Who::kScript);
   }
 }
 

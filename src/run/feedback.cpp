@@ -11,34 +11,43 @@ FeedbackStatus feedback_status(const TickReport& report) {
   // Enabled as the state machine says, never as the engine alone sees it: the
   // pad's light cannot say "enabled" while nothing reaches the vehicle.
   // A weapons mode only while enabled, too.
-  return {report.connected,
-          report.engine.deadman,
-          report.enabled(),
-          report.link.carries_motion(),
-          report.enabled() && report.engine.weapons_mode,
-          report.state == OpState::kStopped,
-          report.reset_by.has_value(),
+  return {report.connected, report.engine.deadman, report.enabled(), report.enabled() && report.engine.weapons_mode,
           report.engine.speed.index};
 }
 
-std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after) {
+std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const FeedbackStatus& after,
+                                           const std::vector<ReportedTransition>& transitions) {
+  const auto any = [&transitions](auto&& what) {
+    return std::any_of(transitions.begin(), transitions.end(), [&what](const auto& r) { return what(r.transition); });
+  };
+  const auto entered = [](OpState state) {
+    return [state](const Transition& t) { return t.to == state && t.from != state; };
+  };
+  const auto left = [](OpState state) {
+    return [state](const Transition& t) { return t.from == state && t.to != state; };
+  };
   std::vector<FeedbackEvent> events;
-  if (after.stopped && !before.stopped) events.push_back(FeedbackEvent::kStopped);
-  if (after.reset && !before.reset) events.push_back(FeedbackEvent::kStopReset);
+  if (any(entered(OpState::kStopped))) events.push_back(FeedbackEvent::kStopped);
+  if (any([](const Transition& t) {
+        return t.event == OpEvent::kOperatorReset || t.event == OpEvent::kSupervisorReset;
+      })) {
+    events.push_back(FeedbackEvent::kStopReset);
+  }
   if (after.deadman == DeadmanState::kHeldNotFresh && before.deadman != DeadmanState::kHeldNotFresh) {
     events.push_back(FeedbackEvent::kDeadmanRefused);
   }
-  if (before.link_up && !after.link_up) events.push_back(FeedbackEvent::kLinkLost);
-  if (before.enabled && !after.enabled && after.deadman == DeadmanState::kTimedOut) {
+  // Published only when the link was up (the machine's condition changed).
+  if (any([](const Transition& t) { return t.event == OpEvent::kLinkDown || t.event == OpEvent::kLinkTaken; })) {
+    events.push_back(FeedbackEvent::kLinkLost);
+  }
+  if (any([](const Transition& t) { return t.from == OpState::kEnabled && t.event == OpEvent::kEnableTimeout; })) {
     events.push_back(FeedbackEvent::kTimedOut);
   }
   // A lost controller cannot be told anything: no "disabled" with it.
-  if (before.enabled && !after.enabled && after.connected) events.push_back(FeedbackEvent::kDisabled);
+  if (any(left(OpState::kEnabled)) && after.connected) events.push_back(FeedbackEvent::kDisabled);
   if (after.weapons_mode && !before.weapons_mode) events.push_back(FeedbackEvent::kWeaponsOn);
   if (before.weapons_mode && !after.weapons_mode && after.connected) events.push_back(FeedbackEvent::kWeaponsOff);
-  if (after.enabled && !before.enabled) {
-    events.push_back(FeedbackEvent::kEnabled);
-  }
+  if (any(entered(OpState::kEnabled))) events.push_back(FeedbackEvent::kEnabled);
   if (after.connected && !before.connected) events.push_back(FeedbackEvent::kControllerBack);
   // A press of a speed button, or a restart or a new pad back at the initial level.
   if (before.connected && after.connected && before.speed_level != after.speed_level) {
@@ -47,8 +56,9 @@ std::vector<FeedbackEvent> feedback_events(const FeedbackStatus& before, const F
   return events;
 }
 
-std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& status) {
-  const auto events = feedback_events(last_, status);
+std::optional<FeedbackEvent> FeedbackNotifier::observe(const FeedbackStatus& status,
+                                                       const std::vector<ReportedTransition>& transitions) {
+  const auto events = feedback_events(last_, status, transitions);
   last_ = status;
   const auto it = std::find_if(events.begin(), events.end(), [this](FeedbackEvent e) { return table_[e].has_value(); });
   std::optional<FeedbackEvent> played;

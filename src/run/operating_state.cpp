@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bit>
+#include <utility>
 
 namespace andros::run {
 namespace {
@@ -9,21 +10,21 @@ namespace {
 using S = OpState;
 using E = OpEvent;
 
-constexpr Transition row(S from, E event, S to) { return {from, event, Act::kGo, to, false, false, event}; }
-constexpr Transition settle(S from, E event, bool rebase) {
+constexpr Row row(S from, E event, S to) { return {from, event, Act::kGo, to, false, false, event}; }
+constexpr Row settle(S from, E event, bool rebase) {
   return {from, event, Act::kSettle, S::kNotEnabled, rebase, false, event};
 }
 /// sending: only while `from`'s neutral frames go out.
-constexpr Transition wait(S from, E event, bool sending = false) {
+constexpr Row wait(S from, E event, bool sending = false) {
   return {from, event, Act::kWait, from, false, sending, event};
 }
-constexpr Transition withdraw(S from, E event, E waiting) {
+constexpr Row withdraw(S from, E event, E waiting) {
   return {from, event, Act::kWithdraw, from, false, false, waiting};
 }
-constexpr Transition again(S from, E event) { return {from, event, Act::kAgain, from, false, false, event}; }
+constexpr Row again(S from, E event) { return {from, event, Act::kAgain, from, false, false, event}; }
 
 // Written out row by row, so that docs/safety-states.md and the tests read the same table.
-constexpr auto kTable = std::to_array<Transition>({
+constexpr auto kTable = std::to_array<Row>({
     // The link.
     row(S::kNoController, E::kLinkDown, S::kNoLink),
     row(S::kNotEnabled, E::kLinkDown, S::kNoLink),
@@ -104,7 +105,26 @@ constexpr auto kTable = std::to_array<Transition>({
 
 OperatingState::OperatingState(bool link_up) : state_(S::kNoLink), link_up_(link_up) { state_ = settled(); }
 
-std::span<const Transition> OperatingState::table() { return kTable; }
+std::span<const Row> OperatingState::table() { return kTable; }
+
+Who OperatingState::who_of(OpEvent event) {
+  switch (event) {
+    case E::kSupervisorStop:
+    case E::kSupervisorReset: return Who::kSupervisor;
+    case E::kGateTrip: return Who::kGate;
+    case E::kLinkUp:
+    case E::kLinkDown:
+    case E::kLinkTaken: return Who::kLink;
+    case E::kEnableTimeout: return Who::kTimeout;
+    case E::kReloadBegin:
+    case E::kSuspend:
+    case E::kResume:
+    case E::kShutdown: return Who::kRequest;
+    case E::kReloadDone:
+    case E::kNeutralSent: return Who::kLoop;
+    default: return Who::kOperator;
+  }
+}
 
 OpState OperatingState::settled() const {
   if (stopped_by_) return S::kStopped;
@@ -113,25 +133,25 @@ OpState OperatingState::settled() const {
   return S::kNotEnabled;
 }
 
-const Transition* OperatingState::row_for(OpEvent event) const {
+const Row* OperatingState::row_for(OpEvent event) const {
   for (const auto& t : kTable) {
     if (t.from == state_ && t.event == event && (!t.sending || neutral_due_)) return &t;
   }
   return nullptr;
 }
 
-Effect OperatingState::on(OpEvent event) {
+Effect OperatingState::on(OpEvent event, Who who, bool refused) {
   Effect effect;
-  apply(event, effect);
+  apply(event, who, refused, effect);
   // The waiting events its row lets through now, in the enum's order, until none is.
   for (bool again = waiting_ != 0; again;) {
     again = false;
     for (std::uint32_t rest = waiting_; rest != 0; rest &= rest - 1) {
       const auto next = static_cast<OpEvent>(std::countr_zero(rest));
-      const Transition* t = row_for(next);
+      const Row* t = row_for(next);
       if (t != nullptr && t->act == Act::kWait) continue;
       waiting_ &= ~bit(next);
-      apply(next, effect);  // no row now (the run ended): dropped
+      apply(next, waiting_who_[static_cast<std::size_t>(next)], false, effect);  // no row now (the run ended): dropped
       again = true;
       break;
     }
@@ -163,63 +183,81 @@ Effect& Effect::operator|=(const Effect& other) {
   return *this;
 }
 
-bool OperatingState::apply(OpEvent event, Effect& effect) {
-  // The conditions the settled states read are kept whatever the state.
+bool OperatingState::note(OpEvent event, Who who, Transition& published) {
   switch (event) {
-    case E::kLinkUp: link_up_ = true; break;
+    case E::kLinkUp: return !std::exchange(link_up_, true);
     case E::kLinkDown:
-    case E::kLinkTaken: link_up_ = false; break;
-    case E::kControllerUp: controller_up_ = true; break;
-    case E::kControllerDown: controller_up_ = false; break;
-    case E::kOperatorStop: note_stop(StopBy::kOperator, operator_pad_); break;
-    case E::kSupervisorStop: note_stop(StopBy::kSupervisor, supervisor_pad_); break;
-    case E::kGateTrip: note_stop(StopBy::kGate, operator_pad_); break;
+    case E::kLinkTaken: return std::exchange(link_up_, false);
+    case E::kControllerUp:
+      published.who = controller_lost_by_;  // the one that comes back is the one that was lost
+      return !std::exchange(controller_up_, true);
+    case E::kControllerDown:
+      if (controller_up_) controller_lost_by_ = who;
+      return std::exchange(controller_up_, false);
+    case E::kOperatorStop: return note_stop(StopBy::kOperator, operator_pad_, published);
+    case E::kSupervisorStop: return note_stop(StopBy::kSupervisor, supervisor_pad_, published);
+    case E::kGateTrip: return note_stop(StopBy::kGate, operator_pad_, published);
     case E::kOperatorReset:
     case E::kSupervisorReset: {
       const StopBy by = event == E::kSupervisorReset ? StopBy::kSupervisor : StopBy::kOperator;
       const auto& pad = by == StopBy::kSupervisor ? supervisor_pad_ : operator_pad_;
+      published.pad = pad;
       if (!may_reset(by, pad)) return false;
       stopped_by_.reset();
       stopper_pad_ = input::kNoPad;
       reset_by_ = by;
       reset_pad_ = pad;
-      ++reset_count_;
-      break;
+      return true;
     }
-    case E::kFreshPress: reset_by_.reset(); break;
-    case E::kNeutralSent: neutral_due_ = false; break;
-    case E::kShutdown: waiting_ = 0; break;  // whatever waited, the run ends
-    default: break;
+    case E::kFreshPress: reset_by_.reset(); return false;
+    case E::kNeutralSent: return std::exchange(neutral_due_, false);
+    case E::kShutdown: waiting_ = 0; return false;  // whatever waited, the run ends
+    default: return false;
   }
-  const Transition* t = row_for(event);
-  if (t == nullptr) return false;
+}
+
+void OperatingState::apply(OpEvent event, Who who, bool refused, Effect& effect) {
+  Transition published{state_, event, state_, who, input::kNoPad, false, refused};
+  // The conditions the settled states read are kept whatever the state.
+  const bool noted = note(event, who, published);
+  const bool reset_refused = (event == E::kOperatorReset || event == E::kSupervisorReset) && !noted;
+  const Row* t = reset_refused ? nullptr : row_for(event);
+  if (t == nullptr) {
+    if (noted) published_.push_back(published);
+    return;
+  }
   switch (t->act) {
-    case Act::kWait: waiting_ |= bit(event); return true;
-    case Act::kWithdraw: waiting_ &= ~bit(t->withdraws); return true;
+    case Act::kWait:
+      waiting_ |= bit(event);
+      waiting_who_[static_cast<std::size_t>(event)] = who;
+      break;
+    case Act::kWithdraw: waiting_ &= ~bit(t->withdraws); break;
     case Act::kAgain:
       neutral_due_ = effect.neutral_frames = true;
       effect.begin_reload = effect.begin_reload || event == E::kReloadBegin;
-      return true;
+      break;
     case Act::kGo:
-    case Act::kSettle: break;
+    case Act::kSettle: {
+      const OpState to = t->act == Act::kSettle ? settled() : t->to;
+      const bool changed = to != state_;
+      state_ = to;
+      effect.changed = effect.changed || changed;
+      effect.rebase = effect.rebase || t->rebase;
+      if (changed && (to == S::kSuspended || to == S::kReloading || to == S::kShuttingDown)) {
+        // Each of these begins with its own neutral frames.
+        neutral_due_ = effect.neutral_frames = true;
+        effect.begin_reload = effect.begin_reload || to == S::kReloading;
+      }
+      break;
+    }
   }
-  const OpState to = t->act == Act::kSettle ? settled() : t->to;
-  const bool changed = to != state_;
-  if (changed) entered_by_ = event;
-  state_ = to;
-  effect.changed = effect.changed || changed;
-  effect.rebase = effect.rebase || t->rebase;
-  if (changed && (to == S::kSuspended || to == S::kReloading || to == S::kShuttingDown)) {
-    // Each of these begins with its own neutral frames.
-    neutral_due_ = effect.neutral_frames = true;
-    effect.begin_reload = effect.begin_reload || to == S::kReloading;
-  }
-  return true;
+  published.to = state_;
+  published_.push_back(published);
 }
 
-void OperatingState::note_stop(StopBy by, input::PadId pad) {
+bool OperatingState::note_stop(StopBy by, input::PadId pad, Transition& published) {
   reset_by_.reset();
-  if (state_ == S::kShuttingDown) return;  // the run ends on neutral frames anyway
+  if (state_ == S::kShuttingDown) return false;  // the run ends on neutral frames anyway
   const bool latches = !stopped_by_;
   // A stop by both is the supervisor's: only the supervisor resets it.
   const bool taken = by == StopBy::kSupervisor && stopped_by_ != StopBy::kSupervisor;
@@ -228,12 +266,10 @@ void OperatingState::note_stop(StopBy by, input::PadId pad) {
     stopper_pad_ = pad;
   }
   // Pressed again while stopped: no latch changes, but the press is a fact.
-  if (latches || taken || state_ == S::kStopped) {
-    ++stop_count_;
-    last_stop_ = by;
-    last_stop_pad_ = pad;
-    last_stop_again_ = !latches && !taken;
-  }
+  if (!latches && !taken && state_ != S::kStopped) return false;
+  published.pad = pad;
+  published.again = !latches && !taken;
+  return true;
 }
 
 bool OperatingState::may_reset(StopBy by, input::PadId pad) const {
@@ -248,8 +284,8 @@ bool OperatingState::may_reset(StopBy by, input::PadId pad) const {
 bool OperatingState::operator==(const OperatingState& o) const {
   return state_ == o.state_ && link_up_ == o.link_up_ && controller_up_ == o.controller_up_ &&
          neutral_due_ == o.neutral_due_ && waiting_ == o.waiting_ && stopped_by_ == o.stopped_by_ &&
-         reset_by_ == o.reset_by_ && entered_by_ == o.entered_by_ && operator_pad_ == o.operator_pad_ &&
-         supervisor_pad_ == o.supervisor_pad_ && stopper_pad_ == o.stopper_pad_ && reset_pad_ == o.reset_pad_;
+         reset_by_ == o.reset_by_ && operator_pad_ == o.operator_pad_ && supervisor_pad_ == o.supervisor_pad_ &&
+         stopper_pad_ == o.stopper_pad_ && reset_pad_ == o.reset_pad_;
 }
 
 void OperatingState::set_pads(input::PadId operator_pad, input::PadId supervisor_pad) {
@@ -266,7 +302,8 @@ std::string_view to_string(OpState state) {
     case S::kStopped: return "stopped";
     case S::kSuspended: return "suspended";
     case S::kReloading: return "reloading";
-    case S::kShuttingDown: return "stopping";  // the word sessions record and the screen says since the first format
+    case S::kShuttingDown:
+      return "stopping";  // what the screen says (sessions have words of their own: record::state_word)
   }
   return "?";
 }
@@ -297,7 +334,7 @@ std::string_view to_string(OpEvent event) {
   return "?";
 }
 
-std::string to_string(const Transition& row) {
+std::string to_string(const Row& row) {
   switch (row.act) {
     case Act::kGo: return std::string(to_string(row.to));
     case Act::kSettle: return "settled";

@@ -25,10 +25,9 @@ constexpr std::uint64_t kMeasuringFrames = 25;
 
 bool measuring(const RunStatus& s) { return s.sent_timing.count < kMeasuringFrames; }
 
-/// "; at rest first: lefty" from the enabled text "enabled; at rest first: lefty".
-std::string held_back_note(const std::string& enable_text) {
-  constexpr std::string_view kEnabled = "enabled";
-  return enable_text.starts_with(kEnabled) ? enable_text.substr(kEnabled.size()) : std::string();
+/// Enabled: "; at rest first: lefty", the inputs the rest rule still holds back; "" when none is.
+std::string held_back_note(const RunStatus& s) {
+  return s.enabled() && !s.held_back.empty() ? "; at rest first: " + s.held_back : std::string();
 }
 
 /// text broken at spaces into pieces at most room wide (a word longer than that is cut by the screen).
@@ -54,7 +53,7 @@ std::string centred(const std::string& text, std::size_t width) {
 }  // namespace
 
 std::string state_words(const RunStatus& s) {
-  if (s.enabled()) return "ENABLED" + held_back_note(s.enable_text);
+  if (s.enabled()) return "ENABLED" + held_back_note(s);
   if (s.shutting_down()) return "SHUTTING DOWN: sending neutral frames";
   return to_upper(run::to_string(s.state)) + ": " + (s.reset_progress.empty() ? s.enable_text : s.reset_progress);
 }
@@ -67,8 +66,7 @@ std::vector<Line> state_lines(const RunStatus& s, std::size_t width) {
   constexpr std::string_view kLabel = "state       ";
   std::vector<Line> out;
   if (s.enabled()) {
-    out.push_back(
-        Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s.enable_text), Style::kWarn));
+    out.push_back(Line(std::string(kLabel)).add("ENABLED", Style::kGood).add(held_back_note(s), Style::kWarn));
   } else {
     const auto text = state_words(s);
     const auto room = std::max<std::size_t>(width > kLabel.size() ? width - kLabel.size() : 0, 20);

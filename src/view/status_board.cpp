@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <tuple>
 
@@ -17,17 +18,31 @@ constexpr const char* kNeutralOnly = "neutral frames only: the server stalled an
 /// from: all of it but the frame, its time and the counters.
 auto said(const run::TickReport& r) {
   return std::tie(r.connected, r.controller, r.supervised, r.supervisor_connected, r.supervisor, r.refusal, r.state,
-                  r.stopped_by, r.reset_by, r.entered_by, r.supervisor_back, r.reload_refused, r.engine, r.link.state,
-                  r.operator_may_reset, r.supervisor_may_reset, r.stopper_pad, r.link.far_end_reading, r.link.detail);
+                  r.stopped_by, r.reset_by, r.engine, r.link.state, r.operator_may_reset, r.supervisor_may_reset,
+                  r.stopper_pad, r.link.far_end_reading, r.link.detail);
 }
 
+bool changed_state(const run::Transition& t) { return t.to != t.from; }
+
 }  // namespace
+
+void FirstCause::follow(const std::vector<run::ReportedTransition>& transitions) {
+  using E = run::OpEvent;
+  for (const auto& [t, pad] : transitions) {
+    const bool up = t.event == E::kLinkUp;
+    if ((t.event == E::kLinkDown || t.event == E::kLinkTaken) && t.who != run::Who::kLoop) link_lost_ = true;
+    // Only a link that was lost is regained; one that opened leaves the cause what it was.
+    if (changed_state(t) && (!up || link_lost_)) cause_ = t;
+    if (up) link_lost_ = false;
+  }
+}
 
 void RunStatusBoard::observe(const run::TickReport& r) {
   // A tick at rest says what the one before said: only the frame, its time
   // and the counters move (the status is copied, its words formed and the
   // log's lines looked for only when something else changed).
   std::optional<RunStatus> before;
+  cause_.follow(r.transitions);
   {
     const std::lock_guard lock(mutex_);
     // The rate and jitter are the link's since it came up: a gap while it
@@ -39,7 +54,8 @@ void RunStatusBoard::observe(const run::TickReport& r) {
     s.sent = r.data;
     s.link = r.link.counters;
     s.gate_trips = r.gate_trips;
-    if (!said_ || said(*said_) != said(r)) {
+    // Words are formed again on the machine's transitions, or when what they are made of changed.
+    if (!said_ || !r.transitions.empty() || said(*said_) != said(r)) {
       before = s;
       s.connected = r.connected;
       if (s.connected) s.controller = r.controller.empty() ? "controller" : printable_text(r.controller);
@@ -50,7 +66,8 @@ void RunStatusBoard::observe(const run::TickReport& r) {
       s.consent = r.engine.consent;
       s.state = r.state;
       s.stopped_by = stopped_by_text(r);
-      s.enable_text = state_text(r);
+      s.enable_text = state_text(r, cause_.transition());
+      s.held_back = held_back_text(r.engine);
       s.reset_progress = reset_progress_text(r);
       // "deadman released" forever would send the operator looking at the deadman.
       if (const auto note = joystick_note(s.pad_names, s.game_controller);
@@ -74,7 +91,7 @@ void RunStatusBoard::observe(const run::TickReport& r) {
         "sent instead, and the bridge is stopped",
         r.gate_fault);
   }
-  if (before) log_changes(*before, status_);
+  if (before) log_changes(*before, status_, r.transitions);
   if (r.skipped > 0) spdlog::warn("clock stalled: {} tick(s) skipped, none sent late in a burst", r.skipped);
   first_tick_ = false;
 }
@@ -88,9 +105,16 @@ void RunStatusBoard::observe(const run::TickReport& r, const input::InputSource&
   observe(r);
 }
 
-void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after) const {
+void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after,
+                                 const std::vector<run::ReportedTransition>& transitions) const {
+  const auto any = [&transitions](auto&& what) {
+    return std::any_of(transitions.begin(), transitions.end(), [&what](const auto& r) { return what(r.transition); });
+  };
+  const bool entered = first_tick_ || any(changed_state);
   if (after.shutting_down()) {
-    if (!before.shutting_down()) spdlog::info("stopping: sending neutral frames");
+    if (any([](const run::Transition& t) { return changed_state(t) && t.to == run::OpState::kShuttingDown; })) {
+      spdlog::info("stopping: sending neutral frames");
+    }
     return;
   }
   if (before.far_end_reading != after.far_end_reading) {
@@ -110,12 +134,16 @@ void RunStatusBoard::log_changes(const RunStatus& before, const RunStatus& after
     // A stop is logged when it latches and when it becomes another's: not
     // when its pad is unplugged, which the controller's line says. What else
     // its words say meanwhile (a stop button held, let go) is information.
-    if (first_tick_ || before.state != after.state || before.stopped_by != after.stopped_by) {
+    const bool latched = any([](const run::Transition& t) {
+      return !t.again && (t.event == run::OpEvent::kOperatorStop || t.event == run::OpEvent::kSupervisorStop ||
+                          t.event == run::OpEvent::kGateTrip);
+    });
+    if (entered || latched) {
       spdlog::warn("STOP: {}", after.enable_text);
     } else if (before.enable_text != after.enable_text) {
       spdlog::info("stopped: {}", after.enable_text);
     }
-  } else if (first_tick_ || before.state != after.state || before.enable_text != after.enable_text) {
+  } else if (entered || before.enable_text != after.enable_text) {
     if (after.enabled()) spdlog::info("{}", after.enable_text);
     else spdlog::info("{}: {}", run::to_string(after.state), after.enable_text);
   }
@@ -159,7 +187,7 @@ RunStatus RunStatusBoard::status() const {
   return status;
 }
 
-std::string state_text(const run::TickReport& r) {
+std::string state_text(const run::TickReport& r, const std::optional<run::Transition>& cause) {
   using run::OpState;
   switch (r.state) {
     case OpState::kNoLink:
@@ -178,17 +206,20 @@ std::string state_text(const run::TickReport& r) {
       if (r.reset_by) {
         return "stop reset by the " + std::string(run::to_string(*r.reset_by)) + ": press the deadman afresh";
       }
-      const auto afresh = [](const std::string& cause) { return cause + ": press the deadman afresh"; };
-      if (r.entered_by == run::OpEvent::kLinkUp) return afresh("link regained");
-      if (r.entered_by == run::OpEvent::kReloadDone) {
-        return afresh(r.reload_refused ? "reload refused, the old settings kept" : "reloaded");
+      const auto afresh = [](const std::string& why) { return why + ": press the deadman afresh"; };
+      const auto by = cause ? std::optional(cause->event) : std::nullopt;
+      if (by == run::OpEvent::kLinkUp) return afresh("link regained");
+      if (by == run::OpEvent::kReloadDone) {
+        return afresh(cause->refused ? "reload refused, the old settings kept" : "reloaded");
       }
-      if (r.entered_by == run::OpEvent::kResume) return afresh("resumed");
-      if (r.supervisor_back) return afresh("supervisor's controller back");
+      if (by == run::OpEvent::kResume) return afresh("resumed");
+      if (by == run::OpEvent::kControllerUp && cause->who == run::Who::kSupervisor) {
+        return afresh("supervisor's controller back");
+      }
       // At start-up, or a controller just connected, released is no cause: what enables is.
       if (r.engine.deadman == mapping::DeadmanState::kReleased) {
-        if (!r.entered_by) return "press the deadman to enable";
-        if (r.entered_by == run::OpEvent::kControllerUp) return "controller connected: press the deadman to enable";
+        if (!by) return "press the deadman to enable";
+        if (by == run::OpEvent::kControllerUp) return "controller connected: press the deadman to enable";
       }
       return std::string(describe(r.engine.deadman));
     }
@@ -268,9 +299,14 @@ std::string joystick_note(bool pad_names, std::optional<bool> game_controller) {
 
 std::string enable_text(const mapping::EngineStatus& status) {
   std::string text(describe(status.deadman));
-  if (status.deadman != mapping::DeadmanState::kFreshHold || status.held_back.empty()) return text;
-  text += "; at rest first:";
-  for (const auto key : status.held_back) text += " " + input::input_name(key);
+  const auto held = held_back_text(status);
+  return held.empty() ? text : text + "; at rest first: " + held;
+}
+
+std::string held_back_text(const mapping::EngineStatus& status) {
+  std::string text;
+  if (status.deadman != mapping::DeadmanState::kFreshHold) return text;
+  for (const auto key : status.held_back) text += (text.empty() ? "" : " ") + input::input_name(key);
   return text;
 }
 

@@ -30,7 +30,7 @@ session=$(newest)
 grep -q "recording to $session" "$TMP/err" || fail "the log does not say where the session goes"
 grep -Eq "recorded [0-9]+ records to $session \(last hash [0-9a-f]{64}\)" "$TMP/err" || fail "no closing line"
 hash=$(grep -Eo "last hash [0-9a-f]{64}" "$TMP/err" | cut -d' ' -f3)
-head -1 "$session" | grep -q "^0 andros-session 3 " || fail "first line: $(head -1 "$session")"
+head -1 "$session" | grep -q "^0 andros-session 4 " || fail "first line: $(head -1 "$session")"
 
 expect_exit 0 "$BIN" verify "$session"
 head -1 "$TMP/out" | grep -Eqx "intact \([0-9]+ records\)" || fail "verify: $(cat "$TMP/out")"

@@ -261,7 +261,7 @@ TEST(Session, TheRateIsWrittenInMillihertz) {
   const auto line = payload::settings(small_settings());
   EXPECT_NE(line.find("\"rate_millihertz\":12500"), std::string::npos) << line;
   EXPECT_EQ(line.find("rate_mhz"), std::string::npos) << line;
-  EXPECT_EQ(payload::header(), "andros-session 3");
+  EXPECT_EQ(payload::header(), "andros-session 4");
 }
 
 // Format 1 named the same value `rate_mhz`: such a session still reads back.

@@ -289,11 +289,14 @@ TEST(Bridge, OnlyALinkLostAndBackIsALinkRegained) {
   EXPECT_EQ(started[0].state, OpState::kNotEnabled);
   EXPECT_EQ(view::state_text(started[0]), "press the deadman to enable");
 
+  // As the status board says it: the first cause followed from the reports' transitions.
   const auto first_not_enabled_from = [](const std::vector<TickReport>& ticks, std::int64_t t_ms) {
-    const auto it = std::find_if(ticks.begin(), ticks.end(), [t_ms](const TickReport& r) {
-      return r.t_ms >= t_ms && r.state == OpState::kNotEnabled;
-    });
-    return it == ticks.end() ? std::string("(never not enabled)") : view::state_text(*it);
+    view::FirstCause cause;
+    for (const auto& r : ticks) {
+      cause.follow(r.transitions);
+      if (r.t_ms >= t_ms && r.state == OpState::kNotEnabled) return view::state_text(r, cause.transition());
+    }
+    return std::string("(never not enabled)");
   };
   PressToDrive frames;
   const auto lost = run_script("0 connect pad\n40 link down\n120 link up\n200 end\n", frames);

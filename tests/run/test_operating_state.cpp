@@ -94,7 +94,7 @@ TEST(OperatingState, ReachesEveryStartItClaims) {
 
 /// The row a machine at `start` takes for `event`: the first that holds (a
 /// row for while the neutral frames go out holds only then).
-const Transition* row_taken(const Start& start, E event) {
+const Row* row_taken(const Start& start, E event) {
   for (const auto& row : OperatingState::table()) {
     if (row.from == start.state && row.event == event && (!row.sending || !start.sent)) return &row;
   }
@@ -340,6 +340,51 @@ TEST(OperatingState, ASecondReloadBeginsItAgainAndAShutdownEndsWhatWaits) {
   EXPECT_FALSE(m.waiting(E::kSuspend));
   m.on(E::kReloadDone);
   EXPECT_EQ(m.state(), S::kShuttingDown);
+}
+
+// Issue 36, item 4: each step of the machine is published as {from, event,
+// to, who}: a state changed, a condition changed (a stop made another's, a
+// stop pressed again, the neutral frames out), an event that waits; a step
+// that changes nothing (a reset that may not reset) is not.
+TEST(OperatingState, EachStepIsPublishedWithWhoMadeIt) {
+  OperatingState m(true);
+  m.set_pads(1, 2);
+  m.on(E::kControllerUp);
+  m.on(E::kFreshPress);
+  m.on(E::kOperatorStop);
+  m.on(E::kSupervisorStop);
+  m.on(E::kOperatorStop);
+  m.on(E::kOperatorReset);  // the supervisor's stop: the operator may not reset it
+  m.on(E::kSupervisorReset);
+  m.on(E::kControllerDown, Who::kSupervisor);
+  m.on(E::kControllerUp);  // the one that comes back is the one that was lost
+  m.on(E::kReloadBegin, Who::kScript);
+  m.on(E::kSuspend, Who::kRequest);  // waits for the reload's outcome
+  m.on(E::kNeutralSent);
+  m.on(E::kReloadDone, Who::kLoop, true);  // and the suspend that waited, as the request's
+  using W = Who;
+  const std::vector<Transition> want{
+      {S::kNoController, E::kControllerUp, S::kNotEnabled, W::kOperator},
+      {S::kNotEnabled, E::kFreshPress, S::kEnabled, W::kOperator},
+      {S::kEnabled, E::kOperatorStop, S::kStopped, W::kOperator, 1},
+      {S::kStopped, E::kSupervisorStop, S::kStopped, W::kSupervisor, 2},
+      {S::kStopped, E::kOperatorStop, S::kStopped, W::kOperator, 1, true},
+      {S::kStopped, E::kSupervisorReset, S::kNotEnabled, W::kSupervisor, 2},
+      {S::kNotEnabled, E::kControllerDown, S::kNoController, W::kSupervisor},
+      {S::kNoController, E::kControllerUp, S::kNotEnabled, W::kSupervisor},
+      {S::kNotEnabled, E::kReloadBegin, S::kReloading, W::kScript},
+      {S::kReloading, E::kSuspend, S::kReloading, W::kRequest},
+      {S::kReloading, E::kNeutralSent, S::kReloading, W::kLoop},
+      {S::kReloading, E::kReloadDone, S::kNotEnabled, W::kLoop, input::kNoPad, false, true},
+      {S::kNotEnabled, E::kSuspend, S::kSuspended, W::kRequest},
+  };
+  const auto got = m.take_transitions();
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(got[i], want[i]) << i << ": " << to_string(got[i].from) << " + " << to_string(got[i].event) << " -> "
+                               << to_string(got[i].to);
+  }
+  EXPECT_TRUE(m.take_transitions().empty());  // taken
 }
 
 TEST(OperatingState, StoppingIsTheEnd) {

@@ -116,8 +116,16 @@ TEST(OperatorScreens, StateLineNamesTheInputsHeldBackUntilAtRest) {
   s.enable_text = "enabled";
   EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
   s.enable_text = "enabled; at rest first: lefty";
+  s.held_back = "lefty";
   EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"),
             std::string::npos);
+  // The screen says what the board gave it apart, never a part of the words it parsed.
+  s.enable_text = "enabled";
+  EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED; at rest first: lefty\n"),
+            std::string::npos);
+  s.held_back.clear();
+  s.enable_text = "enabled; at rest first: lefty";
+  EXPECT_NE(render_run_screen(s, {80, 24}).text().find("state       ENABLED\n"), std::string::npos);
 }
 
 TEST(FrameTiming, MeasuresRateAndJitter) {

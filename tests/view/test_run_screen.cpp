@@ -123,6 +123,7 @@ TEST(RunScreen, TheStateLineWrapsAndKeepsTheLayerAndTheWeaponsMode) {
   s.armed = true;
   s.speed = {0, 3, 0.25};
   s.enable_text = "enabled; at rest first: a lefttrigger rightx righty dpup";
+  s.held_back = "a lefttrigger rightx righty dpup";
   for (const TermSize size : {TermSize{80, 24}, TermSize{100, 30}}) {
     SCOPED_TRACE(std::to_string(size.cols));
     const auto lines = shown(s, size);

@@ -20,6 +20,12 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+/// A transition of the machine as the loop reports it.
+run::ReportedTransition step(run::OpState from, run::OpEvent event, run::OpState to, run::Who who,
+                             bool refused = false) {
+  return {run::Transition{.from = from, .event = event, .to = to, .who = who, .refused = refused}, {}};
+}
+
 run::TickReport tick(std::int64_t t_ms) {
   run::TickReport r;
   r.t_ms = t_ms;
@@ -114,10 +120,12 @@ TEST(RunStatusBoard, ARepeatedReportMovesTheCountersAndANewKindOfControllerTheWo
   RunStatusBoard board(RunStatus{});
   auto r = tick(40);
   r.state = run::OpState::kNotEnabled;
-  r.entered_by = run::OpEvent::kRelease;
+  r.transitions = {
+      step(run::OpState::kEnabled, run::OpEvent::kRelease, run::OpState::kNotEnabled, run::Who::kOperator)};
   r.engine.deadman = mapping::DeadmanState::kReleased;
   board.observe(r);
   EXPECT_EQ(board.status().enable_text, "deadman released");
+  r.transitions.clear();  // reported once
   r.t_ms = 80;
   r.link.counters.sent = 8;
   r.data[3] = 0x5B;
@@ -147,6 +155,7 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   r.result = link::SendResult::kDown;
   r.link.state = link::LinkState::kConnecting;
   r.link.detail = "No such file or directory";
+  r.transitions = {step(run::OpState::kEnabled, run::OpEvent::kLinkDown, run::OpState::kNoLink, run::Who::kLink)};
   board.observe(r);
   auto s = board.status();
   EXPECT_FALSE(s.enabled());
@@ -157,8 +166,9 @@ TEST(RunStatusBoard, WhatTheScreenSaysIsTheOperatingStateNotTheEnginesView) {
   // fresh press. The reason is the first cause, and stays when the engine
   // then reads the held deadman as held since the rebase (a consequence).
   r.state = run::OpState::kNotEnabled;
-  r.entered_by = run::OpEvent::kLinkUp;
+  r.transitions = {step(run::OpState::kNoLink, run::OpEvent::kLinkUp, run::OpState::kNotEnabled, run::Who::kLink)};
   board.observe(r);
+  r.transitions.clear();
   s = board.status();
   EXPECT_FALSE(s.enabled());
   EXPECT_EQ(s.enable_text, "link regained: press the deadman afresh");
@@ -178,24 +188,47 @@ TEST(RunStatusBoard, NotEnabledSaysTheFirstCauseNeverItsConsequence) {
   r.state = run::OpState::kNotEnabled;
   r.link.state = link::LinkState::kUp;
   r.engine.deadman = mapping::DeadmanState::kHeldNotFresh;  // the held deadman, after the rebase
-  const auto said = [&r] { return view::state_text(r); };
-  r.entered_by = run::OpEvent::kReloadDone;
-  EXPECT_EQ(said(), "reloaded: press the deadman afresh");
-  r.reload_refused = true;
-  EXPECT_EQ(said(), "reload refused, the old settings kept: press the deadman afresh");
-  r.reload_refused = false;
-  r.entered_by = run::OpEvent::kResume;
-  EXPECT_EQ(said(), "resumed: press the deadman afresh");
-  r.entered_by = run::OpEvent::kControllerUp;
-  r.supervised = r.supervisor_connected = r.supervisor_back = true;
-  EXPECT_EQ(said(), "supervisor's controller back: press the deadman afresh");
+  using E = run::OpEvent;
+  const auto said = [&r](run::OpState from, E event, run::Who who, bool refused = false) {
+    return view::state_text(r, step(from, event, run::OpState::kNotEnabled, who, refused).transition);
+  };
+  EXPECT_EQ(said(run::OpState::kReloading, E::kReloadDone, run::Who::kLoop), "reloaded: press the deadman afresh");
+  EXPECT_EQ(said(run::OpState::kReloading, E::kReloadDone, run::Who::kLoop, true),
+            "reload refused, the old settings kept: press the deadman afresh");
+  EXPECT_EQ(said(run::OpState::kSuspended, E::kResume, run::Who::kRequest), "resumed: press the deadman afresh");
+  r.supervised = r.supervisor_connected = true;
+  EXPECT_EQ(said(run::OpState::kNoController, E::kControllerUp, run::Who::kSupervisor),
+            "supervisor's controller back: press the deadman afresh");
   // The operator's own controller connected: held since connect is the first cause.
-  r.supervisor_back = false;
-  EXPECT_EQ(said(), "deadman held since connect or start-up: release and press it again");
+  EXPECT_EQ(said(run::OpState::kNoController, E::kControllerUp, run::Who::kOperator),
+            "deadman held since connect or start-up: release and press it again");
   // Released from enabled: the deadman's own state.
-  r.entered_by = run::OpEvent::kRelease;
   r.engine.deadman = mapping::DeadmanState::kReleased;
-  EXPECT_EQ(said(), "deadman released");
+  EXPECT_EQ(said(run::OpState::kEnabled, E::kRelease, run::Who::kOperator), "deadman released");
+}
+
+// Issue 36, item 4: the first cause is followed from the machine's
+// transitions: a link lost and back is "link regained"; a link the bridge
+// closed itself (a suspend) and opened again is no cause, the resume is.
+TEST(FirstCause, ALinkRegainedIsACauseALinkReopenedIsNot) {
+  using E = run::OpEvent;
+  using S = run::OpState;
+  FirstCause cause;
+  EXPECT_FALSE(cause.transition());
+  cause.follow({step(S::kNoLink, E::kLinkUp, S::kNotEnabled, run::Who::kLink)});  // the first link: no cause
+  EXPECT_FALSE(cause.transition());
+  cause.follow({step(S::kNotEnabled, E::kLinkDown, S::kNoLink, run::Who::kScript),
+                step(S::kNoLink, E::kLinkUp, S::kNotEnabled, run::Who::kLink)});
+  ASSERT_TRUE(cause.transition());
+  EXPECT_EQ(cause.transition()->event, E::kLinkUp);
+  cause.follow({step(S::kNotEnabled, E::kSuspend, S::kSuspended, run::Who::kRequest),
+                step(S::kSuspended, E::kLinkDown, S::kSuspended, run::Who::kLoop),
+                step(S::kSuspended, E::kResume, S::kNoLink, run::Who::kRequest)});
+  cause.follow({step(S::kNoLink, E::kLinkUp, S::kNotEnabled, run::Who::kLink)});
+  EXPECT_EQ(cause.transition()->event, E::kResume);
+  // A step that changed no state (only a condition: the neutral frames out) is no cause.
+  cause.follow({step(S::kNotEnabled, E::kNeutralSent, S::kNotEnabled, run::Who::kLoop)});
+  EXPECT_EQ(cause.transition()->event, E::kResume);
 }
 
 // Issue 33, item 7: at start-up, and when a controller connects, the state
@@ -207,10 +240,12 @@ TEST(RunStatusBoard, AtStartUpNotEnabledSaysWhatEnables) {
   r.link.state = link::LinkState::kUp;
   r.engine.deadman = mapping::DeadmanState::kReleased;
   EXPECT_EQ(view::state_text(r), "press the deadman to enable");
-  r.entered_by = run::OpEvent::kControllerUp;
-  EXPECT_EQ(view::state_text(r), "controller connected: press the deadman to enable");
+  const auto connected =
+      step(run::OpState::kNoController, run::OpEvent::kControllerUp, run::OpState::kNotEnabled, run::Who::kOperator)
+          .transition;
+  EXPECT_EQ(view::state_text(r, connected), "controller connected: press the deadman to enable");
   r.engine.deadman = mapping::DeadmanState::kHeldNotFresh;  // held at connect: that is what to undo
-  EXPECT_EQ(view::state_text(r), "deadman held since connect or start-up: release and press it again");
+  EXPECT_EQ(view::state_text(r, connected), "deadman held since connect or start-up: release and press it again");
 }
 
 /// Every report of an event script replayed through the loop with the shipped mapping_file.
@@ -387,6 +422,8 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   board.observe(r);
   r.t_ms = 80;
   r.state = run::OpState::kStopped;
+  r.transitions = {
+      step(run::OpState::kEnabled, run::OpEvent::kSupervisorStop, run::OpState::kStopped, run::Who::kSupervisor)};
   r.stopped_by = run::StopBy::kSupervisor;
   r.supervisor_may_reset = true;
   r.engine.operator_reset = "back+start";
@@ -401,6 +438,7 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
             "stopped by the supervisor (Pad B): only the supervisor resets it: hold back+start 2 s on its pad; then "
             "press the deadman afresh");
   // The hold's progress, in place of the instructions, and never in the log (it moves every tick).
+  r.transitions.clear();
   r.t_ms = 100;
   r.engine.reset_hold = mapping::ResetHold{input::Pad::kSupervisor, 1200, 2000};
   board.observe(r);
@@ -410,6 +448,8 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   r.engine.reset_hold.reset();
   r.t_ms = 120;
   r.state = run::OpState::kNotEnabled;
+  r.transitions = {
+      step(run::OpState::kStopped, run::OpEvent::kSupervisorReset, run::OpState::kNotEnabled, run::Who::kSupervisor)};
   r.stopped_by.reset();
   r.stopper_pad = {};
   r.reset_by = run::StopBy::kSupervisor;
@@ -420,6 +460,8 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   EXPECT_EQ(s.enable_text, "stop reset by the supervisor: press the deadman afresh");
   r.t_ms = 160;
   r.state = run::OpState::kStopped;
+  r.transitions = {
+      step(run::OpState::kNotEnabled, run::OpEvent::kOperatorStop, run::OpState::kStopped, run::Who::kOperator)};
   r.reset_by.reset();
   r.stopped_by = run::StopBy::kOperator;
   r.stopper_pad.name = "pad";
@@ -428,6 +470,8 @@ TEST(RunStatusBoard, WhoStoppedAndWhoResetAreSaidAndLogged) {
   EXPECT_EQ(board.status().stopped_by, "stopped by the operator (pad)");
   // The pad that stopped unplugged: its name is kept for the stop, and it is no second STOP line.
   r.t_ms = 200;
+  r.transitions = {
+      step(run::OpState::kStopped, run::OpEvent::kControllerDown, run::OpState::kStopped, run::Who::kOperator)};
   r.connected = false;
   r.controller.clear();
   // r.stopper_pad stays the pad that stopped

@@ -80,10 +80,11 @@ class Recorder {
 
   explicit Recorder(SessionWriter& writer)
       : writer_(&writer), sink_([&writer](std::string payload) { writer.push(std::move(payload)); }) {}
-  /// repeat_frame_ms: the frame record written again after this long
-  /// (kFrameRecordPeriodMs); 0 for a replay of a format that did not.
-  explicit Recorder(PayloadSink sink, std::int64_t repeat_frame_ms = kFrameRecordPeriodMs)
-      : sink_(std::move(sink)), repeat_frame_ms_(repeat_frame_ms) {}
+  /// format: the session format whose records it makes (a replay makes
+  /// those of the session it replays): before kSpacedFormat, no frame
+  /// record is written again after kFrameRecordPeriodMs unchanged; before
+  /// kTransitionFormat, no transition records, and only a tick's last stop press.
+  explicit Recorder(PayloadSink sink, int format = kSessionFormat) : sink_(std::move(sink)), format_(format) {}
 
   /// Before the loop starts: the session's header.
   void header(std::string_view version, std::string_view local_time, long pid, std::string_view host,
@@ -94,6 +95,10 @@ class Recorder {
   void paused() { after_pause_ = true; }
   void reloaded(const run::ReloadOutcome& outcome, const SessionSettings* settings) noexcept;
   void input_end(std::int64_t t_ms) noexcept;
+  /// A tick's report: its gate trip, the machine's transitions (a
+  /// transition record for each that changed the state, a stop or reset
+  /// record for each stop press and reset), the state, layer and link when
+  /// they changed, and its frame when it changed.
   void observe(const run::TickReport& report) noexcept;
   /// A record the command adds to the loop's (the trainer's course and score: payload::course, payload::score).
   void add(std::string payload) noexcept {
@@ -133,16 +138,14 @@ class Recorder {
 
   SessionWriter* writer_ = nullptr;  ///< null: not writing (a replay's)
   PayloadSink sink_;
-  std::int64_t repeat_frame_ms_ = kFrameRecordPeriodMs;
+  int format_ = kSessionFormat;
   std::int64_t t_ms_ = 0;  ///< the last pump's time: the tick's
   bool after_pause_ = false;
   bool input_ended_ = false;
   bool stop_recorded_ = false;
   bool first_ = true;
-  // What the last report said, for the records written only on a change.
+  // What the last records said, for those written only on a change.
   run::OpState state_ = run::OpState::kNoLink;
-  std::uint32_t stop_count_ = 0;  ///< as the last report said (TickReport::stop_count)
-  std::uint32_t reset_count_ = 0;
   std::string layer_;
   link::LinkState link_state_ = link::LinkState::kConnecting;
   bool link_motion_ = true;

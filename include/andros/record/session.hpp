@@ -40,8 +40,13 @@ inline constexpr std::string_view kSessionMagic = "andros-session";
 /// tick is more than that after a record (a reader refuses a session of
 /// format 3 or later whose ticks stretch further: check_record_spacing()).
 /// 2: the settings' rate is `rate_millihertz`; format 1 named it `rate_mhz`
-/// (read as megahertz by everyone). All three are read.
-inline constexpr int kSessionFormat = 3;
+/// (read as megahertz by everyone). 4: a `transition` record for each step
+/// of the machine that changed its state (its event and who it came from),
+/// and a stop record for each stop press of a tick (format 3 wrote the
+/// tick's last). All four are read.
+inline constexpr int kSessionFormat = 4;
+/// The first format with transition records.
+inline constexpr int kTransitionFormat = 4;
 /// The first format whose texts are written as printable_text() writes them.
 inline constexpr int kEscapedTextFormat = 3;
 /// The first format whose frame records are kFrameRecordPeriodMs apart at most.
@@ -153,6 +158,9 @@ std::string frame(const run::TickReport& report, std::int64_t gap);
 /// The same line from a frame record as read (replay's comparison makes the recorded one again).
 std::string frame(const FrameRecord& record);
 std::string state(std::int64_t t_ms, run::OpState state);
+/// `transition T FROM EVENT TO WHO` (format 4): a transition of the machine
+/// that changed its state, in the session's own words (state_word()...).
+std::string transition(std::int64_t t_ms, const run::Transition& transition);
 /// `gate T "FAULT"`: the frame gate replaced the frame of tick T (an internal error).
 std::string gate(std::int64_t t_ms, std::string_view fault);
 /// `stop T WHO "NAME"` / `reset T WHO`: who stopped, who reset.
@@ -236,6 +244,12 @@ struct StateRecord {
   run::OpState state = run::OpState::kNoLink;
   int line = 0;  ///< the record's line in the file
 };
+/// `transition T FROM EVENT TO WHO` (format 4 on): the machine's step at tick T.
+struct TransitionRecord {
+  std::int64_t t_ms = 0;
+  run::Transition transition{};  ///< from, event, to, who (its pad: the stop and reset records')
+  int line = 0;                  ///< the record's line in the file
+};
 
 /// `stop T operator|supervisor|gate "NAME" {PAD}` (whose stop latched, or
 /// became whose, or was pressed again while latched (`"again":true`); the gate's: the frame
@@ -276,8 +290,9 @@ struct Session {
   std::vector<ReloadRecord> reloads;
   std::vector<FrameRecord> frames;
   std::vector<StateRecord> states;
-  std::vector<TimedText> gate_trips;  ///< frames the frame gate replaced: when, and the rule they broke
-  std::vector<StopRecord> stops;      ///< stops and resets, in order
+  std::vector<TransitionRecord> transitions;  ///< none before format 4
+  std::vector<TimedText> gate_trips;          ///< frames the frame gate replaced: when, and the rule they broke
+  std::vector<StopRecord> stops;              ///< stops and resets, in order
   std::vector<TimedText> layers;
   std::vector<LinkRecord> links;
   std::optional<std::int64_t> input_end;
@@ -366,7 +381,17 @@ std::string room_text(const Session& session);
 
 std::string_view request_name(run::Request request);
 std::optional<run::Request> parse_request(std::string_view name);
+/// The session's own words for the machine (docs/recording.md), kept apart
+/// from what the screen says, so that a change of the display's text never
+/// changes a session: a state record's STATE ("not enabled", "stopping"...),
+/// and a transition record's FROM and TO (the same, a space as `-`:
+/// "not-enabled"), EVENT ("deadman-fresh-press") and WHO ("operator", "script").
+std::string_view state_word(run::OpState state);
 std::optional<run::OpState> parse_op_state(std::string_view name);
+std::string_view event_word(run::OpEvent event);
+std::string_view who_word(run::Who who);
+/// A transition record's FIELDS: "not-enabled deadman-fresh-press enabled operator"; nullopt when not such.
+std::optional<run::Transition> parse_transition(std::string_view fields);
 /// A stop record's WHO: "operator", "supervisor", "gate" (the frame gate's trip).
 std::string_view stopper_word(run::StopBy by);
 std::optional<run::StopBy> parse_stopper(std::string_view word);

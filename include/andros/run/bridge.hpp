@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "andros/base/clock.hpp"
 #include "andros/input/input_source.hpp"
@@ -32,6 +33,15 @@ namespace andros::run {
 using mapping::FrameSource;
 using mapping::Step;
 
+/// A transition of the machine as a report carries it: with what is known
+/// of the physical pad it names (Transition::pad), which a report outlives.
+struct ReportedTransition {
+  Transition transition;
+  input::PadIdentity pad;
+
+  bool operator==(const ReportedTransition&) const = default;
+};
+
 /// What one tick did, for the status view and the log. Values only, copied by
 /// the loop: whoever reads a report never reaches back into the loop, the
 /// engine or the link (docs/architecture.md).
@@ -47,25 +57,15 @@ struct TickReport {
   std::optional<StopBy> reset_by;    ///< who reset the last stop, until the next stop or enabled
   input::PadIdentity stopper_pad;    ///< the physical pad whose stop is latched (OperatingState::stopper_pad)
   input::PadIdentity reset_pad;      ///< the pad that reset the last stop
-  std::uint32_t stop_count = 0;      ///< stop presses so far (OperatingState::stop_count): a new one is recorded
-  std::optional<StopBy> last_stop;   ///< the last of them: whose
-  input::PadIdentity last_stop_pad;  ///< and the pad
-  bool last_stop_again = false;      ///< and it came while stopped, the latch and its owner unchanged
-  std::uint32_t reset_count = 0;     ///< resets so far
   /// Stopped: a reset gesture completed now on the operator's pad (the
   /// supervisor's) would reset the stop; false on the operator's when the
   /// stop is the supervisor's, or another pad's (the one that stopped is gone).
   bool operator_may_reset = false;
   bool supervisor_may_reset = false;
-  /// The first cause of `state`: the event that brought the machine into it
-  /// (OperatingState::entered_by), kLinkUp only for a link lost and regained.
-  /// A link that opened (the first time, or again after the bridge's own
-  /// close for a suspend) is no cause: then what brought the machine into
-  /// kNoLink before it (none at start-up, kResume after a suspend).
-  std::optional<OpEvent> entered_by;
-  bool supervisor_back =
-      false;  ///< entered by kControllerUp: the supervisor's controller came back (the operator's stayed)
-  bool reload_refused = false;        ///< entered by kReloadDone: the reload was refused (the old settings stay)
+  /// What the machine did since the last report, in order: every view of
+  /// the run (the pad's feedback, the status board, the recorder) reacts to
+  /// these, never to a difference between two reports.
+  std::vector<ReportedTransition> transitions;
   bool connected = false;             ///< a controller is connected
   std::string controller;             ///< its name (may be empty)
   bool supervised = false;            ///< a supervisor's controller is configured (InputSource::supervised)
@@ -169,10 +169,13 @@ class Bridge {
   void drive(std::int64_t t_ms, const Observer& observe);
   void on_request(Request request);
   void on_fault(const input::InputEvent& fault);
-  /// The event through the machine, then what its effect asks of the loop.
-  Effect apply(OpEvent event);
+  /// The event through the machine, from who (the machine's default when
+  /// not said), then what its effect asks of the loop.
+  Effect apply(OpEvent event) { return apply(event, OperatingState::who_of(event)); }
+  Effect apply(OpEvent event, Who who, bool refused = false);
   /// What an effect asks of the loop: a rebase restarts the frame source
-  /// from the input as it is; neutral frames are counted afresh; a reload's reading begins.
+  /// from the input as it is; neutral frames are counted afresh; a reload's
+  /// reading begins. Then the machine's transitions are kept for the next report.
   Effect act(Effect effect, bool reset);
   /// Stop buttons pressed, through the machine (the operator's first: a stop by both is the supervisor's).
   void answer_stops(mapping::StopPresses pressed);
@@ -188,13 +191,13 @@ class Bridge {
   /// Job control: the process stops in control.pause(); afresh after it.
   void pause(const RunControl& control);
   void advance();
-  /// The link came up or was lost: the event through the machine, and whether an up is a regain (for the report).
-  void link_changed(bool up);
-  /// Who stopped, named once a stop latches or becomes another's (after every event through the machine).
+  /// The link came up or was lost (told by who: the link, or a script's fault event): the event through the machine.
+  void link_changed(bool up, Who who = Who::kLink);
   /// The link carries motion (link::carries_motion): for the state, a stalled link is not up.
   [[nodiscard]] bool link_up() const;
   [[nodiscard]] OpEvent link_lost_event() const;
-  [[nodiscard]] TickReport report(const protocol::DataBytes& data, link::SendResult result, bool sent) const;
+  /// The tick's report, with the transitions since the last one (taken).
+  [[nodiscard]] TickReport report(const protocol::DataBytes& data, link::SendResult result, bool sent);
 
   Clock& clock_;
   input::InputSource& source_;
@@ -219,15 +222,10 @@ class Bridge {
   bool suspend_pauses_ = false;  ///< the last suspend was job control's: the process stops after its frames
   std::string reload_mapping_;   ///< the last reload's mapping ("" for the configured one)
   bool input_failed_ = false;    ///< the input threw: the shutdown's frames go without it
-  // For the report's first cause (TickReport::entered_by).
-  bool supervisor_back_ = false;
-  bool reload_refused_ = false;
-  input::PadRegistry pads_;  ///< the physical pads the machine knows by number
+  input::PadRegistry pads_;      ///< the physical pads the machine knows by number
   input::PadId operator_pad_ = input::kNoPad;
   input::PadId supervisor_pad_ = input::kNoPad;
-  bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
-  /// The first cause for the state the last kLinkUp brought: kLinkUp for a link regained (TickReport::entered_by).
-  std::optional<OpEvent> link_up_cause_;
+  std::vector<ReportedTransition> transitions_;  ///< the machine's since the last report
 };
 
 }  // namespace andros::run

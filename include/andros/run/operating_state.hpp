@@ -14,13 +14,16 @@
 /// operator's, and each only from the physical pad that stopped (a
 /// supervisor's reset of the operator's stop from any). What the
 /// screen, the log, the pad's light and the service status say is read from
-/// this state.
+/// this state, and from the transitions it publishes (Transition).
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "andros/mapping/engine_status.hpp"
 
@@ -63,6 +66,41 @@ enum class OpEvent : std::uint8_t {
 /// Who latched a stop (a stop button, or the frame gate), or reset one.
 enum class StopBy : std::uint8_t { kOperator, kSupervisor, kGate };
 
+/// Where an event came from (docs/safety-states.md, "Where the events come from").
+enum class Who : std::uint8_t {
+  kOperator,    ///< the operator's pad: the deadman, its stop, its reset, its controller
+  kSupervisor,  ///< the supervisor's pad: its stop, its reset, its controller
+  kGate,        ///< the frame gate
+  kLink,        ///< the link: opened, lost, taken, stalled
+  kRequest,     ///< a request from around the process: a signal, job control (Request)
+  kScript,      ///< an event script's word (`suspend`, `reload`, `link down`...) or its end
+  kTimeout,     ///< the enable timeout
+  kLoop,        ///< the loop itself: its neutral frames out, a reload's outcome, its own close of the link
+};
+
+/// One step of the machine, as it publishes it: every event that changed
+/// something (its row applied, waited or was withdrawn, or a condition the
+/// machine keeps changed: the link, the controller, the stop latch, a
+/// reset, the neutral frames due), and every stop press it keeps as a fact
+/// (one pressed again while stopped). The pad feedback, the status board
+/// and the recorder react to these, never to a difference between two
+/// reports.
+struct Transition {
+  OpState from;
+  OpEvent event;
+  OpState to;  ///< the same as `from` when only a condition changed
+  Who who;
+  /// The physical pad of a stop or reset (the operator's at a gate's trip);
+  /// kNoPad for any other event.
+  input::PadId pad = input::kNoPad;
+  /// A stop pressed again while stopped: the latch and whose it is unchanged.
+  bool again = false;
+  /// kReloadDone: the reload was refused, the old settings kept.
+  bool refused = false;
+
+  bool operator==(const Transition&) const = default;
+};
+
 /// What the loop must do on a transition, besides sending per the new state.
 struct Effect {
   bool changed = false;  ///< the state changed
@@ -91,7 +129,7 @@ enum class Act : std::uint8_t {
 };
 
 /// One row of the transition table: in `from`, `event` does `act`.
-struct Transition {
+struct Row {
   OpState from;
   OpEvent event;
   Act act;
@@ -121,16 +159,6 @@ class OperatingState {
   [[nodiscard]] input::PadId stopper_pad() const { return stopper_pad_; }
   /// The pad that reset the last stop (with reset_by).
   [[nodiscard]] input::PadId reset_pad() const { return reset_pad_; }
-  /// Stop presses so far: each stop that latched, made the stop another's,
-  /// or was pressed again while stopped (what the session records, each once).
-  [[nodiscard]] std::uint32_t stop_count() const { return stop_count_; }
-  /// The last of them: whose, and the pad.
-  [[nodiscard]] std::optional<StopBy> last_stop() const { return last_stop_; }
-  [[nodiscard]] input::PadId last_stop_pad() const { return last_stop_pad_; }
-  /// The last of them came while stopped and changed neither the latch nor whose it is.
-  [[nodiscard]] bool last_stop_again() const { return last_stop_again_; }
-  /// Resets so far.
-  [[nodiscard]] std::uint32_t reset_count() const { return reset_count_; }
   /// Whether a reset gesture completed now by `by` on `pad` would reset the
   /// latched stop: stopped; the supervisor's any stop, the operator's only
   /// the operator's or the gate's; and a stop by a role only from the pad that stopped.
@@ -138,11 +166,9 @@ class OperatingState {
   /// The pads in each role now (the loop tells the machine each tick, before
   /// its events): a stop is the pad's that pressed it, a reset the pad's that made it.
   void set_pads(input::PadId operator_pad, input::PadId supervisor_pad);
-  /// The same machine: the counts and the last press, which are for the record and decide nothing, aside.
+  /// The same machine: what it publishes (the transitions not yet taken, who
+  /// an event came from), which decides nothing, aside.
   bool operator==(const OperatingState& other) const;
-  /// The event that brought the machine into its state (the first cause of
-  /// "not enabled": a link regained, a reload, a resume, a reset...); none at the start.
-  [[nodiscard]] std::optional<OpEvent> entered_by() const { return entered_by_; }
   /// The neutral frames of a suspend, reload or shutdown are still going out (no kNeutralSent yet).
   [[nodiscard]] bool neutral_due() const { return neutral_due_; }
   /// The event waits to be applied (Act::kWait).
@@ -155,23 +181,34 @@ class OperatingState {
   /// kShuttingDown, and makes it the supervisor's if the supervisor's; a gate
   /// trip latches one that is not latched yet). A reset that may not reset
   /// the stop (the operator's of the supervisor's stop) changes nothing.
-  Effect on(OpEvent event);
+  Effect on(OpEvent event) { return on(event, who_of(event)); }
+  /// The same, from who (a suspend from a request or a script...); refused:
+  /// kReloadDone of a reload refused. Published as who's (Transition).
+  Effect on(OpEvent event, Who who, bool refused = false);
   /// A tick's facts (mapping::InputFacts) as events, in this order: the
   /// stop buttons (the operator's first: a stop by both is the
   /// supervisor's); then, not enabled, a fresh deadman press enables;
   /// enabled, a deadman not held and fresh ends it (released, the panic,
   /// the enable timeout).
   Effect on(const mapping::InputFacts& facts);
+  /// The transitions published since the last call, in order; taken.
+  std::vector<Transition> take_transitions() { return std::exchange(published_, {}); }
 
   /// The whole table, for docs and tests.
-  static std::span<const Transition> table();
+  static std::span<const Row> table();
+  /// Who an event comes from when nobody says otherwise: a pad's event its
+  /// pad's (a controller's up or down: the operator's), a link's the link's,
+  /// the enable timeout, the loop's own; a request.
+  static Who who_of(OpEvent event);
 
  private:
   [[nodiscard]] OpState settled() const;
-  /// The event through the conditions and its row; false: it had no row.
-  bool apply(OpEvent event, Effect& effect);
+  /// The event through the conditions and its row, published when it changed something.
+  void apply(OpEvent event, Who who, bool refused, Effect& effect);
+  /// The conditions the event changes, whatever the state; true when one changed.
+  bool note(OpEvent event, Who who, Transition& published);
   /// The row for the event in the current state, if any.
-  [[nodiscard]] const Transition* row_for(OpEvent event) const;
+  [[nodiscard]] const Row* row_for(OpEvent event) const;
   static constexpr std::uint32_t bit(OpEvent event) { return 1U << static_cast<unsigned>(event); }
 
   OpState state_;
@@ -181,26 +218,27 @@ class OperatingState {
   std::uint32_t waiting_ = 0;         ///< the events waiting (Act::kWait), one bit each
   std::optional<StopBy> stopped_by_;  ///< a stop is latched, and whose
   std::optional<StopBy> reset_by_;
-  std::optional<OpEvent> entered_by_;
+  /// The events that waited, and who they came from: published as theirs when applied.
+  std::array<Who, static_cast<std::size_t>(OpEvent::kNeutralSent) + 1> waiting_who_{};
+  /// Who took the controller condition down (the operator's pad or the
+  /// supervisor's): the one whose return brings it up again.
+  Who controller_lost_by_ = Who::kOperator;
   input::PadId operator_pad_ = input::kNoPad;  ///< the pads in each role now (set_pads)
   input::PadId supervisor_pad_ = input::kNoPad;
   input::PadId stopper_pad_ = input::kNoPad;
   input::PadId reset_pad_ = input::kNoPad;
-  std::uint32_t stop_count_ = 0;
-  std::optional<StopBy> last_stop_;
-  input::PadId last_stop_pad_ = input::kNoPad;
-  bool last_stop_again_ = false;
-  std::uint32_t reset_count_ = 0;
+  std::vector<Transition> published_;  ///< not yet taken (take_transitions)
 
-  /// A stop by `by` from `pad`: latches, or makes the stop the supervisor's, or is pressed again.
-  void note_stop(StopBy by, input::PadId pad);
+  /// A stop by `by` from `pad`: latches, or makes the stop the supervisor's,
+  /// or is pressed again (published.again); false: the machine keeps nothing of it.
+  bool note_stop(StopBy by, input::PadId pad, Transition& published);
 };
 
 std::string_view to_string(OpState state);
 std::string_view to_string(OpEvent event);
 /// A row's target as docs/safety-states.md's table writes it: the state, "settled", "waits", "withdraws EVENT",
 /// "again".
-std::string to_string(const Transition& row);
+std::string to_string(const Row& row);
 /// "operator", "supervisor", "frame gate".
 std::string_view to_string(StopBy by);
 

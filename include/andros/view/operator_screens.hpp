@@ -75,6 +75,7 @@ struct RunStatus {
   run::OpState state = run::OpState::kNoLink;  ///< the operating state: what is sent follows it
   std::string stopped_by;                      ///< a stop latched: "stopped by the supervisor (NAME)" (stopped_by_text)
   std::string enable_text;  ///< the state in words: why not enabled, or what enabled still holds back
+  std::string held_back;    ///< enabled: the inputs the rest rule still holds back ("lefty a"); "" when none is
   /// Stopped, a reset gesture under way: its progress ("resetting: 1.2 of 2.0 s ..."), shown in place of
   /// enable_text (never logged: it moves every tick).
   std::string reset_progress;

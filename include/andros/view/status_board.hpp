@@ -6,6 +6,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "andros/input/input_source.hpp"
 #include "andros/run/bridge.hpp"
@@ -13,6 +14,24 @@
 #include "andros/view/operator_screens.hpp"
 
 namespace andros::view {
+
+/// The first cause of the operating state, followed from the machine's
+/// transitions: the transition that brought the machine into its state (a
+/// link regained, a reload done, a resume, the supervisor's controller
+/// back...). A link that opened rather than came back (the first time, or
+/// again after the bridge's own close for a suspend) is no cause: the cause
+/// before it stays (none at start-up, the resume after a suspend).
+class FirstCause {
+ public:
+  /// A report's transitions, in order.
+  void follow(const std::vector<run::ReportedTransition>& transitions);
+  /// None before the first change of state.
+  [[nodiscard]] const std::optional<run::Transition>& transition() const { return cause_; }
+
+ private:
+  std::optional<run::Transition> cause_;
+  bool link_lost_ = false;  ///< the link was lost (not closed by the loop) since it was last up
+};
 
 class RunStatusBoard {
  public:
@@ -42,13 +61,18 @@ class RunStatusBoard {
   [[nodiscard]] RunStatus status() const;
 
  private:
-  void log_changes(const RunStatus& before, const RunStatus& after) const;
+  /// What changed, logged: the state's lines on its transitions (a stop
+  /// that latched or became another's, a state entered), the rest when its
+  /// words changed.
+  void log_changes(const RunStatus& before, const RunStatus& after,
+                   const std::vector<run::ReportedTransition>& transitions) const;
 
   mutable std::mutex mutex_;
   RunStatus status_;
   timing::FrameTiming timing_;
   /// The last report whose words were formed; none before the first, or when they must be formed again.
   std::optional<run::TickReport> said_;
+  FirstCause cause_;
   bool first_tick_ = true;
   bool was_connected_ = false;  ///< as the last report said, for observe(report, input)
 };
@@ -57,6 +81,9 @@ class RunStatusBoard {
 /// rest rule still holds back ("enabled; at rest first: lefty"), so that a
 /// stick pushed through the deadman press explains itself.
 std::string enable_text(const mapping::EngineStatus& status);
+
+/// Enabled: the inputs the rest rule still holds back ("lefty a"); "" when none is, or not enabled.
+std::string held_back_text(const mapping::EngineStatus& status);
 
 /// What "stopped" asks, and of whom (the state line, after who stopped): a
 /// stop button held first ("release the stop button"), a reset gesture under
@@ -74,8 +101,9 @@ std::string reset_progress_text(const run::TickReport& report);
 std::string stopped_by_text(const run::TickReport& report);
 
 /// The operating state in words for the screen, the log and the service
-/// status: why nothing moves, or (enabled) what the engine still holds back.
-std::string state_text(const run::TickReport& report);
+/// status: why nothing moves (not enabled: the first cause, `cause`, never
+/// its consequence), or (enabled) what the engine still holds back.
+std::string state_text(const run::TickReport& report, const std::optional<run::Transition>& cause = std::nullopt);
 
 /// Why a live controller does nothing although it is connected: SDL knows it
 /// only as a plain joystick (numbered buttons and axes) while the mapping

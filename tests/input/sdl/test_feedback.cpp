@@ -115,9 +115,27 @@ class FeedbackRun {
     t_ += 40;
     input_.pump(state_, t_);
     engine_.step(state_, t_);
-    // The loop's state is enabled when the engine is and the link is up (no interruption here).
+    // The loop's state is enabled when the engine is and the link is up (no
+    // interruption here), and its machine publishes the steps between.
     const bool enabled = engine_.status().deadman == mapping::DeadmanState::kFreshHold && link_up;
-    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().deadman, enabled, link_up});
+    const auto state = [](bool on) { return on ? run::OpState::kEnabled : run::OpState::kNotEnabled; };
+    std::vector<run::ReportedTransition> steps;
+    if (link_up_ && !link_up) {
+      steps.push_back({{.from = state(enabled_),
+                        .event = run::OpEvent::kLinkDown,
+                        .to = run::OpState::kNoLink,
+                        .who = run::Who::kLink},
+                       {}});
+    } else if (enabled != enabled_) {
+      steps.push_back({{.from = state(enabled_),
+                        .event = enabled ? run::OpEvent::kFreshPress : run::OpEvent::kRelease,
+                        .to = state(enabled),
+                        .who = run::Who::kOperator},
+                       {}});
+    }
+    link_up_ = link_up;
+    enabled_ = enabled;
+    return notifier_.observe(run::FeedbackStatus{state_.connected(), engine_.status().deadman, enabled}, steps);
   }
 
  private:
@@ -126,6 +144,8 @@ class FeedbackRun {
   run::FeedbackNotifier notifier_;
   InputState state_;
   std::int64_t t_ = 0;
+  bool link_up_ = true;
+  bool enabled_ = false;
 };
 
 TEST_F(SdlFeedbackTest, EachEventPlaysItsPatternAndNothingElsePlaysAnything) {
