@@ -39,16 +39,6 @@ constexpr auto kPollPeriod = std::chrono::milliseconds(250);
 constexpr auto kSyncPeriod = std::chrono::seconds(1);
 constexpr std::size_t kBatchBytes = std::size_t{64} * 1024;
 
-/// Whose stop an event of the machine is (a stop button's, the frame gate's trip); none for any other.
-std::optional<run::StopBy> stop_by(run::OpEvent event) {
-  switch (event) {
-    case run::OpEvent::kOperatorStop: return run::StopBy::kOperator;
-    case run::OpEvent::kSupervisorStop: return run::StopBy::kSupervisor;
-    case run::OpEvent::kGateTrip: return run::StopBy::kGate;
-    default: return std::nullopt;
-  }
-}
-
 }  // namespace
 
 SessionWriter::SessionWriter(std::unique_ptr<RecordSink> sink, std::size_t capacity)
@@ -313,14 +303,14 @@ void Recorder::observe(const run::TickReport& r) noexcept {
     const run::ReportedTransition* last_stop = nullptr;
     for (const auto& reported : r.transitions) {
       const auto& t = reported.transition;
-      if (const auto by = stop_by(t.event)) {
+      if (const auto by = run::stop_by(t.event)) {
         if (format_ >= kTransitionFormat) record([&] { return payload::stop(r.t_ms, *by, reported.pad, t.again); });
         last_stop = &reported;
       }
     }
     if (last_stop != nullptr && format_ < kTransitionFormat) {
       const auto& t = last_stop->transition;
-      record([&] { return payload::stop(r.t_ms, *stop_by(t.event), last_stop->pad, t.again); });
+      record([&] { return payload::stop(r.t_ms, *run::stop_by(t.event), last_stop->pad, t.again); });
     }
     for (const auto& [t, pad] : r.transitions) {
       if (t.event == run::OpEvent::kOperatorReset || t.event == run::OpEvent::kSupervisorReset) {

@@ -5,6 +5,15 @@
 #include <utility>
 
 namespace andros::run {
+
+std::optional<StopBy> stop_by(OpEvent event) {
+  switch (event) {
+    case OpEvent::kOperatorStop: return StopBy::kOperator;
+    case OpEvent::kSupervisorStop: return StopBy::kSupervisor;
+    case OpEvent::kGateTrip: return StopBy::kGate;
+    default: return std::nullopt;
+  }
+}
 namespace {
 
 using S = OpState;

@@ -42,12 +42,14 @@ void CourseScorer::on_tick(const run::TickReport& r) {
     model_.advance(r.t_ms * 1'000'000);
   }
   if (done_ms_ < 0 && model_.course_done()) done_ms_ = r.t_ms;
-  if (r.stop_count > stop_count_ && r.last_stop) {
-    std::string why = r.last_stop_again ? "stop button again" : "stop button";
-    if (*r.last_stop == run::StopBy::kGate) why = "frame gate: " + r.gate_fault;
-    stops_.push_back({r.t_ms, std::string(record::stopper_word(*r.last_stop)), why});
+  // Every stop press (the machine's published steps: both pads' in one tick too).
+  for (const auto& [t, pad] : r.transitions) {
+    const auto by = run::stop_by(t.event);
+    if (!by) continue;
+    std::string why = t.again ? "stop button again" : "stop button";
+    if (*by == run::StopBy::kGate) why = "frame gate: " + r.gate_fault;
+    stops_.push_back({r.t_ms, std::string(record::stopper_word(*by)), why});
   }
-  stop_count_ = r.stop_count;
   if (r.state == run::OpState::kEnabled && last_state_ != run::OpState::kEnabled && !r.engine.held_back.empty()) {
     ++not_at_rest_;
   }

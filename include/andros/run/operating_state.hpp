@@ -65,6 +65,8 @@ enum class OpEvent : std::uint8_t {
 
 /// Who latched a stop (a stop button, or the frame gate), or reset one.
 enum class StopBy : std::uint8_t { kOperator, kSupervisor, kGate };
+/// Whose stop an event of the machine is (a stop button's, the frame gate's trip); none for any other.
+std::optional<StopBy> stop_by(OpEvent event);
 
 /// Where an event came from (docs/safety-states.md, "Where the events come from").
 enum class Who : std::uint8_t {

@@ -63,7 +63,6 @@ class CourseScorer {
   vehicle::VehicleModel model_;
   std::int64_t last_ms_ = 0;
   std::int64_t done_ms_ = -1;  ///< the tick the course was first done (-1: not yet)
-  std::uint32_t stop_count_ = 0;
   run::OpState last_state_ = run::OpState::kNoLink;
   std::uint32_t fire_refused_ = 0;
   bool fire_refusing_ = false;
