@@ -5,10 +5,10 @@
 
 namespace andros::record {
 
-void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
-  state.keep_applied(true);
-  inner_.pump(state, now_ms);
-  recorder_.pumped(now_ms, state.take_applied());
+void RecordingInput::pump(input::TickInput& input, std::int64_t now_ms) {
+  input.keep_applied(true);
+  inner_.pump(input, now_ms);
+  recorder_.pumped(now_ms, input.take_applied());
 }
 
 bool RecordingInput::finished(std::int64_t now_ms) const {

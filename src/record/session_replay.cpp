@@ -25,10 +25,10 @@ class Playback {
   [[nodiscard]] std::int64_t last_tick() const { return last_tick_; }
 
   // The input.
-  void pump(input::InputState& state, std::int64_t now_ms) {
+  void pump(input::TickInput& input, std::int64_t now_ms) {
     now_ms_ = now_ms;
     while (next_event_ < s_.events.size() && s_.events[next_event_].t_ms <= now_ms)
-      state.apply(s_.events[next_event_++]);
+      input.apply(s_.events[next_event_++]);
   }
   [[nodiscard]] bool finished(std::int64_t now_ms) const { return s_.input_end && now_ms >= *s_.input_end; }
 
@@ -135,7 +135,7 @@ class Playback {
 class PlaybackInput final : public input::InputSource {
  public:
   PlaybackInput(Playback& p, bool supervised) : p_(p), supervised_(supervised) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override { p_.pump(state, now_ms); }
+  void pump(input::TickInput& input, std::int64_t now_ms) override { p_.pump(input, now_ms); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return p_.finished(now_ms); }
   [[nodiscard]] bool supervised() const override { return supervised_; }
 

@@ -50,7 +50,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     // The input is read right after the tick's time: never older than the
     // frame; every change since the last tick counts, not only where it ended.
     input_.begin_tick();
-    source_.pump(input_, t_ms);
+    source_.pump(pumped_, t_ms);
     // The pads in each role, as numbers: the machine decides on them; the registry keeps what is said of them.
     operator_pad_ = pads_.id_of(input_.operator_pad().identity());
     supervisor_pad_ = pads_.id_of(input_.supervisor().identity());
@@ -58,7 +58,7 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     pads_.keep(
         {operator_pad_, supervisor_pad_, machine_.stopper_pad(), machine_.reset_pad(), machine_.last_stop_pad()});
     on_request(control.poll());
-    for (const auto& fault : input_.take_faults()) on_fault(fault);
+    for (const auto& fault : pumped_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
     const bool controllers_up = input_.connected() && (!source_.supervised() || input_.supervisor().connected());
     if (controllers_up != machine_.controller_up()) {
@@ -242,7 +242,7 @@ void Bridge::pause(const RunControl& control) {
   skipped_ = 0;
   // What happened while the process was stopped is history too.
   input_.begin_tick();
-  source_.pump(input_, elapsed / kNsPerMs);
+  source_.pump(pumped_, elapsed / kNsPerMs);
   apply(OpEvent::kResume);
 }
 

@@ -11,7 +11,7 @@ namespace {
 class PlayerInput final : public input::InputSource {
  public:
   explicit PlayerInput(input::ScriptPlayer& player) : player_(player) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override { player_.advance_to(now_ms, state); }
+  void pump(input::TickInput& input, std::int64_t now_ms) override { player_.advance_to(now_ms, input); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_.finished_at(now_ms); }
   [[nodiscard]] bool supervised() const override { return player_.supervised(); }
 

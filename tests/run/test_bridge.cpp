@@ -46,7 +46,7 @@ class PressToDrive final : public testing::WithoutStops {
 /// An input that never ends.
 class Idle final : public input::InputSource {
  public:
-  void pump(input::InputState&, std::int64_t) override {}
+  void pump(input::TickInput&, std::int64_t) override {}
   bool finished(std::int64_t) const override { return false; }
 };
 

@@ -147,6 +147,8 @@ class Bridge {
   using Observer = std::function<void(const TickReport&)>;
 
   Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options);
+  Bridge(const Bridge&) = delete;  // input_ refers to its own pumped_
+  Bridge& operator=(const Bridge&) = delete;
 
   /// Runs until a shutdown request or the end of the input, then shuts down. A
   /// request seen on tick k is answered on tick k: its frame is the first
@@ -203,11 +205,12 @@ class Bridge {
   link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
-  OperatingState machine_;  ///< every decision whether the vehicle may move, and every deferral
-  DriveGuard guard_;        ///< the machine's guards with memory and time: its facts each driving tick
-  FrameGate gate_;          ///< the second channel: every frame offered to the link passes it
-  input::InputState input_;
-  mapping::EngineStatus engine_status_;  ///< the last step's
+  OperatingState machine_;   ///< every decision whether the vehicle may move, and every deferral
+  DriveGuard guard_;         ///< the machine's guards with memory and time: its facts each driving tick
+  FrameGate gate_;           ///< the second channel: every frame offered to the link passes it
+  input::TickInput pumped_;  ///< what the input source hands over each tick
+  input::InputState& input_ = pumped_.state();  ///< its controllers' state: what the guards and the engine read
+  mapping::EngineStatus engine_status_;         ///< the last step's
   ShutdownReport shutdown_report_;
   const RunControl* control_ = nullptr;  ///< run()'s, while it runs
   Nanos start_{0};
