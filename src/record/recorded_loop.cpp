@@ -24,8 +24,8 @@ run::RunControl recorded_control(run::RunControl control, Recorder& recorder,
     recorder.request(r);
     return r;
   };
-  control.pause = [pause = std::move(control.pause), &recorder] {
-    pause();
+  control.pause = [pause = std::move(control.pause), &recorder](const run::ShutdownReport& neutral) {
+    pause(neutral);
     recorder.paused();
   };
   control.finish_reload = [finish = std::move(control.finish_reload), &recorder, settings = std::move(settings)] {

@@ -7,6 +7,7 @@
 #include "andros/mapping/loader.hpp"
 #include "andros/record/recorded_loop.hpp"
 #include "andros/record/recorder.hpp"
+#include "andros/run/loop.hpp"
 #include "record_check.hpp"
 
 namespace andros::record {
@@ -210,26 +211,29 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   PlaybackInput playback_input(playback, s.settings.supervised);
   RecordingInput input(playback_input, recorder);  // the request records' time is the pump's
   PlaybackLink link(playback);
-  run::Bridge bridge(playback.clock(), input, *engine, link,
-                     run::BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
-                                        .neutral_tail_at_end = true,
-                                        .rules = {s.settings.weapons, s.settings.code}});
-
-  run::RunControl control;
-  control.poll = [&] {
+  run::LoopParts loop{.clock = playback.clock(),
+                      .input = input,
+                      .frames = *engine,
+                      .link = link,
+                      .options = {.rate_millihertz = s.settings.rate_millihertz,
+                                  .neutral_tail_at_end = true,
+                                  .rules = {s.settings.weapons, s.settings.code}},
+                      .control = {},
+                      .observers = {}};
+  loop.control.poll = [&] {
     if (playback.past_end()) return run::Request::kShutdown;
     const run::Request r = playback.poll();
     recorder.request(r);
     return r;
   };
-  control.pause = [&] { playback.pause(); };
-  control.begin_reload = [](const std::string&) {};  // its outcome is the session's
-  control.finish_reload = [&] { return playback.finish_reload(); };
+  loop.control.pause = [&](const run::ShutdownReport&) { playback.pause(); };
+  loop.control.begin_reload = [](const std::string&) {};  // its outcome is the session's
+  loop.control.finish_reload = [&] { return playback.finish_reload(); };
 
+  if (observe) loop.observers.push_back(observe);
   // Each tick's frame against the record in effect (a difference named at
   // its tick), then the tick's records against the session's.
-  bridge.run(control, [&](const run::TickReport& r) {
-    if (observe) observe(r);
+  loop.observers.emplace_back([&](const run::TickReport& r) {
     ++out.ticks;
     if (r.tick != playback.expected_tick()) {
       check.differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " +
@@ -250,6 +254,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
     }
     playback.ticked(r.tick);
   });
+  run::run_loop(loop);
   check.finish();
   if (s.end && out.compared != s.end->frames_sent) {
     check.differ("the live run sent " + std::to_string(s.end->frames_sent) + " frames, the replay reproduced " +

@@ -235,7 +235,7 @@ void Bridge::close() {
 }
 
 void Bridge::pause(const RunControl& control) {
-  control.pause();
+  control.pause(shutdown_report_);
   // Go on at the first tick still to come: unlike a stall, this gap was asked for.
   const std::int64_t elapsed = (clock_.now() - start_).count();
   tick_ = std::max(tick_ + 1, schedule_.next_tick(-1, elapsed) + 1);

@@ -117,11 +117,19 @@ struct ReloadOutcome {
   std::shared_ptr<FrameSource> frames = nullptr;
 };
 
+/// How the neutral frames at the end (or before a suspend's pause) went.
+struct ShutdownReport {
+  int neutral_sent = 0;  ///< neutral frames the link took
+  int neutral_wanted = 0;
+  bool drained = false;  ///< and the link then had them out before it closed
+  [[nodiscard]] bool ok() const { return neutral_sent >= neutral_wanted && drained; }
+};
+
 struct RunControl {
   std::function<Request()> poll = [] { return Request::kNone; };
-  /// Called after a suspend's neutral frames (link drained and closed);
-  /// returns when the run goes on.
-  std::function<void()> pause = [] {};
+  /// Called after a suspend's neutral frames (link drained and closed), with
+  /// how they went; returns when the run goes on.
+  std::function<void(const ShutdownReport& neutral)> pause = [](const ShutdownReport&) {};
   /// Starts reading the settings again, off the loop (mapping: an event
   /// script's `reload FILE`, empty for the configured one); returns at once.
   std::function<void(const std::string& mapping)> begin_reload = [](const std::string&) {};
@@ -131,14 +139,6 @@ struct RunControl {
   std::function<std::optional<ReloadOutcome>()> finish_reload = [] {
     return std::optional<ReloadOutcome>(ReloadOutcome{false, "no reload here"});
   };
-};
-
-/// How the neutral frames at the end went.
-struct ShutdownReport {
-  int neutral_sent = 0;  ///< neutral frames the link took
-  int neutral_wanted = 0;
-  bool drained = false;  ///< and the link then had them out before it closed
-  [[nodiscard]] bool ok() const { return neutral_sent >= neutral_wanted && drained; }
 };
 
 class Bridge {
