@@ -44,7 +44,7 @@ class FixedFrames final : public testing::WithoutStops {
 
 class Idle final : public input::InputSource {
  public:
-  void pump(input::InputState&, std::int64_t) override {}
+  void pump(input::TickInput&, std::int64_t) override {}
   bool finished(std::int64_t) const override { return false; }
 };
 

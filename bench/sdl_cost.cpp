@@ -53,15 +53,16 @@ void print(const char* name, const Phase& p) {
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 20.0;
   andros::bench::PadRig rig;
-  andros::input::InputState state;
+  andros::input::TickInput tick;
+  const andros::input::InputState& state = tick.state();
 
   const Phase idle = run_phase(seconds, [](std::int64_t) {});
-  const Phase pumped = run_phase(seconds, [&](std::int64_t t) { rig.input.pump(state, t); });
+  const Phase pumped = run_phase(seconds, [&](std::int64_t t) { rig.input.pump(tick, t); });
   // The operator holding a stick that moves every tick.
   const Phase moving = run_phase(seconds, [&](std::int64_t t) {
     SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY,
                                static_cast<Sint16>((t * 97) % kAxisValues + andros::input::kAxisMin));
-    rig.input.pump(state, t);
+    rig.input.pump(tick, t);
   });
   if (!state.connected()) {
     std::fprintf(stderr, "the virtual pad never connected\n");

@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
   andros::link::configure_raw_8n1(slave, 9600);
 
   const andros::protocol::FrameBuilder builder(0x01);
-  andros::input::InputState state;
+  andros::input::TickInput pumped;
+  const andros::input::InputState& state = pumped.state();
   std::mt19937 rng(42);
   std::uniform_int_distribution<std::int64_t> offset(2'000'000, kPeriodNs - 2'000'000);
   std::vector<double> set_to_state;
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
     SDL_JoystickSetVirtualAxis(rig.pad, SDL_CONTROLLER_AXIS_LEFTY, value);
     andros::sleep_until_ns_uninterrupted(tick);
     tick_at[static_cast<std::size_t>(k)] = monotonic_ns();
-    input.pump(state, k * 40);
+    input.pump(pumped, k * 40);
     const std::int64_t seen = monotonic_ns();
     andros::protocol::ControlState control;
     control[andros::protocol::signal_id("drive")] =
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
   int loss_ticks = 0;
   while (state.connected() && loss_ticks < 10) {
     ++loss_ticks;
-    input.pump(state, (ticks + loss_ticks) * 40);
+    input.pump(pumped, (ticks + loss_ticks) * 40);
   }
 
   for (long k = 1; k <= ticks; ++k) {

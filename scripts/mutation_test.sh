@@ -54,7 +54,7 @@ mutations=(
   "a deadman let go between two ticks not seen|src/run/deadman.cpp|s/if \(key_->is_button\(\)\) return input.button\(\*key_\).releases > releases_seen_;/if (key_->is_button()) return false;/"
   "the panic point ignored|src/run/deadman.cpp|s/if \(panic\(input\)\) return DeadmanState::kPastPanic;/if (false \&\& panic(input)) return DeadmanState::kPastPanic;/"
   "a trigger held at connect taken for a fresh press|src/run/deadman.cpp|s/input.button\(\*key_\).presses > base_ : released_seen_;/input.button(*key_).presses > base_ : true;/"
-  "a link lost and back between frames not answered|src/run/bridge_requests.cpp|s/new link.\n      link_changed\(false, Who::kScript\);/new link./"
+  "a link lost and back between frames not answered|src/run/bridge_requests.cpp|s/new link.\n        link_changed\(false, Who::kScript\);/new link./"
   "a reload without a rebase|src/run/operating_state.cpp|s/settle\(S::kReloading, E::kReloadDone, true\)/settle(S::kReloading, E::kReloadDone, false)/"
   "the supervisor's reset without a rebase|src/run/operating_state.cpp|s/settle\(S::kStopped, E::kSupervisorReset, true\)/settle(S::kStopped, E::kSupervisorReset, false)/"
   "presses made while not enabled replayed on enabling|src/mapping/engine.cpp|s/  for \(const auto key : buttons_\) c_.seen_presses\[key\] = input.button\(key\).presses;\n  last_ms_/  if (enabled) for (const auto key : buttons_) c_.seen_presses[key] = input.button(key).presses;\n  last_ms_/"

@@ -21,6 +21,7 @@
 #include "andros/link/tcp_link.hpp"
 #include "andros/run/bridge.hpp"
 #include "andros/run/feedback.hpp"
+#include "andros/run/loop.hpp"
 #include "andros/view/status_board.hpp"
 #include "andros/view/terminal_display.hpp"
 #include "commands.hpp"
@@ -169,9 +170,6 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
   if (sim) sim->start();
   if (display) display->start();
   spdlog::info("streaming to {} at {} Hz", initial.link_name, initial.rate_hz);
-  RealClock clock;
-  run::Bridge bridge(clock, loop_input, *engine.frames, *link,
-                     run::BridgeOptions{.rate_millihertz = rate_millihertz, .rules = {config.weapons, config.code}});
   // On the loop's thread, which owns SDL: the rumble starts without waiting.
   run::FeedbackNotifier feedback(engine.feedback, *input);
   ServiceReporter service(ServiceNotifier::from_environment());
@@ -180,22 +178,34 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
   // folder): the files read on a worker while the loop sends neutral frames;
   // swapped in on the loop's thread.
   RunReload reload(opt.settings->given_flags(), ReloadTargets{config, feedback, board, service});
-  run::RunControl control;
-  control.poll = [&] { return poll_requests(stop, job); };
-  control.pause = [&] { suspend_process(job, display, bridge.shutdown_report(), initial.link_name); };
-  control.begin_reload = [&](const std::string& mapping) {
+  RealClock clock;
+  run::LoopParts loop{.clock = clock,
+                      .input = loop_input,
+                      .frames = *engine.frames,
+                      .link = *link,
+                      .options = {.rate_millihertz = rate_millihertz, .rules = {config.weapons, config.code}},
+                      .control = {},
+                      .observers = {}};
+  loop.control.poll = [&] { return poll_requests(stop, job); };
+  loop.control.pause = [&](const run::ShutdownReport& neutral) {
+    suspend_process(job, display, neutral, initial.link_name);
+  };
+  loop.control.begin_reload = [&](const std::string& mapping) {
     reload.begin(mapping.empty() ? "" : beside(config.input, mapping));
   };
-  control.finish_reload = [&] { return reload.finish(); };
-  if (recording) control = recording->control(std::move(control), config, reload);
-  bridge.run(control, [&](const run::TickReport& r) {
-    if (recording) recording->observe(r);
+  loop.control.finish_reload = [&] { return reload.finish(); };
+  if (recording) {
+    loop.control = recording->control(std::move(loop.control), config, reload);
+    loop.observers.emplace_back([&](const run::TickReport& r) { recording->observe(r); });
+  }
+  loop.observers.emplace_back([&](const run::TickReport& r) {
     board.observe(r, *input);  // on the loop's thread, which owns SDL: it asks what kind a new controller is
     feedback.observe(r);
     // The board's copy is taken only for a service manager: not on every tick of a plain run.
     if (service.active()) service.observe(r, board.status());
-    if (hooks.observe) hooks.observe(r, board);
   });
+  if (hooks.observe) loop.observers.emplace_back([&](const run::TickReport& r) { hooks.observe(r, board); });
+  const run::ShutdownReport neutral = run::run_loop(loop);
   display.reset();
   service.stopping();
   if (hooks.after_run) hooks.after_run(stop);
@@ -217,8 +227,8 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
     spdlog::info("sim vehicle decoded {} frames: {} valid, {} bad checksum, {} invalid", v.stats.frames, v.stats.valid,
                  v.stats.bad_checksum, v.stats.invalid);
   }
-  if (!bridge.shutdown_report().ok()) {
-    spdlog::error("{}", failed_neutral_frames(bridge.shutdown_report(), initial.link_name));
+  if (!neutral.ok()) {
+    spdlog::error("{}", failed_neutral_frames(neutral, initial.link_name));
     return kExitRuntime;
   }
   return kExitOk;

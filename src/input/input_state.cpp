@@ -64,12 +64,16 @@ void PadState::set_button(InputKey key, bool down, bool initial) {
 }
 
 void InputState::apply(const InputEvent& event) {
+  (event.pad == Pad::kSupervisor ? supervisor_pad_ : operator_pad_).apply(event);
+}
+
+void TickInput::apply(const InputEvent& event) {
   if (keep_applied_) applied_.push_back(event);
   if (event.is_fault()) {
     faults_.push_back(event);
     return;
   }
-  (event.pad == Pad::kSupervisor ? supervisor_pad_ : operator_pad_).apply(event);
+  state_.apply(event);
 }
 
 void PadState::apply(const InputEvent& event) {

@@ -5,7 +5,7 @@ namespace andros::input {
 ScriptPlayer::ScriptPlayer(TextReader& text)
     : reader_(text), supervised_(text.can_rewind() && text.line_number() == 0 && addresses_supervisor(text)) {}
 
-void ScriptPlayer::advance_to(std::int64_t t_ms, InputState& state) {
+void ScriptPlayer::advance_to(std::int64_t t_ms, TickInput& input) {
   while (!exhausted_) {
     if (!pending_) {
       pending_ = reader_.next();
@@ -21,7 +21,7 @@ void ScriptPlayer::advance_to(std::int64_t t_ms, InputState& state) {
       }
     }
     if (pending_->t_ms > t_ms) break;
-    state.apply(*pending_);
+    input.apply(*pending_);
     pending_.reset();
   }
 }

@@ -5,10 +5,10 @@
 
 namespace andros::record {
 
-void RecordingInput::pump(input::InputState& state, std::int64_t now_ms) {
-  state.keep_applied(true);
-  inner_.pump(state, now_ms);
-  recorder_.pumped(now_ms, state.take_applied());
+void RecordingInput::pump(input::TickInput& input, std::int64_t now_ms) {
+  input.keep_applied(true);
+  inner_.pump(input, now_ms);
+  recorder_.pumped(now_ms, input.take_applied());
 }
 
 bool RecordingInput::finished(std::int64_t now_ms) const {
@@ -24,8 +24,8 @@ run::RunControl recorded_control(run::RunControl control, Recorder& recorder,
     recorder.request(r);
     return r;
   };
-  control.pause = [pause = std::move(control.pause), &recorder] {
-    pause();
+  control.pause = [pause = std::move(control.pause), &recorder](const run::ShutdownReport& neutral) {
+    pause(neutral);
     recorder.paused();
   };
   control.finish_reload = [finish = std::move(control.finish_reload), &recorder, settings = std::move(settings)] {

@@ -7,6 +7,7 @@
 #include "andros/mapping/loader.hpp"
 #include "andros/record/recorded_loop.hpp"
 #include "andros/record/recorder.hpp"
+#include "andros/run/loop.hpp"
 #include "record_check.hpp"
 
 namespace andros::record {
@@ -25,10 +26,10 @@ class Playback {
   [[nodiscard]] std::int64_t last_tick() const { return last_tick_; }
 
   // The input.
-  void pump(input::InputState& state, std::int64_t now_ms) {
+  void pump(input::TickInput& input, std::int64_t now_ms) {
     now_ms_ = now_ms;
     while (next_event_ < s_.events.size() && s_.events[next_event_].t_ms <= now_ms)
-      state.apply(s_.events[next_event_++]);
+      input.apply(s_.events[next_event_++]);
   }
   [[nodiscard]] bool finished(std::int64_t now_ms) const { return s_.input_end && now_ms >= *s_.input_end; }
 
@@ -135,7 +136,7 @@ class Playback {
 class PlaybackInput final : public input::InputSource {
  public:
   PlaybackInput(Playback& p, bool supervised) : p_(p), supervised_(supervised) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override { p_.pump(state, now_ms); }
+  void pump(input::TickInput& input, std::int64_t now_ms) override { p_.pump(input, now_ms); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return p_.finished(now_ms); }
   [[nodiscard]] bool supervised() const override { return supervised_; }
 
@@ -209,26 +210,29 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
   PlaybackInput playback_input(playback, s.settings.supervised);
   RecordingInput input(playback_input, recorder);  // the request records' time is the pump's
   PlaybackLink link(playback);
-  run::Bridge bridge(playback.clock(), input, *engine, link,
-                     run::BridgeOptions{.rate_millihertz = s.settings.rate_millihertz,
-                                        .neutral_tail_at_end = true,
-                                        .rules = {s.settings.weapons, s.settings.code}});
-
-  run::RunControl control;
-  control.poll = [&] {
+  run::LoopParts loop{.clock = playback.clock(),
+                      .input = input,
+                      .frames = *engine,
+                      .link = link,
+                      .options = {.rate_millihertz = s.settings.rate_millihertz,
+                                  .neutral_tail_at_end = true,
+                                  .rules = {s.settings.weapons, s.settings.code}},
+                      .control = {},
+                      .observers = {}};
+  loop.control.poll = [&] {
     if (playback.past_end()) return run::Request::kShutdown;
     const run::Request r = playback.poll();
     recorder.request(r);
     return r;
   };
-  control.pause = [&] { playback.pause(); };
-  control.begin_reload = [](const std::string&) {};  // its outcome is the session's
-  control.finish_reload = [&] { return playback.finish_reload(); };
+  loop.control.pause = [&](const run::ShutdownReport&) { playback.pause(); };
+  loop.control.begin_reload = [](const std::string&) {};  // its outcome is the session's
+  loop.control.finish_reload = [&] { return playback.finish_reload(); };
 
+  if (observe) loop.observers.push_back(observe);
   // Each tick's frame against the record in effect (a difference named at
   // its tick), then the tick's records against the session's.
-  bridge.run(control, [&](const run::TickReport& r) {
-    if (observe) observe(r);
+  loop.observers.emplace_back([&](const run::TickReport& r) {
     ++out.ticks;
     if (r.tick != playback.expected_tick()) {
       check.differ("tick " + std::to_string(r.tick) + ": the live loop ran tick " +
@@ -249,6 +253,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
     }
     playback.ticked(r.tick);
   });
+  run::run_loop(loop);
   check.finish();
   if (s.end && out.compared != s.end->frames_sent) {
     check.differ("the live run sent " + std::to_string(s.end->frames_sent) + " frames, the replay reproduced " +

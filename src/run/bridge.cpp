@@ -50,14 +50,14 @@ bool Bridge::tick(const RunControl& control, const Observer& observe) {
     // The input is read right after the tick's time: never older than the
     // frame; every change since the last tick counts, not only where it ended.
     input_.begin_tick();
-    source_.pump(input_, t_ms);
+    source_.pump(pumped_, t_ms);
     // The pads in each role, as numbers: the machine decides on them; the registry keeps what is said of them.
     operator_pad_ = pads_.id_of(input_.operator_pad().identity());
     supervisor_pad_ = pads_.id_of(input_.supervisor().identity());
     machine_.set_pads(operator_pad_, supervisor_pad_);
     pads_.keep({operator_pad_, supervisor_pad_, machine_.stopper_pad(), machine_.reset_pad()});
     on_request(control.poll());
-    for (const auto& fault : input_.take_faults()) on_fault(fault);
+    for (const auto& fault : pumped_.take_faults()) on_fault(fault);
     // Every configured controller: losing the supervisor's stops motion as losing the operator's does.
     const bool controllers_up = input_.connected() && (!source_.supervised() || input_.supervisor().connected());
     if (controllers_up) {
@@ -225,14 +225,14 @@ void Bridge::close() {
 }
 
 void Bridge::pause(const RunControl& control) {
-  control.pause();
+  control.pause(shutdown_report_);
   // Go on at the first tick still to come: unlike a stall, this gap was asked for.
   const std::int64_t elapsed = (clock_.now() - start_).count();
   tick_ = std::max(tick_ + 1, schedule_.next_tick(-1, elapsed) + 1);
   skipped_ = 0;
   // What happened while the process was stopped is history too.
   input_.begin_tick();
-  source_.pump(input_, elapsed / kNsPerMs);
+  source_.pump(pumped_, elapsed / kNsPerMs);
   apply(OpEvent::kResume, Who::kRequest);
 }
 

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "andros/link/fault_link.hpp"
+#include "andros/run/loop.hpp"
 
 namespace andros::run {
 namespace {
@@ -11,7 +12,7 @@ namespace {
 class PlayerInput final : public input::InputSource {
  public:
   explicit PlayerInput(input::ScriptPlayer& player) : player_(player) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override { player_.advance_to(now_ms, state); }
+  void pump(input::TickInput& input, std::int64_t now_ms) override { player_.advance_to(now_ms, input); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_.finished_at(now_ms); }
   [[nodiscard]] bool supervised() const override { return player_.supervised(); }
 
@@ -29,17 +30,21 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   const std::unique_ptr<FrameSource> frames = options.frames(std::make_unique<mapping::Engine>(std::move(engine)));
   link::SinkLink sink_link(
       [&options](std::int64_t now_ns, const protocol::Frame& frame) { options.wire(now_ns / kNsPerMs, frame); });
-  Bridge bridge(clock, input, *frames, options.link != nullptr ? *options.link : sink_link,
-                BridgeOptions{.rate_millihertz = options.rate_millihertz,
-                              .neutral_tail_at_end = false,
-                              .rules = {options.engine.weapons, options.engine.code}});
+  LoopParts loop{.clock = clock,
+                 .input = input,
+                 .frames = *frames,
+                 .link = options.link != nullptr ? *options.link : sink_link,
+                 .options = {.rate_millihertz = options.rate_millihertz,
+                             .neutral_tail_at_end = false,
+                             .rules = {options.engine.weapons, options.engine.code}},
+                 .control = {},
+                 .observers = {}};
 
   // A reload is read at once (the clock waits for it) and applied after its neutral frames.
   std::optional<mapping::ValidMapping> loaded;
   std::string loaded_file;
   std::optional<ReloadOutcome> outcome;
-  RunControl control;
-  control.begin_reload = [&](const std::string& file) {
+  loop.control.begin_reload = [&](const std::string& file) {
     const std::string wanted = file.empty() ? mapping_file : file;
     try {
       loaded = options.load(wanted);
@@ -51,7 +56,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
       outcome = ReloadOutcome{false, e.what()};
     }
   };
-  control.finish_reload = [&] {
+  loop.control.finish_reload = [&] {
     if (outcome && outcome->ok) {
       outcome->frames = options.frames(std::make_unique<mapping::Engine>(std::move(*loaded), options.engine));
       mapping_file = loaded_file;
@@ -62,13 +67,13 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
   };
 
   std::int64_t delivered = 0;
-  bridge.run(control, [&](const TickReport& r) {
-    options.observe(r);
-    if (r.sent && r.result == link::SendResult::kSent) {
-      sink(r.t_ms, r.data);
-      ++delivered;
-    }
-  });
+  loop.observers = {options.observe, [&](const TickReport& r) {
+                      if (r.sent && r.result == link::SendResult::kSent) {
+                        sink(r.t_ms, r.data);
+                        ++delivered;
+                      }
+                    }};
+  run_loop(loop);
   return delivered;
 }
 

@@ -213,8 +213,9 @@ void TrainerFeed::observe_pad(const input::InputState& input, const input::Devic
   pads_written_.store(written + 1, std::memory_order_release);
 }
 
-void WatchedInput::pump(input::InputState& state, std::int64_t now_ms) {
-  inner_.pump(state, now_ms);
+void WatchedInput::pump(input::TickInput& input, std::int64_t now_ms) {
+  inner_.pump(input, now_ms);
+  const auto& state = input.state();
   const auto& pad = state.operator_pad();
   if (pad.connection() != layout_connection_) {
     layout_connection_ = pad.connection();

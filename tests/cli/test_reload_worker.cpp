@@ -206,7 +206,7 @@ TEST_F(ReloadRead, RefusesWhatNeedsARestartAndABadFile) {
 
 class NoInput final : public input::InputSource {
  public:
-  void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
+  void pump(input::TickInput& /*input*/, std::int64_t /*now_ms*/) override {}
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
 };
 

@@ -240,7 +240,7 @@ struct RecordedRun {
     SessionSettings reloaded;
     run::RunControl control;
     control.poll = [&] { return ++polls == 150 ? run::Request::kSuspend : run::Request::kNone; };  // Ctrl-Z at 6 s
-    control.pause = [&] { clock.advance(Nanos(1'234'567'891)); };                                  // stopped 1.23 s
+    control.pause = [&](const run::ShutdownReport&) { clock.advance(Nanos(1'234'567'891)); };      // stopped 1.23 s
     control.begin_reload = [&](const std::string&) { reload_ticks = 0; };
     control.finish_reload = [&]() -> std::optional<run::ReloadOutcome> {
       if (++reload_ticks < 4) return std::nullopt;  // the worker still reads

@@ -11,6 +11,7 @@
 #include "andros/link/pty_pair.hpp"
 #include "andros/link/serial_link.hpp"
 #include "andros/run/bridge.hpp"
+#include "andros/run/loop.hpp"
 #include "andros/view/status_board.hpp"
 #include "support/frame_doubles.hpp"
 #include "support/frame_reader.hpp"
@@ -46,7 +47,7 @@ class PressToDrive final : public testing::WithoutStops {
 /// An input that never ends.
 class Idle final : public input::InputSource {
  public:
-  void pump(input::InputState&, std::int64_t) override {}
+  void pump(input::TickInput&, std::int64_t) override {}
   bool finished(std::int64_t) const override { return false; }
 };
 
@@ -181,7 +182,7 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
     if (polls == 8) return Request::kResumed;
     return polls >= 10 ? Request::kShutdown : Request::kNone;
   };
-  control.pause = [&] {
+  control.pause = [&](const ShutdownReport&) {
     ++paused;
     ticks_at_pause.push_back(ticks.size());
     EXPECT_EQ(on.link.state(), link::LinkState::kConnecting);  // drained and closed
@@ -204,6 +205,56 @@ TEST(Bridge, ASuspendSendsNeutralFramesThenPausesThenStartsAfresh) {
   EXPECT_EQ(on.got.size(), 12u);
 }
 
+/// An input with no controller that ends at a time.
+class EndsAt final : public input::InputSource {
+ public:
+  explicit EndsAt(std::int64_t end_ms) : end_ms_(end_ms) {}
+  void pump(input::TickInput&, std::int64_t) override {}
+  bool finished(std::int64_t now_ms) const override { return now_ms >= end_ms_; }
+
+ private:
+  std::int64_t end_ms_;
+};
+
+// The one assembly every command calls: the parts it is given, run as one
+// loop; every observer sees every report, in the order given; the pause
+// hears how the suspend's neutral frames went, the caller how the last did.
+TEST(RunLoop, RunsTheLoopItsPartsDescribeWithEveryObserverInOrder) {
+  VirtualClock clock;
+  EndsAt input(400);
+  PressToDrive frames;
+  std::vector<protocol::Frame> got;
+  link::SinkLink link{[&got](std::int64_t, const protocol::Frame& f) { got.push_back(f); }};
+  std::vector<std::pair<char, std::int64_t>> seen;
+  std::vector<ShutdownReport> pauses;
+  int polls = 0;
+  LoopParts loop{.clock = clock,
+                 .input = input,
+                 .frames = frames,
+                 .link = link,
+                 .options = {.rate_millihertz = 25'000, .rules = kRules},
+                 .control = {},
+                 .observers = {[&seen](const TickReport& r) { seen.emplace_back('a', r.tick); },
+                               [&seen](const TickReport& r) { seen.emplace_back('b', r.tick); }}};
+  loop.control.poll = [&polls] { return ++polls == 2 ? Request::kSuspend : Request::kNone; };
+  loop.control.pause = [&pauses](const ShutdownReport& neutral) { pauses.push_back(neutral); };
+  const ShutdownReport end = run_loop(loop);
+
+  ASSERT_EQ(pauses.size(), 1U);  // after the suspend's 3 neutral frames, drained
+  EXPECT_EQ(pauses[0].neutral_sent, 3);
+  EXPECT_TRUE(pauses[0].ok());
+  EXPECT_EQ(end.neutral_sent, 3);  // the end of the input: 3 more, then closed
+  EXPECT_TRUE(end.ok());
+  ASSERT_FALSE(seen.empty());
+  ASSERT_EQ(seen.size() % 2, 0U);
+  for (std::size_t i = 0; i < seen.size(); i += 2) {
+    EXPECT_EQ(seen[i].first, 'a') << i;
+    EXPECT_EQ(seen[i + 1].first, 'b') << i;
+    EXPECT_EQ(seen[i].second, seen[i + 1].second) << i;
+  }
+  EXPECT_EQ(got.size(), seen.size() / 2);  // every tick offered a frame the sink took (the pause's none)
+}
+
 TEST(Bridge, AContinueDuringASuspendsNeutralFramesMeansNoPause) {
   // kill -TSTP; sleep 0.08; kill -CONT: the SIGCONT comes before the process stopped itself.
   OnSink on;
@@ -216,7 +267,7 @@ TEST(Bridge, AContinueDuringASuspendsNeutralFramesMeansNoPause) {
     if (polls == 4) return Request::kResumed;
     return polls >= 8 ? Request::kShutdown : Request::kNone;
   };
-  control.pause = [] { FAIL() << "stopped although continued before the stop"; };
+  control.pause = [](const ShutdownReport&) { FAIL() << "stopped although continued before the stop"; };
   on.bridge.run(control, [&](const TickReport& r) { ticks.push_back(r); });
   // Suspend frames on 2, 3, 4, then on without a gap: not enabled, ticks 5, 6, and the stop's 7, 8, 9.
   ASSERT_EQ(ticks.size(), 10u);
@@ -238,7 +289,7 @@ TEST(Bridge, AReloadSendsNeutralFramesOnTheOpenLinkWhileTheSettingsAreReadThenSt
     if (polls == 4) return Request::kReload;  // a second SIGHUP while it runs: read again, frames afresh
     return polls >= 10 ? Request::kShutdown : Request::kNone;
   };
-  control.pause = [] { FAIL() << "a reload is not a pause"; };
+  control.pause = [](const ShutdownReport&) { FAIL() << "a reload is not a pause"; };
   control.begin_reload = [&](const std::string& mapping) { begun.push_back(mapping); };
   control.finish_reload = [&]() -> std::optional<ReloadOutcome> {
     EXPECT_EQ(on.link.state(), link::LinkState::kUp);  // not closed

@@ -27,8 +27,8 @@ constexpr std::uint8_t kDrivenCode = 0x3C;
 class EventList final : public input::InputSource {
  public:
   explicit EventList(const std::vector<input::InputEvent>& events) : events_(events) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override {
-    for (; next_ < events_.size() && events_[next_].t_ms <= now_ms; ++next_) state.apply(events_[next_]);
+  void pump(input::TickInput& input, std::int64_t now_ms) override {
+    for (; next_ < events_.size() && events_[next_].t_ms <= now_ms; ++next_) input.apply(events_[next_]);
   }
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
 

@@ -122,7 +122,7 @@ TEST(FeedbackEvents, ALinkLostAndBackWithinATickIsTold) {
   std::vector<E> played;
   class Pad final : public input::InputSource {
    public:
-    void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
+    void pump(input::TickInput& /*input*/, std::int64_t /*now_ms*/) override {}
     [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
   } pad;
   FeedbackNotifier notifier(mapping::default_feedback(), pad);
@@ -146,7 +146,7 @@ TEST(FeedbackEvents, AWeaponsModeIsToldWhenItBeginsAndEnds) {
 
 class RecordingInput final : public input::InputSource {
  public:
-  void pump(input::InputState& /*state*/, std::int64_t /*now_ms*/) override {}
+  void pump(input::TickInput& /*input*/, std::int64_t /*now_ms*/) override {}
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
   void feedback(const input::FeedbackPattern& pattern) override { played.push_back(pattern); }
   std::vector<input::FeedbackPattern> played;

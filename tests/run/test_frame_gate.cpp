@@ -81,7 +81,7 @@ TEST(FrameGate, ItsNeutralFrameKeepsSelectorsAndLevelsAndNothingElse) {
 class TextInput final : public input::InputSource {
  public:
   explicit TextInput(const std::string& text) : reader_(text, "gate.events", kEventScriptLimits), player_(reader_) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override { player_.advance_to(now_ms, state); }
+  void pump(input::TickInput& input, std::int64_t now_ms) override { player_.advance_to(now_ms, input); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_.finished_at(now_ms); }
   [[nodiscard]] bool supervised() const override { return player_.supervised(); }
 

@@ -18,10 +18,11 @@ class InputSource {
  public:
   virtual ~InputSource() = default;
 
-  /// Applies to state every event that happened up to now_ms (ms since the
-  /// run started). Never blocks for long and never throws at run time: a
-  /// source that loses its device reports a disconnect event instead.
-  virtual void pump(InputState& state, std::int64_t now_ms) = 0;
+  /// Applies to input every event that happened up to now_ms (ms since the
+  /// run started): the controllers' to its state, a script's fault events
+  /// apart. Never blocks for long and never throws at run time: a source
+  /// that loses its device reports a disconnect event instead.
+  virtual void pump(TickInput& input, std::int64_t now_ms) = 0;
 
   /// True when the source has nothing more to give (the end of a script).
   /// A live controller source never finishes.

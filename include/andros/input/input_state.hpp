@@ -188,12 +188,12 @@ class PadState {
 };
 
 /// The input state a frame is computed from: the operator's controller (read
-/// through the members below, which are its PadState's), the supervisor's
-/// (supervisor()), and the fault events for the run loop.
+/// through the members below, which are its PadState's) and the
+/// supervisor's (supervisor()). It holds the controllers only: an event
+/// script's fault events go to the run loop beside it (TickInput).
 class InputState {
  public:
-  /// Applies one event: a fault is kept for take_faults(), a controller's
-  /// event goes to the pad it names (InputEvent::pad).
+  /// Applies a controller's event to the pad it names (InputEvent::pad).
   void apply(const InputEvent& event);
 
   [[nodiscard]] bool connected() const { return operator_pad_.connected(); }
@@ -219,18 +219,36 @@ class InputState {
     supervisor_pad_.begin_tick();
   }
 
-  /// The fault events applied since the last call, in order (the run loop
-  /// answers them; the input state itself ignores them).
+ private:
+  PadState operator_pad_;
+  PadState supervisor_pad_;
+};
+
+/// One tick's input as a source hands it to the run loop
+/// (InputSource::pump): a controller's event goes to the input state the
+/// guards and the mapping stage read; an event around the controllers (an
+/// event script's fault event: the link, a suspend, a resume, a reload, the
+/// shutdown) is kept apart, for the loop to turn into the machine's event
+/// (run/bridge_requests.cpp).
+class TickInput {
+ public:
+  /// Applies one event: a fault is kept for take_faults(), any other goes to state().
+  void apply(const InputEvent& event);
+
+  [[nodiscard]] InputState& state() { return state_; }
+  [[nodiscard]] const InputState& state() const { return state_; }
+
+  /// The fault events applied since the last call, in order.
   [[nodiscard]] std::vector<InputEvent> take_faults() { return std::exchange(faults_, {}); }
 
-  /// Also keeps every event applied from now on, faults included, for
-  /// take_applied(): what the flight recorder writes (docs/recording.md).
+  /// Also keeps every event applied from now on, faults included, in the
+  /// order they came, for take_applied(): what the flight recorder writes
+  /// (docs/recording.md).
   void keep_applied(bool on) { keep_applied_ = on; }
   [[nodiscard]] std::vector<InputEvent> take_applied() { return std::exchange(applied_, {}); }
 
  private:
-  PadState operator_pad_;
-  PadState supervisor_pad_;
+  InputState state_;
   std::vector<InputEvent> faults_;
   bool keep_applied_ = false;
   std::vector<InputEvent> applied_;

@@ -21,7 +21,7 @@ class ScriptInput final : public InputSource {
   ScriptInput(const ScriptInput&) = delete;  // the player holds on to text_
   ScriptInput& operator=(const ScriptInput&) = delete;
 
-  void pump(InputState& state, std::int64_t now_ms) override { player_->advance_to(now_ms, state); }
+  void pump(TickInput& input, std::int64_t now_ms) override { player_->advance_to(now_ms, input); }
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return player_->finished_at(now_ms); }
   [[nodiscard]] bool supervised() const override { return player_->supervised(); }
 

@@ -1,5 +1,6 @@
 #pragma once
-/// Plays an event script into an InputState against a clock it is told, not
+/// Plays an event script into a TickInput (the controllers' events to its
+/// state, the fault events apart) against a clock it is told, not
 /// one it reads: replay drives it with a virtual clock, `run --input` with
 /// the scheduler's tick times. The frame timing of docs/event-scripts.md (the
 /// frame at t reflects every event with a time <= t) lives here once.
@@ -21,7 +22,7 @@ class ScriptPlayer {
 
   /// Applies every event with a time <= t_ms (the state the frame at t_ms
   /// reflects). Parse errors surface here as InputError.
-  void advance_to(std::int64_t t_ms, InputState& state);
+  void advance_to(std::int64_t t_ms, TickInput& input);
 
   /// True once the frame at t_ms is the script's last: the first frame time
   /// >= the `end` time (or the last event's time, for a script with no `end`).

@@ -98,7 +98,7 @@ class SdlInput final : public InputSource {
   /// next call). Never throws.
   const std::vector<InputEvent>& poll(std::int64_t now_ms);
 
-  void pump(InputState& state, std::int64_t now_ms) override;
+  void pump(TickInput& input, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t /*now_ms*/) const override { return false; }
   [[nodiscard]] bool supervised() const override;
 

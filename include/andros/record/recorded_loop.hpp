@@ -15,7 +15,7 @@ namespace andros::record {
 class RecordingInput final : public input::InputSource {
  public:
   RecordingInput(input::InputSource& inner, Recorder& recorder) : inner_(inner), recorder_(recorder) {}
-  void pump(input::InputState& state, std::int64_t now_ms) override;
+  void pump(input::TickInput& input, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t now_ms) const override;
   void feedback(const input::FeedbackPattern& pattern) override { inner_.feedback(pattern); }
   // Everything else the loop and the screen ask of the input is the inner source's.

@@ -117,11 +117,19 @@ struct ReloadOutcome {
   std::shared_ptr<FrameSource> frames = nullptr;
 };
 
+/// How the neutral frames at the end (or before a suspend's pause) went.
+struct ShutdownReport {
+  int neutral_sent = 0;  ///< neutral frames the link took
+  int neutral_wanted = 0;
+  bool drained = false;  ///< and the link then had them out before it closed
+  [[nodiscard]] bool ok() const { return neutral_sent >= neutral_wanted && drained; }
+};
+
 struct RunControl {
   std::function<Request()> poll = [] { return Request::kNone; };
-  /// Called after a suspend's neutral frames (link drained and closed);
-  /// returns when the run goes on.
-  std::function<void()> pause = [] {};
+  /// Called after a suspend's neutral frames (link drained and closed), with
+  /// how they went; returns when the run goes on.
+  std::function<void(const ShutdownReport& neutral)> pause = [](const ShutdownReport&) {};
   /// Starts reading the settings again, off the loop (mapping: an event
   /// script's `reload FILE`, empty for the configured one); returns at once.
   std::function<void(const std::string& mapping)> begin_reload = [](const std::string&) {};
@@ -133,20 +141,14 @@ struct RunControl {
   };
 };
 
-/// How the neutral frames at the end went.
-struct ShutdownReport {
-  int neutral_sent = 0;  ///< neutral frames the link took
-  int neutral_wanted = 0;
-  bool drained = false;  ///< and the link then had them out before it closed
-  [[nodiscard]] bool ok() const { return neutral_sent >= neutral_wanted && drained; }
-};
-
 class Bridge {
  public:
   using ShutdownCheck = std::function<bool()>;
   using Observer = std::function<void(const TickReport&)>;
 
   Bridge(Clock& clock, input::InputSource& input, FrameSource& frames, link::Link& link, BridgeOptions options);
+  Bridge(const Bridge&) = delete;  // input_ refers to its own pumped_
+  Bridge& operator=(const Bridge&) = delete;
 
   /// Runs until a shutdown request or the end of the input, then shuts down. A
   /// request seen on tick k is answered on tick k: its frame is the first
@@ -206,11 +208,12 @@ class Bridge {
   link::FaultLink link_;
   BridgeOptions options_;
   timing::TickSchedule schedule_;
-  OperatingState machine_;  ///< every decision whether the vehicle may move, and every deferral
-  DriveGuard guard_;        ///< the machine's guards with memory and time: its facts each driving tick
-  FrameGate gate_;          ///< the second channel: every frame offered to the link passes it
-  input::InputState input_;
-  mapping::EngineStatus engine_status_;  ///< the last step's
+  OperatingState machine_;   ///< every decision whether the vehicle may move, and every deferral
+  DriveGuard guard_;         ///< the machine's guards with memory and time: its facts each driving tick
+  FrameGate gate_;           ///< the second channel: every frame offered to the link passes it
+  input::TickInput pumped_;  ///< what the input source hands over each tick
+  input::InputState& input_ = pumped_.state();  ///< its controllers' state: what the guards and the engine read
+  mapping::EngineStatus engine_status_;         ///< the last step's
   ShutdownReport shutdown_report_;
   const RunControl* control_ = nullptr;  ///< run()'s, while it runs
   Nanos start_{0};

@@ -131,7 +131,7 @@ class WatchedInput : public input::InputSource {
  public:
   WatchedInput(input::InputSource& inner, TrainerFeed& feed) : inner_(inner), feed_(feed) {}
 
-  void pump(input::InputState& state, std::int64_t now_ms) override;
+  void pump(input::TickInput& input, std::int64_t now_ms) override;
   [[nodiscard]] bool finished(std::int64_t now_ms) const override { return inner_.finished(now_ms); }
   [[nodiscard]] bool supervised() const override { return inner_.supervised(); }
   void feedback(const input::FeedbackPattern& pattern) override { inner_.feedback(pattern); }

@@ -187,8 +187,8 @@ const std::vector<InputEvent>& SdlInput::poll(std::int64_t now_ms) {
   return impl_->events;
 }
 
-void SdlInput::pump(InputState& state, std::int64_t now_ms) {
-  for (const auto& event : poll(now_ms)) state.apply(event);
+void SdlInput::pump(TickInput& input, std::int64_t now_ms) {
+  for (const auto& event : poll(now_ms)) input.apply(event);
 }
 
 bool SdlInput::supervised() const { return impl_->supervisor.has_value(); }

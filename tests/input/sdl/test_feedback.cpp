@@ -113,7 +113,7 @@ class FeedbackRun {
 
   std::optional<E> tick(bool link_up = true) {
     t_ += 40;
-    input_.pump(state_, t_);
+    input_.pump(tick_, t_);
     engine_.step(state_, t_);
     // The loop's state is enabled when the engine is and the link is up (no
     // interruption here), and its machine publishes the steps between.
@@ -142,7 +142,8 @@ class FeedbackRun {
   testing::DrivenEngine engine_;
   SdlInput input_;
   run::FeedbackNotifier notifier_;
-  InputState state_;
+  TickInput tick_;
+  InputState& state_ = tick_.state();
   std::int64_t t_ = 0;
   bool link_up_ = true;
   bool enabled_ = false;

@@ -24,11 +24,12 @@ class SdlInputTest : public ::testing::Test {
   /// One tick: the next 40 ms step of the run's clock.
   void tick(SdlInput& input) {
     now_ += 40;
-    input.pump(state_, now_);
+    input.pump(tick_, now_);
   }
 
   SdlSession session_;  // the test's own reference, so devices outlive inputs
-  InputState state_;
+  TickInput tick_;
+  InputState& state_ = tick_.state();
   std::int64_t now_ = 0;
 };
 

@@ -38,7 +38,7 @@ class PadRolesTest : public ::testing::Test {
     if (SDL_NumJoysticks() > 0) GTEST_SKIP() << "a real controller is attached";
   }
 
-  void tick(SdlInput& input) { input.pump(state_, now_ += 40); }
+  void tick(SdlInput& input) { input.pump(tick_, now_ += 40); }
 
   /// Each pad presses its own button (the operator's pad A, the supervisor's
   /// B) and releases it: true when each press reached its own role only.
@@ -108,7 +108,8 @@ class PadRolesTest : public ::testing::Test {
   }
 
   SdlSession session_;
-  InputState state_;
+  TickInput tick_;
+  InputState& state_ = tick_.state();
   std::int64_t now_ = 0;
   std::map<SDL_JoystickID, std::string> serials_;
 };

@@ -28,7 +28,7 @@ class SdlSelectionTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { test::use_dummy_video(); }
 
-  void tick(SdlInput& input) { input.pump(state_, now_ += 40); }
+  void tick(SdlInput& input) { input.pump(tick_, now_ += 40); }
 
   /// Attaches the two pads and checks that only the one chosen feeds the state.
   void expect_only_beta_counts(const std::function<std::string(const VirtualDevice& beta)>& choose) {
@@ -50,7 +50,8 @@ class SdlSelectionTest : public ::testing::Test {
   }
 
   SdlSession session_;
-  InputState state_;
+  TickInput tick_;
+  InputState& state_ = tick_.state();
   std::int64_t now_ = 0;
 };
 
@@ -256,9 +257,9 @@ TEST(SdlEnvironment, SdlGameControllerConfigAddsMappings) {
     const SdlSession session;  // SDL reads the variable when it starts
     auto stick = VirtualDevice::stick("Test Stick");
     SdlInput input(SdlInputOptions{});
-    InputState state;
-    input.pump(state, 40);
-    EXPECT_EQ(state.name(), "Env Stick");
+    TickInput tick;
+    input.pump(tick, 40);
+    EXPECT_EQ(tick.state().name(), "Env Stick");
   }
   unsetenv("SDL_GAMECONTROLLERCONFIG");
 }
