@@ -290,7 +290,8 @@ void Recorder::observe(const run::TickReport& r) noexcept {
   guarded([&] {
     if (!r.gate_fault.empty()) record([&] { return payload::gate(r.t_ms, r.gate_fault); });
     if (format_ >= kTransitionFormat) {
-      for (const auto& [t, pad] : r.transitions) {
+      for (const auto& reported : r.transitions) {
+        const auto& t = reported.transition;
         if (t.to != t.from) record([&] { return payload::transition(r.t_ms, t); });
       }
     }
@@ -312,10 +313,11 @@ void Recorder::observe(const run::TickReport& r) noexcept {
       const auto& t = last_stop->transition;
       record([&] { return payload::stop(r.t_ms, *run::stop_by(t.event), last_stop->pad, t.again); });
     }
-    for (const auto& [t, pad] : r.transitions) {
+    for (const auto& reported : r.transitions) {
+      const auto& t = reported.transition;
       if (t.event == run::OpEvent::kOperatorReset || t.event == run::OpEvent::kSupervisorReset) {
         const auto by = t.event == run::OpEvent::kSupervisorReset ? run::StopBy::kSupervisor : run::StopBy::kOperator;
-        record([&] { return payload::reset(r.t_ms, by, pad); });
+        record([&] { return payload::reset(r.t_ms, by, reported.pad); });
       }
     }
     if (first_ || r.engine.layer != layer_) {

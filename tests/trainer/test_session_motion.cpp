@@ -6,6 +6,12 @@
 #include <cstring>
 
 #include "andros/protocol/frame.hpp"
+#include "andros/record/session.hpp"
+#include "andros/record/session_replay.hpp"
+#include "andros/trainer/stream_hub.hpp"
+#include "andros/trainer/trainer_feed.hpp"
+#include "andros/trainer/trainer_replay.hpp"
+#include "andros/vehicle/robot_figures.hpp"
 #include "andros/view/session_motion.hpp"
 
 namespace andros::view {
@@ -121,6 +127,37 @@ TEST(SessionMotion, TheDriveMovesTheVehicleAndTheDownLinksWatchdogStopsIt) {
   for (std::size_t i = 1; i < trail.size(); ++i) ASSERT_LE(trail[i - 1].t_ms, trail[i].t_ms);
   EXPECT_EQ(trail.back().x, motion.end().trail().back().x);
   EXPECT_EQ(motion.length_ms(), 1999 * 40);
+}
+
+// Issue 38: a session of a real drive (`run`, the committed sessions of two
+// formats) replayed as motion is the trail of the same frames fed live: the
+// loop run again on the session's recorded input and mapping, each tick
+// handed to the trainer's feed as the live trainer hands it over
+// (cmd_trainer: queue_tick after the tick, the motion thread taking them).
+TEST(SessionMotion, ARealDrivesSessionReplayedIsTheTrailOfItsFramesFedLive) {
+  for (const char* name : {"drive.andros-session", "format3.andros-session"}) {
+    SCOPED_TRACE(name);
+    const auto checked = record::read_checked_session(std::string(ANDROS_TEST_DATA_DIR "/sessions/") + name);
+    ASSERT_TRUE(checked.session);
+    ASSERT_TRUE(checked.verdict.intact);
+    const auto& session = *checked.session;
+    const auto& figures = vehicle::figures_for(session.settings.robot);
+    trainer::StreamHub hub;
+    trainer::TrainerFeed feed(figures, hub);
+    const SessionMotion motion(session, figures);
+    EXPECT_GT(motion.trail().size(), 2U);  // it drove
+    // At every tick, the pose so far (a frame a tick late or early moves it).
+    std::int64_t compared = 0;
+    (void)record::replay_session(session, record::load_recorded_mapping, [&](const run::TickReport& r) {
+      feed.queue_tick(r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
+      feed.take_ticks();
+      ASSERT_EQ(feed.summary(), trainer::trail_summary(motion.at(r.t_ms))) << "at " << r.t_ms << " ms";
+      ++compared;
+    });
+    ASSERT_EQ(feed.lost_ticks(), 0U);
+    EXPECT_GT(compared, 10);
+    EXPECT_EQ(feed.summary(), trainer::trail_summary(motion.end()));
+  }
 }
 
 }  // namespace
