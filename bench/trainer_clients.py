@@ -7,9 +7,10 @@ Runs `BIN trainer` on a drive script and, in one run, three phases of S
 seconds each (default 20): no web client but the measuring one; 8 clients
 reading GET /events; the same 8 and one stalled client (it asks for
 /events, then never reads, with a 4 kB receive buffer). The measuring
-client reads /events too: every object carries the frame's arrival time at
-the simulated vehicle ("time", microseconds), so the gaps between frames are
-the loop's ticks as the vehicle sees them. Reports, per phase, the p50, p99
+client reads /events too: every object carries the time the loop handed its
+tick over after sending the frame ("sent", seconds to the microsecond,
+monotonic), so the gaps between objects are the loop's ticks as they
+happened. Reports, per phase, the p50, p99
 and largest |gap - 40 ms|, and frames seen; and whether the stalled client
 was dropped (the server closed it)."""
 import argparse, json, os, socket, subprocess, sys, tempfile, threading, time
@@ -85,7 +86,7 @@ def main():
                 event, buf = buf.split(b"\n\n", 1)
                 for line in event.split(b"\n"):
                     if line.startswith(b"data: "):
-                        times.setdefault(phase[0], []).append(json.loads(line[6:])["time"])
+                        times.setdefault(phase[0], []).append(json.loads(line[6:])["sent"])
 
     threading.Thread(target=measure, daemon=True).start()
     time.sleep(2)

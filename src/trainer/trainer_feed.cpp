@@ -3,6 +3,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "andros/base/clock.hpp"
 #include "andros/trainer/course_view.hpp"
 #include "andros/trainer/trainer_replay.hpp"
 #include "andros/view/session_motion.hpp"
@@ -142,7 +143,7 @@ void TrainerFeed::queue_tick(std::int64_t t_ms, const protocol::DataBytes& data,
     lost_.fetch_add(1, std::memory_order_relaxed);
     return;
   }
-  queue_[head % kQueueTicks] = Tick{t_ms, data, delivered};
+  queue_[head % kQueueTicks] = Tick{t_ms, data, delivered, monotonic_ns()};
   queue_head_.store(head + 1, std::memory_order_release);
 }
 
@@ -154,6 +155,8 @@ bool TrainerFeed::take_ticks() {
   for (; tail != head; ++tail) {
     const auto& t = queue_[tail % kQueueTicks];
     view::feed_tick(model_, t.t_ms, t.data, t.delivered);
+    if (first_handed_ns_ < 0) first_handed_ns_ = t.handed_ns;
+    handed_ns_ = t.handed_ns;
     // A frame taken: its own pad; none: the pad read for the next one is the newest the vehicle may show.
     take_pads(model_.state().frames + model_.state().ignored + (t.delivered ? 0 : 1));
     publish_locked();
@@ -194,7 +197,12 @@ void TrainerFeed::publish_locked() {
     facts = facts_;
   }
   facts.pad = pad_;
-  latest_ = stream_object(model_, facts);
+  auto object = stream_json(model_, facts);
+  // Seconds since the first tick's hand-over, to the microsecond: the loop's
+  // punctuality as the page sees it (bench/trainer_clients.py).
+  object["sent"] =
+      handed_ns_ < 0 ? json(nullptr) : json(std::round(static_cast<double>(handed_ns_ - first_handed_ns_) / 1e3) / 1e6);
+  latest_ = object.dump(-1, ' ', false, json::error_handler_t::replace);
   hub_.publish(latest_);
 }
 

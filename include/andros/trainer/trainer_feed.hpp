@@ -98,6 +98,7 @@ class TrainerFeed {
     std::int64_t t_ms = 0;
     protocol::DataBytes data{};
     bool delivered = false;
+    std::int64_t handed_ns = 0;  ///< when the loop handed it over (monotonic): its punctuality
   };
   /// 40 s of ticks at 25 Hz: the motion thread takes them every tick or 100 ms.
   static constexpr std::size_t kQueueTicks = 1024;
@@ -113,8 +114,10 @@ class TrainerFeed {
   std::string latest_;
   std::mutex facts_mutex_;  ///< the loop's hand-off: try_lock only on its side
   LoopFacts facts_;
-  PadInputs pad_;           ///< the pad the objects show (under model_mutex_)
-  std::uint64_t sent_ = 0;  ///< the loop's own: frames the link took
+  PadInputs pad_;                      ///< the pad the objects show (under model_mutex_)
+  std::int64_t first_handed_ns_ = -1;  ///< the first tick's hand-over (under model_mutex_)
+  std::int64_t handed_ns_ = -1;        ///< the latest tick's taken (under model_mutex_)
+  std::uint64_t sent_ = 0;             ///< the loop's own: frames the link took
   std::array<PadInputs, kPadRing> pads_;
   std::atomic<std::uint64_t> pads_written_{0};  ///< by the loop's thread
   std::atomic<std::uint64_t> pads_read_{0};     ///< by the motion thread (under model_mutex_)
