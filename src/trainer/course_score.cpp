@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "andros/base/text.hpp"
-#include "andros/protocol/decoder.hpp"
 #include "andros/record/session.hpp"
+#include "andros/view/session_motion.hpp"
 
 namespace andros::trainer {
 namespace {
@@ -31,16 +31,8 @@ CourseScorer::CourseScorer(const vehicle::RobotFigures& figures, vehicle::Course
 
 void CourseScorer::on_tick(const run::TickReport& r) {
   last_ms_ = r.t_ms;
-  if (r.sent && r.result == link::SendResult::kSent) {
-    // The loop's frames are whole and valid: what the simulated vehicle takes.
-    protocol::DecodedFrame frame;
-    frame.data = r.data;
-    frame.checksum_ok = true;
-    frame.valid = true;
-    model_.on_frame(frame, r.t_ms * 1'000'000);
-  } else {
-    model_.advance(r.t_ms * 1'000'000);
-  }
+  // As the trainer's model and a session's replay take a tick (view::feed_tick).
+  view::feed_tick(model_, r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
   if (done_ms_ < 0 && model_.course_done()) done_ms_ = r.t_ms;
   // Every stop press (the machine's published steps: both pads' in one tick too).
   for (const auto& [t, pad] : r.transitions) {
