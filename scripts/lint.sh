@@ -43,7 +43,7 @@ if [[ $what == all || $what == --tidy ]]; then
   # its unity groups (each file's findings still named by file): the headers
   # parsed and studied once a group, not once a file (CLI11 four times, not
   # 24; the run stage's 15 files: CPU 50 s one by one, 18 s as 3 groups).
-  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY_CLI=ON -DANDROS_UNITY=ON -DANDROS_CCACHE=OFF \
+  cmake -S . -B "$lint_build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DANDROS_UNITY=ON -DANDROS_CCACHE=OFF \
     -DANDROS_BUILD_TESTS=OFF -DANDROS_BUILD_BENCH=OFF >/dev/null
   log="$lint_build/clang-tidy.log"
   # In the background, waited for: a TERM (scripts/test.sh ending early)

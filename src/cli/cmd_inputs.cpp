@@ -23,7 +23,7 @@ namespace andros::cli {
 namespace {
 
 constexpr int kPollMs = 20;  ///< how often the controller is read: twice per frame at 25 Hz
-constexpr int kRedrawsPerSecond = 10;
+constexpr int kInputsRedrawsPerSecond = 10;
 
 struct InputsOptions {
   input::SdlInputOptions sdl;
@@ -69,7 +69,7 @@ int run_inputs(const InputsOptions& opt) {
   std::optional<view::TerminalDisplay> display;
   if (view::is_interactive(STDOUT_FILENO)) {
     display.emplace([&board](view::TermSize size) { return view::text_screen(board.compose(size)); },
-                    kRedrawsPerSecond);
+                    kInputsRedrawsPerSecond);
     display->start();
   } else {
     std::printf("# %s\n# %s\n", input.selection().c_str(), source.c_str());

@@ -33,7 +33,7 @@ struct MonitorOptions {
   std::unique_ptr<CommandLine> settings;  ///< the settings table's flags
 };
 
-constexpr int kRedrawsPerSecond = 4;
+constexpr int kMonitorRedrawsPerSecond = 4;
 constexpr std::int64_t kQuietNs = kNsPerSecond;  ///< no frame for this long: the stream stopped
 /// After a stop, what has already arrived is still read, up to these bounds.
 constexpr std::size_t kDrainBytes = std::size_t{256} * 1024;
@@ -90,7 +90,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
           const std::lock_guard lock(mutex);
           return view::render_monitor_screen(name, view.status(now), true, size);
         },
-        kRedrawsPerSecond);
+        kMonitorRedrawsPerSecond);
     display->start();
   }
   MonitorLog log;
@@ -99,7 +99,7 @@ int monitor_stream(const std::string& name, int fd, bool is_port, link::VehicleV
   bool ended = false;
   bool failed = false;
   while (!stop.requested() && !ended) {
-    const bool ready = stop.wait_readable(fd, monotonic_ns() + kNsPerSecond / kRedrawsPerSecond);
+    const bool ready = stop.wait_readable(fd, monotonic_ns() + kNsPerSecond / kMonitorRedrawsPerSecond);
     const auto now = monotonic_ns();
     if (ready) {
       const long n = ::read(fd, buf, sizeof buf);

@@ -35,7 +35,7 @@
 namespace andros::cli {
 namespace {
 
-constexpr int kRedrawsPerSecond = 5;
+constexpr int kRunRedrawsPerSecond = 5;
 
 std::unique_ptr<link::Link> make_link(const Settings& config, const link::SimVehicle* sim) {
   if (sim != nullptr) return std::make_unique<link::SerialLink>(sim->port_path(), config.baud);
@@ -165,7 +165,7 @@ int run_bridge(const RunOptions& opt, const RunHooks& hooks) {
     return view::render_run_screen(status, size);
   };
   std::optional<view::TerminalDisplay> display;
-  if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRedrawsPerSecond);
+  if (view::is_interactive(STDOUT_FILENO)) display.emplace(compose, kRunRedrawsPerSecond);
 
   if (sim) sim->start();
   if (display) display->start();

@@ -3,11 +3,12 @@
 #include <cmath>
 
 namespace andros::trainer {
+
+double r3(double v) { return std::round(v * 1000.0) / 1000.0; }
+
 namespace {
 
 using nlohmann::json;
-
-double r3(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 json point(vehicle::Point p) { return {r3(p.x), r3(p.y)}; }
 

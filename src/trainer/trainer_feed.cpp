@@ -14,8 +14,6 @@ namespace {
 using nlohmann::json;
 
 /// Millimetres and hundredths of a degree are all the page draws; shorter lines.
-double r3(double v) { return std::round(v * 1000.0) / 1000.0; }
-
 std::string_view camera_name(vehicle::Camera c) {
   switch (c) {
     case vehicle::Camera::kNone: return "none";

@@ -19,8 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-double r3(double v) { return std::round(v * 1000.0) / 1000.0; }
-
 json figures_json(const vehicle::RobotFigures& f) {
   return {{"length", f.length_m.value},       {"width", f.width_m.value},     {"height", f.height_m.value},
           {"upper_arm", f.upper_arm_m.value}, {"forearm", f.forearm_m.value}, {"flipper", f.flipper_m.value}};

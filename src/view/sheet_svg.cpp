@@ -47,7 +47,7 @@ std::string_view mark_colour(SheetMark mark) {
   return "#222222";
 }
 
-double text_width(const SheetEntry& e, double size) {
+double label_width(const SheetEntry& e, double size) {
   const auto mark = mark_name(e.mark);
   const double chars = static_cast<double>(e.function.size()) +
                        (mark.empty() ? 0 : static_cast<double>(mark.size()) + 1.2) +
@@ -62,10 +62,10 @@ double text_width(const SheetEntry& e, double size) {
 std::string label(const SheetEntry& entry, double x, double y, std::string_view anchor, double width) {
   constexpr double kMinScale = 0.85;
   SheetEntry e = entry;
-  double scale = std::min(1.0, width / text_width(e, kLabelSize));
+  double scale = std::min(1.0, width / label_width(e, kLabelSize));
   if (scale < kMinScale && !e.detail.empty()) {
     e.detail.clear();
-    scale = std::min(1.0, width / text_width(e, kLabelSize));
+    scale = std::min(1.0, width / label_width(e, kLabelSize));
   }
   const double size = kLabelSize * scale;
   std::string out = "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" font-size=\"" + num(size) + "\" text-anchor=\"" +

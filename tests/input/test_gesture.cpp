@@ -12,15 +12,15 @@ const InputKey kA{InputKind::kPadButton, 0};
 const InputKey kLeftY{InputKind::kPadAxis, 1};
 const InputKey kLeftX{InputKind::kPadAxis, 0};
 
-InputEvent ev(std::int64_t t, T type, InputKey key = {}, int value = 0) {
+InputEvent key_ev(std::int64_t t, T type, InputKey key = {}, int value = 0) {
   return InputEvent{.t_ms = t, .type = type, .key = key, .value = value, .name = {}, .line = 0};
 }
 
 class GestureTest : public ::testing::Test {
  protected:
-  void SetUp() override { EXPECT_FALSE(detector_.feed(ev(0, T::kConnect))); }
+  void SetUp() override { EXPECT_FALSE(detector_.feed(key_ev(0, T::kConnect))); }
   std::optional<Gesture> feed(T type, InputKey key, int value) {
-    return detector_.feed(ev(t_ += 10, type, key, value));
+    return detector_.feed(key_ev(t_ += 10, type, key, value));
   }
   GestureDetector detector_;
   std::int64_t t_ = 0;
@@ -33,9 +33,9 @@ TEST_F(GestureTest, AButtonCountsWhenPressedNotWhenReleased) {
 }
 
 TEST_F(GestureTest, WhatIsHeldAtConnectIsNotAGesture) {
-  EXPECT_FALSE(detector_.feed(ev(100, T::kConnect)));
-  EXPECT_FALSE(detector_.feed(ev(100, T::kButton, kA, 1)));
-  EXPECT_FALSE(detector_.feed(ev(100, T::kAxis, kLeftY, -32768)));
+  EXPECT_FALSE(detector_.feed(key_ev(100, T::kConnect)));
+  EXPECT_FALSE(detector_.feed(key_ev(100, T::kButton, kA, 1)));
+  EXPECT_FALSE(detector_.feed(key_ev(100, T::kAxis, kLeftY, -32768)));
   t_ = 100;
   EXPECT_FALSE(feed(T::kButton, kA, 0));
   EXPECT_FALSE(feed(T::kAxis, kLeftY, 0));  // back from a push it was never seen starting

@@ -11,16 +11,16 @@ namespace {
 using E = FeedbackEvent;
 using Rgb = std::array<std::uint8_t, 3>;
 
-const std::string kHead = "robot: HD1\ndeadman: leftshoulder\n";  // feedback starts on line 3
+const std::string kFeedbackHead = "robot: HD1\ndeadman: leftshoulder\n";  // feedback starts on line 3
 
-Mapping load_text(const std::string& text, const std::string& base = "") {
+Mapping load_feedback_text(const std::string& text, const std::string& base = "") {
   testing::TempDir dir;
   if (!base.empty()) dir.write("base.yaml", base);
   return *load_mapping(dir.write("m.yaml", text));
 }
 
 TEST(FeedbackLoader, WithoutTheSectionEveryEventHasItsDefaultPattern) {
-  const auto m = load_text(kHead);
+  const auto m = load_feedback_text(kFeedbackHead);
   for (std::size_t i = 0; i < kFeedbackEventCount; ++i) {
     const auto e = static_cast<E>(i);
     ASSERT_TRUE(m.feedback[e].has_value()) << feedback_event_name(e);
@@ -46,18 +46,18 @@ TEST(FeedbackLoader, TheDefaultsAreDistinctAndShort) {
 }
 
 TEST(FeedbackLoader, OffSwitchesEveryEventOff) {
-  const auto m = load_text(kHead + "feedback: off\n");
+  const auto m = load_feedback_text(kFeedbackHead + "feedback: off\n");
   for (const auto& p : m.feedback.patterns) EXPECT_FALSE(p.has_value());
 }
 
 TEST(FeedbackLoader, KeysGivenReplaceTheDefaultsAndTheRestStay) {
-  const auto m = load_text(kHead +
-                           "feedback:\n"
-                           "  enabled: {high: 0.25, ms: 50, led: [1, 2, 3]}\n"
-                           "  link_lost: off\n"
-                           "  disabled: {pulses: 2, led: off}\n"
-                           "  weapons_on: {ms: 300}\n"
-                           "  weapons_off: off\n");
+  const auto m = load_feedback_text(kFeedbackHead +
+                                    "feedback:\n"
+                                    "  enabled: {high: 0.25, ms: 50, led: [1, 2, 3]}\n"
+                                    "  link_lost: off\n"
+                                    "  disabled: {pulses: 2, led: off}\n"
+                                    "  weapons_on: {ms: 300}\n"
+                                    "  weapons_off: off\n");
   auto enabled = default_feedback_pattern(E::kEnabled);
   enabled.high = 0.25;
   enabled.ms = 50;
@@ -77,16 +77,17 @@ TEST(FeedbackLoader, KeysGivenReplaceTheDefaultsAndTheRestStay) {
 
 TEST(FeedbackLoader, AFileThatExtendsKeepsTheBasesFeedbackAndMayChangeIt) {
   const std::string base = "feedback:\n  enabled: {low: 0.5}\n  link_lost: off\n";
-  const auto kept = load_text(kHead + "extends: base.yaml\n", base);
+  const auto kept = load_feedback_text(kFeedbackHead + "extends: base.yaml\n", base);
   EXPECT_EQ(kept.feedback[E::kEnabled]->low, 0.5);
   EXPECT_FALSE(kept.feedback[E::kLinkLost].has_value());
   // An event the base switched off comes back from its default.
-  const auto changed = load_text(kHead + "extends: base.yaml\nfeedback:\n  link_lost: {ms: 300}\n", base);
+  const auto changed =
+      load_feedback_text(kFeedbackHead + "extends: base.yaml\nfeedback:\n  link_lost: {ms: 300}\n", base);
   auto link_lost = default_feedback_pattern(E::kLinkLost);
   link_lost.ms = 300;
   EXPECT_EQ(changed.feedback[E::kLinkLost], link_lost);
   EXPECT_EQ(changed.feedback[E::kEnabled]->low, 0.5);
-  const auto off = load_text(kHead + "extends: base.yaml\nfeedback: off\n", base);
+  const auto off = load_feedback_text(kFeedbackHead + "extends: base.yaml\nfeedback: off\n", base);
   for (const auto& p : off.feedback.patterns) EXPECT_FALSE(p.has_value());
 }
 
@@ -104,7 +105,8 @@ class FeedbackErrors : public ::testing::TestWithParam<BadFeedback> {};
 
 TEST_P(FeedbackErrors, NameFileLineAndColumn) {
   const auto& c = GetParam();
-  testing::expect_input_error([&] { load_text(kHead + c.section); }, "m.yaml", c.line, c.column, c.message, c.section);
+  testing::expect_input_error([&] { load_feedback_text(kFeedbackHead + c.section); }, "m.yaml", c.line, c.column,
+                              c.message, c.section);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -10,7 +10,7 @@ namespace andros::mapping {
 namespace {
 
 // `scale:` on line 3, the bindings from line 5.
-const std::string kHead = "robot: HD1\ndeadman: leftshoulder\n";
+const std::string kScaleHead = "robot: HD1\ndeadman: leftshoulder\n";
 const std::string kBindings = "bindings:\n  - analog: drive\n    axis: lefty\n  - signal: tool_on\n    button: x\n";
 
 ValidMapping load_text(const std::string& text) {
@@ -19,7 +19,7 @@ ValidMapping load_text(const std::string& text) {
 }
 
 TEST(MappingScale, AbsentIsOneLevelOfFullSpeed) {
-  const auto m = load_text(kHead + kBindings);
+  const auto m = load_text(kScaleHead + kBindings);
   EXPECT_EQ(m->scale.levels, std::vector{1.0});
   EXPECT_EQ(m->scale.initial, 0U);
   EXPECT_FALSE(m->scale.up);
@@ -27,8 +27,8 @@ TEST(MappingScale, AbsentIsOneLevelOfFullSpeed) {
 }
 
 TEST(MappingScale, ButtonLevelsDownAndInitial) {
-  const auto m =
-      load_text(kHead + "scale: {button: guide, down: back, levels: [0.25, 0.5, 1.0], initial: 0.5}\n" + kBindings);
+  const auto m = load_text(kScaleHead + "scale: {button: guide, down: back, levels: [0.25, 0.5, 1.0], initial: 0.5}\n" +
+                           kBindings);
   EXPECT_EQ(m->scale.levels, (std::vector{0.25, 0.5, 1.0}));
   EXPECT_EQ(m->scale.initial, 1U);
   ASSERT_TRUE(m->scale.up);
@@ -39,8 +39,8 @@ TEST(MappingScale, ButtonLevelsDownAndInitial) {
 }
 
 TEST(MappingScale, StartsAtTheSlowestUnlessToldAndOneLevelNeedsNoButton) {
-  EXPECT_EQ(load_text(kHead + "scale: {button: guide, levels: [0.3, 0.6, 1]}\n")->scale.initial, 0U);
-  const auto capped = load_text(kHead + "scale: {levels: [0.5]}\n");
+  EXPECT_EQ(load_text(kScaleHead + "scale: {button: guide, levels: [0.3, 0.6, 1]}\n")->scale.initial, 0U);
+  const auto capped = load_text(kScaleHead + "scale: {levels: [0.5]}\n");
   EXPECT_EQ(capped->scale.levels, std::vector{0.5});
   EXPECT_FALSE(capped->scale.up);
 }
@@ -78,58 +78,59 @@ const std::string kLayer =
 INSTANTIATE_TEST_SUITE_P(
     Catalogue, MappingScaleErrors,
     ::testing::Values(
-        BadScale{"not a map", kHead + "scale: 0.5\n", 3, 8, "scale"},
-        BadScale{"unknown key", kHead + "scale: {button: guide, level: [0.5, 1]}\n", 3, 24,
+        BadScale{"not a map", kScaleHead + "scale: 0.5\n", 3, 8, "scale"},
+        BadScale{"unknown key", kScaleHead + "scale: {button: guide, level: [0.5, 1]}\n", 3, 24,
                  "unknown key 'level' in scale (expected button, down, levels, initial)"},
-        BadScale{"no levels", kHead + "scale: {button: guide}\n", 3, 8, "scale needs 'levels'"},
-        BadScale{"levels not a list", kHead + "scale: {button: guide, levels: 0.5}\n", 3, 32, "levels"},
-        BadScale{"no level", kHead + "scale: {levels: []}\n", 3, 17,
+        BadScale{"no levels", kScaleHead + "scale: {button: guide}\n", 3, 8, "scale needs 'levels'"},
+        BadScale{"levels not a list", kScaleHead + "scale: {button: guide, levels: 0.5}\n", 3, 32, "levels"},
+        BadScale{"no level", kScaleHead + "scale: {levels: []}\n", 3, 17,
                  "levels lists at least one fraction of full speed"},
-        BadScale{"six levels", kHead + "scale: {button: y, levels: [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]}\n", 3, 28,
+        BadScale{"six levels", kScaleHead + "scale: {button: y, levels: [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]}\n", 3, 28,
                  "at most 5 levels (a change is counted out in as many rumble pulses)"},
-        BadScale{"level 0", kHead + "scale: {button: y, levels: [0, 1]}\n", 3, 29,
+        BadScale{"level 0", kScaleHead + "scale: {button: y, levels: [0, 1]}\n", 3, 29,
                  "a level is a fraction of full speed above 0, not 0"},
-        BadScale{"level above 1", kHead + "scale: {button: y, levels: [0.5, 1.5]}\n", 3, 34,
+        BadScale{"level above 1", kScaleHead + "scale: {button: y, levels: [0.5, 1.5]}\n", 3, 34,
                  "a level 1.5 is out of range 0..1"},
-        BadScale{"level negative", kHead + "scale: {button: y, levels: [-0.5, 1]}\n", 3, 29,
+        BadScale{"level negative", kScaleHead + "scale: {button: y, levels: [-0.5, 1]}\n", 3, 29,
                  "a level -0.5 is out of range 0..1"},
-        BadScale{"level not a number", kHead + "scale: {button: y, levels: [half, 1]}\n", 3, 29,
+        BadScale{"level not a number", kScaleHead + "scale: {button: y, levels: [half, 1]}\n", 3, 29,
                  "a level 'half' is not a number"},
-        BadScale{"level as a percentage", kHead + "scale: {button: y, levels: [25%, 100%]}\n", 3, 29,
+        BadScale{"level as a percentage", kScaleHead + "scale: {button: y, levels: [25%, 100%]}\n", 3, 29,
                  "a level '25%' is not a number"},
-        BadScale{"levels not increasing", kHead + "scale: {button: y, levels: [0.5, 0.25, 1]}\n", 3, 34,
+        BadScale{"levels not increasing", kScaleHead + "scale: {button: y, levels: [0.5, 0.25, 1]}\n", 3, 34,
                  "levels go from the slowest to the fastest: 0.25 is not above the one before it"},
-        BadScale{"level twice", kHead + "scale: {button: y, levels: [0.5, 0.5]}\n", 3, 34,
+        BadScale{"level twice", kScaleHead + "scale: {button: y, levels: [0.5, 0.5]}\n", 3, 34,
                  "0.5 is not above the one before it"},
-        BadScale{"several levels, no button", kHead + "scale: {levels: [0.5, 1]}\n", 3, 8,
+        BadScale{"several levels, no button", kScaleHead + "scale: {levels: [0.5, 1]}\n", 3, 8,
                  "scale with more than one level needs 'button'"},
-        BadScale{"one level and a button", kHead + "scale: {button: y, levels: [0.5]}\n", 3, 17,
+        BadScale{"one level and a button", kScaleHead + "scale: {button: y, levels: [0.5]}\n", 3, 17,
                  "scale has one level: there is nothing for 'button' to step to"},
-        BadScale{"down without button", kHead + "scale: {down: y, levels: [0.5]}\n", 3, 8,
+        BadScale{"down without button", kScaleHead + "scale: {down: y, levels: [0.5]}\n", 3, 8,
                  "scale has 'down' but no 'button' to step up"},
-        BadScale{"unknown button", kHead + "scale: {button: guid, levels: [0.5, 1]}\n", 3, 17, "unknown button 'guid'"},
-        BadScale{"a stick as button", kHead + "scale: {button: lefty, levels: [0.5, 1]}\n", 3, 17,
+        BadScale{"unknown button", kScaleHead + "scale: {button: guid, levels: [0.5, 1]}\n", 3, 17,
+                 "unknown button 'guid'"},
+        BadScale{"a stick as button", kScaleHead + "scale: {button: lefty, levels: [0.5, 1]}\n", 3, 17,
                  "unknown button 'lefty'"},
-        BadScale{"initial not a level", kHead + "scale: {button: y, levels: [0.5, 1], initial: 0.75}\n", 3, 47,
+        BadScale{"initial not a level", kScaleHead + "scale: {button: y, levels: [0.5, 1], initial: 0.75}\n", 3, 47,
                  "initial 0.75 is not one of the levels"},
-        BadScale{"initial as an index", kHead + "scale: {button: y, levels: [0.5, 1], initial: 2}\n", 3, 47,
+        BadScale{"initial as an index", kScaleHead + "scale: {button: y, levels: [0.5, 1], initial: 2}\n", 3, 47,
                  "initial 2 is out of range 0..1"},
-        BadScale{"down is button", kHead + "scale: {button: y, down: y, levels: [0.5, 1]}\n", 3, 26,
+        BadScale{"down is button", kScaleHead + "scale: {button: y, down: y, levels: [0.5, 1]}\n", 3, 26,
                  "'down' must be a different button from 'button'"},
-        BadScale{"button is the deadman", kHead + "scale: {button: leftshoulder, levels: [0.5, 1]}\n", 3, 17,
+        BadScale{"button is the deadman", kScaleHead + "scale: {button: leftshoulder, levels: [0.5, 1]}\n", 3, 17,
                  "'leftshoulder' is the deadman or switches a layer (line 2); it cannot also step the speed level"},
-        BadScale{"button is a layer key", kHead + "scale: {button: rightshoulder, levels: [0.5, 1]}\n" + kLayer, 3, 17,
-                 "'rightshoulder' is the deadman or switches a layer (line 6)"},
-        BadScale{"button bound in the base layer", kHead + "scale: {button: x, levels: [0.5, 1]}\n" + kBindings, 3, 17,
-                 "'x' steps the speed level in every layer; it is also bound at line 8"},
-        BadScale{"down bound in a layer", kHead + "scale: {button: y, down: a, levels: [0.5, 1]}\n" + kLayer, 3, 26,
-                 "'a' steps the speed level in every layer; it is also bound at line 9"},
+        BadScale{"button is a layer key", kScaleHead + "scale: {button: rightshoulder, levels: [0.5, 1]}\n" + kLayer, 3,
+                 17, "'rightshoulder' is the deadman or switches a layer (line 6)"},
+        BadScale{"button bound in the base layer", kScaleHead + "scale: {button: x, levels: [0.5, 1]}\n" + kBindings, 3,
+                 17, "'x' steps the speed level in every layer; it is also bound at line 8"},
+        BadScale{"down bound in a layer", kScaleHead + "scale: {button: y, down: a, levels: [0.5, 1]}\n" + kLayer, 3,
+                 26, "'a' steps the speed level in every layer; it is also bound at line 9"},
         BadScale{
             "button arms a weapon",
-            kHead +
+            kScaleHead +
                 "scale: {button: y, levels: [0.5, 1]}\nbindings:\n  - signal: weapon_1\n    button: b\n    arm: y\n",
             3, 17, "'y' steps the speed level in every layer; it also arms a weapon at line 7"},
-        BadScale{"feedback pulses for a speed level", kHead + "feedback:\n  speed_level: {pulses: 2}\n", 4, 25,
+        BadScale{"feedback pulses for a speed level", kScaleHead + "feedback:\n  speed_level: {pulses: 2}\n", 4, 25,
                  "speed_level plays one pulse per level (level 3: three pulses); it takes no 'pulses'"}),
     [](const auto& param_info) {
       std::string name = param_info.param.what;
@@ -138,13 +139,13 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(MappingScale, FeedbackForASpeedLevelIsOverridable) {
-  const auto m = load_text(kHead + "feedback:\n  speed_level: {high: 0.2, ms: 50, led: [0, 0, 255]}\n");
+  const auto m = load_text(kScaleHead + "feedback:\n  speed_level: {high: 0.2, ms: 50, led: [0, 0, 255]}\n");
   const auto& p = m->feedback[FeedbackEvent::kSpeedLevel];
   ASSERT_TRUE(p);
   EXPECT_EQ(p->high, 0.2);
   EXPECT_EQ(p->ms, 50);
   EXPECT_EQ(p->low, default_feedback_pattern(FeedbackEvent::kSpeedLevel).low);
-  EXPECT_FALSE(load_text(kHead + "feedback:\n  speed_level: off\n")->feedback[FeedbackEvent::kSpeedLevel]);
+  EXPECT_FALSE(load_text(kScaleHead + "feedback:\n  speed_level: off\n")->feedback[FeedbackEvent::kSpeedLevel]);
 }
 
 TEST(MappingScale, ValidateChecksAHandBuiltScaleToo) {

@@ -12,7 +12,7 @@ namespace {
 using MappingDir = testing::TempDir;
 using test::reads;
 
-const std::string kBase =
+const std::string kUnbindBase =
     "deadman: leftshoulder\n"
     "bindings:\n"
     "  - signal: front_art_up\n    button: dpup\n"
@@ -24,10 +24,10 @@ const std::string kBase =
     "      - signal: gripper_open\n        button: a\n"
     "      - signal: gripper_close\n        button: b\n";
 
-/// base.yaml (kBase) and mine.yaml (robot HD1, extends base.yaml, then rest), loaded.
+/// base.yaml (kUnbindBase) and mine.yaml (robot HD1, extends base.yaml, then rest), loaded.
 Mapping extend(const std::string& rest) {
   MappingDir dir;
-  dir.write("base.yaml", kBase);
+  dir.write("base.yaml", kUnbindBase);
   return *load_mapping(dir.write("mine.yaml", "robot: HD1\nextends: base.yaml\n" + rest));
 }
 

@@ -3,6 +3,7 @@
 // start, whichever snapshot the seek starts from.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "andros/protocol/frame.hpp"

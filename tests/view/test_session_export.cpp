@@ -16,7 +16,7 @@
 namespace andros::view {
 namespace {
 
-constexpr const char* kMapping =
+constexpr const char* kExportMapping =
     "robot: HD1\ndeadman: leftshoulder\nestop: guide\nsupervisor: {stop: guide, weapons_consent: a}\n";
 
 /// The operator's reset chord back + start, the supervisor's reset x: set
@@ -34,7 +34,7 @@ record::Session session(const std::string& events) {
   record::Session s;
   s.settings.rate_millihertz = 25'000;
   s.settings.supervised = true;
-  s.settings.sources = {{"/recorded/stops.yaml", kMapping}};
+  s.settings.sources = {{"/recorded/stops.yaml", kExportMapping}};
   s.events = input::parse_event_script(events, "session.events");
   s.frames = {record::FrameRecord{.tick = 0, .t_ms = 0}};
   s.end = record::EndRecord{.t_ms = 800, .last_tick = 20, .frames_sent = 21, .why = "SIGINT"};

@@ -9,6 +9,10 @@
 
 namespace andros::trainer {
 
+/// v rounded to three decimals (a millimetre, a thousandth of a radian): how
+/// the stream, the state and the replay write the model's numbers.
+double r3(double v);
+
 /// The course's geometry: ground, blocks, slopes, landings, door, package, gates, finish, target.
 nlohmann::json course_map_json(const vehicle::Course& course);
 /// What the vehicle met on its course now (null on open ground).
