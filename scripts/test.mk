@@ -3,16 +3,18 @@
 # its runner (its output in $(B)/phases/NAME.log, printed whole when it ends,
 # its wall and CPU time, and the whole run ended at the first failure).
 #
-#   build ──┬── test ─────────────────┬── test-asan ──┬── systemd
-#           ├── build-asan ───────────┤   fuzz        │
-#           ├── package ── package-check ─────────────┘
-#           └── tidy
+#   build ──┬── test ────────────┬── test-asan ──┬── systemd
+#           └── package ── package-check ────────┘
+#   build-asan ──────────────────┴── fuzz
+#   tidy
 #   format
 #
 # What runs beside another is niced (the first argument of $(run)) so that
-# what the next phase waits for gets the cores first: the tests, then the
-# sanitizer build (the sanitizer tests wait for it), then the package, then
-# clang-tidy and the fuzzers, which nothing waits for until the end. The
+# what the next phase waits for gets the cores first: the plain build and
+# its tests, then the sanitizer build (the sanitizer tests wait for it), then
+# the package, then clang-tidy and the fuzzers, which nothing waits for until
+# the end. The sanitizer build and clang-tidy start at once, beside the plain
+# build: niced, they take the cores its links and configure leave idle. The
 # sanitizer tests wait for the plain tests too: both at once would fight over
 # the cores that the tests' timing leans on. The service's container is not
 # niced: its bridge is real-time, and a niced one would judge the host's load.
@@ -44,7 +46,7 @@ test: build
 # One sanitizer tree for the suite and the fuzz targets: clang, ASan + UBSan,
 # libFuzzer's coverage in every file, -O1 -g1 (OSS-Fuzz's flags). A tree an
 # older test command configured with gcc is made again.
-build-asan: build
+build-asan:
 	@grep -qs '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' $(B)-asan/CMakeCache.txt || rm -rf $(B)-asan
 	@CXX=clang++ BUILD_DIR=$(B)-asan BUILD_FLAGS=cmake $(run) 5 scripts/build.sh -DANDROS_SANITIZE=ON \
 	  -DANDROS_FUZZ=ON -DANDROS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
@@ -68,5 +70,5 @@ systemd: package-check test-asan
 	@$(run) 0 tests/service/test_systemd.sh dist/andros-bridge_*.deb
 # clang-tidy's cache (scripts/lint_tidy.py) makes a run over unchanged files
 # take seconds.
-tidy: build
+tidy:
 	@$(run) 19 scripts/lint.sh --tidy
