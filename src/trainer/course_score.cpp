@@ -1,10 +1,10 @@
 #include "andros/trainer/course_score.hpp"
 
-#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "andros/base/text.hpp"
 #include "andros/record/session.hpp"
+#include "andros/trainer/course_view.hpp"
 #include "andros/view/session_motion.hpp"
 
 namespace andros::trainer {
@@ -84,7 +84,7 @@ std::string score_json(const Score& s) {
   const json j = {{"course", printable_text(s.course)},
                   {"completed", s.completed},
                   {"result", s.result},
-                  {"time_s", std::round(s.time_s * 1000) / 1000},
+                  {"time_s", r3(s.time_s)},
                   {"time_limit_s", s.time_limit_s},
                   {"gates", s.gates},
                   {"gates_total", s.gates_total},
