@@ -125,7 +125,7 @@ class Trainer {
     last_tick_ = r.tick;
     last_t_ms_ = r.t_ms;
     // The vehicle gets what the session records: the frame the link took, at its tick's time.
-    const bool delivered = r.sent && r.result == link::SendResult::kSent;
+    const bool delivered = r.delivered();
     feed_->queue_tick(r.t_ms, r.data, delivered);
     wake_.release();
     observe_course(r);

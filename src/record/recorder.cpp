@@ -340,7 +340,7 @@ void Recorder::observe(const run::TickReport& r) noexcept {
       sent_ = r.sent;
       record([&] { return payload::frame(r, gap); });
     }
-    if (r.sent && r.result == link::SendResult::kSent) ++frames_sent_;
+    if (r.delivered()) ++frames_sent_;
     last_tick_ = r.tick;
     last_t_ms_ = r.t_ms;
     first_ = false;

@@ -239,7 +239,7 @@ SessionReplayResult replay_session(const Session& s, const SourcesLoader& load, 
                    std::to_string(playback.expected_tick()) + " here");
     } else if (r.tick <= playback.last_tick()) {
       const FrameRecord* live = s.frame_at(r.tick);
-      const bool live_sent = live != nullptr && live->offered && live->result == link::SendResult::kSent;
+      const bool live_sent = live != nullptr && live->delivered();
       const std::string at = "tick " + std::to_string(r.tick) + " (" + std::to_string(r.t_ms) + " ms, line " +
                              std::to_string(live == nullptr ? 0 : live->line) + ")";
       if (live_sent && (!r.sent || r.data != live->data)) {

@@ -68,7 +68,7 @@ std::int64_t replay(input::ScriptPlayer& player, mapping::Engine engine, const R
 
   std::int64_t delivered = 0;
   loop.observers = {options.observe, [&](const TickReport& r) {
-                      if (r.sent && r.result == link::SendResult::kSent) {
+                      if (r.delivered()) {
                         sink(r.t_ms, r.data);
                         ++delivered;
                       }

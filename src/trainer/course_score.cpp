@@ -32,7 +32,7 @@ CourseScorer::CourseScorer(const vehicle::RobotFigures& figures, vehicle::Course
 void CourseScorer::on_tick(const run::TickReport& r) {
   last_ms_ = r.t_ms;
   // As the trainer's model and a session's replay take a tick (view::feed_tick).
-  view::feed_tick(model_, r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
+  view::feed_tick(model_, r.t_ms, r.data, r.delivered());
   if (done_ms_ < 0 && model_.course_done()) done_ms_ = r.t_ms;
   // Every stop press (the machine's published steps: both pads' in one tick too).
   for (const auto& [t, pad] : r.transitions) {

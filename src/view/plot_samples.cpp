@@ -36,13 +36,7 @@ std::int64_t reset_time(const record::StopRecord* r) { return r != nullptr ? r->
 }  // namespace
 
 PlotSample plot_sample(const run::TickReport& r) {
-  return PlotSample{r.t_ms,
-                    r.data,
-                    r.sent && r.result == link::SendResult::kSent,
-                    r.state,
-                    r.engine.layer,
-                    stopper(r.stopped_by),
-                    stopper(r.reset_by)};
+  return PlotSample{r.t_ms, r.data, r.delivered(), r.state, r.engine.layer, stopper(r.stopped_by), stopper(r.reset_by)};
 }
 
 namespace {
@@ -162,8 +156,8 @@ std::vector<PlotSample> make_samples(const record::Session& session, const PlotA
   const auto sample = [&](const record::FrameRecord& f, std::int64_t tick, std::int64_t ticks) {
     const std::int64_t t = clock.time_of(tick);
     records.at(t);
-    columns.add(PlotSample{t, f.data, f.offered && f.result == link::SendResult::kSent, records.state, records.layer,
-                           stopper(records.stop), stopper(records.reset), ticks, reset_time(records.reset)});
+    columns.add(PlotSample{t, f.data, f.delivered(), records.state, records.layer, stopper(records.stop),
+                           stopper(records.reset), ticks, reset_time(records.reset)});
   };
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const auto& f = frames[i];

@@ -186,7 +186,7 @@ std::string export_session(const record::Session& s, ExportFormat format, std::o
   vehicle::VehicleModel model(vehicle::figures_for(s.settings.robot), course);
   for_each_tick(s, [&](std::int64_t tick, std::int64_t t, const record::FrameRecord& f) {
     records.at(t);
-    feed_tick(model, t, f.data, delivered(f));
+    feed_tick(model, t, f.data, f.delivered());
     cells = {tick,
              std::string(run::to_string(records.state)),
              std::string(stopper_text(records.stop)),

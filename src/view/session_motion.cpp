@@ -28,8 +28,6 @@ protocol::DecodedFrame received_frame(const protocol::DataBytes& data) {
   return frame;
 }
 
-bool delivered(const record::FrameRecord& frame) { return frame.offered && frame.result == link::SendResult::kSent; }
-
 void feed_tick(vehicle::VehicleModel& model, std::int64_t t_ms, const protocol::DataBytes& data, bool delivered) {
   constexpr std::int64_t kNsPerMs = 1'000'000;
   if (delivered) model.on_frame(received_frame(data), t_ms * kNsPerMs);
@@ -47,7 +45,7 @@ SessionMotion::SessionMotion(const record::Session& session, const vehicle::Robo
       snapshots_.push_back({{static_cast<std::size_t>(&f - session.frames.data()), tick}, t_ms, end_});
     }
     ++fed;
-    feed_tick(end_, t_ms, f.data, delivered(f));
+    feed_tick(end_, t_ms, f.data, f.delivered());
     const auto& p = end_.trail().back();
     // A new point is one the trail did not end with (two in a row are kTrailStep apart).
     if (p.x != trail_.back().x || p.y != trail_.back().y) trail_.push_back({t_ms, p.x, p.y});
@@ -68,7 +66,7 @@ vehicle::VehicleModel SessionMotion::at(std::int64_t t_ms, std::int64_t* tick) c
       session_,
       [&](std::int64_t k, std::int64_t t, const record::FrameRecord& f) {
         if (t > t_ms) return false;
-        feed_tick(model, t, f.data, delivered(f));
+        feed_tick(model, t, f.data, f.delivered());
         if (tick != nullptr) *tick = k;
         return true;
       },

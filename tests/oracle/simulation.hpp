@@ -152,7 +152,7 @@ inline SimulationOutcome simulate(
     if (!r.gate_fault.empty() && gate_fault.empty())
       gate_fault = "the frame gate tripped at t=" + std::to_string(r.t_ms) + ": " + r.gate_fault;
     const bool safety = protocol::read_signals(r.data)[protocol::signal_id("safety")] != 0;
-    if (r.sent && r.result == link::SendResult::kSent && safety != r.enabled() && said.empty()) {
+    if (r.delivered() && safety != r.enabled() && said.empty()) {
       said = "the loop said \"" + std::string(run::to_string(r.state)) + "\" at t=" + std::to_string(r.t_ms) +
              " with safety = " + (safety ? "1" : "0") + " in the frame it sent";
     }

@@ -251,7 +251,7 @@ struct RecordedRun {
     bridge.run(recorded_control(control, recorder, [&] { return reloaded; }), [&](const run::TickReport& r) {
       recorder.observe(r);
       reports.push_back(r);
-      if (r.sent && r.result == link::SendResult::kSent) delivered.emplace_back(r.tick, r.data);
+      if (r.delivered()) delivered.emplace_back(r.tick, r.data);
       if (r.tick == 40 || r.tick == 110) clock.advance(Nanos(130'000'000));  // a stall: ticks 41 and 42 skipped
     });
     recorder.end("end of the input");

@@ -373,7 +373,7 @@ TEST(Bridge, AScriptSuspendSendsNeutralFramesClosesTheLinkAndSendsNothingUntilRe
   const auto ticks = run_script("0 connect pad\n40 button a 1\n80 suspend\n400 resume\n600 end\n", frames);
   std::vector<std::int64_t> sent_at;
   for (const auto& r : ticks) {
-    if (r.sent && r.result == link::SendResult::kSent) sent_at.push_back(r.t_ms);
+    if (r.delivered()) sent_at.push_back(r.t_ms);
     if (r.t_ms >= 80 && !r.shutting_down()) {
       EXPECT_EQ(r.data[7], 128) << r.t_ms;
     }

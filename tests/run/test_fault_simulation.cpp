@@ -432,8 +432,7 @@ TEST(FaultSimulation, AStalledTcpServerGetsNoMotionThroughFreshPresses) {
   std::vector<std::int64_t> driving;  // the ticks whose frame the link took with safety = 1
   const auto out = test::simulate_tcp(library, kSimulationHd1, input::parse_event_script(text, "tcp.events"), kCode,
                                       [&driving](const TickReport& r) {
-                                        if (r.sent && r.result == link::SendResult::kSent && r.enabled())
-                                          driving.push_back(r.t_ms);
+                                        if (r.delivered() && r.enabled()) driving.push_back(r.t_ms);
                                       });
   EXPECT_EQ(out.violation, "");
   EXPECT_EQ(out.coverage.stalls_dropped, 1);
@@ -459,7 +458,7 @@ TEST(FaultSimulation, ATcpServerThatRefusesIsRetriedWithBackOff) {
                                                                 "18600 link up\n19000 end\n",
                                                                 "tcp.events"),
                                       kCode, [&taken](const TickReport& r) {
-                                        if (r.sent && r.result == link::SendResult::kSent) taken.push_back(r.t_ms);
+                                        if (r.delivered()) taken.push_back(r.t_ms);
                                       });
   EXPECT_EQ(out.violation, "");
   EXPECT_EQ(out.coverage.refused, 4);

@@ -86,7 +86,7 @@ vehicle::VehicleModel played_to(const record::Session& s, std::int64_t t) {
   vehicle::VehicleModel model(vehicle::figures_for(s.settings.robot));
   for_each_tick(s, [&](std::int64_t, std::int64_t t_ms, const record::FrameRecord& f) {
     if (t_ms > t) return false;
-    feed_tick(model, t_ms, f.data, delivered(f));
+    feed_tick(model, t_ms, f.data, f.delivered());
     return true;
   });
   return model;
@@ -150,7 +150,7 @@ TEST(SessionMotion, ARealDrivesSessionReplayedIsTheTrailOfItsFramesFedLive) {
     // At every tick, the pose so far (a frame a tick late or early moves it).
     std::int64_t compared = 0;
     (void)record::replay_session(session, record::load_recorded_mapping, [&](const run::TickReport& r) {
-      feed.queue_tick(r.t_ms, r.data, r.sent && r.result == link::SendResult::kSent);
+      feed.queue_tick(r.t_ms, r.data, r.delivered());
       feed.take_ticks();
       ASSERT_EQ(feed.summary(), trainer::trail_summary(motion.at(r.t_ms))) << "at " << r.t_ms << " ms";
       ++compared;

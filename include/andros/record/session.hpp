@@ -221,6 +221,9 @@ struct FrameRecord {
   protocol::DataBytes data{};
   std::int64_t gap = 0;  ///< ticks the live loop did not run just before this one (a stall, a pause)
   int line = 0;          ///< the record's line in the file
+
+  /// The frame reached the vehicle: offered and taken by the link.
+  [[nodiscard]] bool delivered() const { return offered && result == link::SendResult::kSent; }
 };
 
 /// What became of a frame record's frame, as the record says it: sent, busy, down, or none (nothing offered).

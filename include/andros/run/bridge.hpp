@@ -83,6 +83,8 @@ struct TickReport {
   [[nodiscard]] bool shutting_down() const { return state == OpState::kShuttingDown; }
   [[nodiscard]] bool reloading() const { return state == OpState::kReloading; }
   [[nodiscard]] bool enabled() const { return state == OpState::kEnabled; }
+  /// The link took this tick's frame: the vehicle may act on it.
+  [[nodiscard]] bool delivered() const { return sent && result == link::SendResult::kSent; }
 };
 
 struct BridgeOptions {

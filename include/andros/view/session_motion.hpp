@@ -40,9 +40,6 @@ protocol::DecodedFrame received_frame(const protocol::DataBytes& data);
 /// else the model's clock to the tick's time.
 void feed_tick(vehicle::VehicleModel& model, std::int64_t t_ms, const protocol::DataBytes& data, bool delivered);
 
-/// Whether a frame record's frame reached the vehicle: offered and taken by the link.
-bool delivered(const record::FrameRecord& frame);
-
 /// A point of the trail, and the time the model added it.
 struct TimedPoint {
   std::int64_t t_ms = 0;
